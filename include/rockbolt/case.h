@@ -1,0 +1,63 @@
+/* Case files: the YAML description of one equipment check (io layer).
+ *
+ * rb_case_load parses a case with libyaml, converts every quantity to SI
+ * through units.h, validates it, reads the record files it names and builds
+ * ready-to-run rb_motion values. Errors name file, line, column and key. */
+#ifndef ROCKBOLT_CASE_H
+#define ROCKBOLT_CASE_H
+
+#include <stddef.h>
+#include "rockbolt/model.h"
+#include "rockbolt/motion.h"
+#include "rockbolt/solve.h"
+#include "rockbolt/criteria.h"
+
+/* One floor motion of a case, ready for rb_solve_run. */
+typedef struct {
+    char *name;           /* owned; from the case or the record file name */
+    char *source;         /* owned; record path as resolved, or a description */
+    rb_series series;     /* owned; used when motion.kind == RB_MOTION_SAMPLED */
+    rb_motion motion;     /* motion.series points at series above */
+    double target_peak_mps2; /* 0 when the case did not ask for scaling */
+    double building_freq_hz, building_damping; /* 0 when no building filter */
+} rb_case_motion;
+
+/* Options for `rockbolt design` (issue: design checks). */
+typedef struct {
+    double scan_start;   /* in A*, default 0.05 */
+    double scan_step;    /* in A*, default 0.05 */
+    double scan_end;     /* in A*, default 1.5 */
+    double resolution;   /* in A*, default 0.001 */
+    double gap_ratio_min, gap_ratio_max, gap_ratio_step; /* defaults 0, 0.06, 0.0025 */
+} rb_design_opts;
+
+typedef struct {
+    char *path;               /* owned; the file as given */
+    char *name;               /* owned; case name (defaults to the file stem) */
+    char *description;        /* owned; may be NULL */
+    rb_model model;
+    rb_solve_opts solve;
+    rb_criteria criteria;
+    rb_design_opts design;
+    rb_case_motion *motions;  /* owned array of n_motions (>= 1) */
+    size_t n_motions;
+    int write_history;        /* analysis.history: true */
+} rb_case;
+
+/* One diagnostic per problem; a load reports all it finds. */
+typedef struct {
+    rb_diag *items;  /* owned */
+    size_t n, cap;
+} rb_diag_list;
+
+void rb_diag_list_free(rb_diag_list *l);
+
+/* Load and validate a case. Returns RB_OK, or RB_ERR_PARSE / RB_ERR_INVALID
+ * / RB_ERR_IO with every problem found appended to diags. On error *out is
+ * left empty (nothing to free, but rb_case_free is safe). */
+rb_status rb_case_load(const char *path, rb_case *out, rb_diag_list *diags);
+
+/* Free what a case owns; accepts NULL. */
+void rb_case_free(rb_case *c);
+
+#endif

@@ -1,0 +1,82 @@
+/* Floor motions: what the solver is driven by.
+ *
+ * The solver sees an rb_motion, a floor total acceleration x''(t) in m/s^2
+ * (eq. 5.28), either in closed form (harmonic, single pulses of chapter 2,
+ * the critical alternating pulses of chapter 3) or as samples at a fixed
+ * interval, interpolated linearly. Sampled series are held in an rb_series,
+ * which owns its array; filters and scaling make new series. No I/O here:
+ * record files are read by the io layer (record.h). */
+#ifndef ROCKBOLT_MOTION_H
+#define ROCKBOLT_MOTION_H
+
+#include <stddef.h>
+#include "rockbolt/status.h"
+
+typedef struct {
+    double *accel_mps2; /* owned; n values at t = t0 + i dt */
+    size_t n;
+    double dt_s;
+    double t0_s;
+} rb_series;
+
+/* Allocate n zeroed samples. Returns RB_ERR_NOMEM or RB_ERR_INVALID (n == 0,
+ * dt not finite and > 0). */
+rb_status rb_series_alloc(rb_series *s, size_t n, double dt_s);
+/* Free the samples; accepts NULL and an already freed series. */
+void rb_series_free(rb_series *s);
+/* Largest |a| over the samples. */
+double rb_series_peak(const rb_series *s);
+/* Multiply every sample by factor. */
+void rb_series_scale(rb_series *s, double factor);
+/* Replace s by the floor total acceleration of a linear SDOF building with
+ * frequency f_hz and damping xi under ground acceleration s (eqs. 5.27-5.28),
+ * integrated exactly for piecewise-linear input. */
+rb_status rb_series_building_filter(rb_series *s, double f_hz, double xi);
+/* Keep only samples with t in [t_start, t_end]; t0 is reset to 0. */
+rb_status rb_series_window(rb_series *s, double t_start_s, double t_end_s);
+
+typedef enum {
+    RB_MOTION_HARMONIC = 0, /* a sin(2 pi f t), optional linear ramp */
+    RB_MOTION_PULSE,        /* one pulse of duration pulse_s, zero after */
+    RB_MOTION_SAMPLED,      /* piecewise-linear through series samples */
+    RB_MOTION_CRITICAL      /* a sign(theta'): alternating rectangular pulses
+                               that always do positive work (ch. 3) */
+} rb_motion_kind;
+
+typedef enum {
+    RB_PULSE_RECT = 0,
+    RB_PULSE_TRI_DEC,   /* a (1 - t/t1): peak at the start (type 1) */
+    RB_PULSE_TRI_INC,   /* a t / t1: peak at the end (type 2) */
+    RB_PULSE_HALF_SINE  /* a sin(pi t / t1) */
+} rb_pulse_shape;
+
+typedef struct {
+    rb_motion_kind kind;
+    double amplitude_mps2;     /* peak of the closed forms; sampled: multiplier
+                                  applied to the samples is 'scale' instead */
+    double freq_hz;            /* harmonic */
+    double ramp_s;             /* harmonic: linear ramp-up time, 0 for none */
+    rb_pulse_shape pulse;
+    double pulse_s;            /* pulse duration t1 */
+    const rb_series *series;   /* sampled: borrowed, must outlive the run */
+    double scale;              /* sampled: factor on the samples (1 if unset) */
+    int polarity;              /* +1 as given, -1 reversed */
+    double duration_s;         /* how long the solver runs */
+} rb_motion;
+
+/* A motion with polarity +1, scale 1 and everything else zero. */
+void rb_motion_init(rb_motion *m);
+
+/* Floor total acceleration at time t (m/s^2), polarity applied. For
+ * RB_MOTION_CRITICAL theta_dot gives the sign; elsewhere it is ignored. */
+double rb_motion_accel(const rb_motion *m, double t, double theta_dot);
+
+/* The next time strictly after t where x''(t) has a kink or jump (a sample
+ * time, a pulse end, the end of a ramp), or INFINITY if none. The solver
+ * never steps across one. */
+double rb_motion_next_break(const rb_motion *m, double t);
+
+/* Largest |x''| the motion can reach (the peak floor acceleration 'a'). */
+double rb_motion_peak(const rb_motion *m);
+
+#endif

@@ -1,0 +1,102 @@
+/* The five-stage restrained-rocking solver (thesis chapters 5 and 6).
+ *
+ * rb_solve_run integrates the stage machine 1 -> 2 -> 3 -> 4 -> 5 and back
+ * (Fig. 5.3.b) for one model under one floor motion and returns the peak
+ * response, energies and counters. Continuous stages are integrated with an
+ * embedded Runge-Kutta 5(4) pair (Dormand-Prince) with dense output; stage
+ * changes are roots of guard functions located on the dense output; impacts
+ * are instantaneous maps. Memory is constant in the record length unless a
+ * time history is requested. No I/O. */
+#ifndef ROCKBOLT_SOLVE_H
+#define ROCKBOLT_SOLVE_H
+
+#include <stddef.h>
+#include "rockbolt/model.h"
+#include "rockbolt/motion.h"
+
+typedef enum {
+    RB_STAGE_FIXED = 1,   /* 1: fixed base, SDOF */
+    RB_STAGE_UPLIFT = 2,  /* 2: rocking, bolts slack */
+    RB_STAGE_IMPACT = 3,  /* 3: plate hits a bolt head (instantaneous) */
+    RB_STAGE_HELD = 4,    /* 4: plate held by a bolt row in tension */
+    RB_STAGE_YIELD = 5    /* 5: bolt row yielding at Fy */
+} rb_stage;
+
+typedef struct {
+    rb_formulation formulation;
+    double rtol;             /* integrator relative tolerance (default 1e-8) */
+    double event_tol;        /* transitions to this fraction of the normalising
+                                quantity (default 1e-3, sec. 5.7), tightened
+                                internally to 1e-9 in time */
+    double max_step_s;       /* <= 0 -> 1/(20 f) of the highest frequency */
+    int stretch_past_failure;/* 1: bolts keep yielding past their capacity and
+                                usage > 1 is reported (ch. 6 earthquake runs) */
+    double history_dt_s;     /* > 0: record a time history at this interval */
+    double rest_fraction;    /* rocking amplitude below this fraction of the
+                                smaller of alpha and theta0 returns to stage 1
+                                (default 1e-3) */
+    long max_events_per_s;   /* work bound per simulated second (default 20000) */
+    long max_steps;          /* total step bound (default 50 000 000) */
+    double theta_init_rad;   /* start rocking at this angle (sign = side), at rest */
+} rb_solve_opts;
+
+/* Defaults as documented above. */
+void rb_solve_opts_init(rb_solve_opts *opts);
+
+/* Time history, one row per history_dt_s (and at the end). All arrays have
+ * length n and are owned by the rb_history. Forces are tension positive. */
+typedef struct {
+    size_t n, cap;
+    double *t, *accel, *theta, *u, *bolt_force_left, *bolt_force_right,
+           *shear_elastic, *shear_total, *energy_left, *energy_right,
+           *kinetic, *potential, *strain;
+    int *stage;
+} rb_history;
+
+void rb_history_free(rb_history *h);
+
+typedef struct {
+    /* system constants */
+    double a_star_mps2, a_uplift_mps2, peak_floor_mps2;
+    double u_static_m;         /* pi^2 a / (8 omega^2), the thesis's tables */
+    double alpha_rad, theta0_rad, fy_row_n, capacity_j, weight_n, delta;
+    /* peaks */
+    double max_theta_rad, max_theta_over_alpha;
+    double max_u_m, max_u_over_ustatic;
+    double max_shear_elastic_n;   /* GA (pi/4h) U = N* omega^2 U (frame shear) */
+    double max_shear_total_n;     /* horizontal floor reaction on the body */
+    double max_friction_demand;   /* max |horizontal| / vertical floor reaction */
+    double max_bolt_force_n[2];   /* [RB_LEFT], [RB_RIGHT] */
+    /* per bolt row */
+    double final_gap_m[2];
+    double absorbed_j[2];
+    double usage[2];              /* absorbed / capacity */
+    int yielded[2];
+    double first_yield_s[2];
+    int broken[2];
+    double break_s[2];
+    /* outcome */
+    int overturned;
+    int overturn_side;            /* RB_LEFT: tipped about the right edge... see docs */
+    double overturn_s;
+    double t_end_s;               /* time reached */
+    double stage_time_s[6];       /* index = stage number 1..5 (3 stays 0) */
+    long floor_impacts, bolt_impacts, uplifts;
+    /* energy balance (J), relative frame */
+    double e_input, e_kinetic, e_potential, e_strain, e_damping, e_impact,
+           e_plastic, e_coupling;
+    /* cost */
+    long steps, rejected_steps, events, rhs_evals;
+    rb_history *history;          /* owned; NULL unless asked for */
+} rb_result;
+
+/* Run one model under one motion. out is overwritten; free it with
+ * rb_result_free. On error the status says why and diag (may be NULL) names
+ * the time and stage in diag->msg; out holds what was reached. */
+rb_status rb_solve_run(const rb_model *model, const rb_motion *motion,
+                       const rb_solve_opts *opts, rb_result *out, rb_diag *diag);
+
+/* Free what a result owns (its history); accepts NULL. */
+void rb_result_free(rb_result *r);
+
+#endif

@@ -1,0 +1,39 @@
+/* Status codes shared by every rockbolt library call.
+ *
+ * Library calls never print: they return an rb_status and, where a caller
+ * passes one, fill an rb_diag with the place and the reason. Only the CLI
+ * turns these into messages and exit codes. */
+#ifndef ROCKBOLT_STATUS_H
+#define ROCKBOLT_STATUS_H
+
+#include <stddef.h>
+
+typedef enum {
+    RB_OK = 0,
+    RB_ERR_NOMEM,          /* an allocation failed */
+    RB_ERR_IO,             /* a file could not be read or written */
+    RB_ERR_PARSE,          /* a file is not of the expected form */
+    RB_ERR_INVALID,        /* a value is out of range or inconsistent */
+    RB_ERR_LIMIT,          /* a resource limit of the tool was reached */
+    RB_ERR_STEP_TOO_SMALL, /* the integrator could not meet its tolerance */
+    RB_ERR_NONFINITE,      /* NaN or infinity appeared in the state */
+    RB_ERR_WORK_LIMIT      /* too many events per simulated second */
+} rb_status;
+
+/* A short, fixed English phrase for a status; never NULL. */
+const char *rb_status_str(rb_status status);
+
+/* Where and why a call failed. line and col count from 1; 0 means unknown.
+ * The caller owns the struct; nothing in it needs freeing. */
+typedef struct {
+    char file[512];
+    int line;
+    int col;
+    char key[128];
+    char msg[512];
+} rb_diag;
+
+/* Clear a diag to "no error". Accepts NULL. */
+void rb_diag_clear(rb_diag *diag);
+
+#endif
