@@ -1,0 +1,26 @@
+/* Status phrases and diag helpers. The switch has no default so that a new
+ * status without a phrase is a compiler warning, not a silent "unknown". */
+#include <string.h>
+#include "rockbolt/status.h"
+
+const char *rb_status_str(rb_status status)
+{
+    switch (status) {
+    case RB_OK: return "ok";
+    case RB_ERR_NOMEM: return "out of memory";
+    case RB_ERR_IO: return "input/output error";
+    case RB_ERR_PARSE: return "parse error";
+    case RB_ERR_INVALID: return "invalid value";
+    case RB_ERR_LIMIT: return "limit exceeded";
+    case RB_ERR_STEP_TOO_SMALL: return "integrator step too small";
+    case RB_ERR_NONFINITE: return "non-finite value in the state";
+    case RB_ERR_WORK_LIMIT: return "too many events per simulated second";
+    }
+    return "unknown status";
+}
+
+void rb_diag_clear(rb_diag *diag)
+{
+    if (diag)
+        memset(diag, 0, sizeof *diag);
+}
