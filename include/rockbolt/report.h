@@ -1,0 +1,175 @@
+/* Reports of a case check: JSON, text (through a template), history CSV,
+ * and the atomic file writer they all go through (io layer).
+ *
+ * The CLI solves every motion of a case, judges each result, and fills an
+ * rb_report that only borrows what it points at. The renderers turn it into
+ * a string the caller owns; nothing here prints. Output files are written
+ * to a temporary file in the target directory and renamed into place, so a
+ * reader never sees a half-written report. The JSON layout is documented in
+ * docs/report-format.md and versioned by RB_REPORT_FORMAT_VERSION. */
+#ifndef ROCKBOLT_REPORT_H
+#define ROCKBOLT_REPORT_H
+
+#include <stddef.h>
+#include <stdio.h>
+#include "rockbolt/status.h"
+#include "rockbolt/model.h"
+#include "rockbolt/solve.h"
+#include "rockbolt/criteria.h"
+#include "rockbolt/case.h"
+
+/* Bumped whenever a JSON field is renamed, removed or changes meaning;
+ * adding a field does not bump it. */
+#define RB_REPORT_FORMAT_VERSION 1
+
+/* ---- What a report is made of ------------------------------------------ */
+
+/* One motion of a case, solved and judged. */
+typedef struct {
+    const rb_case_motion *motion; /* borrowed: name, source, rb_motion */
+    const rb_result *result;      /* borrowed: the solver's result */
+    int pass;                     /* rb_criteria_judge */
+    char reason[256];             /* its one-line reason */
+} rb_report_motion;
+
+typedef struct {
+    const rb_case *kase;           /* borrowed: name, path, model, criteria */
+    rb_derived derived;            /* rb_model_derive of kase->model */
+    const rb_report_motion *motions; /* borrowed array of n_motions */
+    size_t n_motions;
+    int pass;                      /* 1 when every motion passes */
+    char reason[384];              /* one line: what governed the verdict */
+} rb_report;
+
+/* Set r->pass and r->reason from the motions: the first failing motion
+ * (and how many others fail) or, when all pass, the criterion met. */
+void rb_report_conclude(rb_report *r);
+
+/* Render the JSON report. *out is a NUL-terminated string the caller frees
+ * with free(). Returns RB_ERR_NONFINITE (diag->key names the field) if any
+ * number to be written is NaN or infinite, RB_ERR_NOMEM on allocation
+ * failure; *out is NULL on error. */
+rb_status rb_report_json_render(const rb_report *r, char **out, rb_diag *diag);
+
+/* Render the text report through template text tmpl (see rb_template_*).
+ * *out is owned by the caller (free()). Errors in the template come back as
+ * RB_ERR_PARSE with the template line and column in diag. */
+rb_status rb_report_text_render(const rb_report *r, const char *tmpl,
+                                char **out, rb_diag *diag);
+
+/* Write the time histories of the motions as CSV to fp: one header line,
+ * then one line per history row, the motion's 1-based index first. Motions
+ * without a history contribute no rows. Returns RB_ERR_IO if a write fails,
+ * RB_ERR_NONFINITE for a NaN or infinite value. */
+rb_status rb_history_write_csv(FILE *fp, const rb_report *r, rb_diag *diag);
+
+/* ---- Templates ----------------------------------------------------------
+ *
+ * A template is text with placeholders:
+ *   {{name}}              the value of a variable, in its default format
+ *   {{name:%8.3f}}        with a printf-style format: optional flags '-' and
+ *                         '+', width, precision and one of f e g d s
+ *   {{#list}}..{{/list}}  the enclosed text once per item of a list, with
+ *                         the item's variables in scope (outer ones still
+ *                         visible)
+ *   {{! comment }}        nothing
+ * A section or comment tag alone on its line removes the whole line. A
+ * missing value (RB_TVAL_NONE) or a non-finite number renders as "n/a" in
+ * the field width. Unknown names are errors, so a typo in a template cannot
+ * silently drop a number. */
+
+typedef enum {
+    RB_TVAL_NONE = 0,  /* no value: rendered "n/a" */
+    RB_TVAL_NUM,       /* double; default format %g */
+    RB_TVAL_INT,       /* long; default format %d */
+    RB_TVAL_STR        /* string; default format %s */
+} rb_tval_kind;
+
+typedef struct {
+    const char *name;  /* borrowed */
+    rb_tval_kind kind;
+    double num;
+    long integer;
+    const char *str;   /* borrowed */
+} rb_tvar;
+
+typedef struct rb_tscope rb_tscope;
+
+/* A named list: items[i] is the scope of the i-th repetition. */
+typedef struct {
+    const char *name;        /* borrowed */
+    const rb_tscope *items;  /* borrowed array of n */
+    size_t n;
+} rb_tlist;
+
+/* Variables and lists visible at one level; lookups fall back to parent. */
+struct rb_tscope {
+    const rb_tvar *vars;
+    size_t n_vars;
+    const rb_tlist *lists;
+    size_t n_lists;
+    const rb_tscope *parent; /* set by the renderer for list items */
+};
+
+/* Render tmpl with the variables of scope. *out is owned by the caller
+ * (free()). Returns RB_ERR_PARSE for a malformed template or an unknown
+ * name (diag->line/col point into the template, diag->key names the tag),
+ * RB_ERR_NOMEM. *out is NULL on error. */
+rb_status rb_template_render(const char *tmpl, const rb_tscope *scope,
+                             char **out, rb_diag *diag);
+
+/* The compiled-in copy of a shipped template ("report.txt",
+ * "starter.yaml"), or NULL if there is none by that name. Static storage. */
+const char *rb_template_builtin(const char *name);
+
+/* Load the template called name: from $RB_TEMPLATE_DIR/name if the variable
+ * is set and the file exists, else from the source tree's templates/ when
+ * present, else the built-in copy. *text is owned by the caller (free());
+ * *origin (may be NULL) gets a static description of where it came from:
+ * "RB_TEMPLATE_DIR", "source tree" or "built-in". Returns RB_ERR_IO when
+ * a file exists but cannot be read, RB_ERR_INVALID for an unknown name. */
+rb_status rb_template_load(const char *name, char **text, const char **origin,
+                           rb_diag *diag);
+
+/* ---- Atomic output files ------------------------------------------------ */
+
+/* A file being written: the data go to a temporary file next to path and
+ * only appear under path at rb_outfile_commit. */
+typedef struct {
+    FILE *fp;          /* write here between open and commit */
+    char *path;        /* owned */
+    char *tmp_path;    /* owned; "<path>.tmp.XXXXXX" */
+    int no_clobber;    /* refuse to replace an existing file */
+    int finished;      /* data flushed, synced and the file closed */
+} rb_outfile;
+
+/* Check, before any work, that path can be written: its directory exists
+ * and is writable, and path is not itself a directory. RB_ERR_IO with the
+ * reason in diag (diag->file = path) if not. */
+rb_status rb_outfile_check(const char *path, rb_diag *diag);
+
+/* Create the temporary file (mkstemp in the directory of path). With
+ * no_clobber, commit fails with RB_ERR_INVALID if path exists by then, and
+ * open fails early if it already does. On error f holds nothing to free. */
+rb_status rb_outfile_open(rb_outfile *f, const char *path, int no_clobber,
+                          rb_diag *diag);
+
+/* Flush, fsync and close the temporary file, leaving it unpublished, so
+ * that several outputs can all be made durable before any is renamed. On
+ * error the temporary file is removed and f freed. */
+rb_status rb_outfile_finish(rb_outfile *f, rb_diag *diag);
+
+/* Finish (if not yet done) and rename (or, with no_clobber, link) the
+ * temporary file to path. On any error the temporary file is removed and
+ * path is left as it was. f is freed either way. */
+rb_status rb_outfile_commit(rb_outfile *f, rb_diag *diag);
+
+/* Close and remove the temporary file; path is untouched. Accepts a closed
+ * or zeroed f. */
+void rb_outfile_abort(rb_outfile *f);
+
+/* Write len bytes of data to path atomically (open, write, commit). */
+rb_status rb_outfile_write_all(const char *path, const char *data, size_t len,
+                               int no_clobber, rb_diag *diag);
+
+#endif

@@ -1,0 +1,410 @@
+/* The JSON report (layout version RB_REPORT_FORMAT_VERSION, documented in
+ * docs/report-format.md).
+ *
+ * Everything is SI; every normalised form sits next to the quantity it
+ * normalises; per-row arrays are {"left": .., "right": ..}. A ratio with a
+ * zero denominator, or a time that did not happen (no yield, no break), is
+ * null. Any other number that is NaN or infinite means a bug upstream: the
+ * report refuses to be written (RB_ERR_NONFINITE, naming the field) rather
+ * than emit JSON that standard parsers reject. The cJSON tree never leaves
+ * this file. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cjson/cJSON.h>
+#include "rockbolt/rockbolt.h"
+#include "report_internal.h"
+
+/* Builder state: the first problem met is kept, later calls are no-ops. */
+typedef struct {
+    rb_status st;
+    const char *where;     /* section being written, for diagnostics */
+    char where_buf[64];    /* "motions[i]" */
+    char bad_key[128];
+} jctx;
+
+static void j_oom(jctx *cx, const void *added)
+{
+    if (!added && cx->st == RB_OK)
+        cx->st = RB_ERR_NOMEM;
+}
+
+static cJSON *j_obj(jctx *cx, cJSON *parent, const char *key)
+{
+    cJSON *o = cx->st == RB_OK ? cJSON_AddObjectToObject(parent, key) : NULL;
+    j_oom(cx, o);
+    return o;
+}
+
+static void j_num(jctx *cx, cJSON *o, const char *key, double v)
+{
+    if (cx->st != RB_OK)
+        return;
+    if (!isfinite(v)) {
+        cx->st = RB_ERR_NONFINITE;
+        snprintf(cx->bad_key, sizeof cx->bad_key, "%s.%s", cx->where, key);
+        return;
+    }
+    j_oom(cx, cJSON_AddNumberToObject(o, key, v));
+}
+
+static void j_null(jctx *cx, cJSON *o, const char *key)
+{
+    if (cx->st == RB_OK)
+        j_oom(cx, cJSON_AddNullToObject(o, key));
+}
+
+/* A value that may legitimately be absent: written only when have. */
+static void j_opt(jctx *cx, cJSON *o, const char *key, int have, double v)
+{
+    if (have)
+        j_num(cx, o, key, v);
+    else
+        j_null(cx, o, key);
+}
+
+/* A normalised form: NAN (no denominator) becomes null. */
+static void j_norm(jctx *cx, cJSON *o, const char *key, double v)
+{
+    j_opt(cx, o, key, !isnan(v), v);
+}
+
+static void j_bool(jctx *cx, cJSON *o, const char *key, int v)
+{
+    if (cx->st == RB_OK)
+        j_oom(cx, cJSON_AddBoolToObject(o, key, v != 0));
+}
+
+static void j_str(jctx *cx, cJSON *o, const char *key, const char *s)
+{
+    if (cx->st != RB_OK)
+        return;
+    if (s)
+        j_oom(cx, cJSON_AddStringToObject(o, key, s));
+    else
+        j_null(cx, o, key);
+}
+
+static void j_pair(jctx *cx, cJSON *o, const char *key, const double v[2])
+{
+    cJSON *p = j_obj(cx, o, key);
+    j_num(cx, p, "left", v[RB_LEFT]);
+    j_num(cx, p, "right", v[RB_RIGHT]);
+}
+
+static void j_pair_norm(jctx *cx, cJSON *o, const char *key, const double v[2])
+{
+    cJSON *p = j_obj(cx, o, key);
+    j_norm(cx, p, "left", v[RB_LEFT]);
+    j_norm(cx, p, "right", v[RB_RIGHT]);
+}
+
+static void j_pair_bool(jctx *cx, cJSON *o, const char *key, const int v[2])
+{
+    cJSON *p = j_obj(cx, o, key);
+    j_bool(cx, p, "left", v[RB_LEFT]);
+    j_bool(cx, p, "right", v[RB_RIGHT]);
+}
+
+/* Times of events per row: null where the event did not happen. */
+static void j_pair_when(jctx *cx, cJSON *o, const char *key, const int happened[2],
+                        const double t[2])
+{
+    cJSON *p = j_obj(cx, o, key);
+    j_opt(cx, p, "left", happened[RB_LEFT], t[RB_LEFT]);
+    j_opt(cx, p, "right", happened[RB_RIGHT], t[RB_RIGHT]);
+}
+
+static void add_model(jctx *cx, cJSON *root, const rb_model *m)
+{
+    cJSON *o = j_obj(cx, root, "model");
+    cx->where = "model";
+    j_num(cx, o, "mass_kg", m->mass_kg);
+    j_num(cx, o, "cm_height_m", m->cm_height_m);
+    j_num(cx, o, "half_width_m", m->half_width_m);
+    j_bool(cx, o, "rigid", m->rigid);
+    j_num(cx, o, "freq_hz", m->freq_hz);
+    j_num(cx, o, "damping", m->damping);
+    j_opt(cx, o, "inertia_kgm2", m->inertia_kgm2 > 0, m->inertia_kgm2);
+    j_opt(cx, o, "restitution", m->restitution >= 0, m->restitution);
+    j_str(cx, o, "bolt_model", rb_report_bolt_model_str(m->bolt_model));
+    j_num(cx, o, "bolts_per_row", m->bolts_per_row);
+    j_num(cx, o, "bolt_area_m2", m->bolt_area_m2);
+    j_num(cx, o, "yield_stress_pa", m->yield_stress_pa);
+    j_num(cx, o, "toughness_jpm3", m->toughness_jpm3);
+    j_num(cx, o, "deformable_length_m", m->deformable_length_m);
+    j_opt(cx, o, "elastic_modulus_pa", m->elastic_modulus_pa > 0,
+          m->elastic_modulus_pa);
+    j_num(cx, o, "lever_arm_m", m->lever_arm_m);
+    j_num(cx, o, "gap_m", m->gap_m);
+    j_norm(cx, o, "gap_ratio", rb_report_ratio(m->gap_m, m->lever_arm_m));
+    j_opt(cx, o, "gravity_mps2", m->gravity_mps2 > 0, m->gravity_mps2);
+}
+
+static void add_derived(jctx *cx, cJSON *root, const rb_derived *d)
+{
+    cJSON *o = j_obj(cx, root, "derived");
+    cx->where = "derived";
+    j_num(cx, o, "g_mps2", d->g);
+    j_num(cx, o, "weight_n", d->W);
+    j_num(cx, o, "R_m", d->R);
+    j_num(cx, o, "alpha_rad", d->alpha);
+    j_num(cx, o, "omega_radps", d->omega);
+    j_num(cx, o, "Mstar_kg", d->Mstar);
+    j_num(cx, o, "Nstar_kg", d->Nstar);
+    j_num(cx, o, "Fstar_kgm", d->Fstar);
+    j_num(cx, o, "Kstar_npm", d->Kstar);
+    j_num(cx, o, "Cstar_nspm", d->Cstar);
+    j_num(cx, o, "Io_kgm2", d->Io);
+    j_num(cx, o, "delta", d->delta);
+    j_num(cx, o, "fy_row_n", d->fy_row_n);
+    j_num(cx, o, "capacity_j", d->capacity_j);
+    j_num(cx, o, "k_row_npm", d->k_row_npm);
+    j_num(cx, o, "a_star_mps2", d->a_star_mps2);
+    j_norm(cx, o, "a_star_g", rb_report_ratio(d->a_star_mps2, d->g));
+    j_num(cx, o, "a_uplift_mps2", d->a_uplift_mps2);
+    j_norm(cx, o, "a_uplift_over_a_star",
+           rb_report_ratio(d->a_uplift_mps2, d->a_star_mps2));
+    j_num(cx, o, "theta0_rad", d->theta0_rad);
+}
+
+static void add_settings(jctx *cx, cJSON *root, const rb_case *c)
+{
+    const rb_solve_opts *s = &c->solve;
+    const rb_criteria *k = &c->criteria;
+    cJSON *o = j_obj(cx, root, "solver");
+    cx->where = "solver";
+    j_str(cx, o, "formulation", rb_report_formulation_str(s->formulation));
+    j_num(cx, o, "rtol", s->rtol);
+    j_num(cx, o, "event_tol", s->event_tol);
+    j_opt(cx, o, "max_step_s", s->max_step_s > 0, s->max_step_s);
+    j_bool(cx, o, "stretch_past_failure", s->stretch_past_failure);
+    j_opt(cx, o, "history_dt_s", s->history_dt_s > 0, s->history_dt_s);
+    j_num(cx, o, "rest_fraction", s->rest_fraction);
+    j_num(cx, o, "max_events_per_s", (double)s->max_events_per_s);
+    j_num(cx, o, "max_steps", (double)s->max_steps);
+    j_num(cx, o, "theta_init_rad", s->theta_init_rad);
+    o = j_obj(cx, root, "criteria");
+    cx->where = "criteria";
+    j_str(cx, o, "kind", rb_report_criterion_str(k->kind));
+    j_num(cx, o, "usage_limit", k->usage_limit);
+    j_opt(cx, o, "max_shear_over_w", k->max_shear_over_w > 0, k->max_shear_over_w);
+    j_opt(cx, o, "max_theta_over_alpha", k->max_theta_over_alpha > 0,
+          k->max_theta_over_alpha);
+}
+
+static void add_motion_desc(jctx *cx, cJSON *parent, const rb_case_motion *cm,
+                            const rb_report_norms *n, const rb_result *res)
+{
+    const rb_motion *m = &cm->motion;
+    cJSON *o = j_obj(cx, parent, "motion"), *b;
+    j_str(cx, o, "kind", rb_report_motion_kind_str(m->kind));
+    j_str(cx, o, "source", cm->source);
+    j_num(cx, o, "peak_floor_mps2", res->peak_floor_mps2);
+    j_norm(cx, o, "peak_floor_g", n->peak_g);
+    j_norm(cx, o, "peak_floor_over_a_star", n->peak_over_a_star);
+    j_num(cx, o, "duration_s", m->duration_s);
+    j_num(cx, o, "polarity", m->polarity);
+    if (m->kind == RB_MOTION_SAMPLED) {
+        const rb_series *s = m->series;
+        j_num(cx, o, "scale", m->scale);
+        j_num(cx, o, "samples", s ? (double)s->n : 0);
+        j_opt(cx, o, "dt_s", s != NULL, s ? s->dt_s : 0);
+    } else {
+        j_num(cx, o, "amplitude_mps2", m->amplitude_mps2);
+    }
+    if (m->kind == RB_MOTION_HARMONIC) {
+        j_num(cx, o, "freq_hz", m->freq_hz);
+        j_num(cx, o, "ramp_s", m->ramp_s);
+    }
+    if (m->kind == RB_MOTION_PULSE) {
+        j_str(cx, o, "pulse_shape", rb_report_pulse_str(m->pulse));
+        j_num(cx, o, "pulse_s", m->pulse_s);
+    }
+    j_opt(cx, o, "target_peak_mps2", cm->target_peak_mps2 > 0, cm->target_peak_mps2);
+    if (cm->building_freq_hz > 0) {
+        b = j_obj(cx, o, "building");
+        j_num(cx, b, "freq_hz", cm->building_freq_hz);
+        j_num(cx, b, "damping", cm->building_damping);
+    } else {
+        j_null(cx, o, "building");
+    }
+}
+
+static void add_peaks(jctx *cx, cJSON *res_o, const rb_result *r,
+                      const rb_report_norms *n)
+{
+    cJSON *o = j_obj(cx, res_o, "constants");
+    j_num(cx, o, "a_star_mps2", r->a_star_mps2);
+    j_num(cx, o, "a_uplift_mps2", r->a_uplift_mps2);
+    j_num(cx, o, "peak_floor_mps2", r->peak_floor_mps2);
+    j_num(cx, o, "u_static_m", r->u_static_m);
+    j_num(cx, o, "alpha_rad", r->alpha_rad);
+    j_num(cx, o, "theta0_rad", r->theta0_rad);
+    j_num(cx, o, "fy_row_n", r->fy_row_n);
+    j_num(cx, o, "capacity_j", r->capacity_j);
+    j_num(cx, o, "weight_n", r->weight_n);
+    j_num(cx, o, "v0_n", n->v0_n);
+    j_num(cx, o, "delta", r->delta);
+    o = j_obj(cx, res_o, "peaks");
+    j_num(cx, o, "max_theta_rad", r->max_theta_rad);
+    j_num(cx, o, "max_theta_over_alpha", r->max_theta_over_alpha);
+    j_num(cx, o, "max_u_m", r->max_u_m);
+    j_num(cx, o, "max_u_over_ustatic", r->max_u_over_ustatic);
+    j_num(cx, o, "max_shear_elastic_n", r->max_shear_elastic_n);
+    j_norm(cx, o, "max_shear_elastic_over_w", n->shear_elastic_over_w);
+    j_norm(cx, o, "max_shear_elastic_over_v0", n->shear_elastic_over_v0);
+    j_num(cx, o, "max_shear_total_n", r->max_shear_total_n);
+    j_norm(cx, o, "max_shear_total_over_w", n->shear_total_over_w);
+    j_norm(cx, o, "max_shear_total_over_v0", n->shear_total_over_v0);
+    j_num(cx, o, "max_friction_demand", r->max_friction_demand);
+    j_pair(cx, o, "max_bolt_force_n", r->max_bolt_force_n);
+    j_pair_norm(cx, o, "max_bolt_force_over_fy", n->force_over_fy);
+}
+
+static void add_rows_outcome(jctx *cx, cJSON *res_o, const rb_result *r,
+                             const rb_report_norms *n)
+{
+    static const char *const stage_names[6] = { NULL, "fixed", "uplift",
+                                                "impact", "held", "yield" };
+    cJSON *o = j_obj(cx, res_o, "bolts"), *t;
+    int s;
+    j_pair(cx, o, "final_gap_m", r->final_gap_m);
+    j_pair_norm(cx, o, "final_gap_ratio", n->final_gap_ratio);
+    j_pair(cx, o, "absorbed_j", r->absorbed_j);
+    j_pair(cx, o, "usage", r->usage);
+    j_pair_bool(cx, o, "yielded", r->yielded);
+    j_pair_when(cx, o, "first_yield_s", r->yielded, r->first_yield_s);
+    j_pair_bool(cx, o, "broken", r->broken);
+    j_pair_when(cx, o, "break_s", r->broken, r->break_s);
+    o = j_obj(cx, res_o, "outcome");
+    j_bool(cx, o, "overturned", r->overturned);
+    if (r->overturned)
+        j_str(cx, o, "overturn_side", rb_report_side_str(r->overturn_side));
+    else
+        j_null(cx, o, "overturn_side");
+    j_opt(cx, o, "overturn_s", r->overturned, r->overturn_s);
+    j_num(cx, o, "t_end_s", r->t_end_s);
+    t = j_obj(cx, o, "stage_time_s");
+    for (s = 1; s <= 5; s++)
+        j_num(cx, t, stage_names[s], r->stage_time_s[s]);
+    j_num(cx, o, "floor_impacts", (double)r->floor_impacts);
+    j_num(cx, o, "bolt_impacts", (double)r->bolt_impacts);
+    j_num(cx, o, "uplifts", (double)r->uplifts);
+}
+
+static void add_energy_cost(jctx *cx, cJSON *res_o, const rb_result *r)
+{
+    cJSON *o = j_obj(cx, res_o, "energy_j");
+    j_num(cx, o, "input", r->e_input);
+    j_num(cx, o, "kinetic", r->e_kinetic);
+    j_num(cx, o, "potential", r->e_potential);
+    j_num(cx, o, "strain", r->e_strain);
+    j_num(cx, o, "damping", r->e_damping);
+    j_num(cx, o, "impact", r->e_impact);
+    j_num(cx, o, "plastic", r->e_plastic);
+    j_num(cx, o, "coupling", r->e_coupling);
+    o = j_obj(cx, res_o, "cost");
+    j_num(cx, o, "steps", (double)r->steps);
+    j_num(cx, o, "rejected_steps", (double)r->rejected_steps);
+    j_num(cx, o, "events", (double)r->events);
+    j_num(cx, o, "rhs_evals", (double)r->rhs_evals);
+    j_num(cx, o, "history_rows", r->history ? (double)r->history->n : 0);
+}
+
+static void add_motion(jctx *cx, cJSON *arr, const rb_report *r, size_t i)
+{
+    const rb_report_motion *m = &r->motions[i];
+    rb_report_norms n;
+    cJSON *o, *v;
+    if (cx->st != RB_OK)
+        return;
+    if (!(o = cJSON_CreateObject()) || !cJSON_AddItemToArray(arr, o)) {
+        cJSON_Delete(o);
+        cx->st = RB_ERR_NOMEM;
+        return;
+    }
+    snprintf(cx->where_buf, sizeof cx->where_buf, "motions[%zu]", i);
+    cx->where = cx->where_buf;
+    rb_report_norms_compute(r, m, &n);
+    j_num(cx, o, "index", (double)(i + 1));
+    j_str(cx, o, "name", m->motion->name);
+    add_motion_desc(cx, o, m->motion, &n, m->result);
+    v = j_obj(cx, o, "verdict");
+    j_bool(cx, v, "pass", m->pass);
+    j_str(cx, v, "reason", m->reason);
+    v = j_obj(cx, o, "result");
+    add_peaks(cx, v, m->result, &n);
+    add_rows_outcome(cx, v, m->result, &n);
+    add_energy_cost(cx, v, m->result);
+}
+
+static void add_head(jctx *cx, cJSON *root, const rb_report *r)
+{
+    cJSON *o;
+    size_t i, failed = 0;
+    cx->where = "report";
+    j_str(cx, root, "format", "rockbolt-report");
+    j_num(cx, root, "format_version", RB_REPORT_FORMAT_VERSION);
+    o = j_obj(cx, root, "tool");
+    j_str(cx, o, "name", "rockbolt");
+    j_str(cx, o, "version", RB_VERSION_STRING);
+    o = j_obj(cx, root, "case");
+    j_str(cx, o, "name", r->kase->name);
+    j_str(cx, o, "path", r->kase->path);
+    j_str(cx, o, "description", r->kase->description);
+    for (i = 0; i < r->n_motions; i++)
+        failed += !r->motions[i].pass;
+    o = j_obj(cx, root, "verdict");
+    j_bool(cx, o, "pass", r->pass);
+    j_str(cx, o, "result", r->pass ? "PASS" : "FAIL");
+    j_str(cx, o, "reason", r->reason);
+    j_num(cx, o, "motions", (double)r->n_motions);
+    j_num(cx, o, "motions_failed", (double)failed);
+}
+
+/* cJSON_Print's text plus the final newline a text file should end with,
+ * in memory the caller can free(). */
+static char *print_with_newline(cJSON *root)
+{
+    char *p = cJSON_Print(root), *q;
+    size_t n;
+    if (!p)
+        return NULL;
+    n = strlen(p);
+    if ((q = malloc(n + 2)) != NULL) {
+        memcpy(q, p, n);
+        q[n] = '\n';
+        q[n + 1] = '\0';
+    }
+    cJSON_free(p);
+    return q;
+}
+
+rb_status rb_report_json_render(const rb_report *r, char **out, rb_diag *diag)
+{
+    jctx cx = { RB_OK, "report", "", "" };
+    cJSON *root = cJSON_CreateObject(), *arr = NULL;
+    size_t i;
+    *out = NULL;
+    if (!root)
+        return RB_ERR_NOMEM;
+    add_head(&cx, root, r);
+    add_model(&cx, root, &r->kase->model);
+    add_derived(&cx, root, &r->derived);
+    add_settings(&cx, root, r->kase);
+    if (cx.st == RB_OK && !(arr = cJSON_AddArrayToObject(root, "motions")))
+        cx.st = RB_ERR_NOMEM;
+    for (i = 0; i < r->n_motions && cx.st == RB_OK; i++)
+        add_motion(&cx, arr, r, i);
+    if (cx.st == RB_OK && !(*out = print_with_newline(root)))
+        cx.st = RB_ERR_NOMEM;
+    cJSON_Delete(root);
+    if (cx.st == RB_ERR_NONFINITE && diag) {
+        snprintf(diag->key, sizeof diag->key, "%s", cx.bad_key);
+        snprintf(diag->msg, sizeof diag->msg,
+                 "non-finite number in the report (a bug: please report it)");
+    }
+    return cx.st;
+}
