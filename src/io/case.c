@@ -1,0 +1,219 @@
+/* rb_case_load: the entry point of the case loader, and its diagnostics.
+ *
+ * Runs the stages of case_internal.h in order and keeps going after
+ * semantic errors so that one run reports every problem in a case; only a
+ * syntax or limit error (after which the tree is incomplete) stops it. On
+ * any error the half-built case is freed, so the caller either gets a
+ * complete, validated case or a list of diagnostics, never both. */
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "case_internal.h"
+
+void rb_diag_list_free(rb_diag_list *l)
+{
+    if (!l)
+        return;
+    free(l->items);
+    l->items = NULL;
+    l->n = l->cap = 0;
+}
+
+static rb_diag *rb_cctx_push(rb_cctx *c)
+{
+    rb_diag_list *l = c->diags;
+    if (l->n == l->cap) {
+        size_t cap = l->cap ? 2 * l->cap : 8;
+        rb_diag *p = realloc(l->items, cap * sizeof *p);
+        if (!p) {
+            c->nomem = 1;
+            return NULL;
+        }
+        l->items = p;
+        l->cap = cap;
+    }
+    rb_diag *d = &l->items[l->n++];
+    memset(d, 0, sizeof *d);
+    return d;
+}
+
+/* RB_ERR_NOMEM outranks everything; otherwise the first error's status
+ * stays, except that a plain PARSE is upgraded to the more specific IO or
+ * LIMIT. */
+static void rb_cctx_status(rb_cctx *c, rb_status st)
+{
+    if (c->status == RB_OK || st == RB_ERR_NOMEM
+        || (c->status == RB_ERR_PARSE && (st == RB_ERR_IO || st == RB_ERR_LIMIT)))
+        c->status = st;
+}
+
+static void rb_cctx_vadd(rb_cctx *c, rb_status st, const char *file, int line,
+                         int col, const char *key, const char *fmt, va_list ap)
+{
+    c->n_errors++;
+    rb_cctx_status(c, st);
+    rb_diag *d = rb_cctx_push(c);
+    if (!d)
+        return;
+    snprintf(d->file, sizeof d->file, "%s", file ? file : "");
+    d->line = line;
+    d->col = col;
+    snprintf(d->key, sizeof d->key, "%s", key ? key : "");
+    vsnprintf(d->msg, sizeof d->msg, fmt, ap);
+}
+
+void rb_cctx_error_at(rb_cctx *c, rb_status st, const char *file, int line,
+                      int col, const char *key, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    rb_cctx_vadd(c, st, file, line, col, key, fmt, ap);
+    va_end(ap);
+}
+
+void rb_cctx_error(rb_cctx *c, const rb_ynode *n, const char *key,
+                   const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    rb_cctx_vadd(c, RB_ERR_INVALID, n ? n->file : NULL, n ? n->line : 0,
+                 n ? n->col : 0, key, fmt, ap);
+    va_end(ap);
+}
+
+const char *rb_cctx_file(rb_cctx *c, const char *name)
+{
+    for (size_t i = 0; i < c->n_files; i++)
+        if (strcmp(c->files[i], name) == 0)
+            return c->files[i];
+    if (c->n_files == RB_CASE_MAX_FILES)
+        return NULL;
+    size_t len = strlen(name) + 1;
+    char *copy = malloc(len);
+    if (!copy) {
+        c->nomem = 1;
+        return NULL;
+    }
+    memcpy(copy, name, len);
+    c->files[c->n_files++] = copy;
+    return copy;
+}
+
+void rb_case_keypath(char *dst, const char *path, const char *key)
+{
+    if (path && path[0])
+        snprintf(dst, RB_CASE_KEY_MAX, "%s.%s", path, key);
+    else
+        snprintf(dst, RB_CASE_KEY_MAX, "%s", key);
+}
+
+void rb_cmotion_free(rb_cmotion *m)
+{
+    if (m)
+        free(m->name);
+}
+
+void rb_case_free(rb_case *c)
+{
+    if (!c)
+        return;
+    free(c->path);
+    free(c->name);
+    free(c->description);
+    for (size_t i = 0; c->motions && i < c->n_motions; i++) {
+        free(c->motions[i].name);
+        free(c->motions[i].source);
+        rb_series_free(&c->motions[i].series);
+    }
+    free(c->motions);
+    memset(c, 0, sizeof *c);
+}
+
+static void rb_cctx_free(rb_cctx *c)
+{
+    for (size_t i = 0; i < c->n_motions; i++)
+        rb_cmotion_free(&c->motions[i]);
+    free(c->motions);
+    for (size_t i = 0; i < c->n_files; i++)
+        free(c->files[i]);
+}
+
+/* Defaults of everything a case may leave out. */
+static int rb_case_defaults(rb_case *cs, const char *path)
+{
+    memset(cs, 0, sizeof *cs);
+    rb_model_init(&cs->model);
+    rb_solve_opts_init(&cs->solve);
+    rb_criteria_init(&cs->criteria);
+    cs->design.scan_start = 0.05;
+    cs->design.scan_step = 0.05;
+    cs->design.scan_end = 1.5;
+    cs->design.resolution = 0.001;
+    cs->design.gap_ratio_min = 0.0;
+    cs->design.gap_ratio_max = 0.06;
+    cs->design.gap_ratio_step = 0.0025;
+    size_t len = strlen(path) + 1;
+    cs->path = malloc(len);
+    if (!cs->path)
+        return 0;
+    memcpy(cs->path, path, len);
+    return 1;
+}
+
+static size_t rb_cctx_file_rank(const rb_cctx *c, const char *file)
+{
+    for (size_t i = 0; i < c->n_files; i++)
+        if (strcmp(c->files[i], file) == 0)
+            return i;
+    return c->n_files;
+}
+
+/* Put this load's diagnostics (from index first on) in reading order: the
+ * case file before its bases, then by line and column. Insertion sort keeps
+ * equal positions in the order they were found; lists are short. */
+static void rb_cctx_sort(const rb_cctx *c, size_t first)
+{
+    rb_diag *d = c->diags->items;
+    for (size_t i = first + 1; i < c->diags->n; i++) {
+        rb_diag tmp = d[i];
+        size_t r = rb_cctx_file_rank(c, tmp.file), j = i;
+        while (j > first) {
+            const rb_diag *p = &d[j - 1];
+            size_t rp = rb_cctx_file_rank(c, p->file);
+            if (rp < r || (rp == r && (p->line < tmp.line
+                || (p->line == tmp.line && p->col <= tmp.col))))
+                break;
+            d[j] = d[j - 1];
+            j--;
+        }
+        d[j] = tmp;
+    }
+}
+
+rb_status rb_case_load(const char *path, rb_case *out, rb_diag_list *diags)
+{
+    rb_cctx c;
+    rb_ynode *root = NULL;
+    memset(&c, 0, sizeof c);
+    c.diags = diags;
+    size_t first = diags->n;
+    if (!rb_case_defaults(out, path)) {
+        rb_case_free(out);
+        return RB_ERR_NOMEM;
+    }
+    if (rb_case_read_merged(&c, path, &root) == RB_OK && !c.fatal) {
+        rb_case_read_schema(&c, root, out);
+        if (!c.nomem)
+            rb_case_resolve(&c, out, root);
+    }
+    rb_ynode_free(root);
+    rb_cctx_sort(&c, first);
+    rb_status st = c.nomem ? RB_ERR_NOMEM : c.status;
+    if (st == RB_OK && c.n_errors > 0)
+        st = RB_ERR_INVALID;
+    rb_cctx_free(&c);
+    if (st != RB_OK)
+        rb_case_free(out);
+    return st;
+}

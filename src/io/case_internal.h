@@ -1,0 +1,172 @@
+/* Private interface between the case_*.c files of the case loader.
+ *
+ * Loading a case goes: case_yaml.c reads each file into a small tree of
+ * nodes that keep their file and 1-based line/column (libyaml marks), with
+ * hostile-input limits; case_extends.c follows `extends:` and deep-merges
+ * the base trees; case_schema.c and case_motion.c walk the merged tree and
+ * fill the rb_case, reporting every problem against the node it came from;
+ * case_validate.c runs the physics checks of rb_model_derive, resolves A*
+ * and reads, filters and scales the records. case.c ties them together and
+ * owns the diagnostics. Nodes are owned by their parent; the loader owns the
+ * root and the list of file names the nodes point into. */
+#ifndef RB_CASE_INTERNAL_H
+#define RB_CASE_INTERNAL_H
+
+#include <stddef.h>
+#include "rockbolt/case.h"
+#include "rockbolt/record.h"
+#include "rockbolt/units.h"
+
+#define RB_CASE_MAX_FILE_BYTES (4u * 1024u * 1024u) /* 4 MiB per file */
+#define RB_CASE_MAX_DEPTH 32         /* nesting of mappings and sequences */
+#define RB_CASE_MAX_SCALAR 4096      /* bytes in one scalar */
+#define RB_CASE_MAX_EXTENDS 8        /* files in one extends chain */
+#define RB_CASE_MAX_FILES 64         /* files read for one case */
+#define RB_CASE_MAX_MOTIONS 1000
+#define RB_CASE_KEY_MAX 128          /* sizeof rb_diag.key */
+
+typedef enum { RB_YNODE_SCALAR, RB_YNODE_MAP, RB_YNODE_SEQ } rb_ynode_kind;
+
+typedef struct rb_ynode rb_ynode;
+
+typedef struct {
+    char *key;          /* owned */
+    int line, col;      /* of the key, 1-based */
+    rb_ynode *value;    /* owned */
+    int used;           /* set once the schema has read the entry */
+} rb_yentry;
+
+struct rb_ynode {
+    rb_ynode_kind kind;
+    const char *file;   /* borrowed from rb_cctx.files */
+    int line, col;      /* start mark, 1-based */
+    char *text;         /* scalar: owned, NUL-terminated */
+    int plain;          /* scalar: 1 when unquoted */
+    rb_yentry *entries; /* map: owned array */
+    rb_ynode **items;   /* seq: owned array of owned nodes */
+    size_t n, cap;      /* entries or items */
+};
+
+/* A model field as rb_model_derive names it, and where the case gave it. */
+typedef struct {
+    const char *field;        /* rb_model_derive's diag->key */
+    char key[RB_CASE_KEY_MAX];/* dotted YAML key */
+    const rb_ynode *node;     /* value node, borrowed */
+} rb_cfield;
+
+#define RB_CASE_MAX_FIELDS 24
+
+/* A motion as read from the case, before A* and records are resolved. */
+typedef struct {
+    char key[RB_CASE_KEY_MAX];  /* "motion" or "motions[2]" */
+    const rb_ynode *map;        /* the motion's mapping */
+    rb_motion motion;           /* closed-form fields already in SI */
+    char *name;                 /* owned, may be NULL */
+    rb_quantity amplitude;      /* harmonic, pulse */
+    const rb_ynode *amplitude_node;
+    int has_duration;           /* run time given */
+    const rb_ynode *file_node;  /* record */
+    rb_record_opts ropts;
+    double building_freq_hz, building_damping; /* 0: no building */
+    rb_quantity peak;
+    const rb_ynode *peak_node;  /* NULL: no scaling */
+    double window[2];
+    int has_window;
+    int ok;                     /* 0 when the motion had errors */
+} rb_cmotion;
+
+/* Loader state for one rb_case_load call. */
+typedef struct {
+    rb_diag_list *diags;
+    size_t n_errors;
+    int nomem;                  /* an allocation failed somewhere */
+    int fatal;                  /* syntax or limit error: stop walking */
+    rb_status status;           /* worst status so far */
+    char *files[RB_CASE_MAX_FILES]; /* owned: every file name nodes use */
+    size_t n_files;
+    rb_cfield fields[RB_CASE_MAX_FIELDS];
+    size_t n_fields;
+    rb_cmotion *motions;        /* owned array */
+    size_t n_motions;
+    int gap_is_ratio;           /* the gap was given as gap_ratio */
+    double gap_ratio;
+    int model_errors;           /* errors in equipment/anchorage/gap */
+} rb_cctx;
+
+/* --- case.c: diagnostics ------------------------------------------------ */
+/* Append an error at file:line:col under key (may be ""). */
+void rb_cctx_error_at(rb_cctx *c, rb_status st, const char *file, int line,
+                      int col, const char *key, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 7, 8)))
+#endif
+    ;
+/* Append an error at node n (whose file and mark are used). */
+void rb_cctx_error(rb_cctx *c, const rb_ynode *n, const char *key,
+                   const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 4, 5)))
+#endif
+    ;
+/* Keep a copy of a file name for nodes to point at; NULL on NOMEM. */
+const char *rb_cctx_file(rb_cctx *c, const char *name);
+/* dst = path.key (or key when path is empty), truncated to fit. */
+void rb_case_keypath(char *dst, const char *path, const char *key);
+
+/* --- case_yaml.c: files to trees ---------------------------------------- */
+/* Read one YAML file into a tree whose root is a mapping. file is the
+ * name used in diagnostics. On failure appends diags and returns non-OK;
+ * *root is NULL. where (may be NULL) is the node that named the file, used
+ * when the file cannot be opened. */
+rb_status rb_yaml_read_tree(rb_cctx *c, const char *file, const rb_ynode *where,
+                            const char *where_key, rb_ynode **root);
+void rb_ynode_free(rb_ynode *n);
+/* The entry for key in map, or NULL. */
+rb_yentry *rb_ymap_find(const rb_ynode *map, const char *key);
+/* "a mapping", "a sequence", "a number or text", "nothing" (null). */
+const char *rb_ynode_kind_str(const rb_ynode *n);
+/* 1 if n is a plain null scalar ("", "~", "null"). */
+int rb_ynode_is_null(const rb_ynode *n);
+
+/* --- case_extends.c ----------------------------------------------------- */
+/* Read file and everything it extends, merged; *root is the merged tree. */
+rb_status rb_case_read_merged(rb_cctx *c, const char *file, rb_ynode **root);
+
+/* --- case_value.c: typed values ----------------------------------------- */
+/* Look up key in map and mark it used. Missing and required: error at the
+ * map naming path.key and what was expected. Returns the value or NULL. */
+rb_ynode *rb_cv_get(rb_cctx *c, rb_ynode *map, const char *path,
+                    const char *key, int required, const char *expected);
+/* Convert a scalar node. Each returns 1 on success, 0 after an error. */
+int rb_cv_quantity(rb_cctx *c, const rb_ynode *v, const char *key, rb_dim dim,
+                   rb_quantity *out);
+int rb_cv_bool(rb_cctx *c, const rb_ynode *v, const char *key, int *out);
+int rb_cv_int(rb_cctx *c, const rb_ynode *v, const char *key, long lo,
+              long hi, long *out);
+int rb_cv_enum(rb_cctx *c, const rb_ynode *v, const char *key,
+               const char *const names[], int *out);
+int rb_cv_string(rb_cctx *c, const rb_ynode *v, const char *key, char **out);
+/* A mapping value (error if it is not one). */
+int rb_cv_map(rb_cctx *c, const rb_ynode *v, const char *key);
+/* Quantity by key: get + convert + range check (lo < x, or lo <= x when
+ * lo_incl; x < hi or x <= hi when hi_incl; NAN bounds are open). Returns
+ * the node on success, NULL if missing or bad. */
+const rb_ynode *rb_cv_number(rb_cctx *c, rb_ynode *map, const char *path,
+                             const char *key, int required, rb_dim dim,
+                             double lo, int lo_incl, double hi, int hi_incl,
+                             double *out);
+/* Report every entry of map not marked used, suggesting the nearest of
+ * valid (NULL-terminated) when it is close. */
+void rb_cv_unknown_keys(rb_cctx *c, const rb_ynode *map, const char *path,
+                        const char *const valid[]);
+/* Remember where a model field came from, for rb_model_derive's diags. */
+void rb_cv_note_field(rb_cctx *c, const char *field, const char *key,
+                      const rb_ynode *node);
+
+/* --- case_schema.c / case_motion.c / case_validate.c --------------------- */
+void rb_case_read_schema(rb_cctx *c, rb_ynode *root, rb_case *cs);
+void rb_case_read_motions(rb_cctx *c, rb_ynode *root);
+void rb_case_resolve(rb_cctx *c, rb_case *cs, const rb_ynode *root);
+void rb_cmotion_free(rb_cmotion *m);
+
+#endif

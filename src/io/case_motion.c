@@ -1,0 +1,284 @@
+/* The floor motions of a case: `motion:` (one) or `motions:` (a list).
+ *
+ * Each motion is a mapping with a `type:` (harmonic, pulse or record) that
+ * decides which other keys it takes. Closed-form values go straight into an
+ * rb_motion in SI; what needs the model (amplitudes in A*) or the disk
+ * (record files) is kept in an rb_cmotion with the node it came from, and
+ * finished by case_validate.c. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "case_internal.h"
+
+static const char *const rb_harmonic_keys[] = {
+    "type", "name", "polarity", "amplitude", "frequency", "duration", "ramp", NULL};
+static const char *const rb_pulse_keys[] = {
+    "type", "name", "polarity", "shape", "amplitude", "duration", "run_time", NULL};
+static const char *const rb_record_keys[] = {
+    "type", "name", "polarity", "file", "format", "units", "dt", "building",
+    "peak", "window", "run_time", NULL};
+
+/* A floor acceleration > 0, possibly in A*; returns the node or NULL. */
+static const rb_ynode *rb_cmotion_accel(rb_cctx *c, rb_ynode *map,
+                                        const char *path, const char *key,
+                                        int required, rb_quantity *q)
+{
+    char k[RB_CASE_KEY_MAX];
+    rb_ynode *v = rb_cv_get(c, map, path, key, required,
+                            "a floor acceleration such as '0.4 A*' or '0.3 g'");
+    if (!v)
+        return NULL;
+    rb_case_keypath(k, path, key);
+    if (!rb_cv_quantity(c, v, k, RB_DIM_ACCEL, q))
+        return NULL;
+    if (!(q->value > 0)) {
+        rb_cctx_error(c, v, k, "must be > 0 (got '%s')", v->text);
+        return NULL;
+    }
+    return v;
+}
+
+static int rb_read_harmonic(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
+{
+    const char *p = cm->key;
+    rb_motion *m = &cm->motion;
+    int ok = 1;
+    m->kind = RB_MOTION_HARMONIC;
+    cm->amplitude_node = rb_cmotion_accel(c, map, p, "amplitude", 1, &cm->amplitude);
+    ok &= cm->amplitude_node != NULL;
+    ok &= rb_cv_number(c, map, p, "frequency", 1, RB_DIM_FREQUENCY, 0, 0, NAN, 0,
+                       &m->freq_hz) != NULL;
+    ok &= rb_cv_number(c, map, p, "duration", 1, RB_DIM_TIME, 0, 0, NAN, 0,
+                       &m->duration_s) != NULL;
+    if (rb_ymap_find(map, "ramp"))
+        ok &= rb_cv_number(c, map, p, "ramp", 0, RB_DIM_TIME, 0, 1, NAN, 0,
+                           &m->ramp_s) != NULL;
+    rb_cv_unknown_keys(c, map, p, rb_harmonic_keys);
+    return ok;
+}
+
+static int rb_read_pulse(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
+{
+    static const char *const shapes[] = {"rectangular", "triangular-decreasing",
+                                         "triangular-increasing", "half-sine", NULL};
+    static const rb_pulse_shape kinds[] = {RB_PULSE_RECT, RB_PULSE_TRI_DEC,
+                                           RB_PULSE_TRI_INC, RB_PULSE_HALF_SINE};
+    const char *p = cm->key;
+    char k[RB_CASE_KEY_MAX];
+    rb_motion *m = &cm->motion;
+    int ok = 1, i;
+    m->kind = RB_MOTION_PULSE;
+    rb_ynode *v = rb_cv_get(c, map, p, "shape", 1, "one of rectangular, "
+                            "triangular-decreasing, triangular-increasing, half-sine");
+    rb_case_keypath(k, p, "shape");
+    if (v && rb_cv_enum(c, v, k, shapes, &i))
+        m->pulse = kinds[i];
+    else
+        ok = 0;
+    cm->amplitude_node = rb_cmotion_accel(c, map, p, "amplitude", 1, &cm->amplitude);
+    ok &= cm->amplitude_node != NULL;
+    ok &= rb_cv_number(c, map, p, "duration", 1, RB_DIM_TIME, 0, 0, NAN, 0,
+                       &m->pulse_s) != NULL;
+    ok &= rb_cv_number(c, map, p, "run_time", 1, RB_DIM_TIME, 0, 0, NAN, 0,
+                       &m->duration_s) != NULL;
+    rb_cv_unknown_keys(c, map, p, rb_pulse_keys);
+    return ok;
+}
+
+/* window: [start, end] in seconds of the record, start >= 0, end > start. */
+static int rb_read_window(rb_cctx *c, const rb_ynode *v, rb_cmotion *cm)
+{
+    char k[RB_CASE_KEY_MAX];
+    rb_quantity q[2];
+    rb_case_keypath(k, cm->key, "window");
+    if (v->kind != RB_YNODE_SEQ || v->n != 2) {
+        rb_cctx_error(c, v, k, "expected [start, end], e.g. '[0 s, 10 s]', "
+                      "found %s", v->kind == RB_YNODE_SEQ
+                      ? "a sequence of another length" : rb_ynode_kind_str(v));
+        return 0;
+    }
+    if (!rb_cv_quantity(c, v->items[0], k, RB_DIM_TIME, &q[0])
+        || !rb_cv_quantity(c, v->items[1], k, RB_DIM_TIME, &q[1]))
+        return 0;
+    if (q[0].value < 0 || q[1].value <= q[0].value) {
+        rb_cctx_error(c, v, k, "needs 0 <= start < end (got [%s, %s])",
+                      v->items[0]->text, v->items[1]->text);
+        return 0;
+    }
+    cm->window[0] = q[0].value;
+    cm->window[1] = q[1].value;
+    cm->has_window = 1;
+    return 1;
+}
+
+static int rb_read_building(rb_cctx *c, rb_ynode *v, rb_cmotion *cm)
+{
+    static const char *const keys[] = {"frequency", "damping", NULL};
+    char k[RB_CASE_KEY_MAX];
+    rb_case_keypath(k, cm->key, "building");
+    if (!rb_cv_map(c, v, k))
+        return 0;
+    int ok = rb_cv_number(c, v, k, "frequency", 1, RB_DIM_FREQUENCY, 0, 0, NAN,
+                          0, &cm->building_freq_hz) != NULL;
+    ok &= rb_cv_number(c, v, k, "damping", 1, RB_DIM_RATIO, 0, 1, 1, 0,
+                       &cm->building_damping) != NULL;
+    rb_cv_unknown_keys(c, v, k, keys);
+    return ok;
+}
+
+/* units: the acceleration unit of the record's numbers ("g", "cm/s^2"). */
+static int rb_read_record_units(rb_cctx *c, const rb_ynode *v, rb_cmotion *cm)
+{
+    char k[RB_CASE_KEY_MAX], text[64], msg[300];
+    rb_quantity q;
+    rb_case_keypath(k, cm->key, "units");
+    if (v->kind != RB_YNODE_SCALAR || rb_ynode_is_null(v)) {
+        rb_cctx_error(c, v, k, "expected an acceleration unit such as 'g' or "
+                      "'cm/s^2', found %s", rb_ynode_kind_str(v));
+        return 0;
+    }
+    snprintf(text, sizeof text, "1 %.50s", v->text);
+    if (rb_unit_parse(text, RB_DIM_ACCEL, &q, msg, sizeof msg) != RB_OK
+        || q.relative_a_star) {
+        rb_cctx_error(c, v, k, "%s", q.relative_a_star
+                      ? "a record's units must be absolute (g, m/s^2, cm/s^2, "
+                        "gal, in/s^2, ft/s^2), not A*" : msg);
+        return 0;
+    }
+    cm->ropts.units_to_mps2 = q.value;
+    return 1;
+}
+
+static int rb_read_record(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
+{
+    static const char *const formats[] = {"auto", "at2", "cosmos", "two-column",
+                                          "one-column", NULL};
+    static const rb_record_format fk[] = {RB_REC_AUTO, RB_REC_AT2,
+        RB_REC_COSMOS_V2, RB_REC_TWO_COLUMN, RB_REC_ONE_COLUMN};
+    const char *p = cm->key;
+    char k[RB_CASE_KEY_MAX];
+    int ok = 1, i;
+    rb_motion *m = &cm->motion;
+    m->kind = RB_MOTION_SAMPLED;
+    rb_record_opts_init(&cm->ropts);
+    rb_ynode *v = rb_cv_get(c, map, p, "file", 1, "the record file, relative "
+                            "to this case file");
+    rb_case_keypath(k, p, "file");
+    char *dummy = NULL;
+    if (v && rb_cv_string(c, v, k, &dummy) && dummy[0])
+        cm->file_node = v;
+    else if (v && dummy)
+        rb_cctx_error(c, v, k, "expected a file name, found an empty text");
+    ok &= cm->file_node != NULL;
+    free(dummy);
+    rb_case_keypath(k, p, "format");
+    if ((v = rb_cv_get(c, map, p, "format", 0, ""))) {
+        if (rb_cv_enum(c, v, k, formats, &i))
+            cm->ropts.format = fk[i];
+        else
+            ok = 0;
+    }
+    if ((v = rb_cv_get(c, map, p, "units", 0, "")))
+        ok &= rb_read_record_units(c, v, cm);
+    if (rb_ymap_find(map, "dt"))
+        ok &= rb_cv_number(c, map, p, "dt", 0, RB_DIM_TIME, 0, 0, NAN, 0,
+                           &cm->ropts.dt_s) != NULL;
+    if ((v = rb_cv_get(c, map, p, "building", 0, "")))
+        ok &= rb_read_building(c, v, cm);
+    if (rb_ymap_find(map, "peak")) {
+        cm->peak_node = rb_cmotion_accel(c, map, p, "peak", 0, &cm->peak);
+        ok &= cm->peak_node != NULL;
+    }
+    if ((v = rb_cv_get(c, map, p, "window", 0, "")))
+        ok &= rb_read_window(c, v, cm);
+    if (rb_ymap_find(map, "run_time")) {
+        cm->has_duration = 1;
+        ok &= rb_cv_number(c, map, p, "run_time", 0, RB_DIM_TIME, 0, 0, NAN, 0,
+                           &m->duration_s) != NULL;
+    }
+    rb_cv_unknown_keys(c, map, p, rb_record_keys);
+    return ok;
+}
+
+static void rb_read_motion(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
+{
+    static const char *const types[] = {"harmonic", "pulse", "record", NULL};
+    char k[RB_CASE_KEY_MAX];
+    int t;
+    long pol;
+    rb_motion_init(&cm->motion);
+    cm->map = map;
+    if (!rb_cv_map(c, map, cm->key))
+        return;
+    rb_ynode *v = rb_cv_get(c, map, cm->key, "name", 0, "");
+    rb_case_keypath(k, cm->key, "name");
+    if (v)
+        rb_cv_string(c, v, k, &cm->name);
+    v = rb_cv_get(c, map, cm->key, "polarity", 0, "");
+    rb_case_keypath(k, cm->key, "polarity");
+    if (v && rb_cv_int(c, v, k, -1, 1, &pol)) {
+        if (pol == 0)
+            rb_cctx_error(c, v, k, "expected +1 or -1, found '%s'", v->text);
+        cm->motion.polarity = pol < 0 ? -1 : 1;
+    }
+    v = rb_cv_get(c, map, cm->key, "type", 1, "harmonic, pulse or record");
+    rb_case_keypath(k, cm->key, "type");
+    if (!v || !rb_cv_enum(c, v, k, types, &t)) {
+        for (size_t i = 0; i < map->n; i++)
+            map->entries[i].used = 1;   /* no type: its keys cannot be judged */
+        return;
+    }
+    if (t == 0)
+        cm->ok = rb_read_harmonic(c, map, cm);
+    else if (t == 1)
+        cm->ok = rb_read_pulse(c, map, cm);
+    else
+        cm->ok = rb_read_record(c, map, cm);
+}
+
+void rb_case_read_motions(rb_cctx *c, rb_ynode *root)
+{
+    int which = 0;
+    rb_yentry *e1 = rb_ymap_find(root, "motion"), *e2 = rb_ymap_find(root, "motions");
+    if (e1 && e2) {
+        const rb_yentry *later = e1->line > e2->line ? e1 : e2;
+        rb_cctx_error(c, later->value, later->key,
+                      "give either 'motion' or 'motions', not both");
+        e1->used = e2->used = 1;
+        return;
+    }
+    if (!e1 && !e2) {
+        rb_cctx_error(c, root, "motion", "missing required key 'motion' or "
+                      "'motions' (the floor motion: type harmonic, pulse or record)");
+        return;
+    }
+    which = e2 != NULL;
+    rb_ynode *v = which ? e2->value : e1->value;
+    (which ? e2 : e1)->used = 1;
+    size_t n = 1;
+    if (which) {
+        if (v->kind != RB_YNODE_SEQ || v->n == 0 || v->n > RB_CASE_MAX_MOTIONS) {
+            rb_cctx_error(c, v, "motions", "expected a list of 1 to %d motions, "
+                          "found %s", RB_CASE_MAX_MOTIONS, v->kind == RB_YNODE_SEQ
+                          ? (v->n ? "too many" : "an empty list")
+                          : rb_ynode_kind_str(v));
+            return;
+        }
+        n = v->n;
+    }
+    c->motions = calloc(n, sizeof *c->motions);
+    if (!c->motions) {
+        c->nomem = 1;
+        return;
+    }
+    c->n_motions = n;
+    for (size_t i = 0; i < n; i++) {
+        rb_cmotion *cm = &c->motions[i];
+        if (which)
+            snprintf(cm->key, sizeof cm->key, "motions[%zu]", i + 1);
+        else
+            snprintf(cm->key, sizeof cm->key, "motion");
+        rb_read_motion(c, which ? v->items[i] : v, cm);
+    }
+}

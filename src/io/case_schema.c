@@ -1,0 +1,356 @@
+/* The keys of a case file (docs/case-format.md) and their SI values.
+ *
+ * Reads the merged tree section by section into the rb_case: equipment,
+ * anchorage, gap, criteria, analysis, design, name and description; the
+ * motions are read by case_motion.c. Each section checks what it can from
+ * its own values (types, units, ranges, alternatives such as height vs
+ * cm_height) and notes where each model field came from, so that the
+ * cross-field checks of rb_model_derive can later be reported against the
+ * right line. Unknown keys are reported per section with a hint. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "case_internal.h"
+
+#define RB_PI 3.14159265358979323846
+
+static const char *const rb_top_keys[] = {
+    "name", "description", "extends", "equipment", "anchorage", "gap",
+    "gap_ratio", "motion", "motions", "criteria", "analysis", "design", NULL};
+static const char *const rb_equipment_keys[] = {
+    "mass", "height", "cm_height", "base_width", "frequency", "damping",
+    "restitution", "inertia", "rigid", NULL};
+static const char *const rb_anchorage_keys[] = {
+    "model", "bolts_per_row", "diameter", "area", "yield_stress", "toughness",
+    "deformable_length", "lever_arm", "edge_distance", "elastic_modulus", NULL};
+static const char *const rb_criteria_keys[] = {
+    "kind", "usage_limit", "max_shear_over_w", "max_rotation_over_alpha", NULL};
+static const char *const rb_analysis_keys[] = {
+    "formulation", "tolerance", "output_interval", "history",
+    "stretch_past_failure", NULL};
+static const char *const rb_design_keys[] = {
+    "scan_start", "scan_step", "scan_end", "resolution", "gap_ratio_min",
+    "gap_ratio_max", "gap_ratio_step", NULL};
+
+/* Which of two alternative keys the map gives: 0 for a, 1 for b, -1 when
+ * neither (an error if required) or both (always an error). */
+static int rb_one_of(rb_cctx *c, rb_ynode *map, const char *path, const char *a,
+                     const char *b, int required, const char *expected)
+{
+    rb_yentry *ea = rb_ymap_find(map, a), *eb = rb_ymap_find(map, b);
+    char k[RB_CASE_KEY_MAX];
+    if (ea && eb) {
+        const rb_yentry *later = ea->line > eb->line ? ea : eb;
+        rb_case_keypath(k, path, later->key);
+        rb_cctx_error(c, later->value, k, "give either '%s' or '%s', not both",
+                      a, b);
+        ea->used = eb->used = 1;
+        return -1;
+    }
+    if (!ea && !eb) {
+        if (required) {
+            rb_case_keypath(k, path, a);
+            rb_cctx_error(c, map, k, "missing required key '%s' or '%s' (%s)",
+                          a, b, expected);
+        }
+        return -1;
+    }
+    return ea ? 0 : 1;
+}
+
+/* A section that must be a mapping; NULL if absent or not a mapping. */
+static rb_ynode *rb_section(rb_cctx *c, rb_ynode *root, const char *name,
+                            int required, const char *expected)
+{
+    rb_ynode *v = rb_cv_get(c, root, "", name, required, expected);
+    if (v && !rb_cv_map(c, v, name))
+        return NULL;
+    return v;
+}
+
+/* A quantity that is also a model field (see rb_cv_note_field). */
+static const rb_ynode *rb_field(rb_cctx *c, rb_ynode *map, const char *path,
+                                const char *key, const char *field, int required,
+                                rb_dim dim, double lo, int lo_incl, double hi,
+                                int hi_incl, double *out)
+{
+    char k[RB_CASE_KEY_MAX];
+    const rb_ynode *v = rb_cv_number(c, map, path, key, required, dim, lo,
+                                     lo_incl, hi, hi_incl, out);
+    rb_case_keypath(k, path, key);
+    if (v)
+        rb_cv_note_field(c, field, k, v);
+    else if (rb_ymap_find(map, key) || required)
+        c->model_errors++;
+    return v;
+}
+
+static void rb_read_equipment(rb_cctx *c, rb_ynode *eq, rb_model *m)
+{
+    const char *p = "equipment";
+    double x;
+    rb_field(c, eq, p, "mass", "mass", 1, RB_DIM_MASS, 0, 0, NAN, 0, &m->mass_kg);
+    int which = rb_one_of(c, eq, p, "height", "cm_height", 1,
+                          "the total height, or the height of the centre of mass");
+    if (which < 0)
+        c->model_errors++;
+    else if (rb_field(c, eq, p, which ? "cm_height" : "height", "cm_height", 1,
+                      RB_DIM_LENGTH, 0, 0, NAN, 0, &x))
+        m->cm_height_m = which ? x : x / 2;
+    if (rb_field(c, eq, p, "base_width", "half_width", 1, RB_DIM_LENGTH, 0, 0,
+                 NAN, 0, &x))
+        m->half_width_m = x / 2;
+    rb_ynode *v = rb_cv_get(c, eq, p, "rigid", 0, "");
+    if (v && !rb_cv_bool(c, v, "equipment.rigid", &m->rigid))
+        c->model_errors++;
+    rb_field(c, eq, p, "frequency", "frequency", !m->rigid, RB_DIM_FREQUENCY,
+             0, 0, NAN, 0, &m->freq_hz);
+    rb_field(c, eq, p, "damping", "damping", !m->rigid, RB_DIM_RATIO, 0, 1, 1,
+             0, &m->damping);
+    v = rb_cv_get(c, eq, p, "restitution", 0, "");
+    if (v && v->kind == RB_YNODE_SCALAR && strcmp(v->text, "housner") == 0)
+        m->restitution = -1.0;
+    else if (v)
+        rb_field(c, eq, p, "restitution", "restitution", 0, RB_DIM_RATIO, 0, 0,
+                 1, 1, &m->restitution);
+    rb_field(c, eq, p, "inertia", "inertia", 0, RB_DIM_INERTIA, 0, 0, NAN, 0,
+             &m->inertia_kgm2);
+    rb_cv_unknown_keys(c, eq, p, rb_equipment_keys);
+}
+
+/* The lever arm, given directly or as the bolt's distance from the plate
+ * edge (l = 2b - e), checked against the plate. */
+static void rb_read_lever_arm(rb_cctx *c, rb_ynode *an, rb_model *m)
+{
+    const char *p = "anchorage";
+    int which = rb_one_of(c, an, p, "lever_arm", "edge_distance", 1,
+                          "the bolt's distance from the far edge, or from its own edge");
+    double x, width = 2 * m->half_width_m;
+    if (which < 0) {
+        c->model_errors++;
+        return;
+    }
+    const char *key = which ? "edge_distance" : "lever_arm";
+    const rb_ynode *v = rb_field(c, an, p, key, "lever_arm", 1, RB_DIM_LENGTH,
+                                 which ? 0 : NAN, 0, NAN, 0, &x);
+    if (!v)
+        return;
+    m->lever_arm_m = which ? width - x : x;
+    if (width <= 0)
+        return;     /* base_width was bad, already reported */
+    if (m->lever_arm_m <= 0 || m->lever_arm_m > width) {
+        rb_cctx_error(c, v, which ? "anchorage.edge_distance" : "anchorage.lever_arm",
+                      "puts the bolt outside the base plate (base_width is %g m, "
+                      "lever arm would be %g m)", width, m->lever_arm_m);
+        c->model_errors++;
+    } else if (m->lever_arm_m <= m->half_width_m) {
+        rb_cctx_error(c, v, which ? "anchorage.edge_distance" : "anchorage.lever_arm",
+                      "puts the bolt on the near half of the base plate: the "
+                      "lever arm %g m must exceed half the base width (%g m)",
+                      m->lever_arm_m, m->half_width_m);
+        c->model_errors++;
+    }
+}
+
+static void rb_read_anchorage(rb_cctx *c, rb_ynode *an, rb_model *m)
+{
+    static const char *const models[] = {"rigid-plastic", "non-yielding",
+                                         "elastic-plastic", "none", NULL};
+    static const rb_bolt_model kinds[] = {RB_BOLT_RIGID_PLASTIC,
+        RB_BOLT_NONYIELDING, RB_BOLT_ELASTIC_PLASTIC, RB_BOLT_NONE};
+    const char *p = "anchorage";
+    int i = 0;
+    double x;
+    rb_ynode *v = rb_cv_get(c, an, p, "model", 0, "");
+    if (v && !rb_cv_enum(c, v, "anchorage.model", models, &i))
+        c->model_errors++;
+    m->bolt_model = kinds[i];
+    if (m->bolt_model == RB_BOLT_NONE) {
+        /* Free-standing: bolt data inherited from a base case is ignored. */
+        for (size_t k = 0; k < an->n; k++)
+            an->entries[k].used = 1;
+        return;
+    }
+    long n = 0;
+    v = rb_cv_get(c, an, p, "bolts_per_row", 1, "a whole number >= 1");
+    if (v && rb_cv_int(c, v, "anchorage.bolts_per_row", 1, 1000, &n))
+        m->bolts_per_row = (int)n;
+    else
+        c->model_errors++;
+    int which = rb_one_of(c, an, p, "diameter", "area", 1,
+                          "the bolt diameter, or its tensile area");
+    if (which == 0 && rb_field(c, an, p, "diameter", "bolt_area", 1,
+                               RB_DIM_LENGTH, 0, 0, NAN, 0, &x))
+        m->bolt_area_m2 = RB_PI * x * x / 4;
+    else if (which == 1)
+        rb_field(c, an, p, "area", "bolt_area", 1, RB_DIM_AREA, 0, 0, NAN, 0,
+                 &m->bolt_area_m2);
+    else if (which < 0)
+        c->model_errors++;
+    rb_field(c, an, p, "yield_stress", "yield_stress", 1, RB_DIM_STRESS, 0, 0,
+             NAN, 0, &m->yield_stress_pa);
+    rb_field(c, an, p, "toughness", "toughness", 1, RB_DIM_ENERGY_DENSITY, 0,
+             0, NAN, 0, &m->toughness_jpm3);
+    rb_field(c, an, p, "deformable_length", "deformable_length", 1,
+             RB_DIM_LENGTH, 0, 0, NAN, 0, &m->deformable_length_m);
+    rb_field(c, an, p, "elastic_modulus", "elastic_modulus", 0, RB_DIM_STRESS,
+             0, 0, NAN, 0, &m->elastic_modulus_pa);
+    rb_read_lever_arm(c, an, m);
+    rb_cv_unknown_keys(c, an, p, rb_anchorage_keys);
+}
+
+/* gap (a length) or gap_ratio (of the lever arm), both rows alike. */
+static void rb_read_gap(rb_cctx *c, rb_ynode *root, rb_model *m)
+{
+    if (m->bolt_model == RB_BOLT_NONE) {
+        rb_cv_get(c, root, "", "gap", 0, "");
+        rb_cv_get(c, root, "", "gap_ratio", 0, "");
+        return;
+    }
+    int which = rb_one_of(c, root, "", "gap", "gap_ratio", 1,
+                          "the gap under the bolt heads, e.g. 'gap: 7.8 mm' "
+                          "or 'gap_ratio: 0.01'");
+    if (which < 0) {
+        c->model_errors++;
+    } else if (which == 0) {
+        rb_field(c, root, "", "gap", "gap", 1, RB_DIM_LENGTH, 0, 1, NAN, 0,
+                 &m->gap_m);
+    } else if (rb_field(c, root, "", "gap_ratio", "gap", 1, RB_DIM_RATIO, 0, 1,
+                        1, 0, &c->gap_ratio)) {
+        c->gap_is_ratio = 1;
+        m->gap_m = c->gap_ratio * m->lever_arm_m;
+    }
+}
+
+static void rb_read_criteria(rb_cctx *c, rb_ynode *cr, rb_criteria *k)
+{
+    static const char *const kinds[] = {"no-yield", "no-break", NULL};
+    const char *p = "criteria";
+    int i;
+    rb_ynode *v = rb_cv_get(c, cr, p, "kind", 0, "");
+    if (v && rb_cv_enum(c, v, "criteria.kind", kinds, &i))
+        k->kind = i == 0 ? RB_CRIT_NO_YIELD : RB_CRIT_NO_BREAK;
+    rb_cv_number(c, cr, p, "usage_limit", 0, RB_DIM_RATIO, 0, 0, NAN, 0,
+                 &k->usage_limit);
+    rb_cv_number(c, cr, p, "max_shear_over_w", 0, RB_DIM_RATIO, 0, 1, NAN, 0,
+                 &k->max_shear_over_w);
+    rb_cv_number(c, cr, p, "max_rotation_over_alpha", 0, RB_DIM_RATIO, 0, 1,
+                 NAN, 0, &k->max_theta_over_alpha);
+    rb_cv_unknown_keys(c, cr, p, rb_criteria_keys);
+}
+
+static void rb_read_analysis(rb_cctx *c, rb_ynode *an, rb_case *cs)
+{
+    static const char *const forms[] = {"large", "small", "consistent", NULL};
+    static const rb_formulation fk[] = {RB_FORM_LARGE, RB_FORM_SMALL,
+                                        RB_FORM_CONSISTENT};
+    const char *p = "analysis";
+    int i, b;
+    double dt = 0.01;
+    rb_ynode *v = rb_cv_get(c, an, p, "formulation", 0, "");
+    if (v && rb_cv_enum(c, v, "analysis.formulation", forms, &i))
+        cs->solve.formulation = fk[i];
+    rb_cv_number(c, an, p, "tolerance", 0, RB_DIM_RATIO, 0, 0, 0.01, 1,
+                 &cs->solve.rtol);
+    rb_cv_number(c, an, p, "output_interval", 0, RB_DIM_TIME, 0, 0, NAN, 0, &dt);
+    v = rb_cv_get(c, an, p, "history", 0, "");
+    if (v && rb_cv_bool(c, v, "analysis.history", &b)) {
+        cs->write_history = b;
+        cs->solve.history_dt_s = b ? dt : 0.0;
+    }
+    v = rb_cv_get(c, an, p, "stretch_past_failure", 0, "");
+    if (v && rb_cv_bool(c, v, "analysis.stretch_past_failure", &b))
+        cs->solve.stretch_past_failure = b;
+    rb_cv_unknown_keys(c, an, p, rb_analysis_keys);
+}
+
+/* A design setting: a plain fraction of A* or "<x> A*", > 0 (>= 0 when
+ * zero_ok). */
+static void rb_design_value(rb_cctx *c, rb_ynode *d, const char *key,
+                            int zero_ok, int astar_ok, double *out)
+{
+    char k[RB_CASE_KEY_MAX];
+    rb_quantity q;
+    rb_ynode *v = rb_cv_get(c, d, "design", key, 0, "");
+    if (!v)
+        return;
+    rb_case_keypath(k, "design", key);
+    size_t len = v->kind == RB_YNODE_SCALAR ? strlen(v->text) : 0;
+    int astar = astar_ok && len >= 2 && strcmp(v->text + len - 2, "A*") == 0;
+    if (!rb_cv_quantity(c, v, k, astar ? RB_DIM_ACCEL : RB_DIM_RATIO, &q))
+        return;
+    if (q.value < 0 || (!zero_ok && q.value == 0)) {
+        rb_cctx_error(c, v, k, "must be %s 0 (got '%s')", zero_ok ? ">=" : ">",
+                      v->text);
+        return;
+    }
+    *out = q.value;
+}
+
+static void rb_read_design(rb_cctx *c, rb_ynode *d, rb_design_opts *o)
+{
+    rb_design_value(c, d, "scan_start", 0, 1, &o->scan_start);
+    rb_design_value(c, d, "scan_step", 0, 1, &o->scan_step);
+    rb_design_value(c, d, "scan_end", 0, 1, &o->scan_end);
+    rb_design_value(c, d, "resolution", 0, 1, &o->resolution);
+    rb_design_value(c, d, "gap_ratio_min", 1, 0, &o->gap_ratio_min);
+    rb_design_value(c, d, "gap_ratio_max", 1, 0, &o->gap_ratio_max);
+    rb_design_value(c, d, "gap_ratio_step", 0, 0, &o->gap_ratio_step);
+    if (o->scan_end < o->scan_start)
+        rb_cctx_error(c, d, "design.scan_end", "must not be below scan_start "
+                      "(%g < %g A*)", o->scan_end, o->scan_start);
+    if (o->gap_ratio_max < o->gap_ratio_min)
+        rb_cctx_error(c, d, "design.gap_ratio_max", "must not be below "
+                      "gap_ratio_min (%g < %g)", o->gap_ratio_max,
+                      o->gap_ratio_min);
+    rb_cv_unknown_keys(c, d, "design", rb_design_keys);
+}
+
+/* The case name defaults to the file name without directory and extension. */
+static void rb_default_name(rb_cctx *c, rb_case *cs)
+{
+    const char *base = strrchr(cs->path, '/');
+    base = base ? base + 1 : cs->path;
+    size_t len = strcspn(base, ".");
+    char *p = malloc(len + 1);
+    if (!p) {
+        c->nomem = 1;
+        return;
+    }
+    memcpy(p, base, len);
+    p[len] = '\0';
+    cs->name = p;
+}
+
+void rb_case_read_schema(rb_cctx *c, rb_ynode *root, rb_case *cs)
+{
+    rb_ynode *v = rb_cv_get(c, root, "", "name", 0, "");
+    if (!v || !rb_cv_string(c, v, "name", &cs->name))
+        rb_default_name(c, cs);
+    v = rb_cv_get(c, root, "", "description", 0, "");
+    if (v)
+        rb_cv_string(c, v, "description", &cs->description);
+    rb_ynode *eq = rb_section(c, root, "equipment", 1,
+                              "the cabinet: mass, height, base_width, ...");
+    if (eq)
+        rb_read_equipment(c, eq, &cs->model);
+    else
+        c->model_errors++;
+    rb_ynode *an = rb_section(c, root, "anchorage", 1,
+                              "the bolts, or 'model: none' for free-standing");
+    if (an)
+        rb_read_anchorage(c, an, &cs->model);
+    else
+        c->model_errors++;
+    if (an)
+        rb_read_gap(c, root, &cs->model);
+    if ((v = rb_section(c, root, "criteria", 0, "")))
+        rb_read_criteria(c, v, &cs->criteria);
+    if ((v = rb_section(c, root, "analysis", 0, "")))
+        rb_read_analysis(c, v, cs);
+    if ((v = rb_section(c, root, "design", 0, "")))
+        rb_read_design(c, v, &cs->design);
+    rb_case_read_motions(c, root);
+    rb_cv_unknown_keys(c, root, "", rb_top_keys);
+}

@@ -1,0 +1,232 @@
+/* The last stage of loading a case: physics checks, A*, and records.
+ *
+ * Cross-field checks (the bolt on the plate, the gap against the angle the
+ * cabinet can rock through, Housner's restitution) are rb_model_derive's;
+ * its diag names a model field, which is mapped back to the YAML key and
+ * value node that set it. The gap check is also made here first, because
+ * with the gap given as a ratio the engineer needs the angles to see why.
+ * Once the model is valid, amplitudes given in A* are multiplied out and
+ * the records are read, passed through the building filter, windowed and
+ * scaled so that their peak equals the target: the series is scaled in
+ * place and motion.scale stays 1. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "case_internal.h"
+
+#define RB_DEG (180.0 / 3.14159265358979323846)
+
+static const rb_cfield *rb_field_of(const rb_cctx *c, const char *field)
+{
+    for (size_t i = 0; i < c->n_fields; i++)
+        if (strcmp(c->fields[i].field, field) == 0)
+            return &c->fields[i];
+    return NULL;
+}
+
+/* theta0 >= alpha: the plate would tip past its overturning angle before
+ * the bolts could hold it. */
+static int rb_check_gap_angle(rb_cctx *c, const rb_model *m)
+{
+    const rb_cfield *f = rb_field_of(c, "gap");
+    double l = m->lever_arm_m, g = m->gap_m;
+    if (!f || m->bolt_model == RB_BOLT_NONE || !(l > 0))
+        return 1;
+    double alpha = atan2(m->half_width_m, m->cm_height_m);
+    double theta0 = g < 2 * l ? 2 * asin(g / (2 * l)) : (double)INFINITY;
+    if (theta0 < alpha)
+        return 1;
+    rb_cctx_error(c, f->node, f->key, "the gap (%g mm, %g of the lever arm) "
+                  "lets the plate rotate %.3g deg before the bolts hold it, "
+                  "past the overturning angle alpha = %.3g deg",
+                  g * 1e3, g / l, theta0 * RB_DEG, alpha * RB_DEG);
+    return 0;
+}
+
+/* Run rb_model_derive and report its complaint against the case. */
+static int rb_check_model(rb_cctx *c, rb_case *cs, const rb_ynode *root,
+                          rb_derived *d)
+{
+    rb_diag diag;
+    memset(&diag, 0, sizeof diag);
+    if (c->model_errors > 0 || !rb_check_gap_angle(c, &cs->model))
+        return 0;
+    if (rb_model_derive(&cs->model, d, &diag) == RB_OK)
+        return 1;
+    const rb_cfield *f = rb_field_of(c, diag.key);
+    if (f)
+        rb_cctx_error(c, f->node, f->key, "%s", diag.msg);
+    else
+        rb_cctx_error(c, root, "equipment", "%s: %s", diag.key, diag.msg);
+    return 0;
+}
+
+/* Resolve an amplitude that may be in A*; 0 after an error. */
+static int rb_resolve_accel(rb_cctx *c, const rb_cmotion *cm, const rb_ynode *v,
+                            const char *key, rb_quantity q, const rb_derived *d,
+                            int have_model, double *out)
+{
+    char k[RB_CASE_KEY_MAX];
+    if (!q.relative_a_star) {
+        *out = q.value;
+        return 1;
+    }
+    if (!have_model)
+        return 0;   /* the model's own errors say why */
+    if (!(d->a_star_mps2 > 0)) {
+        rb_case_keypath(k, cm->key, key);
+        rb_cctx_error(c, v, k, "A* is the acceleration that yields a bolt row "
+                      "and is not defined without anchorage; give '%s' in g "
+                      "or m/s^2", key);
+        return 0;
+    }
+    *out = q.value * d->a_star_mps2;
+    return 1;
+}
+
+/* The record's path: relative to the directory of the file that named it. */
+static char *rb_record_path(const rb_ynode *v)
+{
+    const char *slash = strrchr(v->file, '/');
+    size_t dlen = (v->text[0] == '/' || !slash) ? 0 : (size_t)(slash - v->file + 1);
+    size_t rlen = strlen(v->text);
+    char *p = malloc(dlen + rlen + 1);
+    if (p) {
+        memcpy(p, v->file, dlen);
+        memcpy(p + dlen, v->text, rlen + 1);
+    }
+    return p;
+}
+
+static char *rb_strdup(rb_cctx *c, const char *s)
+{
+    size_t len = strlen(s) + 1;
+    char *p = malloc(len);
+    if (p)
+        memcpy(p, s, len);
+    else
+        c->nomem = 1;
+    return p;
+}
+
+/* Read, filter, window and scale one record into out->series. */
+static int rb_load_record(rb_cctx *c, const rb_cmotion *cm, rb_case_motion *out,
+                          double peak_mps2)
+{
+    char k[RB_CASE_KEY_MAX];
+    rb_diag rd;
+    memset(&rd, 0, sizeof rd);
+    rb_case_keypath(k, cm->key, "file");
+    out->source = rb_record_path(cm->file_node);
+    if (!out->source) {
+        c->nomem = 1;
+        return 0;
+    }
+    rb_status st = rb_record_read(out->source, &cm->ropts, &out->series, &rd);
+    if (st != RB_OK) {
+        if (rd.line > 0)
+            rb_cctx_error_at(c, st == RB_ERR_NOMEM ? st : RB_ERR_IO,
+                             cm->file_node->file, cm->file_node->line,
+                             cm->file_node->col, k, "cannot read record '%s' "
+                             "(line %d: %s)", out->source, rd.line, rd.msg);
+        else
+            rb_cctx_error_at(c, st == RB_ERR_NOMEM ? st : RB_ERR_IO,
+                             cm->file_node->file, cm->file_node->line,
+                             cm->file_node->col, k, "cannot read record '%s' "
+                             "(%s)", out->source, rd.msg[0] ? rd.msg
+                             : rb_status_str(st));
+        return 0;
+    }
+    if (cm->building_freq_hz > 0) {
+        out->building_freq_hz = cm->building_freq_hz;
+        out->building_damping = cm->building_damping;
+        st = rb_series_building_filter(&out->series, cm->building_freq_hz,
+                                       cm->building_damping);
+        if (st != RB_OK) {
+            rb_case_keypath(k, cm->key, "building");
+            rb_cctx_error(c, cm->map, k, "the building filter failed (%s)",
+                          rb_status_str(st));
+            return 0;
+        }
+    }
+    if (cm->has_window) {
+        double len = out->series.t0_s + (double)(out->series.n - 1) * out->series.dt_s;
+        st = cm->window[0] < len ? rb_series_window(&out->series, cm->window[0],
+                                                    cm->window[1])
+                                 : RB_ERR_INVALID;
+        if (st != RB_OK) {
+            rb_case_keypath(k, cm->key, "window");
+            rb_cctx_error(c, cm->map, k, "the window [%g s, %g s] does not fit "
+                          "the record, which lasts %g s", cm->window[0],
+                          cm->window[1], len);
+            return 0;
+        }
+    }
+    if (cm->peak_node) {
+        double p = rb_series_peak(&out->series);
+        if (!(p > 0) || !isfinite(p)) {
+            rb_case_keypath(k, cm->key, "peak");
+            rb_cctx_error(c, cm->peak_node, k, "cannot scale the record to a "
+                          "peak: its samples are all zero");
+            return 0;
+        }
+        rb_series_scale(&out->series, peak_mps2 / p);
+        out->target_peak_mps2 = peak_mps2;
+    }
+    return 1;
+}
+
+/* Finish one motion into out; 0 after an error. */
+static int rb_build_motion(rb_cctx *c, const rb_cmotion *cm, rb_case_motion *out,
+                           const rb_derived *d, int have_model)
+{
+    char desc[160];
+    out->motion = cm->motion;
+    double peak = 0;
+    if (cm->motion.kind != RB_MOTION_SAMPLED) {
+        if (!rb_resolve_accel(c, cm, cm->amplitude_node, "amplitude",
+                              cm->amplitude, d, have_model,
+                              &out->motion.amplitude_mps2))
+            return 0;
+        snprintf(desc, sizeof desc, "%s %g m/s^2",
+                 cm->motion.kind == RB_MOTION_HARMONIC ? "harmonic" : "pulse",
+                 out->motion.amplitude_mps2);
+        out->source = rb_strdup(c, desc);
+        out->name = rb_strdup(c, cm->name ? cm->name : cm->key);
+        return out->source && out->name;
+    }
+    if (cm->peak_node && !rb_resolve_accel(c, cm, cm->peak_node, "peak",
+                                           cm->peak, d, have_model, &peak))
+        return 0;
+    if (!rb_load_record(c, cm, out, peak))
+        return 0;
+    const char *base = strrchr(out->source, '/');
+    out->name = rb_strdup(c, cm->name ? cm->name : (base ? base + 1 : out->source));
+    out->motion.series = &out->series;
+    out->motion.scale = 1.0;
+    if (!cm->has_duration)
+        out->motion.duration_s = out->series.t0_s
+                                 + (double)(out->series.n - 1) * out->series.dt_s;
+    return out->name != NULL;
+}
+
+void rb_case_resolve(rb_cctx *c, rb_case *cs, const rb_ynode *root)
+{
+    rb_derived d;
+    memset(&d, 0, sizeof d);
+    int have_model = rb_check_model(c, cs, root, &d);
+    if (c->n_motions == 0)
+        return;
+    cs->motions = calloc(c->n_motions, sizeof *cs->motions);
+    if (!cs->motions) {
+        c->nomem = 1;
+        return;
+    }
+    cs->n_motions = c->n_motions;
+    for (size_t i = 0; i < c->n_motions && !c->nomem; i++) {
+        const rb_cmotion *cm = &c->motions[i];
+        if (cm->ok)
+            rb_build_motion(c, cm, &cs->motions[i], &d, have_model);
+    }
+}

@@ -1,0 +1,261 @@
+/* Typed values of the case schema: quantities, booleans, whole numbers,
+ * keywords and text, each checked against its node so that every message
+ * names the dotted key, says what was expected and quotes what was found.
+ * Also the unknown-key report with its "did you mean" hint. */
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "case_internal.h"
+
+rb_ynode *rb_cv_get(rb_cctx *c, rb_ynode *map, const char *path,
+                    const char *key, int required, const char *expected)
+{
+    rb_yentry *e = rb_ymap_find(map, key);
+    if (e) {
+        e->used = 1;
+        return e->value;
+    }
+    if (required) {
+        char k[RB_CASE_KEY_MAX];
+        rb_case_keypath(k, path, key);
+        rb_cctx_error(c, map, k, "missing required key '%s' (%s)", key, expected);
+    }
+    return NULL;
+}
+
+/* Error unless v is a non-null scalar. */
+static int rb_cv_scalar(rb_cctx *c, const rb_ynode *v, const char *key,
+                        const char *expected)
+{
+    if (v->kind == RB_YNODE_SCALAR && !rb_ynode_is_null(v))
+        return 1;
+    rb_cctx_error(c, v, key, "expected %s, found %s", expected,
+                  rb_ynode_kind_str(v));
+    return 0;
+}
+
+int rb_cv_quantity(rb_cctx *c, const rb_ynode *v, const char *key, rb_dim dim,
+                   rb_quantity *out)
+{
+    char expected[160], msg[300];
+    snprintf(expected, sizeof expected, "%s (%s)", rb_dim_str(dim),
+             rb_dim_units(dim));
+    if (!rb_cv_scalar(c, v, key, expected))
+        return 0;
+    if (rb_unit_parse(v->text, dim, out, msg, sizeof msg) != RB_OK) {
+        rb_cctx_error(c, v, key, "%s", msg);
+        return 0;
+    }
+    return 1;
+}
+
+/* "> 0", ">= 0 and < 1", ... for a range message. */
+static void rb_cv_range_str(char *buf, size_t size, double lo, int lo_incl,
+                            double hi, int hi_incl)
+{
+    int n = 0;
+    if (!isnan(lo))
+        n = snprintf(buf, size, "%s %g", lo_incl ? ">=" : ">", lo);
+    if (!isnan(hi))
+        snprintf(buf + n, size - (size_t)n, "%s%s %g", n ? " and " : "",
+                 hi_incl ? "<=" : "<", hi);
+}
+
+const rb_ynode *rb_cv_number(rb_cctx *c, rb_ynode *map, const char *path,
+                             const char *key, int required, rb_dim dim,
+                             double lo, int lo_incl, double hi, int hi_incl,
+                             double *out)
+{
+    char k[RB_CASE_KEY_MAX], expected[200], range[80];
+    rb_quantity q;
+    snprintf(expected, sizeof expected, "%s in %s", rb_dim_str(dim),
+             rb_dim_units(dim));
+    rb_ynode *v = rb_cv_get(c, map, path, key, required, expected);
+    if (!v)
+        return NULL;
+    rb_case_keypath(k, path, key);
+    if (!rb_cv_quantity(c, v, k, dim, &q))
+        return NULL;
+    int bad = (!isnan(lo) && (lo_incl ? q.value < lo : q.value <= lo))
+           || (!isnan(hi) && (hi_incl ? q.value > hi : q.value >= hi));
+    if (bad) {
+        range[0] = '\0';
+        rb_cv_range_str(range, sizeof range, lo, lo_incl, hi, hi_incl);
+        rb_cctx_error(c, v, k, "must be %s (got '%s')", range, v->text);
+        return NULL;
+    }
+    *out = q.value;
+    return v;
+}
+
+int rb_cv_bool(rb_cctx *c, const rb_ynode *v, const char *key, int *out)
+{
+    static const char *const yes[] = {"true", "True", "TRUE"};
+    static const char *const no[] = {"false", "False", "FALSE"};
+    if (!rb_cv_scalar(c, v, key, "true or false"))
+        return 0;
+    for (int i = 0; i < 3; i++) {
+        if (strcmp(v->text, yes[i]) == 0) {
+            *out = 1;
+            return 1;
+        }
+        if (strcmp(v->text, no[i]) == 0) {
+            *out = 0;
+            return 1;
+        }
+    }
+    rb_cctx_error(c, v, key, "expected true or false, found '%s'", v->text);
+    return 0;
+}
+
+int rb_cv_int(rb_cctx *c, const rb_ynode *v, const char *key, long lo,
+              long hi, long *out)
+{
+    char expected[80], *end;
+    snprintf(expected, sizeof expected, "a whole number from %ld to %ld", lo, hi);
+    if (!rb_cv_scalar(c, v, key, expected))
+        return 0;
+    errno = 0;
+    long x = strtol(v->text, &end, 10);
+    int digits = end != v->text && isdigit((unsigned char)end[-1]);
+    if (errno || !digits || *end || x < lo || x > hi) {
+        rb_cctx_error(c, v, key, "expected %s, found '%s'", expected, v->text);
+        return 0;
+    }
+    *out = x;
+    return 1;
+}
+
+/* Edit distance between a and b, capped at 9 (enough for hints). */
+static int rb_cv_distance(const char *a, const char *b)
+{
+    size_t la = strlen(a), lb = strlen(b);
+    int row[64];
+    if (la >= 63 || lb >= 63)
+        return 9;
+    for (size_t j = 0; j <= lb; j++)
+        row[j] = (int)j;
+    for (size_t i = 1; i <= la; i++) {
+        int prev = row[0];
+        row[0] = (int)i;
+        for (size_t j = 1; j <= lb; j++) {
+            int cur = row[j];
+            int sub = prev + (tolower((unsigned char)a[i - 1])
+                              != tolower((unsigned char)b[j - 1]));
+            int best = row[j] + 1 < row[j - 1] + 1 ? row[j] + 1 : row[j - 1] + 1;
+            row[j] = sub < best ? sub : best;
+            prev = cur;
+        }
+    }
+    return row[lb] > 9 ? 9 : row[lb];
+}
+
+/* The candidate closest to word when close enough to be a likely typo. */
+static const char *rb_cv_nearest(const char *word, const char *const cand[])
+{
+    const char *best = NULL;
+    int bestd = 9;
+    for (size_t i = 0; cand[i]; i++) {
+        int d = rb_cv_distance(word, cand[i]);
+        if (d < bestd) {
+            bestd = d;
+            best = cand[i];
+        }
+    }
+    int limit = strlen(word) <= 4 ? 1 : (strlen(word) <= 8 ? 2 : 3);
+    return bestd <= limit ? best : NULL;
+}
+
+/* "a, b, c" from a NULL-terminated list. */
+static void rb_cv_join(char *buf, size_t size, const char *const names[])
+{
+    size_t n = 0;
+    buf[0] = '\0';
+    for (size_t i = 0; names[i] && n < size; i++)
+        n += (size_t)snprintf(buf + n, size - n, "%s%s", i ? ", " : "", names[i]);
+}
+
+int rb_cv_enum(rb_cctx *c, const rb_ynode *v, const char *key,
+               const char *const names[], int *out)
+{
+    char list[300], expected[340];
+    rb_cv_join(list, sizeof list, names);
+    snprintf(expected, sizeof expected, "one of %s", list);
+    if (!rb_cv_scalar(c, v, key, expected))
+        return 0;
+    for (int i = 0; names[i]; i++) {
+        if (strcmp(v->text, names[i]) == 0) {
+            *out = i;
+            return 1;
+        }
+    }
+    const char *near = rb_cv_nearest(v->text, names);
+    if (near)
+        rb_cctx_error(c, v, key, "unknown value '%s' (did you mean '%s'?)",
+                      v->text, near);
+    else
+        rb_cctx_error(c, v, key, "expected %s, found '%s'", expected, v->text);
+    return 0;
+}
+
+int rb_cv_string(rb_cctx *c, const rb_ynode *v, const char *key, char **out)
+{
+    if (!rb_cv_scalar(c, v, key, "text"))
+        return 0;
+    size_t len = strlen(v->text) + 1;
+    char *p = malloc(len);
+    if (!p) {
+        c->nomem = 1;
+        return 0;
+    }
+    memcpy(p, v->text, len);
+    free(*out);
+    *out = p;
+    return 1;
+}
+
+int rb_cv_map(rb_cctx *c, const rb_ynode *v, const char *key)
+{
+    if (v->kind == RB_YNODE_MAP)
+        return 1;
+    rb_cctx_error(c, v, key, "expected a mapping of keys, found %s",
+                  rb_ynode_kind_str(v));
+    return 0;
+}
+
+void rb_cv_unknown_keys(rb_cctx *c, const rb_ynode *map, const char *path,
+                        const char *const valid[])
+{
+    char k[RB_CASE_KEY_MAX], list[400];
+    for (size_t i = 0; i < map->n; i++) {
+        const rb_yentry *e = &map->entries[i];
+        if (e->used)
+            continue;
+        rb_case_keypath(k, path, e->key);
+        const char *near = rb_cv_nearest(e->key, valid);
+        if (near) {
+            rb_cctx_error_at(c, RB_ERR_INVALID, e->value->file, e->line, e->col,
+                             k, "unknown key '%s' (did you mean '%s'?)",
+                             e->key, near);
+        } else {
+            rb_cv_join(list, sizeof list, valid);
+            rb_cctx_error_at(c, RB_ERR_INVALID, e->value->file, e->line, e->col,
+                             k, "unknown key '%s' (expected one of: %s)",
+                             e->key, list);
+        }
+    }
+}
+
+void rb_cv_note_field(rb_cctx *c, const char *field, const char *key,
+                      const rb_ynode *node)
+{
+    if (c->n_fields == RB_CASE_MAX_FIELDS)
+        return;
+    rb_cfield *f = &c->fields[c->n_fields++];
+    f->field = field;
+    snprintf(f->key, sizeof f->key, "%s", key);
+    f->node = node;
+}
