@@ -34,7 +34,7 @@ typedef struct {
     double history_dt_s;     /* > 0: record a time history at this interval */
     double rest_fraction;    /* rocking amplitude below this fraction of the
                                 smaller of alpha and theta0 returns to stage 1
-                                (default 1e-3) */
+                                (default 1e-6) */
     long max_events_per_s;   /* work bound per simulated second (default 20000) */
     long max_steps;          /* total step bound (default 50 000 000) */
     double theta_init_rad;   /* start rocking at this angle (sign = side), at rest */

@@ -36,17 +36,11 @@ void rb_model_reference(rb_model *m)
     m->gap_m = 0.01 * 0.78;
 }
 
-static rb_status fail(rb_diag *d, const char *key, const char *fmt, double v)
-{
-    if (d) {
-        snprintf(d->key, sizeof d->key, "%s", key);
-        snprintf(d->msg, sizeof d->msg, fmt, v);
-    }
-    return RB_ERR_INVALID;
-}
-
-#define REQUIRE(cond, key, fmt, v) \
-    do { if (!(cond)) return fail(diag, key, fmt, v); } while (0)
+/* A macro so that each message is a literal the compiler checks. */
+#define REQUIRE(cond, k, fmt, v) do { if (!(cond)) { if (diag) { \
+        snprintf(diag->key, sizeof diag->key, "%s", k); \
+        snprintf(diag->msg, sizeof diag->msg, fmt, v); } \
+        return RB_ERR_INVALID; } } while (0)
 
 static rb_status check_equipment(const rb_model *m, rb_diag *diag)
 {
@@ -130,7 +124,7 @@ rb_status rb_model_derive(const rb_model *m, rb_derived *d, rb_diag *diag)
         d->Cstar = 2 * m->damping * d->omega * d->Mstar;
     }
     d->a_uplift_mps2 = d->W * b / (M * h);
-    d->theta0_rad = INFINITY;
+    d->theta0_rad = HUGE_VAL;
     if (m->bolt_model != RB_BOLT_NONE) {
         double E = m->elastic_modulus_pa > 0 ? m->elastic_modulus_pa : 200e9;
         double l = m->lever_arm_m;

@@ -1,0 +1,263 @@
+/* Equations of motion of the five stages (thesis sec. 5.4).
+ *
+ * Everything here is written for rocking about the left edge (mirrored angle
+ * th >= 0, right bolt row loaded) in the variables U (top displacement
+ * relative to the plate, positive in the tipping direction) and th; the
+ * caller's side s maps the physical state by U -> sU, th -> s th, x'' -> s x''.
+ *
+ * Stage 2 and 5 (eqs. 5.5, 5.6, 5.15) form the 2x2 system
+ *   [M*  F*] [U'' ]   [Q_U - C* U' - centrifugal          ]
+ *   [F*  J ] [th''] = [Q_th - bolt moment - gyroscopic     ]
+ * Formulations differ only in Q_U, Q_th, J and the velocity terms:
+ *   large:      Q_U = N*(x'' cos th + g sin th) - K* U, centrifugal N* b th'^2,
+ *               Q_th = M R x'' cos(a - th) - W R sin(a - th), J = I_o (as printed);
+ *   small:      cos -> 1, sin th -> th, sin(a - th) -> a - th (5.21-5.24, eq. 2.6);
+ *   consistent: the lever b of the deformed frame is b - U phi, kept to the
+ *               same order in both equations, which makes the pair the
+ *               Lagrange equations of the assumed-mode kinematics and closes
+ *               the energy balance exactly. The printed equations keep the
+ *               U-equation's share of these terms but not the moment
+ *               equation's; their difference is the "coupling" work. */
+#include <math.h>
+#include "dynamics.h"
+
+double rb_dyn_chord(const rb_sys *S, double th)
+{
+    return S->form == RB_FORM_SMALL ? S->l * th : 2 * S->l * sin(th / 2);
+}
+
+double rb_dyn_lever(const rb_sys *S, double th)
+{
+    return S->form == RB_FORM_SMALL ? S->l : S->l * cos(th / 2);
+}
+
+double rb_dyn_contact_angle(const rb_sys *S, double g)
+{
+    return S->form == RB_FORM_SMALL ? g / S->l : 2 * asin(g / (2 * S->l));
+}
+
+/* Generalized loads of the mirrored 2-DOF system at angle th. */
+typedef struct {
+    double QU, Qth, J, cent, gyro, in_U, in_th, cpl_U;
+} rb_loads;
+
+static void loads(const rb_sys *S, double x, double U, double Ud, double th,
+                  double thd, rb_loads *L)
+{
+    const rb_derived *d = &S->d;
+    double g = d->g, M = S->M, b = S->b, h = S->h;
+    double c = cos(th), sn = sin(th);
+    switch (S->form) {
+    case RB_FORM_SMALL:
+        L->in_U = d->Nstar;
+        L->in_th = M * d->R;
+        L->QU = d->Nstar * (x + g * th) - d->Kstar * U;
+        L->Qth = M * d->R * x - d->W * d->R * (d->alpha - th);
+        L->J = d->Io;
+        L->cent = d->Nstar * b * thd * thd;
+        L->gyro = 0;
+        L->cpl_U = d->Nstar * (g * th - b * thd * thd);
+        return;
+    case RB_FORM_CONSISTENT: {
+        double Mb = M * b - d->Nstar * U;
+        L->in_U = d->Nstar * c;
+        L->in_th = Mb * sn + M * h * c;
+        L->QU = d->Nstar * (x * c + g * sn) - d->Kstar * U;
+        L->Qth = x * L->in_th - g * (Mb * c - M * h * sn);
+        L->J = d->Io - 2 * b * d->Nstar * U + d->Mstar * U * U;
+        L->cent = (d->Nstar * b - d->Mstar * U) * thd * thd;
+        L->gyro = (2 * d->Mstar * U - 2 * b * d->Nstar) * Ud * thd;
+        L->cpl_U = 0;
+        return;
+    }
+    case RB_FORM_LARGE:
+        break;
+    }
+    L->in_U = d->Nstar * c;
+    L->in_th = M * d->R * cos(d->alpha - th);
+    L->QU = d->Nstar * (x * c + g * sn) - d->Kstar * U;
+    L->Qth = x * L->in_th - d->W * d->R * sin(d->alpha - th);
+    L->J = d->Io;
+    L->cent = d->Nstar * b * thd * thd;
+    L->gyro = 0;
+    L->cpl_U = d->Nstar * (g * sn - b * thd * thd);
+}
+
+/* Floor acceleration; the critical excitation takes its sign from theta',
+ * and at rest from the side gravity will move the block towards. */
+static double floor_accel(const rb_sys *S, double t, const double *y)
+{
+    double thd = y[RB_Y_THD] != 0 ? y[RB_Y_THD] : -y[RB_Y_TH];
+    return rb_motion_accel(S->motion, t, thd);
+}
+
+static int rocking(const rb_sys *S, const rb_disc *D)
+{
+    return D->stage == RB_STAGE_UPLIFT || D->stage == RB_STAGE_YIELD
+           || (D->stage == RB_STAGE_HELD && S->elastic_bolts);
+}
+
+/* Bolt moment about the pivot for a rocking stage, and the row tension. */
+static double bolt_moment(const rb_sys *S, const rb_disc *D, double th, double *force)
+{
+    *force = 0;
+    if (D->stage == RB_STAGE_YIELD)
+        *force = S->d.fy_row_n;
+    else if (D->stage == RB_STAGE_HELD && S->elastic_bolts) {
+        double ext = rb_dyn_chord(S, th) - D->gap[rb_row_of_side(D->side)];
+        *force = ext > 0 ? S->d.k_row_npm * ext : 0;
+    }
+    return *force * rb_dyn_lever(S, th);
+}
+
+static void solve_rocking(const rb_sys *S, const rb_disc *D, double x, const double *m,
+                          rb_aux *a)
+{
+    const rb_derived *d = &S->d;
+    rb_loads L;
+    double U = m[0], Ud = m[1], th = m[2], thd = m[3];
+    loads(S, x, U, Ud, th, thd, &L);
+    double Mb = bolt_moment(S, D, th, &a->bolt_force);
+    double Rth = L.Qth - Mb - L.gyro;
+    if (S->model->rigid) {
+        a->udd = 0;
+        a->thdd = Rth / L.J;
+    } else {
+        double RU = L.QU - d->Cstar * Ud - L.cent;
+        double det = d->Mstar * L.J - d->Fstar * d->Fstar;
+        a->udd = (L.J * RU - d->Fstar * Rth) / det;
+        a->thdd = (d->Mstar * Rth - d->Fstar * RU) / det;
+    }
+    a->p_input = x * (L.in_U * Ud + L.in_th * thd);
+    a->p_coupling = L.cpl_U * Ud;
+}
+
+/* Stages 1 and 4 (rigid bolts): the plate is still, the frame is an SDOF
+ * (5.3c, 5.11) and the bolt force follows from the moment equation (5.13). */
+static void solve_still(const rb_sys *S, const rb_disc *D, double x, const double *m,
+                        rb_aux *a)
+{
+    const rb_derived *d = &S->d;
+    rb_loads L;
+    double U = m[0], Ud = m[1], th = m[2];
+    loads(S, x, U, Ud, th, 0, &L);
+    a->udd = S->model->rigid ? 0 : (L.QU - d->Cstar * Ud) / d->Mstar;
+    a->thdd = 0;
+    a->bolt_force = 0;
+    if (D->stage == RB_STAGE_HELD)
+        a->bolt_force = (L.Qth - d->Fstar * a->udd) / rb_dyn_lever(S, th);
+    a->p_input = x * L.in_U * Ud;
+    a->p_coupling = L.cpl_U * Ud;
+}
+
+static void mirror(const rb_disc *D, const double *y, double *m)
+{
+    double s = D->side < 0 ? -1.0 : 1.0;
+    m[0] = s * y[RB_Y_U];
+    m[1] = s * y[RB_Y_UD];
+    m[2] = s * y[RB_Y_TH];
+    m[3] = s * y[RB_Y_THD];
+}
+
+void rb_dyn_rhs(const rb_sys *S, const rb_disc *D, double t, const double *y,
+                double *dy, rb_aux *aux)
+{
+    double s = D->side < 0 ? -1.0 : 1.0, m[4];
+    rb_aux a;
+    mirror(D, y, m);
+    a.x = floor_accel(S, t, y);
+    if (D->stage == RB_STAGE_HELD && !S->elastic_bolts)
+        m[2] = D->theta_hold;
+    if (rocking(S, D))
+        solve_rocking(S, D, s * a.x, m, &a);
+    else
+        solve_still(S, D, s * a.x, m, &a);
+    if (dy) {
+        int moving = rocking(S, D);
+        dy[RB_Y_U] = y[RB_Y_UD];
+        dy[RB_Y_UD] = s * a.udd;
+        dy[RB_Y_TH] = moving ? y[RB_Y_THD] : 0;
+        dy[RB_Y_THD] = moving ? s * a.thdd : 0;
+        dy[RB_Y_WDAMP] = S->d.Cstar * y[RB_Y_UD] * y[RB_Y_UD];
+        dy[RB_Y_WIN] = a.p_input;
+        dy[RB_Y_WCPL] = a.p_coupling;
+    }
+    if (aux)
+        *aux = a;
+}
+
+double rb_dyn_uplift_guard(const rb_sys *S, double t, const double *y, int side)
+{
+    const rb_derived *d = &S->d;
+    rb_disc D = {0};
+    rb_loads L;
+    double m[4];
+    D.side = side;
+    D.stage = RB_STAGE_FIXED;
+    mirror(&D, y, m);
+    double x = (side < 0 ? -1.0 : 1.0) * floor_accel(S, t, y);
+    loads(S, x, m[0], m[1], 0, 0, &L);
+    if (S->model->rigid)
+        return L.Qth;
+    double udd = (L.QU - d->Cstar * m[1]) / d->Mstar;
+    return L.Qth - d->Fstar * udd;
+}
+
+double rb_dyn_kinetic(const rb_sys *S, const rb_disc *D, const double *y)
+{
+    const rb_derived *d = &S->d;
+    double m[4], J = d->Io;
+    mirror(D, y, m);
+    if (S->form == RB_FORM_CONSISTENT)
+        J = d->Io - 2 * S->b * d->Nstar * m[0] + d->Mstar * m[0] * m[0];
+    return 0.5 * d->Mstar * m[1] * m[1] + d->Fstar * m[1] * m[3] + 0.5 * J * m[3] * m[3];
+}
+
+double rb_dyn_potential(const rb_sys *S, const rb_disc *D, const double *y)
+{
+    const rb_derived *d = &S->d;
+    double m[4], V;
+    mirror(D, y, m);
+    double th = m[2];
+    switch (S->form) {
+    case RB_FORM_SMALL:
+        V = d->W * d->R * (d->alpha * th - 0.5 * th * th);
+        break;
+    case RB_FORM_CONSISTENT:
+        V = d->g * ((S->M * S->b - d->Nstar * m[0]) * sin(th) + S->M * S->h * cos(th))
+            - d->g * S->M * S->h;
+        break;
+    case RB_FORM_LARGE:
+    default:
+        V = d->W * d->R * cos(d->alpha - th) - d->W * S->h;
+        break;
+    }
+    if (S->elastic_bolts && D->side != 0 && D->stage != RB_STAGE_FIXED) {
+        double ext = rb_dyn_chord(S, th) - D->gap[rb_row_of_side(D->side)];
+        if (ext > 0)
+            V += 0.5 * d->k_row_npm * ext * ext;
+    }
+    return V;
+}
+
+double rb_dyn_strain(const rb_sys *S, const rb_disc *D, const double *y)
+{
+    (void)D;
+    return 0.5 * S->d.Kstar * y[RB_Y_U] * y[RB_Y_U];
+}
+
+void rb_dyn_reactions(const rb_sys *S, const rb_disc *D, const double *y,
+                      const rb_aux *a, double *horizontal, double *vertical)
+{
+    const rb_derived *d = &S->d;
+    double s = D->side < 0 ? -1.0 : 1.0, m[4];
+    mirror(D, y, m);
+    if (D->stage == RB_STAGE_HELD && !S->elastic_bolts)
+        m[2] = D->theta_hold;
+    double th = m[2], thd = m[3], c = cos(th), sn = sin(th);
+    double Mb = S->M * S->b - (S->form == RB_FORM_CONSISTENT ? d->Nstar * m[0] : 0);
+    double Ad = d->Nstar * a->udd + S->M * S->h * a->thdd + Mb * thd * thd;
+    double A2 = -S->M * S->h * thd * thd - 2 * d->Nstar * m[1] * thd + Mb * a->thdd;
+    *horizontal = s * (-S->M * s * a->x + c * Ad + sn * A2);
+    *vertical = d->W - sn * Ad + c * A2;
+}

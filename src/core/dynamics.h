@@ -1,0 +1,73 @@
+/* Internal: equations of motion, bolt forces, reactions and energies of the
+ * restrained-rocking model, stage by stage (thesis sec. 5.4).
+ *
+ * The continuous state is kept in the physical frame, y = {U, U', theta,
+ * theta', W_damping, W_input, W_coupling}. Equations are written once, for
+ * rocking about the left edge (theta >= 0, right bolt row), and applied to the
+ * other edge through the exact mirror U -> -U, theta -> -theta, x'' -> -x''
+ * (MODEL.md: eq. 5.15* as printed is not that mirror). */
+#ifndef RB_DYNAMICS_H
+#define RB_DYNAMICS_H
+
+#include "rockbolt/model.h"
+#include "rockbolt/motion.h"
+#include "rockbolt/solve.h"
+
+enum { RB_Y_U, RB_Y_UD, RB_Y_TH, RB_Y_THD, RB_Y_WDAMP, RB_Y_WIN, RB_Y_WCPL, RB_NY };
+
+typedef struct {
+    const rb_model *model;
+    rb_derived d;
+    rb_formulation form;
+    const rb_motion *motion;
+    int has_bolts, elastic_bolts, yielding_bolts;
+    double l, b, h, M;
+} rb_sys;
+
+/* Discrete state: the stage, the side rocked about and the bolt rows. */
+typedef struct {
+    int stage;            /* 1..5 (3 is never held) */
+    int side;             /* +1: about the left edge, right row loaded; -1 mirror */
+    double theta_hold;    /* mirrored angle held in stage 4 (rigid bolts) */
+    double gap[2];        /* total gap g_t of each row */
+    double absorbed[2];   /* plastic work of each row */
+    int broken[2];
+    double chord_entry;   /* stage 5: chord and absorbed energy on entry */
+    double absorbed_entry;
+} rb_disc;
+
+/* What one evaluation yields besides the derivatives. */
+typedef struct {
+    double x;          /* floor acceleration, physical */
+    double udd, thdd;  /* mirrored accelerations */
+    double bolt_force; /* tension of the loaded row (0 when slack) */
+    double p_input, p_coupling;
+} rb_aux;
+
+static inline int rb_row_of_side(int side) { return side > 0 ? RB_RIGHT : RB_LEFT; }
+
+/* Bolt chord p-p' (eq. 5.9b) and its lever arm about the pivot (5.13). */
+double rb_dyn_chord(const rb_sys *S, double th);
+double rb_dyn_lever(const rb_sys *S, double th);
+/* Angle at which the plate meets a bolt head with total gap g. */
+double rb_dyn_contact_angle(const rb_sys *S, double g);
+
+/* Derivatives for the current stage; dy may be NULL when only aux is wanted. */
+void rb_dyn_rhs(const rb_sys *S, const rb_disc *D, double t, const double *y,
+                double *dy, rb_aux *aux);
+
+/* Uplift guard of stage 1 for side s: > 0 when the plate would lift about
+ * that edge (eq. 5.3d written through the stage-2 moment equation so that it
+ * agrees in sign with theta'' of stage 2). */
+double rb_dyn_uplift_guard(const rb_sys *S, double t, const double *y, int side);
+
+/* Energies in the relative frame (J). */
+double rb_dyn_kinetic(const rb_sys *S, const rb_disc *D, const double *y);
+double rb_dyn_potential(const rb_sys *S, const rb_disc *D, const double *y);
+double rb_dyn_strain(const rb_sys *S, const rb_disc *D, const double *y);
+
+/* Horizontal and vertical floor reactions on the body (N, physical sign). */
+void rb_dyn_reactions(const rb_sys *S, const rb_disc *D, const double *y,
+                      const rb_aux *aux, double *horizontal, double *vertical);
+
+#endif

@@ -1,0 +1,341 @@
+/* The run loop of the restrained-rocking solver.
+ *
+ * Steps never straddle a kink or jump of the excitation (sample times, pulse
+ * and ramp ends), so each Runge-Kutta step sees a smooth right-hand side.
+ * After each accepted step the active guards are checked at four points of
+ * the dense output; the earliest crossing is refined by the Illinois method
+ * to ~1e-13 s and the transition applied there. A run has a bounded cost: a
+ * step budget, a minimum step, and a bound on events per simulated second
+ * (the rest criterion in transitions.c keeps impact series finite). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "solver.h"
+
+void rb_solve_opts_init(rb_solve_opts *o)
+{
+    memset(o, 0, sizeof *o);
+    o->formulation = RB_FORM_LARGE;
+    o->rtol = 1e-7;
+    o->event_tol = 1e-3;
+    o->rest_fraction = 1e-6;
+    o->max_events_per_s = 20000;
+    o->max_steps = 50000000;
+}
+
+void rb_result_free(rb_result *r)
+{
+    if (!r)
+        return;
+    rb_history_free(r->history);
+    r->history = NULL;
+}
+
+static rb_status fail(rb_solver *sv, rb_diag *diag, rb_status st, const char *what)
+{
+    if (diag) {
+        snprintf(diag->key, sizeof diag->key, "solver");
+        snprintf(diag->msg, sizeof diag->msg, "%s at t = %.6f s in stage %d", what,
+                 sv->t, sv->disc.stage);
+    }
+    return st;
+}
+
+static double highest_frequency(const rb_solver *sv)
+{
+    const rb_sys *S = &sv->sys;
+    const rb_motion *m = S->motion;
+    double f = sqrt(S->d.W * S->d.R / S->d.Io) / (2 * M_PI);
+    if (!S->model->rigid)
+        f = fmax(f, S->model->freq_hz);
+    if (m->kind == RB_MOTION_HARMONIC)
+        f = fmax(f, m->freq_hz);
+    if (m->kind == RB_MOTION_PULSE && m->pulse_s > 0)
+        f = fmax(f, 1 / m->pulse_s);
+    if (S->elastic_bolts)
+        f = fmax(f, sqrt(S->d.k_row_npm * S->l * S->l / S->d.Io) / (2 * M_PI));
+    return f;
+}
+
+static void set_tolerances(rb_solver *sv)
+{
+    const rb_sys *S = &sv->sys;
+    double a = fmax(sv->res->peak_floor_mps2, 0.01 * S->d.g);
+    double p = sqrt(S->d.W * S->d.R / S->d.Io);
+    double th = fmin(S->d.alpha, S->has_bolts ? fmax(S->d.theta0_rad, 1e-3 * S->d.alpha)
+                                              : S->d.alpha);
+    double w = S->model->rigid ? p : S->d.omega;
+    double u = S->model->rigid ? 1 : 4 * a / (M_PI * w * w);
+    double rtol = sv->opts.rtol;
+    sv->atol[RB_Y_U] = rtol * u;
+    sv->atol[RB_Y_UD] = rtol * u * w;
+    sv->atol[RB_Y_TH] = rtol * th;
+    sv->atol[RB_Y_THD] = rtol * th * fmax(w, p);
+    sv->atol[RB_Y_WDAMP] = sv->atol[RB_Y_WIN] = sv->atol[RB_Y_WCPL] = 0;
+}
+
+static void fill_constants(rb_solver *sv, const rb_motion *motion)
+{
+    const rb_sys *S = &sv->sys;
+    rb_result *r = sv->res;
+    r->a_star_mps2 = S->d.a_star_mps2;
+    r->a_uplift_mps2 = S->d.a_uplift_mps2;
+    r->peak_floor_mps2 = rb_motion_peak(motion);
+    r->u_static_m = S->model->rigid ? 0
+                    : M_PI * M_PI * r->peak_floor_mps2 / (8 * S->d.omega * S->d.omega);
+    r->alpha_rad = S->d.alpha;
+    r->theta0_rad = S->d.theta0_rad;
+    r->fy_row_n = S->d.fy_row_n;
+    r->capacity_j = S->d.capacity_j;
+    r->weight_n = S->d.W;
+    r->delta = S->d.delta;
+}
+
+static rb_status setup(rb_solver *sv, const rb_model *model, const rb_motion *motion,
+                       const rb_solve_opts *opts, rb_result *out, rb_diag *diag)
+{
+    rb_sys *S = &sv->sys;
+    memset(sv, 0, sizeof *sv);
+    memset(out, 0, sizeof *out);
+    sv->res = out;
+    if (opts)
+        sv->opts = *opts;
+    else
+        rb_solve_opts_init(&sv->opts);
+    rb_status st = rb_model_derive(model, &S->d, diag);
+    if (st != RB_OK)
+        return st;
+    S->model = model;
+    S->motion = motion;
+    S->form = sv->opts.formulation;
+    S->has_bolts = model->bolt_model != RB_BOLT_NONE;
+    S->elastic_bolts = model->bolt_model == RB_BOLT_ELASTIC_PLASTIC;
+    S->yielding_bolts = S->has_bolts && model->bolt_model != RB_BOLT_NONYIELDING;
+    S->l = model->lever_arm_m;
+    S->b = model->half_width_m;
+    S->h = model->cm_height_m;
+    S->M = model->mass_kg;
+    sv->disc.gap[0] = sv->disc.gap[1] = model->gap_m;
+    sv->disc.stage = RB_STAGE_FIXED;
+    fill_constants(sv, motion);
+    set_tolerances(sv);
+    sv->t_end = motion->duration_s;
+    if (!(isfinite(sv->t_end) && sv->t_end > 0))
+        return fail(sv, diag, RB_ERR_INVALID, "the run needs a finite duration > 0");
+    sv->h_max = sv->opts.max_step_s > 0 ? sv->opts.max_step_s
+                                        : 0.1 / highest_frequency(sv);
+    sv->h = fmin(sv->h_max, 1e-3);
+    double th0 = S->has_bolts ? rb_dyn_contact_angle(S, model->gap_m) : HUGE_VAL;
+    sv->rest_theta = sv->opts.rest_fraction * fmin(S->d.alpha, th0 > 0 ? th0 : S->d.alpha);
+    if (sv->opts.theta_init_rad != 0) {
+        double a0 = fabs(sv->opts.theta_init_rad);
+        if (!(a0 < S->d.alpha && a0 < th0))
+            return fail(sv, diag, RB_ERR_INVALID,
+                        "initial rotation must be below alpha and the bolt contact angle");
+        sv->y[RB_Y_TH] = sv->opts.theta_init_rad;
+        sv->disc.side = sv->opts.theta_init_rad > 0 ? 1 : -1;
+        sv->disc.stage = RB_STAGE_UPLIFT;
+    }
+    if (sv->opts.history_dt_s > 0) {
+        out->history = calloc(1, sizeof *out->history);
+        if (!out->history)
+            return RB_ERR_NOMEM;
+    }
+    return RB_OK;
+}
+
+/* Illinois (modified regula falsi) on a guard along the dense output. */
+static double locate(rb_solver *sv, const rb_rk_step *st, int guard, double a, double b,
+                     double ga, double gb)
+{
+    double g[G_COUNT], y[RB_NY];
+    int last = 0;
+    for (int i = 0; i < 100 && b - a > 1e-13 * (1 + fabs(b)); i++) {
+        double m = (a * gb - b * ga) / (gb - ga);
+        if (!(m > a && m < b))
+            m = 0.5 * (a + b);
+        rb_rk_dense_eval(st, m, y);
+        rb_guard_eval(sv, m, y, g);
+        if (rb_guard_crossed(guard, ga, g[guard]) || g[guard] == 0) {
+            b = m;
+            gb = g[guard];
+            if (last == -1) ga *= 0.5;
+            last = -1;
+        } else {
+            a = m;
+            ga = g[guard];
+            if (last == 1) gb *= 0.5;
+            last = 1;
+        }
+    }
+    return b;
+}
+
+/* Earliest guard crossing inside the accepted step, or -1. */
+static int find_event(rb_solver *sv, const rb_rk_step *st, const double *g0, double *t_event)
+{
+    enum { SUB = 4 };
+    unsigned mask = rb_guard_mask(sv);
+    double ga[G_COUNT], gb[G_COUNT], y[RB_NY];
+    memcpy(ga, g0, sizeof ga);
+    for (int j = 1; j <= SUB; j++) {
+        double ta = st->t0 + st->h * (j - 1) / SUB;
+        double tb = j == SUB ? st->t0 + st->h : st->t0 + st->h * j / SUB;
+        rb_rk_dense_eval(st, tb, y);
+        if (j == SUB)
+            memcpy(y, st->y1, sizeof y);
+        rb_guard_eval(sv, tb, y, gb);
+        int best = -1;
+        double tbest = HUGE_VAL;
+        for (int k = 0; k < G_COUNT; k++) {
+            if (!(mask & 1u << k) || !rb_guard_crossed(k, ga[k], gb[k]))
+                continue;
+            double tk = locate(sv, st, k, ta, tb, ga[k], gb[k]);
+            if (tk < tbest) {
+                tbest = tk;
+                best = k;
+            }
+        }
+        if (best >= 0) {
+            *t_event = tbest;
+            return best;
+        }
+        memcpy(ga, gb, sizeof ga);
+    }
+    return -1;
+}
+
+static rb_status check_work(rb_solver *sv, rb_diag *diag)
+{
+    if (sv->t - sv->window_start >= 1.0) {
+        sv->window_start = sv->t;
+        sv->window_events = 0;
+    }
+    if (sv->window_events > sv->opts.max_events_per_s)
+        return fail(sv, diag, RB_ERR_WORK_LIMIT, "more transitions per simulated second "
+                    "than the work bound allows (chattering)");
+    if (sv->res->steps >= sv->opts.max_steps)
+        return fail(sv, diag, RB_ERR_LIMIT, "step budget exhausted");
+    return RB_OK;
+}
+
+static int state_finite(const double *y)
+{
+    for (int i = 0; i < RB_NY; i++)
+        if (!isfinite(y[i]))
+            return 0;
+    return 1;
+}
+
+/* After a transition: settle immediate follow-ups, refresh f and guards. */
+static rb_status restart(rb_solver *sv, double *g, rb_diag *diag)
+{
+    for (int n = 0; !sv->done && rb_transition_immediate(sv); n++)
+        if (n > 16)
+            return fail(sv, diag, RB_ERR_WORK_LIMIT, "stage transitions do not settle");
+    rb_dyn_rhs(&sv->sys, &sv->disc, sv->t, sv->y, sv->f, NULL);
+    rb_guard_eval(sv, sv->t, sv->y, g);
+    rb_track_point(sv, sv->t, sv->y);
+    return state_finite(sv->y) ? RB_OK
+           : fail(sv, diag, RB_ERR_NONFINITE, "non-finite state");
+}
+
+static rb_status advance(rb_solver *sv, rb_rk_step *st, double *g, rb_diag *diag)
+{
+    double t_event, tb = st->t0 + st->h;
+    int ev = find_event(sv, st, g, &t_event);
+    if (ev >= 0)
+        tb = t_event;
+    rb_track_interval(sv, st, st->t0, tb);
+    if (rb_history_sample(sv, st, st->t0, tb) != RB_OK)
+        return RB_ERR_NOMEM;
+    sv->res->stage_time_s[sv->disc.stage] += tb - st->t0;
+    sv->t = tb;
+    if (ev < 0) {
+        memcpy(sv->y, st->y1, sizeof sv->y);
+        memcpy(sv->f, st->k[6], sizeof sv->f);
+        if (!state_finite(sv->y))
+            return fail(sv, diag, RB_ERR_NONFINITE, "non-finite state");
+        rb_guard_eval(sv, sv->t, sv->y, g);
+        rb_track_point(sv, sv->t, sv->y);
+        return RB_OK;
+    }
+    rb_rk_dense_eval(st, tb, sv->y);
+    rb_track_point(sv, sv->t, sv->y);
+    rb_transition(sv, ev);
+    return restart(sv, g, diag);
+}
+
+static rb_status run(rb_solver *sv, rb_diag *diag)
+{
+    rb_rk_step st;
+    double g[G_COUNT];
+    rb_status s = rb_history_push(sv, 0, sv->y);
+    sv->hist_k = 1;
+    if (s == RB_OK)
+        s = restart(sv, g, diag);
+    while (s == RB_OK && !sv->done && sv->t < sv->t_end) {
+        if ((s = check_work(sv, diag)) != RB_OK)
+            break;
+        double brk = rb_motion_next_break(sv->sys.motion, sv->t);
+        double h = fmin(fmin(sv->h, sv->h_max), fmin(brk, sv->t_end) - sv->t);
+        if (!(h > 1e-14 * (1 + sv->t)))
+            return fail(sv, diag, RB_ERR_STEP_TOO_SMALL, "step size underflow");
+        double err = rb_rk_step_try(&sv->sys, &sv->disc, sv->t, sv->y, sv->f, h,
+                                    sv->atol, sv->opts.rtol, &st);
+        sv->res->rhs_evals += 6;
+        double fac = err > 0 ? 0.9 * pow(err, -0.2) : 5;
+        if (err > 1) {
+            sv->res->rejected_steps++;
+            sv->h = h * fmax(0.1, fmin(0.9, fac));
+            continue;
+        }
+        sv->res->steps++;
+        rb_rk_dense_init(&st);
+        s = advance(sv, &st, g, diag);
+        sv->h = fmax(h, 1e-14) * fmin(5, fmax(0.2, fac));
+    }
+    return s;
+}
+
+static void finish(rb_solver *sv)
+{
+    rb_result *r = sv->res;
+    const rb_sys *S = &sv->sys;
+    r->t_end_s = sv->t;
+    for (int row = 0; row < 2; row++) {
+        r->absorbed_j[row] = rb_absorbed_now(sv, row);
+        r->usage[row] = S->d.capacity_j > 0 ? r->absorbed_j[row] / S->d.capacity_j : 0;
+        r->final_gap_m[row] = sv->disc.gap[row];
+        if (sv->disc.stage == RB_STAGE_YIELD && rb_row_of_side(sv->disc.side) == row)
+            r->final_gap_m[row] = rb_dyn_chord(S, sv->disc.side * sv->y[RB_Y_TH]);
+    }
+    r->max_theta_over_alpha = r->max_theta_rad / S->d.alpha;
+    r->max_u_over_ustatic = r->u_static_m > 0 ? r->max_u_m / r->u_static_m : 0;
+    r->max_shear_elastic_n = S->d.Nstar * S->d.omega * S->d.omega * r->max_u_m;
+    r->e_input = sv->y[RB_Y_WIN];
+    r->e_damping = sv->y[RB_Y_WDAMP];
+    r->e_coupling = sv->y[RB_Y_WCPL];
+    r->e_kinetic = rb_dyn_kinetic(S, &sv->disc, sv->y);
+    r->e_potential = rb_dyn_potential(S, &sv->disc, sv->y);
+    r->e_strain = rb_dyn_strain(S, &sv->disc, sv->y);
+    r->e_impact = sv->e_impact;
+    r->e_plastic = r->absorbed_j[0] + r->absorbed_j[1];
+}
+
+rb_status rb_solve_run(const rb_model *model, const rb_motion *motion,
+                       const rb_solve_opts *opts, rb_result *out, rb_diag *diag)
+{
+    rb_solver sv;
+    rb_status s = setup(&sv, model, motion, opts, out, diag);
+    if (s == RB_OK)
+        s = run(&sv, diag);
+    if (s == RB_OK && sv.res->history && sv.res->history->n
+        && sv.res->history->t[sv.res->history->n - 1] < sv.t)
+        s = rb_history_push(&sv, sv.t, sv.y);
+    if (s == RB_OK || s == RB_ERR_STEP_TOO_SMALL || s == RB_ERR_WORK_LIMIT
+        || s == RB_ERR_LIMIT)
+        finish(&sv);
+    return s;
+}

@@ -1,0 +1,58 @@
+/* Internal: the state of one solver run, shared by the driver (solve.c),
+ * the stage transitions (transitions.c) and the peak/history tracking
+ * (track.c). */
+#ifndef RB_SOLVER_H
+#define RB_SOLVER_H
+
+#include "dynamics.h"
+#include "rk45.h"
+
+/* Guard functions: a stage ends where one crosses zero in its direction. */
+enum {
+    G_UP_POS,   /* stage 1: uplift about the left edge (+1) */
+    G_UP_NEG,   /* stage 1: uplift about the right edge (-1) */
+    G_FLOOR,    /* stage 2: plate comes back to the floor (theta -> 0) */
+    G_CONTACT,  /* stage 2: plate reaches the bolt heads (5.9b) */
+    G_OVERTURN, /* stages 2, 5: centre of mass passes over the pivot */
+    G_SLACK,    /* stage 4: bolt tension falls to zero */
+    G_YIELD,    /* stage 4: bolt tension reaches Fy */
+    G_UNLOAD,   /* stage 5: plate stops rising, yielding stops */
+    G_BREAK,    /* stage 5: absorbed energy reaches toughness x volume */
+    G_SWITCH,   /* critical excitation: theta' changes sign */
+    G_COUNT
+};
+
+typedef struct {
+    rb_sys sys;
+    rb_disc disc;
+    rb_solve_opts opts;
+    rb_result *res;
+    double t, y[RB_NY], f[RB_NY];
+    double atol[RB_NY];
+    double h, h_max, t_end;
+    double e_impact;
+    double rest_theta;          /* rocking amplitude that counts as at rest */
+    double window_start;        /* work bound: events since window_start */
+    long window_events;
+    long hist_k;                /* next history row is at hist_k * dt */
+    int done;
+} rb_solver;
+
+/* transitions.c */
+unsigned rb_guard_mask(const rb_solver *sv);
+void rb_guard_eval(const rb_solver *sv, double t, const double *y, double *g);
+int rb_guard_crossed(int guard, double before, double after);
+/* Apply the transition of 'guard' at the current (t, y). */
+void rb_transition(rb_solver *sv, int guard);
+/* Transitions that hold the moment a stage starts (a bolt impact that
+ * leaves the bolt slack or beyond yield, a jump in the excitation). */
+int rb_transition_immediate(rb_solver *sv);
+double rb_absorbed_now(const rb_solver *sv, int row);
+
+/* track.c */
+void rb_track_point(rb_solver *sv, double t, const double *y);
+void rb_track_interval(rb_solver *sv, const rb_rk_step *st, double ta, double tb);
+rb_status rb_history_sample(rb_solver *sv, const rb_rk_step *st, double ta, double tb);
+rb_status rb_history_push(rb_solver *sv, double t, const double *y);
+
+#endif

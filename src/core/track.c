@@ -1,0 +1,162 @@
+/* Peaks and time histories of a run.
+ *
+ * Peaks of U and theta are taken at step ends and, inside a step, at the
+ * roots of U' and theta' on the dense output, so a peak between two steps
+ * is found to the integrator's accuracy rather than to the step size. Forces
+ * and reactions come from the equations at the points visited. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "solver.h"
+
+static void note_displacements(rb_solver *sv, const double *y)
+{
+    rb_result *r = sv->res;
+    r->max_u_m = fmax(r->max_u_m, fabs(y[RB_Y_U]));
+    r->max_theta_rad = fmax(r->max_theta_rad, fabs(y[RB_Y_TH]));
+}
+
+void rb_track_point(rb_solver *sv, double t, const double *y)
+{
+    const rb_sys *S = &sv->sys;
+    rb_result *r = sv->res;
+    rb_aux a;
+    double H, V;
+    note_displacements(sv, y);
+    rb_dyn_rhs(S, &sv->disc, t, y, NULL, &a);
+    if (sv->disc.side != 0 && a.bolt_force > 0) {
+        int row = rb_row_of_side(sv->disc.side);
+        r->max_bolt_force_n[row] = fmax(r->max_bolt_force_n[row], a.bolt_force);
+    }
+    rb_dyn_reactions(S, &sv->disc, y, &a, &H, &V);
+    r->max_shear_total_n = fmax(r->max_shear_total_n, fabs(H));
+    if (V > 0)
+        r->max_friction_demand = fmax(r->max_friction_demand, fabs(H) / V);
+}
+
+/* Root of component c of the dense output in [a, b], where it changes sign. */
+static double dense_root(const rb_rk_step *st, int c, double a, double b)
+{
+    double y[RB_NY], fa, fb;
+    rb_rk_dense_eval(st, a, y);
+    fa = y[c];
+    rb_rk_dense_eval(st, b, y);
+    fb = y[c];
+    for (int i = 0; i < 60 && b - a > 1e-14 * (1 + fabs(b)); i++) {
+        double m = 0.5 * (a + b);
+        rb_rk_dense_eval(st, m, y);
+        if ((y[c] < 0) == (fa < 0)) {
+            a = m;
+            fa = y[c];
+        } else {
+            b = m;
+            fb = y[c];
+        }
+    }
+    (void)fb;
+    return 0.5 * (a + b);
+}
+
+void rb_track_interval(rb_solver *sv, const rb_rk_step *st, double ta, double tb)
+{
+    enum { SUB = 4 };
+    double prev[RB_NY], cur[RB_NY], y[RB_NY];
+    rb_rk_dense_eval(st, ta, prev);
+    for (int j = 1; j <= SUB; j++) {
+        double t0 = ta + (tb - ta) * (j - 1) / SUB, t1 = ta + (tb - ta) * j / SUB;
+        rb_rk_dense_eval(st, t1, cur);
+        static const int rates[2] = {RB_Y_UD, RB_Y_THD};
+        for (int k = 0; k < 2; k++) {
+            int c = rates[k];
+            if ((prev[c] < 0) != (cur[c] < 0)) {
+                rb_rk_dense_eval(st, dense_root(st, c, t0, t1), y);
+                note_displacements(sv, y);
+            }
+        }
+        if (j < SUB && sv->disc.stage == RB_STAGE_HELD)
+            rb_track_point(sv, t1, cur);
+        memcpy(prev, cur, sizeof prev);
+    }
+}
+
+static rb_status history_grow(rb_history *h)
+{
+    size_t cap = h->cap ? 2 * h->cap : 1024;
+    double **cols[] = {&h->t, &h->accel, &h->theta, &h->u, &h->bolt_force_left,
+                       &h->bolt_force_right, &h->shear_elastic, &h->shear_total,
+                       &h->energy_left, &h->energy_right, &h->kinetic, &h->potential,
+                       &h->strain};
+    for (size_t i = 0; i < sizeof cols / sizeof cols[0]; i++) {
+        double *p = realloc(*cols[i], cap * sizeof **cols[i]);
+        if (!p)
+            return RB_ERR_NOMEM;
+        *cols[i] = p;
+    }
+    int *s = realloc(h->stage, cap * sizeof *s);
+    if (!s)
+        return RB_ERR_NOMEM;
+    h->stage = s;
+    h->cap = cap;
+    return RB_OK;
+}
+
+rb_status rb_history_push(rb_solver *sv, double t, const double *y)
+{
+    rb_history *h = sv->res->history;
+    const rb_sys *S = &sv->sys;
+    rb_aux a;
+    double H, V;
+    if (!h)
+        return RB_OK;
+    if (h->n == h->cap && history_grow(h) != RB_OK)
+        return RB_ERR_NOMEM;
+    rb_dyn_rhs(S, &sv->disc, t, y, NULL, &a);
+    rb_dyn_reactions(S, &sv->disc, y, &a, &H, &V);
+    size_t i = h->n++;
+    int row = sv->disc.side ? rb_row_of_side(sv->disc.side) : -1;
+    h->t[i] = t;
+    h->accel[i] = a.x;
+    h->theta[i] = y[RB_Y_TH];
+    h->u[i] = y[RB_Y_U];
+    h->bolt_force_left[i] = row == RB_LEFT ? a.bolt_force : 0;
+    h->bolt_force_right[i] = row == RB_RIGHT ? a.bolt_force : 0;
+    h->shear_elastic[i] = S->d.Nstar * S->d.omega * S->d.omega * y[RB_Y_U];
+    h->shear_total[i] = H;
+    h->energy_left[i] = rb_absorbed_now(sv, RB_LEFT);
+    h->energy_right[i] = rb_absorbed_now(sv, RB_RIGHT);
+    h->kinetic[i] = rb_dyn_kinetic(S, &sv->disc, y);
+    h->potential[i] = rb_dyn_potential(S, &sv->disc, y);
+    h->strain[i] = rb_dyn_strain(S, &sv->disc, y);
+    h->stage[i] = sv->disc.stage;
+    return RB_OK;
+}
+
+rb_status rb_history_sample(rb_solver *sv, const rb_rk_step *st, double ta, double tb)
+{
+    double y[RB_NY];
+    if (!sv->res->history)
+        return RB_OK;
+    for (;;) {
+        /* k dt rather than a running sum, so long runs do not drift */
+        double next = (double)sv->hist_k * sv->opts.history_dt_s;
+        if (next > tb || next > sv->t_end)
+            return RB_OK;
+        rb_rk_dense_eval(st, next < ta ? ta : next, y);
+        if (rb_history_push(sv, next, y) != RB_OK)
+            return RB_ERR_NOMEM;
+        sv->hist_k++;
+    }
+}
+
+void rb_history_free(rb_history *h)
+{
+    if (!h)
+        return;
+    free(h->t); free(h->accel); free(h->theta); free(h->u);
+    free(h->bolt_force_left); free(h->bolt_force_right);
+    free(h->shear_elastic); free(h->shear_total);
+    free(h->energy_left); free(h->energy_right);
+    free(h->kinetic); free(h->potential); free(h->strain);
+    free(h->stage);
+    free(h);
+}

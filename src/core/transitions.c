@@ -1,0 +1,295 @@
+/* Stage transitions of the restrained-rocking model (Fig. 5.3.b).
+ *
+ * Each stage watches a few guard functions; a transition is the root of one
+ * of them, applied as an instantaneous map of the state: floor impact with
+ * restitution (5.17, U' unchanged per 5.20), bolt-head impact (5.14c),
+ * release (5.9a), yield, unloading (5.14d), rupture (sec. 5.3). Guards are
+ * written so that their sign agrees with the direction the next stage moves
+ * in (the uplift guard is the stage-2 moment equation at theta = 0, the bolt
+ * force is the stage-4 moment equation), so a transition never lands the
+ * state on the wrong side of the boundary it just crossed. */
+#include <math.h>
+#include "solver.h"
+
+static const int guard_dir[G_COUNT] = {
+    [G_UP_POS] = 1, [G_UP_NEG] = 1, [G_FLOOR] = -1, [G_CONTACT] = 1,
+    [G_OVERTURN] = 1, [G_SLACK] = -1, [G_YIELD] = 1, [G_UNLOAD] = -1,
+    [G_BREAK] = 1, [G_SWITCH] = 0,
+};
+
+int rb_guard_crossed(int guard, double a, double b)
+{
+    switch (guard_dir[guard]) {
+    case 1: return a < 0 && b >= 0;
+    case -1: return a > 0 && b <= 0;
+    default: return (a < 0 && b >= 0) || (a > 0 && b <= 0);
+    }
+}
+
+static int row_intact(const rb_solver *sv, int side)
+{
+    return sv->sys.has_bolts && !sv->disc.broken[rb_row_of_side(side)];
+}
+
+unsigned rb_guard_mask(const rb_solver *sv)
+{
+    const rb_disc *D = &sv->disc;
+    unsigned m = 0;
+    int critical = sv->sys.motion->kind == RB_MOTION_CRITICAL;
+    switch (D->stage) {
+    case RB_STAGE_FIXED:
+        return 1u << G_UP_POS | 1u << G_UP_NEG;
+    case RB_STAGE_UPLIFT:
+        m = 1u << G_FLOOR | 1u << G_OVERTURN;
+        if (row_intact(sv, D->side))
+            m |= 1u << G_CONTACT;
+        break;
+    case RB_STAGE_HELD:
+        m = 1u << G_SLACK;
+        if (sv->sys.yielding_bolts)
+            m |= 1u << G_YIELD;
+        break;
+    case RB_STAGE_YIELD:
+        m = 1u << G_UNLOAD | 1u << G_OVERTURN;
+        if (!sv->opts.stretch_past_failure)
+            m |= 1u << G_BREAK;
+        break;
+    default:
+        break;
+    }
+    if (critical)
+        m |= 1u << G_SWITCH;
+    return m;
+}
+
+double rb_absorbed_now(const rb_solver *sv, int row)
+{
+    const rb_disc *D = &sv->disc;
+    if (D->stage != RB_STAGE_YIELD || rb_row_of_side(D->side) != row)
+        return D->absorbed[row];
+    double th = D->side * sv->y[RB_Y_TH];
+    return D->absorbed_entry + sv->sys.d.fy_row_n * (rb_dyn_chord(&sv->sys, th) - D->chord_entry);
+}
+
+void rb_guard_eval(const rb_solver *sv, double t, const double *y, double *g)
+{
+    const rb_sys *S = &sv->sys;
+    const rb_disc *D = &sv->disc;
+    unsigned mask = rb_guard_mask(sv);
+    double th = D->side * y[RB_Y_TH], thd = D->side * y[RB_Y_THD];
+    int row = rb_row_of_side(D->side);
+    double chord = rb_dyn_chord(S, th);
+    if (mask & 1u << G_UP_POS) {
+        g[G_UP_POS] = rb_dyn_uplift_guard(S, t, y, 1);
+        g[G_UP_NEG] = rb_dyn_uplift_guard(S, t, y, -1);
+    }
+    g[G_FLOOR] = th;
+    g[G_CONTACT] = chord - D->gap[row];
+    g[G_OVERTURN] = th - S->d.alpha;
+    g[G_UNLOAD] = thd;
+    g[G_SWITCH] = y[RB_Y_THD];
+    g[G_BREAK] = D->absorbed_entry + S->d.fy_row_n * (chord - D->chord_entry) - S->d.capacity_j;
+    if (mask & (1u << G_SLACK | 1u << G_YIELD)) {
+        rb_aux a;
+        rb_dyn_rhs(S, D, t, y, NULL, &a);
+        g[G_SLACK] = S->elastic_bolts ? chord - D->gap[row] : a.bolt_force;
+        g[G_YIELD] = a.bolt_force - S->d.fy_row_n;
+    }
+}
+
+static void count_event(rb_solver *sv)
+{
+    sv->res->events++;
+    sv->window_events++;
+}
+
+static void bolt_impact(rb_solver *sv);
+
+/* With no gap on the side now loaded, the plate is held at once; a plate
+ * still rotating hits the bolt head as it leaves the floor. */
+static void enter_stage2_or_4(rb_solver *sv)
+{
+    rb_disc *D = &sv->disc;
+    int row = rb_row_of_side(D->side);
+    D->stage = RB_STAGE_UPLIFT;
+    if (row_intact(sv, D->side) && D->gap[row] == 0) {
+        if (sv->y[RB_Y_THD] != 0) {
+            bolt_impact(sv);
+            return;
+        }
+        D->stage = RB_STAGE_HELD;
+        D->theta_hold = 0;
+    }
+}
+
+/* Kinetic energy lost in an instantaneous map goes to the impact account. */
+static void impact_loss(rb_solver *sv, double ke_before)
+{
+    sv->e_impact += ke_before - rb_dyn_kinetic(&sv->sys, &sv->disc, sv->y);
+}
+
+static void come_to_rest(rb_solver *sv)
+{
+    double ke = rb_dyn_kinetic(&sv->sys, &sv->disc, sv->y);
+    sv->y[RB_Y_TH] = 0;
+    sv->y[RB_Y_THD] = 0;
+    sv->disc.stage = RB_STAGE_FIXED;
+    sv->disc.side = 0;
+    impact_loss(sv, ke);
+}
+
+/* Rocking that would rise less than rest_theta after this impact has died
+ * out (the thesis's "number of high-frequency impacts" before stage 1): the
+ * energy test keeps an endless series of ever smaller impacts finite. */
+static void floor_impact(rb_solver *sv)
+{
+    const rb_sys *S = &sv->sys;
+    rb_disc *D = &sv->disc;
+    double ke = rb_dyn_kinetic(S, D, sv->y);
+    sv->y[RB_Y_TH] = 0;
+    sv->y[RB_Y_THD] *= S->d.delta;
+    D->side = -D->side;
+    sv->res->floor_impacts++;
+    impact_loss(sv, ke);
+    double thd = sv->y[RB_Y_THD];
+    double rise = 0.5 * S->d.Io * thd * thd / (S->d.W * S->b);
+    if (rise < sv->rest_theta)
+        come_to_rest(sv);
+    else
+        enter_stage2_or_4(sv);
+}
+
+static void bolt_impact(rb_solver *sv)
+{
+    const rb_sys *S = &sv->sys;
+    rb_disc *D = &sv->disc;
+    int row = rb_row_of_side(D->side);
+    sv->res->bolt_impacts++;
+    D->stage = RB_STAGE_HELD;
+    if (S->elastic_bolts)
+        return;
+    double ke = rb_dyn_kinetic(S, D, sv->y);
+    double th0 = rb_dyn_contact_angle(S, D->gap[row]);
+    if (!S->model->rigid)
+        sv->y[RB_Y_UD] += M_PI * S->h / 2 * sv->y[RB_Y_THD];
+    sv->y[RB_Y_TH] = D->side * th0;
+    sv->y[RB_Y_THD] = 0;
+    D->theta_hold = th0;
+    impact_loss(sv, ke);
+}
+
+static void release(rb_solver *sv)
+{
+    rb_disc *D = &sv->disc;
+    int row = rb_row_of_side(D->side);
+    if (!sv->sys.elastic_bolts) {
+        sv->y[RB_Y_TH] = D->side * D->theta_hold;
+        sv->y[RB_Y_THD] = 0;
+    }
+    if (D->gap[row] == 0)
+        come_to_rest(sv);
+    else
+        D->stage = RB_STAGE_UPLIFT;
+}
+
+static void start_yield(rb_solver *sv)
+{
+    rb_disc *D = &sv->disc;
+    int row = rb_row_of_side(D->side);
+    if (!sv->sys.elastic_bolts) {
+        sv->y[RB_Y_TH] = D->side * D->theta_hold;
+        sv->y[RB_Y_THD] = 0;
+    }
+    D->stage = RB_STAGE_YIELD;
+    D->chord_entry = rb_dyn_chord(&sv->sys, D->side * sv->y[RB_Y_TH]);
+    D->absorbed_entry = D->absorbed[row];
+    if (!sv->res->yielded[row]) {
+        sv->res->yielded[row] = 1;
+        sv->res->first_yield_s[row] = sv->t;
+    }
+}
+
+static void stop_yield(rb_solver *sv)
+{
+    const rb_sys *S = &sv->sys;
+    rb_disc *D = &sv->disc;
+    int row = rb_row_of_side(D->side);
+    double th = D->side * sv->y[RB_Y_TH];
+    D->absorbed[row] = rb_absorbed_now(sv, row);
+    sv->y[RB_Y_THD] = 0;
+    D->gap[row] = rb_dyn_chord(S, th);
+    if (S->elastic_bolts)
+        D->gap[row] -= S->d.fy_row_n / S->d.k_row_npm;
+    D->theta_hold = th;
+    D->stage = RB_STAGE_HELD;
+}
+
+static void rupture(rb_solver *sv)
+{
+    rb_disc *D = &sv->disc;
+    int row = rb_row_of_side(D->side);
+    D->absorbed[row] = sv->sys.d.capacity_j;
+    D->broken[row] = 1;
+    sv->res->broken[row] = 1;
+    sv->res->break_s[row] = sv->t;
+    D->stage = RB_STAGE_UPLIFT;
+}
+
+void rb_transition(rb_solver *sv, int guard)
+{
+    rb_disc *D = &sv->disc;
+    count_event(sv);
+    switch (guard) {
+    case G_UP_POS:
+    case G_UP_NEG:
+        D->side = guard == G_UP_POS ? 1 : -1;
+        sv->res->uplifts++;
+        enter_stage2_or_4(sv);
+        break;
+    case G_FLOOR: floor_impact(sv); break;
+    case G_CONTACT: bolt_impact(sv); break;
+    case G_SLACK: release(sv); break;
+    case G_YIELD: start_yield(sv); break;
+    case G_UNLOAD: stop_yield(sv); break;
+    case G_BREAK: rupture(sv); break;
+    case G_OVERTURN:
+        sv->res->overturned = 1;
+        sv->res->overturn_side = rb_row_of_side(D->side);
+        sv->res->overturn_s = sv->t;
+        sv->done = 1;
+        break;
+    case G_SWITCH:
+        sv->y[RB_Y_THD] = 0;
+        break;
+    default:
+        break;
+    }
+}
+
+int rb_transition_immediate(rb_solver *sv)
+{
+    const rb_sys *S = &sv->sys;
+    rb_disc *D = &sv->disc;
+    if (D->stage == RB_STAGE_FIXED) {
+        double up = rb_dyn_uplift_guard(S, sv->t, sv->y, 1);
+        double dn = rb_dyn_uplift_guard(S, sv->t, sv->y, -1);
+        if (up > 0 || dn > 0) {
+            rb_transition(sv, up > 0 ? G_UP_POS : G_UP_NEG);
+            return 1;
+        }
+        return 0;
+    }
+    if (D->stage == RB_STAGE_HELD && !S->elastic_bolts) {
+        rb_aux a;
+        rb_dyn_rhs(S, D, sv->t, sv->y, NULL, &a);
+        if (a.bolt_force <= 0) {
+            rb_transition(sv, G_SLACK);
+            return 1;
+        }
+        if (S->yielding_bolts && a.bolt_force >= S->d.fy_row_n) {
+            rb_transition(sv, G_YIELD);
+            return 1;
+        }
+    }
+    return 0;
+}
