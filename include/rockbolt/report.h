@@ -37,6 +37,7 @@ typedef struct {
     rb_derived derived;            /* rb_model_derive of kase->model */
     const rb_report_motion *motions; /* borrowed array of n_motions */
     size_t n_motions;
+    int with_history;              /* JSON: include each motion's history */
     int pass;                      /* 1 when every motion passes */
     char reason[384];              /* one line: what governed the verdict */
 } rb_report;

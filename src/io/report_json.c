@@ -313,6 +313,63 @@ static void add_energy_cost(jctx *cx, cJSON *res_o, const rb_result *r)
     j_num(cx, o, "history_rows", r->history ? (double)r->history->n : 0);
 }
 
+/* One column of a history as a JSON array of numbers. */
+static void j_column(jctx *cx, cJSON *o, const char *key, const double *v, size_t n)
+{
+    cJSON *a = cx->st == RB_OK ? cJSON_AddArrayToObject(o, key) : NULL;
+    size_t i;
+    j_oom(cx, a);
+    for (i = 0; i < n && cx->st == RB_OK; i++) {
+        cJSON *x;
+        if (!isfinite(v[i])) {
+            cx->st = RB_ERR_NONFINITE;
+            snprintf(cx->bad_key, sizeof cx->bad_key, "%s.history.%s[%zu]",
+                     cx->where, key, i);
+            return;
+        }
+        x = cJSON_CreateNumber(v[i]);
+        if (!x || !cJSON_AddItemToArray(a, x)) {
+            cJSON_Delete(x);
+            cx->st = RB_ERR_NOMEM;
+        }
+    }
+}
+
+/* The time history, column-wise (same columns as the CSV). */
+static void add_history(jctx *cx, cJSON *parent, const rb_history *h)
+{
+    cJSON *o, *a;
+    size_t i;
+    if (!h) {
+        j_null(cx, parent, "history");
+        return;
+    }
+    o = j_obj(cx, parent, "history");
+    j_num(cx, o, "rows", (double)h->n);
+    j_column(cx, o, "t_s", h->t, h->n);
+    j_column(cx, o, "accel_mps2", h->accel, h->n);
+    j_column(cx, o, "theta_rad", h->theta, h->n);
+    j_column(cx, o, "u_m", h->u, h->n);
+    j_column(cx, o, "bolt_force_left_n", h->bolt_force_left, h->n);
+    j_column(cx, o, "bolt_force_right_n", h->bolt_force_right, h->n);
+    j_column(cx, o, "shear_elastic_n", h->shear_elastic, h->n);
+    j_column(cx, o, "shear_total_n", h->shear_total, h->n);
+    j_column(cx, o, "energy_left_j", h->energy_left, h->n);
+    j_column(cx, o, "energy_right_j", h->energy_right, h->n);
+    j_column(cx, o, "kinetic_j", h->kinetic, h->n);
+    j_column(cx, o, "potential_j", h->potential, h->n);
+    j_column(cx, o, "strain_j", h->strain, h->n);
+    a = cx->st == RB_OK ? cJSON_AddArrayToObject(o, "stage") : NULL;
+    j_oom(cx, a);
+    for (i = 0; i < h->n && cx->st == RB_OK; i++) {
+        cJSON *x = cJSON_CreateNumber(h->stage[i]);
+        if (!x || !cJSON_AddItemToArray(a, x)) {
+            cJSON_Delete(x);
+            cx->st = RB_ERR_NOMEM;
+        }
+    }
+}
+
 static void add_motion(jctx *cx, cJSON *arr, const rb_report *r, size_t i)
 {
     const rb_report_motion *m = &r->motions[i];
@@ -338,6 +395,8 @@ static void add_motion(jctx *cx, cJSON *arr, const rb_report *r, size_t i)
     add_peaks(cx, v, m->result, &n);
     add_rows_outcome(cx, v, m->result, &n);
     add_energy_cost(cx, v, m->result);
+    if (r->with_history)
+        add_history(cx, o, m->result->history);
 }
 
 static void add_head(jctx *cx, cJSON *root, const rb_report *r)

@@ -1,0 +1,64 @@
+/* The rockbolt command line: what the cli_*.c files share.
+ *
+ * The CLI is the only part of rockbolt that prints. It parses the command
+ * line, calls the library, turns statuses into the documented exit codes
+ * and prints diagnostics as "FILE:LINE:COL: error: KEY: MESSAGE". */
+#ifndef RB_CLI_H
+#define RB_CLI_H
+
+#include "rockbolt/rockbolt.h"
+
+/* Exit codes, as documented in --help and README.md. */
+typedef enum {
+    RB_EXIT_PASS = 0,     /* the design passes its criteria */
+    RB_EXIT_FAIL = 1,     /* it fails them */
+    RB_EXIT_USAGE = 2,    /* bad input or usage; nothing written */
+    RB_EXIT_INTERNAL = 3  /* internal or solver error */
+} rb_exit;
+
+typedef enum {
+    RB_CMD_NONE = 0,
+    RB_CMD_HELP,
+    RB_CMD_VERSION,
+    RB_CMD_CHECK,
+    RB_CMD_INIT
+} rb_cli_command;
+
+typedef struct {
+    rb_cli_command command;
+    const char *case_path;    /* check: the case file */
+    const char *json_path;    /* --json FILE, or NULL */
+    const char *text_path;    /* --text FILE, or NULL */
+    const char *history_path; /* --history FILE, or NULL */
+    int quiet;                /* --quiet: nothing on stdout */
+    const char *init_path;    /* init: the file to create */
+} rb_cli_opts;
+
+/* Parse argv into o. Returns RB_EXIT_PASS, or RB_EXIT_USAGE after printing
+ * what is wrong. Strings in o point into argv. */
+rb_exit rb_cli_args_parse(int argc, char **argv, rb_cli_opts *o);
+
+rb_exit rb_cli_check_run(const rb_cli_opts *o);
+rb_exit rb_cli_init_run(const rb_cli_opts *o);
+
+/* --help on stdout; --version on stdout. */
+void rb_cli_help_print(void);
+void rb_cli_version_print(void);
+
+/* Diagnostics on stderr, one line each. */
+#if defined(__GNUC__)
+#define RB_PRINTF_LIKE(f, a) __attribute__((format(printf, f, a)))
+#else
+#define RB_PRINTF_LIKE(f, a)
+#endif
+
+/* "FILE:LINE:COL: error: KEY: MESSAGE"; FILE defaults to "rockbolt", the
+ * position is left out when unknown, "KEY: " when the key is empty. */
+void rb_cli_diag_print(const rb_diag *d);
+
+/* The same for an error with no position: file (NULL: "rockbolt"), key
+ * (NULL or "": none) and a printf-style message. */
+void rb_cli_error(const char *file, const char *key, const char *fmt, ...)
+    RB_PRINTF_LIKE(3, 4);
+
+#endif

@@ -1,0 +1,156 @@
+/* Command-line parsing: "rockbolt COMMAND [ARGS] [OPTIONS]".
+ *
+ * Options may come before or after the case file, as "--json FILE" or
+ * "--json=FILE"; "--" ends the options. Every mistake is a usage error
+ * (exit 2) with one line naming the offending argument, and is found
+ * before anything is read or written. */
+#include <string.h>
+#include "cli.h"
+
+/* Is arg the option name, as "--name" alone or "--name=VALUE"? Sets
+ * *inline_val to the text after '=' if any. */
+static int opt_is(const char *arg, const char *name, const char **inline_val)
+{
+    size_t n = strlen(name);
+    if (strncmp(arg, name, n) != 0)
+        return 0;
+    if (arg[n] == '\0') {
+        *inline_val = NULL;
+        return 1;
+    }
+    if (arg[n] == '=') {
+        *inline_val = arg + n + 1;
+        return 1;
+    }
+    return 0;
+}
+
+/* Take the value of a FILE option from "=VALUE" or the next argument. */
+static rb_exit take_value(int argc, char **argv, int *i, const char *name,
+                          const char *inline_val, const char **dst)
+{
+    const char *v = inline_val;
+    if (!v) {
+        if (*i + 1 >= argc) {
+            rb_cli_error(NULL, NULL, "option '%s' needs a file name", name);
+            return RB_EXIT_USAGE;
+        }
+        v = argv[++*i];
+    }
+    if (!v[0]) {
+        rb_cli_error(NULL, NULL, "option '%s' needs a non-empty file name", name);
+        return RB_EXIT_USAGE;
+    }
+    if (*dst) {
+        rb_cli_error(NULL, NULL, "option '%s' given twice", name);
+        return RB_EXIT_USAGE;
+    }
+    *dst = v;
+    return RB_EXIT_PASS;
+}
+
+/* One option of "check"; RB_EXIT_USAGE if arg is not one. */
+static rb_exit check_option(int argc, char **argv, int *i, rb_cli_opts *o)
+{
+    const char *arg = argv[*i], *val = NULL;
+    if (opt_is(arg, "--json", &val))
+        return take_value(argc, argv, i, "--json", val, &o->json_path);
+    if (opt_is(arg, "--text", &val))
+        return take_value(argc, argv, i, "--text", val, &o->text_path);
+    if (opt_is(arg, "--history", &val))
+        return take_value(argc, argv, i, "--history", val, &o->history_path);
+    if (strcmp(arg, "--quiet") == 0 || strcmp(arg, "-q") == 0) {
+        o->quiet = 1;
+        return RB_EXIT_PASS;
+    }
+    rb_cli_error(NULL, NULL, "unknown option '%s' for 'check' (see rockbolt --help)",
+                 arg);
+    return RB_EXIT_USAGE;
+}
+
+/* Two outputs, or an output and the case, must not be the same file. */
+static rb_exit check_distinct(const rb_cli_opts *o)
+{
+    const char *p[4] = { o->json_path, o->text_path, o->history_path, o->case_path };
+    static const char *const what[4] = { "--json", "--text", "--history", "the case" };
+    int a, b;
+    for (a = 0; a < 3; a++)
+        for (b = a + 1; b < 4; b++)
+            if (p[a] && p[b] && strcmp(p[a], p[b]) == 0) {
+                rb_cli_error(p[a], what[a], "same file as %s", what[b]);
+                return RB_EXIT_USAGE;
+            }
+    return RB_EXIT_PASS;
+}
+
+/* Positional arguments and options after the command name. */
+static rb_exit parse_rest(int argc, char **argv, rb_cli_opts *o)
+{
+    const char **positional = o->command == RB_CMD_CHECK ? &o->case_path : &o->init_path;
+    int i, options_done = 0;
+    for (i = 2; i < argc; i++) {
+        const char *arg = argv[i];
+        rb_exit e = RB_EXIT_PASS;
+        if (!options_done && (strcmp(arg, "--help") == 0 || strcmp(arg, "-h") == 0)) {
+            o->command = RB_CMD_HELP;
+            return RB_EXIT_PASS;
+        }
+        if (!options_done && strcmp(arg, "--") == 0) {
+            options_done = 1;
+            continue;
+        }
+        if (!options_done && arg[0] == '-' && arg[1] != '\0') {
+            if (o->command != RB_CMD_CHECK) {
+                rb_cli_error(NULL, NULL, "unknown option '%s' for 'init' "
+                             "(see rockbolt --help)", arg);
+                return RB_EXIT_USAGE;
+            }
+            e = check_option(argc, argv, &i, o);
+        } else if (*positional) {
+            rb_cli_error(NULL, NULL, "unexpected argument '%s' (see rockbolt --help)",
+                         arg);
+            return RB_EXIT_USAGE;
+        } else {
+            *positional = arg;
+        }
+        if (e != RB_EXIT_PASS)
+            return e;
+    }
+    return RB_EXIT_PASS;
+}
+
+rb_exit rb_cli_args_parse(int argc, char **argv, rb_cli_opts *o)
+{
+    const char *cmd = argc > 1 ? argv[1] : NULL;
+    rb_exit e;
+    memset(o, 0, sizeof *o);
+    if (!cmd) {
+        rb_cli_error(NULL, NULL, "no command given (see rockbolt --help)");
+        return RB_EXIT_USAGE;
+    }
+    if (!strcmp(cmd, "--help") || !strcmp(cmd, "-h") || !strcmp(cmd, "help")) {
+        o->command = RB_CMD_HELP;
+        return RB_EXIT_PASS;
+    }
+    if (!strcmp(cmd, "--version") || !strcmp(cmd, "-V") || !strcmp(cmd, "version")) {
+        o->command = RB_CMD_VERSION;
+        return RB_EXIT_PASS;
+    }
+    if (!strcmp(cmd, "check"))
+        o->command = RB_CMD_CHECK;
+    else if (!strcmp(cmd, "init"))
+        o->command = RB_CMD_INIT;
+    else {
+        rb_cli_error(NULL, NULL, "unknown command '%s' (see rockbolt --help)", cmd);
+        return RB_EXIT_USAGE;
+    }
+    if ((e = parse_rest(argc, argv, o)) != RB_EXIT_PASS || o->command == RB_CMD_HELP)
+        return e;
+    if (o->command == RB_CMD_CHECK && !o->case_path) {
+        rb_cli_error(NULL, NULL, "'check' needs a case file: rockbolt check CASE.yaml");
+        return RB_EXIT_USAGE;
+    }
+    if (o->command == RB_CMD_INIT && !o->init_path)
+        o->init_path = "case.yaml";
+    return o->command == RB_CMD_CHECK ? check_distinct(o) : RB_EXIT_PASS;
+}

@@ -1,0 +1,236 @@
+/* "rockbolt check CASE.yaml": load, solve every motion, judge, report.
+ *
+ * Order matters for the exit-code contract: output paths are checked and
+ * the case and the template loaded before any solving, so usage and input
+ * errors (exit 2) never leave files behind; reports are rendered whole in
+ * memory, every output is written to a temporary file and synced, and only
+ * then are they all renamed into place. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "cli.h"
+
+#define RB_HISTORY_DT_DEFAULT_S 0.01
+
+typedef struct {
+    rb_case c;
+    rb_result *results;      /* n_motions, owned */
+    rb_report_motion *rms;   /* n_motions, owned */
+    rb_report rep;
+    char *tmpl;              /* report template text, owned */
+    const char *tmpl_origin;
+    char *json, *text;       /* rendered reports, owned */
+} check_run;
+
+static void run_free(check_run *r)
+{
+    size_t i;
+    if (r->results)
+        for (i = 0; i < r->c.n_motions; i++)
+            rb_result_free(&r->results[i]);
+    free(r->results);
+    free(r->rms);
+    free(r->tmpl);
+    free(r->json);
+    free(r->text);
+    rb_case_free(&r->c);
+}
+
+/* Every output's directory must exist and be writable before we start. */
+static rb_exit check_output_paths(const rb_cli_opts *o)
+{
+    const char *paths[3] = { o->json_path, o->text_path, o->history_path };
+    static const char *const opts[3] = { "--json", "--text", "--history" };
+    int i;
+    for (i = 0; i < 3; i++) {
+        rb_diag d;
+        rb_diag_clear(&d);
+        if (paths[i] && rb_outfile_check(paths[i], &d) != RB_OK) {
+            snprintf(d.key, sizeof d.key, "%s", opts[i]);
+            rb_cli_diag_print(&d);
+            return RB_EXIT_USAGE;
+        }
+    }
+    return RB_EXIT_PASS;
+}
+
+static rb_exit load_case(const rb_cli_opts *o, check_run *r)
+{
+    rb_diag_list diags = {0};
+    rb_status st = rb_case_load(o->case_path, &r->c, &diags);
+    size_t i;
+    for (i = 0; i < diags.n; i++) {
+        if (!diags.items[i].file[0])
+            snprintf(diags.items[i].file, sizeof diags.items[i].file, "%s",
+                     o->case_path);
+        rb_cli_diag_print(&diags.items[i]);
+    }
+    if (st != RB_OK && diags.n == 0)
+        rb_cli_error(o->case_path, NULL, "cannot load the case: %s", rb_status_str(st));
+    rb_diag_list_free(&diags);
+    if (st == RB_OK)
+        return RB_EXIT_PASS;
+    return st == RB_ERR_NOMEM ? RB_EXIT_INTERNAL : RB_EXIT_USAGE;
+}
+
+/* The derived constants, and the template if a text report is wanted. */
+static rb_exit prepare(const rb_cli_opts *o, check_run *r)
+{
+    rb_diag d;
+    rb_status st;
+    rb_diag_clear(&d);
+    if (rb_model_derive(&r->c.model, &r->rep.derived, &d) != RB_OK) {
+        snprintf(d.file, sizeof d.file, "%s", o->case_path);
+        rb_cli_diag_print(&d);
+        return RB_EXIT_USAGE;
+    }
+    r->results = calloc(r->c.n_motions, sizeof *r->results);
+    r->rms = calloc(r->c.n_motions, sizeof *r->rms);
+    if (!r->results || !r->rms) {
+        rb_cli_error(NULL, NULL, "out of memory");
+        return RB_EXIT_INTERNAL;
+    }
+    if (!o->text_path && o->quiet)
+        return RB_EXIT_PASS;
+    st = rb_template_load("report.txt", &r->tmpl, &r->tmpl_origin, &d);
+    if (st != RB_OK) {
+        rb_cli_diag_print(&d);
+        return st == RB_ERR_IO ? RB_EXIT_USAGE : RB_EXIT_INTERNAL;
+    }
+    return RB_EXIT_PASS;
+}
+
+/* Solve and judge every motion; a solver failure is exit 3. */
+static rb_exit solve_all(const rb_cli_opts *o, check_run *r)
+{
+    rb_solve_opts so = r->c.solve;
+    size_t i;
+    if (r->c.write_history || o->history_path) {
+        if (!(so.history_dt_s > 0))
+            so.history_dt_s = RB_HISTORY_DT_DEFAULT_S;
+    }
+    for (i = 0; i < r->c.n_motions; i++) {
+        const rb_case_motion *cm = &r->c.motions[i];
+        rb_report_motion *rm = &r->rms[i];
+        rb_diag d;
+        rb_status st;
+        rb_diag_clear(&d);
+        st = rb_solve_run(&r->c.model, &cm->motion, &so, &r->results[i], &d);
+        if (st != RB_OK) {
+            char key[128];
+            snprintf(key, sizeof key, "motion '%.100s'", cm->name ? cm->name : "?");
+            rb_cli_error(o->case_path, key, "%s%s%s", rb_status_str(st),
+                         d.msg[0] ? ": " : "", d.msg);
+            return RB_EXIT_INTERNAL;
+        }
+        rm->motion = cm;
+        rm->result = &r->results[i];
+        rm->pass = rb_criteria_judge(&r->c.criteria, &r->results[i], rm->reason,
+                                     sizeof rm->reason);
+    }
+    r->rep.kase = &r->c;
+    r->rep.motions = r->rms;
+    r->rep.n_motions = r->c.n_motions;
+    r->rep.with_history = r->c.write_history;
+    rb_report_conclude(&r->rep);
+    return RB_EXIT_PASS;
+}
+
+static rb_exit render_reports(const rb_cli_opts *o, check_run *r)
+{
+    rb_diag d;
+    rb_status st = RB_OK;
+    rb_diag_clear(&d);
+    if (o->json_path)
+        st = rb_report_json_render(&r->rep, &r->json, &d);
+    if (st != RB_OK) {
+        snprintf(d.file, sizeof d.file, "%s", o->json_path);
+        rb_cli_diag_print(&d);
+        return RB_EXIT_INTERNAL;
+    }
+    if (r->tmpl)
+        st = rb_report_text_render(&r->rep, r->tmpl, &r->text, &d);
+    if (st != RB_OK) {
+        int user = strcmp(r->tmpl_origin, "RB_TEMPLATE_DIR") == 0;
+        snprintf(d.file, sizeof d.file, "%s/report.txt",
+                 user ? getenv("RB_TEMPLATE_DIR") : "templates");
+        rb_cli_diag_print(&d);
+        return user && st == RB_ERR_PARSE ? RB_EXIT_USAGE : RB_EXIT_INTERNAL;
+    }
+    return RB_EXIT_PASS;
+}
+
+/* Fill one opened output: index 0 JSON, 1 text, 2 history. */
+static rb_status fill_output(int which, FILE *fp, const check_run *r, rb_diag *d)
+{
+    const char *s = which == 0 ? r->json : r->text;
+    if (which == 2)
+        return rb_history_write_csv(fp, &r->rep, d);
+    if (fwrite(s, 1, strlen(s), fp) != strlen(s)) {
+        snprintf(d->msg, sizeof d->msg, "cannot write");
+        return RB_ERR_IO;
+    }
+    return RB_OK;
+}
+
+/* Write all outputs to temporary files, sync them all, then rename them
+ * all: an error before the renames leaves no output touched. */
+static rb_exit write_outputs(const rb_cli_opts *o, check_run *r)
+{
+    const char *paths[3] = { o->json_path, o->text_path, o->history_path };
+    rb_outfile f[3];
+    rb_status st = RB_OK;
+    rb_diag d;
+    int i;
+    memset(f, 0, sizeof f);
+    rb_diag_clear(&d);
+    for (i = 0; i < 3 && st == RB_OK; i++) {
+        if (!paths[i])
+            continue;
+        st = rb_outfile_open(&f[i], paths[i], 0, &d);
+        if (st == RB_OK)
+            st = fill_output(i, f[i].fp, r, &d);
+        if (st == RB_OK)
+            st = rb_outfile_finish(&f[i], &d);
+        if (st != RB_OK && !d.file[0])
+            snprintf(d.file, sizeof d.file, "%s", paths[i]);
+    }
+    for (i = 0; i < 3 && st == RB_OK; i++)
+        if (paths[i])
+            st = rb_outfile_commit(&f[i], &d);
+    for (i = 0; i < 3; i++)
+        rb_outfile_abort(&f[i]);
+    if (st != RB_OK) {
+        rb_cli_diag_print(&d);
+        return RB_EXIT_INTERNAL;
+    }
+    return RB_EXIT_PASS;
+}
+
+rb_exit rb_cli_check_run(const rb_cli_opts *o)
+{
+    check_run r;
+    rb_exit e;
+    memset(&r, 0, sizeof r);
+    e = check_output_paths(o);
+    if (e == RB_EXIT_PASS)
+        e = load_case(o, &r);
+    if (e == RB_EXIT_PASS)
+        e = prepare(o, &r);
+    if (e == RB_EXIT_PASS)
+        e = solve_all(o, &r);
+    if (e == RB_EXIT_PASS)
+        e = render_reports(o, &r);
+    if (e == RB_EXIT_PASS)
+        e = write_outputs(o, &r);
+    if (e == RB_EXIT_PASS && !o->quiet) {
+        if (o->text_path)
+            printf("%s: %s\n", r.rep.pass ? "PASS" : "FAIL", r.rep.reason);
+        else
+            fputs(r.text, stdout);
+    }
+    if (e == RB_EXIT_PASS)
+        e = r.rep.pass ? RB_EXIT_PASS : RB_EXIT_FAIL;
+    run_free(&r);
+    return e;
+}

@@ -1,0 +1,53 @@
+/* --help and --version texts. The exit codes listed here are the contract
+ * scripts rely on; README.md repeats them. */
+#include <stdio.h>
+#include "cli.h"
+
+void rb_cli_help_print(void)
+{
+    fputs(
+"usage: rockbolt check CASE.yaml [--json FILE] [--text FILE] [--history FILE]\n"
+"                      [--quiet]\n"
+"       rockbolt init [FILE]\n"
+"       rockbolt --help | --version\n"
+"\n"
+"Checks the seismic anchorage of rocking equipment: a cabinet on a base\n"
+"plate, held down by bolt rows with a gap, under floor motions.\n"
+"\n"
+"commands:\n"
+"  check CASE.yaml   solve every motion of the case, judge each against the\n"
+"                    case's criteria and report; the text report goes to\n"
+"                    standard output unless --text or --quiet is given\n"
+"  init [FILE]       write a commented starter case to FILE (default\n"
+"                    case.yaml); never overwrites an existing file\n"
+"\n"
+"options of check:\n"
+"  --json FILE       write the JSON report (docs/report-format.md)\n"
+"  --text FILE       write the text report to FILE; standard output then\n"
+"                    gets only the verdict line\n"
+"  --history FILE    write the time histories as CSV (one row per output\n"
+"                    interval of the case, default 0.01 s)\n"
+"  -q, --quiet       print nothing on standard output\n"
+"  -h, --help        this text\n"
+"  -V, --version     the version\n"
+"\n"
+"Output files are written whole or not at all, and their directories are\n"
+"checked before solving.\n"
+"\n"
+"exit codes:\n"
+"  0  the design passes its criteria for every motion\n"
+"  1  it fails them for at least one motion\n"
+"  2  bad input or usage (nothing written)\n"
+"  3  internal or solver error\n"
+"\n"
+"environment:\n"
+"  RB_TEMPLATE_DIR   directory searched first for report.txt and\n"
+"                    starter.yaml (a built-in copy is used otherwise)\n",
+        stdout);
+}
+
+void rb_cli_version_print(void)
+{
+    printf("rockbolt %s (JSON report format %d)\n", RB_VERSION_STRING,
+           RB_REPORT_FORMAT_VERSION);
+}

@@ -1,0 +1,34 @@
+/* Diagnostics of the CLI: one line per problem on stderr, in the form
+ * compilers use, "FILE:LINE:COL: error: KEY: MESSAGE", so editors can jump
+ * to the place. Everything the library reports arrives as an rb_diag. */
+#include <stdarg.h>
+#include <stdio.h>
+#include "cli.h"
+
+void rb_cli_diag_print(const rb_diag *d)
+{
+    const char *file = d->file[0] ? d->file : "rockbolt";
+    if (d->line > 0 && d->col > 0)
+        fprintf(stderr, "%s:%d:%d: error: ", file, d->line, d->col);
+    else if (d->line > 0)
+        fprintf(stderr, "%s:%d: error: ", file, d->line);
+    else
+        fprintf(stderr, "%s: error: ", file);
+    if (d->key[0])
+        fprintf(stderr, "%s: ", d->key);
+    fprintf(stderr, "%s\n", d->msg[0] ? d->msg : "unspecified error");
+}
+
+void rb_cli_error(const char *file, const char *key, const char *fmt, ...)
+{
+    rb_diag d;
+    va_list ap;
+    rb_diag_clear(&d);
+    snprintf(d.file, sizeof d.file, "%s", file ? file : "rockbolt");
+    if (key)
+        snprintf(d.key, sizeof d.key, "%s", key);
+    va_start(ap, fmt);
+    vsnprintf(d.msg, sizeof d.msg, fmt, ap);
+    va_end(ap);
+    rb_cli_diag_print(&d);
+}

@@ -1,0 +1,26 @@
+/* rockbolt: entry point. Parses the command line and hands over to the
+ * command; nothing else happens here. */
+#include "cli.h"
+
+int main(int argc, char **argv)
+{
+    rb_cli_opts o;
+    rb_exit e = rb_cli_args_parse(argc, argv, &o);
+    if (e != RB_EXIT_PASS)
+        return (int)e;
+    switch (o.command) {
+    case RB_CMD_HELP:
+        rb_cli_help_print();
+        return RB_EXIT_PASS;
+    case RB_CMD_VERSION:
+        rb_cli_version_print();
+        return RB_EXIT_PASS;
+    case RB_CMD_CHECK:
+        return (int)rb_cli_check_run(&o);
+    case RB_CMD_INIT:
+        return (int)rb_cli_init_run(&o);
+    case RB_CMD_NONE:
+        break;
+    }
+    return RB_EXIT_INTERNAL;
+}
