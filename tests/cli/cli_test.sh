@@ -1,0 +1,290 @@
+#!/bin/sh
+# End-to-end tests of the rockbolt executable on the shipped cases.
+#
+#   sh tests/cli/cli_test.sh TEST ROCKBOLT JSONGET SCRATCH_DIR
+#
+# Run from the source root (ctest does). Each TEST is one function below;
+# it prints what it checked and exits 0 (pass), 1 (fail) or 77 (skipped).
+# Exit codes, the JSON/text agreement and the all-or-nothing output files
+# are the contract checked here; the numbers themselves are the solver
+# tests' business, so only their sanity is checked.
+set -u
+
+T=$1
+RB=$2
+JG=$3
+D=$4
+rm -rf "$D"
+mkdir -p "$D" || exit 1
+
+HARMONIC=cases/reference-harmonic.yaml
+ELCENTRO=cases/reference-elcentro.yaml
+
+fail() {
+    echo "FAIL [$T]: $*"
+    for f in "$D/out" "$D/err"; do
+        [ -f "$f" ] && { echo "--- $f"; head -40 "$f"; }
+    done
+    exit 1
+}
+
+# run ARGS...: the exit code in $rc, stdout in $D/out, stderr in $D/err
+run() {
+    "$RB" "$@" >"$D/out" 2>"$D/err"
+    rc=$?
+}
+
+expect_rc() {
+    [ "$rc" -eq "$1" ] || fail "exit code $rc, expected $1 (rockbolt $2)"
+}
+
+# jget FILE PATH [DECIMALS]
+jget() {
+    if [ $# -eq 3 ]; then "$JG" -p "$3" "$1" "$2"; else "$JG" "$1" "$2"; fi ||
+        fail "no value at $2 in $1"
+}
+
+# awk_true EXPR: the awk expression holds (numbers passed as A and B)
+holds() {
+    awk -v A="$1" -v B="$2" "BEGIN { exit !($3) }" || fail "$4 (A=$1 B=$2)"
+}
+
+no_temp_files() {
+    ls -a "$1" | grep -q '\.tmp\.' && fail "temporary files left in $1: $(ls -a "$1")"
+    return 0
+}
+
+# The verdict line of a report and the JSON verdict must agree, and the
+# exit code must follow from them.
+verdict_agrees() {
+    json=$1 text=$2
+    result=$(jget "$json" verdict.result)
+    reason=$(jget "$json" verdict.reason)
+    [ "$(head -1 "$text")" = "$result: $reason" ] ||
+        fail "text verdict '$(head -1 "$text")' != JSON '$result: $reason'"
+    case "$result:$rc" in
+        PASS:0|FAIL:1) ;;
+        *) fail "verdict $result with exit code $rc" ;;
+    esac
+}
+
+test_help() {
+    run --help; expect_rc 0 --help
+    for w in check init --json --text --history --quiet "exit codes" \
+             "0  the design passes" "2  bad input" "3  internal"; do
+        grep -q -- "$w" "$D/out" || fail "--help does not mention '$w'"
+    done
+    [ -s "$D/err" ] && fail "--help wrote to stderr"
+    run check --help; expect_rc 0 "check --help"
+    run --version; expect_rc 0 --version
+    grep -Eq '^rockbolt [0-9]+\.[0-9]+\.[0-9]+' "$D/out" || fail "--version output"
+    echo "help and version: ok"
+}
+
+test_usage() {
+    run; expect_rc 2 "(no arguments)"
+    grep -q '^rockbolt: error: ' "$D/err" || fail "usage error format"
+    run frobnicate; expect_rc 2 "unknown command"
+    run check; expect_rc 2 "check without a case"
+    run check "$HARMONIC" --frobnicate; expect_rc 2 "unknown option"
+    grep -q "^rockbolt: error: unknown option '--frobnicate'" "$D/err" ||
+        fail "unknown option message"
+    [ "$(wc -l <"$D/err")" -eq 1 ] || fail "one line per diagnostic"
+    run check "$HARMONIC" --json; expect_rc 2 "--json without a file"
+    run check "$HARMONIC" extra.yaml; expect_rc 2 "two case files"
+    run check "$HARMONIC" --json "$D/a" --text "$D/a"; expect_rc 2 "same output twice"
+    run check "$D/no-such-case.yaml"; expect_rc 2 "missing case file"
+    grep -q "no-such-case.yaml" "$D/err" || fail "missing case not named"
+    printf 'equipment:\n  mass: -3 kg\n' >"$D/bad.yaml"
+    run check "$D/bad.yaml" --json "$D/bad.json"; expect_rc 2 "invalid case"
+    grep -Eq "^$D/bad.yaml(:[0-9]+:[0-9]+)?: error: " "$D/err" ||
+        fail "case diagnostic not in FILE:LINE:COL: error: form"
+    [ -e "$D/bad.json" ] && fail "a report was written for an invalid case"
+    [ -s "$D/out" ] && fail "stdout not empty after a usage error"
+    echo "usage errors: ok"
+}
+
+test_harmonic() {
+    run check "$HARMONIC" --json "$D/h.json" --text "$D/h.txt" --history "$D/h.csv"
+    [ "$rc" -eq 0 ] || [ "$rc" -eq 1 ] || fail "exit code $rc"
+    "$JG" "$D/h.json" || fail "JSON does not parse"
+    [ "$(jget "$D/h.json" format)" = rockbolt-report ] || fail "format"
+    [ "$(jget "$D/h.json" format_version)" = 1 ] || fail "format_version"
+    [ "$(jget "$D/h.json" tool.version)" = "$("$RB" --version | cut -d' ' -f2)" ] ||
+        fail "tool version"
+    [ "$(jget "$D/h.json" case.path)" = "$HARMONIC" ] || fail "case path"
+    [ "$(jget "$D/h.json" motions.length)" -ge 1 ] || fail "no motions"
+    [ "$(jget "$D/h.json" motions.0.motion.kind)" = harmonic ] || fail "motion kind"
+    verdict_agrees "$D/h.json" "$D/h.txt"
+    [ "$(cat "$D/out")" = "$(head -1 "$D/h.txt")" ] ||
+        fail "with --text, stdout must be the verdict line only"
+    no_temp_files "$D"
+    echo "harmonic: ok (exit $rc)"
+}
+
+# Numbers in the text report are the JSON's at the text's precision.
+test_consistency() {
+    run check "$HARMONIC" --json "$D/h.json" --text "$D/h.txt"
+    J=$D/h.json M=motions.0 P=motions.0.result.peaks B=motions.0.result.bolts
+    a_star_g=$(jget "$J" derived.a_star_g)
+    holds "$a_star_g" 0 "A > 11.5 && A < 11.9" "A* of the reference cabinet is 11.7 g"
+    holds "$(jget "$J" $M.motion.peak_floor_over_a_star)" 0.6 \
+        "A - B < 1e-9 && B - A < 1e-9" "the case asks for 0.6 A*"
+    for check in \
+        "= $(jget "$J" $P.max_u_over_ustatic 2) U_static" \
+        "= $(jget "$J" $P.max_theta_over_alpha 4) alpha" \
+        "= $(jget "$J" $P.max_shear_elastic_over_w 3) W = $(jget "$J" $P.max_shear_elastic_over_v0 3) V0  (elastic" \
+        "= $(jget "$J" $P.max_shear_total_over_w 3) W = $(jget "$J" $P.max_shear_total_over_v0 3) V0  (total" \
+        "= $(jget "$J" $M.motion.peak_floor_over_a_star 4) A*" \
+        "A*           $(jget "$J" derived.a_star_mps2 2) m/s^2 = $(jget "$J" derived.a_star_g 3) g"; do
+        grep -qF -- "$check" "$D/h.txt" || fail "text lacks '$check'"
+    done
+    for side in left right; do
+        u=$(jget "$J" $B.usage.$side 4)
+        f=$(jget "$J" $P.max_bolt_force_over_fy.$side 4)
+        holds "$u" 0 "A >= 0" "usage $side >= 0"
+        holds "$f" 0 "A >= 0" "force / Fy $side >= 0"
+        holds "$(jget "$J" $B.final_gap_ratio.$side)" 0 "A >= 0" "final gap $side"
+    done
+    grep -Eq "^  toughness usage +$(jget "$J" $B.usage.left 4) +$(jget "$J" $B.usage.right 4)\$" \
+        "$D/h.txt" || fail "usage row differs from the JSON"
+    grep -Eq "^  max force / Fy +$(jget "$J" $P.max_bolt_force_over_fy.left 4) +$(jget "$J" $P.max_bolt_force_over_fy.right 4)\$" \
+        "$D/h.txt" || fail "force / Fy row differs from the JSON"
+    # peaks are consistent with their normalisations
+    w=$(jget "$J" $M.result.constants.weight_n)
+    holds "$(jget "$J" $P.max_shear_elastic_n)" \
+        "$(awk -v r="$(jget "$J" $P.max_shear_elastic_over_w)" -v w="$w" 'BEGIN { printf "%.17g", r * w }')" \
+        "A - B <= 1e-9 * A + 1e-9 && B - A <= 1e-9 * A + 1e-9" "shear / W times W is the shear"
+    sum=$(for s in fixed uplift impact held yield; do
+              jget "$J" $M.result.outcome.stage_time_s.$s; done | awk '{ s += $1 } END { printf "%.12g", s }')
+    holds "$sum" "$(jget "$J" $M.result.outcome.t_end_s)" \
+        "A - B < 1e-6 * (B + 1) && B - A < 1e-6 * (B + 1)" "stage times add up to t_end"
+    holds "$(jget "$J" $M.result.outcome.t_end_s)" "$(jget "$J" $M.motion.duration_s)" \
+        "A <= B * (1 + 1e-9)" "t_end within the duration"
+    echo "consistency: ok"
+}
+
+test_stdout() {
+    run check "$HARMONIC"
+    [ "$rc" -eq 0 ] || [ "$rc" -eq 1 ] || fail "exit code $rc"
+    head -1 "$D/out" | grep -Eq '^(PASS|FAIL): .+' || fail "first line is not the verdict"
+    grep -q "^motion 1: " "$D/out" || fail "no per-motion section"
+    cp "$D/out" "$D/first"
+    run check "$HARMONIC"
+    cmp -s "$D/out" "$D/first" || fail "text report is not byte-stable"
+    run check "$HARMONIC" --quiet
+    [ -s "$D/out" ] && fail "--quiet printed something"
+    run check "$HARMONIC" --text "$D/t.txt"
+    cmp -s "$D/t.txt" "$D/first" || fail "--text differs from stdout"
+    echo "stdout: ok"
+}
+
+test_elcentro() {
+    run check "$ELCENTRO" --json "$D/e.json" --text "$D/e.txt"
+    [ "$rc" -eq 0 ] || [ "$rc" -eq 1 ] || fail "exit code $rc"
+    verdict_agrees "$D/e.json" "$D/e.txt"
+    [ "$(jget "$D/e.json" motions.0.motion.kind)" = sampled ] || fail "sampled motion"
+    holds "$(jget "$D/e.json" motions.0.motion.peak_floor_over_a_star)" 0.4 \
+        "A - B < 1e-6 && B - A < 1e-6" "floor peak scaled to 0.4 A*"
+    holds "$(jget "$D/e.json" motions.0.result.peaks.max_u_over_ustatic)" 0 \
+        "A > 1 && A < 100" "max U / U_static in a sane range"
+    grep -q "elcentro_1940_ns.at2" "$D/e.txt" || fail "record source not in text"
+    echo "elcentro: ok (exit $rc)"
+}
+
+test_unwritable() {
+    run check "$HARMONIC" --json /nonexistent-rockbolt-dir/r.json --text "$D/t.txt"
+    expect_rc 2 "unwritable --json"
+    grep -q "^/nonexistent-rockbolt-dir/r.json: error: --json: " "$D/err" ||
+        fail "message does not name the path and option"
+    [ -e "$D/t.txt" ] && fail "--text written although --json cannot be"
+    : >"$D/plain"
+    run check "$HARMONIC" --history "$D/plain/h.csv"; expect_rc 2 "parent is a file"
+    grep -q "$D/plain/h.csv" "$D/err" || fail "path not named"
+    run check "$HARMONIC" --text "$D"; expect_rc 2 "output is a directory"
+    no_temp_files "$D"
+    echo "unwritable outputs: ok"
+}
+
+# A failed run leaves existing outputs exactly as they were.
+test_preserved() {
+    echo old >"$D/keep.json"
+    echo old >"$D/keep.txt"
+    run check "$D/missing.yaml" --json "$D/keep.json" --text "$D/keep.txt"
+    expect_rc 2 "missing case"
+    [ "$(cat "$D/keep.json")" = old ] && [ "$(cat "$D/keep.txt")" = old ] ||
+        fail "existing outputs changed by a failed run"
+    run check "$HARMONIC" --json "$D/keep.json" --text "$D/keep.txt" \
+        --text2 "$D/x"
+    expect_rc 2 "bad option"
+    [ "$(cat "$D/keep.json")" = old ] || fail "output changed by a usage error"
+    run check "$HARMONIC" --json "$D/keep.json" --text "$D/keep.txt"
+    [ "$rc" -eq 0 ] || [ "$rc" -eq 1 ] || fail "exit code $rc"
+    "$JG" "$D/keep.json" || fail "replaced JSON does not parse"
+    tail -c 1 "$D/keep.json" | od -An -c | grep -q '\\n' || fail "JSON lacks a final newline"
+    grep -q "^  energy (J)" "$D/keep.txt" || fail "text report is cut short"
+    no_temp_files "$D"
+    echo "preserved and whole outputs: ok"
+}
+
+test_history() {
+    run check "$HARMONIC" --quiet --history "$D/h.csv" --json "$D/h.json"
+    [ "$rc" -eq 0 ] || [ "$rc" -eq 1 ] || fail "exit code $rc"
+    head -1 "$D/h.csv" | grep -q '^motion,t_s,accel_mps2,theta_rad,u_m,' || fail "CSV header"
+    rows=$(($(wc -l <"$D/h.csv") - 1))
+    duration=$(jget "$D/h.json" motions.0.motion.duration_s)
+    holds "$rows" "$duration" "A >= B / 0.01" "one row per 0.01 s at least"
+    awk -F, 'NR > 1 && NF != 15 { exit 1 }' "$D/h.csv" || fail "rows of 15 fields"
+    awk -F, 'NR > 1 && ($1 != 1 || $15 < 1 || $15 > 5) { exit 1 }' "$D/h.csv" ||
+        fail "motion index or stage out of range"
+    [ "$(jget "$D/h.json" motions.0.result.cost.history_rows)" = "$rows" ] ||
+        fail "history_rows in JSON differs from the CSV"
+    echo "history: ok ($rows rows)"
+}
+
+test_init() {
+    if [ ! -f templates/starter.yaml ]; then
+        echo "templates/starter.yaml not shipped yet: skipped"
+        exit 77
+    fi
+    run init "$D/new.yaml"; expect_rc 0 init
+    cmp -s "$D/new.yaml" templates/starter.yaml || fail "init wrote something else"
+    echo changed >>"$D/new.yaml"
+    cp "$D/new.yaml" "$D/copy.yaml"
+    run init "$D/new.yaml"; expect_rc 2 "init over an existing file"
+    cmp -s "$D/new.yaml" "$D/copy.yaml" || fail "init overwrote a file"
+    grep -q "new.yaml" "$D/err" || fail "message does not name the file"
+    run init "$D/none/new.yaml"; expect_rc 2 "init into a missing directory"
+    cd "$D" && "$RB" init >/dev/null 2>&1 && [ -f case.yaml ] || fail "init default name"
+    cd - >/dev/null
+    run check "$D/case.yaml" --quiet
+    [ "$rc" -eq 0 ] || [ "$rc" -eq 1 ] || fail "the starter case does not run (exit $rc)"
+    no_temp_files "$D"
+    echo "init: ok"
+}
+
+test_template() {
+    mkdir -p "$D/tmpl"
+    printf '{{verdict}} {{n_motions}}{{#motions}} {{name}}:{{usage_left:%%.3f}}{{/motions}}\n' \
+        >"$D/tmpl/report.txt"
+    RB_TEMPLATE_DIR=$D/tmpl
+    export RB_TEMPLATE_DIR
+    run check "$HARMONIC"
+    grep -Eq '^(PASS|FAIL) 1 [^:]+:[0-9]+\.[0-9]{3}$' "$D/out" || fail "custom template"
+    printf '{{verdict}} {{no_such_name}}\n' >"$D/tmpl/report.txt"
+    run check "$HARMONIC" --json "$D/t.json"
+    unset RB_TEMPLATE_DIR
+    expect_rc 2 "template with an unknown name"
+    grep -q "report.txt:1:13: error: no_such_name: unknown name" "$D/err" ||
+        fail "template error position"
+    [ -e "$D/t.json" ] && fail "output written despite the template error"
+    echo "template: ok"
+}
+
+case "$T" in
+    help|usage|harmonic|consistency|stdout|elcentro|unwritable|preserved|history|init|template)
+        "test_$T" ;;
+    *) echo "unknown test $T"; exit 1 ;;
+esac
+rm -rf "$D"
+exit 0
