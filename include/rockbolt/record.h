@@ -31,4 +31,23 @@ void rb_record_opts_init(rb_record_opts *o);
 rb_status rb_record_read(const char *path, const rb_record_opts *opts,
                          rb_series *out, rb_diag *diag);
 
+/* How rb_record_read treats the options and the file:
+ * - Units: a header that states them (AT2 line 3, COSMOS headers) wins;
+ *   otherwise units_to_mps2 must be set (column files always need it).
+ * - dt: taken from the header, or from the time column of a two-column
+ *   file (uniform to 1 % of a step). A nonzero dt_s must then agree with
+ *   the file; one-column files need it.
+ * - t0: the first time of a two-column file, else 0.
+ * Errors: RB_ERR_IO (cannot open or read), RB_ERR_PARSE (not of the
+ * expected form: non-numeric token, missing or bad header, fewer or more
+ * values than the header announces, empty file), RB_ERR_INVALID (dt <= 0,
+ * NaN or infinite values, non-uniform time column, missing units,
+ * conflicting options), RB_ERR_LIMIT (more than max_points values, or a
+ * line over 65536 characters), RB_ERR_NOMEM. On error out is empty. */
+
+/* Factor to m/s^2 of an acceleration unit as records spell it: g, mg,
+ * m/s^2, cm/s^2, gal, mm/s^2, in/s^2, ft/s^2; any case, "sec" for "s",
+ * s2, s/s or s^2 for the square. RB_ERR_PARSE if unknown. */
+rb_status rb_record_units_parse(const char *name, double *to_mps2);
+
 #endif

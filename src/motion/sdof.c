@@ -137,3 +137,27 @@ double rb_sdof_run(const rb_sdof_step *st, const double *p, size_t n,
     }
     return peak;
 }
+
+rb_status rb_sdof_peak_within(double omega, double xi, double dt, unsigned k,
+                             const double *p, size_t n, double *peak)
+{
+    rb_sdof_step sub;
+    if (k == 0 || !p || !peak)
+        return RB_ERR_INVALID;
+    rb_status st = rb_sdof_step_init(&sub, omega, xi, dt / k);
+    if (st != RB_OK)
+        return st;
+    double u = 0.0, v = 0.0, best = 0.0;
+    for (size_t i = 1; i < n; i++) {
+        double slope = (p[i] - p[i - 1]) / k;
+        for (unsigned j = 0; j < k; j++) {
+            double pa = p[i - 1] + slope * j;
+            double pb = (j + 1 == k) ? p[i] : p[i - 1] + slope * (j + 1);
+            rb_sdof_step_apply(&sub, &u, &v, pa, pb);
+            if (fabs(u) > best)
+                best = fabs(u);
+        }
+    }
+    *peak = best;
+    return RB_OK;
+}

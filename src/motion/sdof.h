@@ -38,4 +38,12 @@ void rb_sdof_step_apply(const rb_sdof_step *st, double *u, double *v,
 double rb_sdof_run(const rb_sdof_step *st, const double *p, size_t n,
                    double *u_out, double *v_out);
 
+/* Largest |u| from rest under the n loads p (samples dt apart), looking
+ * at k equally spaced points in every step; the state is exact there too,
+ * the load being linear. The samples alone (k = 1) miss the peak by up to
+ * 1 - cos(w dt / 2), about 1.2 % at 10 samples per period; k points cut
+ * that by k^2. RB_ERR_INVALID for k = 0 or as rb_sdof_step_init. */
+rb_status rb_sdof_peak_within(double omega, double xi, double dt, unsigned k,
+                             const double *p, size_t n, double *peak);
+
 #endif
