@@ -1,0 +1,150 @@
+/* Unit tests for the quantity parser (units.h): every accepted unit against
+ * its SI value, and every class of error with the start of its message. */
+#include <string.h>
+#include "harness.h"
+#include "rockbolt/units.h"
+
+static double parse_ok(const char *text, rb_dim dim)
+{
+    rb_quantity q;
+    char msg[256] = "";
+    rb_status st = rb_unit_parse(text, dim, &q, msg, sizeof msg);
+    if (st != RB_OK)
+        fprintf(stderr, "unexpected failure on '%s': %s\n", text, msg);
+    CHECK(st == RB_OK);
+    CHECK(!q.relative_a_star);
+    return q.value;
+}
+
+/* The parse fails and the message contains want. */
+static void parse_bad(const char *text, rb_dim dim, const char *want)
+{
+    rb_quantity q;
+    char msg[256] = "";
+    rb_status st = rb_unit_parse(text, dim, &q, msg, sizeof msg);
+    CHECK(st == RB_ERR_PARSE);
+    if (!strstr(msg, want))
+        fprintf(stderr, "'%s': message '%s' lacks '%s'\n", text, msg, want);
+    CHECK(strstr(msg, want) != NULL);
+}
+
+static void test_lengths_masses_forces(void)
+{
+    CHECK_REL(parse_ok("2 m", RB_DIM_LENGTH), 2.0, 1e-15);
+    CHECK_REL(parse_ok("7.8 mm", RB_DIM_LENGTH), 7.8e-3, 1e-15);
+    CHECK_REL(parse_ok("12 cm", RB_DIM_LENGTH), 0.12, 1e-15);
+    CHECK_REL(parse_ok("0.5 in", RB_DIM_LENGTH), 0.0127, 1e-15);
+    CHECK_REL(parse_ok("3 ft", RB_DIM_LENGTH), 0.9144, 1e-15);
+    CHECK_REL(parse_ok("7.8mm", RB_DIM_LENGTH), 7.8e-3, 1e-15);
+    CHECK_REL(parse_ok("  1e-3   m ", RB_DIM_LENGTH), 1e-3, 1e-15);
+    CHECK_REL(parse_ok("-.5 m", RB_DIM_LENGTH), -0.5, 1e-15);
+    CHECK_REL(parse_ok("454 kg", RB_DIM_MASS), 454.0, 1e-15);
+    CHECK_REL(parse_ok("1000 lb", RB_DIM_MASS), 453.59237, 1e-15);
+    CHECK_REL(parse_ok("1 lbm", RB_DIM_MASS), 0.45359237, 1e-15);
+    CHECK_REL(parse_ok("5 N", RB_DIM_FORCE), 5.0, 1e-15);
+    CHECK_REL(parse_ok("62.8 kN", RB_DIM_FORCE), 62800.0, 1e-15);
+    CHECK_REL(parse_ok("1 MN", RB_DIM_FORCE), 1e6, 1e-15);
+    CHECK_REL(parse_ok("1 kip", RB_DIM_FORCE), 4448.2216152605, 1e-12);
+    CHECK_REL(parse_ok("1 lbf", RB_DIM_FORCE), 4.4482216152605, 1e-12);
+}
+
+static void test_stresses_energies(void)
+{
+    CHECK_REL(parse_ok("3 Pa", RB_DIM_STRESS), 3.0, 1e-15);
+    CHECK_REL(parse_ok("3 kPa", RB_DIM_STRESS), 3e3, 1e-15);
+    CHECK_REL(parse_ok("248 MPa", RB_DIM_STRESS), 248e6, 1e-15);
+    CHECK_REL(parse_ok("200 GPa", RB_DIM_STRESS), 200e9, 1e-15);
+    CHECK_REL(parse_ok("1 psi", RB_DIM_STRESS), 6894.757293168361, 1e-12);
+    CHECK_REL(parse_ok("36 ksi", RB_DIM_STRESS), 248.211262554e6, 1e-9);
+    CHECK_REL(parse_ok("5 J/m^3", RB_DIM_ENERGY_DENSITY), 5.0, 1e-15);
+    CHECK_REL(parse_ok("82700 kJ/m^3", RB_DIM_ENERGY_DENSITY), 82.7e6, 1e-15);
+    CHECK_REL(parse_ok("82.7 MJ/m^3", RB_DIM_ENERGY_DENSITY), 82.7e6, 1e-15);
+    CHECK_REL(parse_ok("82700 kN*m/m^3", RB_DIM_ENERGY_DENSITY), 82.7e6, 1e-15);
+    CHECK_REL(parse_ok("82700 kN.m/m^3", RB_DIM_ENERGY_DENSITY), 82.7e6, 1e-15);
+    CHECK_REL(parse_ok("82700 kN m/m^3", RB_DIM_ENERGY_DENSITY), 82.7e6, 1e-15);
+    CHECK_REL(parse_ok("3 in-lb/in^3", RB_DIM_ENERGY_DENSITY), 3 * 6894.757293168361, 1e-12);
+    CHECK_REL(parse_ok("3 in-lbf/in^3", RB_DIM_ENERGY_DENSITY), 3 * 6894.757293168361, 1e-12);
+}
+
+static void test_accelerations(void)
+{
+    rb_quantity q;
+    CHECK_REL(parse_ok("2 m/s^2", RB_DIM_ACCEL), 2.0, 1e-15);
+    CHECK_REL(parse_ok("0.5 g", RB_DIM_ACCEL), 0.5 * 9.80665, 1e-15);
+    CHECK_REL(parse_ok("981 cm/s^2", RB_DIM_ACCEL), 9.81, 1e-15);
+    CHECK_REL(parse_ok("981 gal", RB_DIM_ACCEL), 9.81, 1e-15);
+    CHECK_REL(parse_ok("981 Gal", RB_DIM_ACCEL), 9.81, 1e-15);
+    CHECK_REL(parse_ok("386.1 in/s^2", RB_DIM_ACCEL), 386.1 * 0.0254, 1e-15);
+    CHECK_REL(parse_ok("32.17 ft/s^2", RB_DIM_ACCEL), 32.17 * 0.3048, 1e-15);
+    CHECK(rb_unit_parse("0.4 A*", RB_DIM_ACCEL, &q, NULL, 0) == RB_OK);
+    CHECK(q.relative_a_star == 1);
+    CHECK_NEAR(q.value, 0.4, 0);
+    CHECK(rb_unit_parse("1.2A*", RB_DIM_ACCEL, &q, NULL, 0) == RB_OK);
+    CHECK(q.relative_a_star == 1);
+    CHECK_NEAR(q.value, 1.2, 0);
+}
+
+static void test_other_dimensions(void)
+{
+    CHECK_REL(parse_ok("5 Hz", RB_DIM_FREQUENCY), 5.0, 1e-15);
+    CHECK_REL(parse_ok("31.4159265358979 rad/s", RB_DIM_FREQUENCY), 5.0, 1e-13);
+    CHECK_REL(parse_ok("2.5 s", RB_DIM_TIME), 2.5, 1e-15);
+    CHECK_REL(parse_ok("10 ms", RB_DIM_TIME), 0.01, 1e-15);
+    CHECK_REL(parse_ok("0.01", RB_DIM_RATIO), 0.01, 1e-15);
+    CHECK_REL(parse_ok("1 %", RB_DIM_RATIO), 0.01, 1e-15);
+    CHECK_REL(parse_ok("5%", RB_DIM_RATIO), 0.05, 1e-15);
+    CHECK_REL(parse_ok("126.7 mm^2", RB_DIM_AREA), 126.7e-6, 1e-15);
+    CHECK_REL(parse_ok("2 cm^2", RB_DIM_AREA), 2e-4, 1e-15);
+    CHECK_REL(parse_ok("0.196 in^2", RB_DIM_AREA), 0.196 * 0.00064516, 1e-15);
+    CHECK_REL(parse_ok("1 m^2", RB_DIM_AREA), 1.0, 1e-15);
+    CHECK_REL(parse_ok("150 kg*m^2", RB_DIM_INERTIA), 150.0, 1e-15);
+    CHECK_REL(parse_ok("150 kg.m^2", RB_DIM_INERTIA), 150.0, 1e-15);
+    CHECK_REL(parse_ok("150 kg m^2", RB_DIM_INERTIA), 150.0, 1e-15);
+    CHECK_REL(parse_ok("1 lb*in^2", RB_DIM_INERTIA), 0.45359237 * 0.00064516, 1e-12);
+    CHECK_REL(parse_ok("1 lb*ft^2", RB_DIM_INERTIA), 0.45359237 * 0.09290304, 1e-12);
+    CHECK_REL(parse_ok("520 MN/m", RB_DIM_STIFFNESS), 520e6, 1e-15);
+    CHECK_REL(parse_ok("3 N/m", RB_DIM_STIFFNESS), 3.0, 1e-15);
+    CHECK_REL(parse_ok("3 kN/m", RB_DIM_STIFFNESS), 3e3, 1e-15);
+    CHECK_REL(parse_ok("3 N/mm", RB_DIM_STIFFNESS), 3e3, 1e-15);
+    CHECK_REL(parse_ok("3 kN/mm", RB_DIM_STIFFNESS), 3e6, 1e-15);
+    CHECK_REL(parse_ok("1 lbf/in", RB_DIM_STIFFNESS), 175.126835, 1e-8);
+    CHECK_REL(parse_ok("1 kip/in", RB_DIM_STIFFNESS), 175126.835, 1e-8);
+}
+
+static void test_errors(void)
+{
+    parse_bad("", RB_DIM_LENGTH, "empty value (expected a length such as '7.8 mm')");
+    parse_bad("   ", RB_DIM_MASS, "empty value");
+    parse_bad("abc", RB_DIM_LENGTH, "'abc' is not a number");
+    parse_bad("mm", RB_DIM_LENGTH, "'mm' is not a number");
+    parse_bad("0x10 m", RB_DIM_LENGTH, "unknown unit 'x10 m'");
+    parse_bad("nan", RB_DIM_RATIO, "'nan' is not a finite number");
+    parse_bad("-inf kg", RB_DIM_MASS, "'-inf kg' is not a finite number");
+    parse_bad("Infinity", RB_DIM_RATIO, "not a finite number");
+    parse_bad("1e999 m", RB_DIM_LENGTH, "number '1e999' is out of range");
+    parse_bad("1e308 MN", RB_DIM_FORCE, "is out of range");
+    parse_bad("7.8", RB_DIM_LENGTH, "missing unit on '7.8' (expected a length: m, mm, cm, in, ft)");
+    parse_bad("454", RB_DIM_MASS, "missing unit on '454' (expected a mass: kg, lb)");
+    parse_bad("454 kgs", RB_DIM_MASS, "unknown unit 'kgs' (expected a mass: kg, lb)");
+    parse_bad("7.8 MM", RB_DIM_LENGTH, "unknown unit 'MM' (did you mean 'mm'?");
+    parse_bad("248 MPa", RB_DIM_LENGTH, "'MPa' is a unit of stress, not of length");
+    parse_bad("5 mm", RB_DIM_RATIO, "'mm' is a unit of length");
+    parse_bad("0.4 A*", RB_DIM_LENGTH, "'A*' is only for floor accelerations");
+    parse_bad("1 lb", RB_DIM_FORCE, "'lb' is a unit of mass, not of force");
+    parse_bad("7.8 mm thick", RB_DIM_LENGTH, "unexpected text 'thick' after the unit 'mm'");
+    parse_bad("1.5.3 m", RB_DIM_LENGTH, "unexpected text '.3 m' after the number");
+    parse_bad("82,700 kJ/m^3", RB_DIM_ENERGY_DENSITY, "unexpected text ',700 kJ/m^3'");
+    parse_bad("0.01 0.02", RB_DIM_RATIO, "unexpected text '0.02' after the number");
+    CHECK(strcmp(rb_dim_str(RB_DIM_STRESS), "a stress") == 0);
+    CHECK(strstr(rb_dim_units(RB_DIM_ACCEL), "A*") != NULL);
+}
+
+int main(void)
+{
+    test_lengths_masses_forces();
+    test_stresses_energies();
+    test_accelerations();
+    test_other_dimensions();
+    test_errors();
+    TEST_MAIN_END();
+}
