@@ -151,9 +151,11 @@ static double locate(rb_solver *sv, const rb_rk_step *st, int guard, double a, d
 {
     double g[G_COUNT], y[RB_NY];
     int last = 0;
-    for (int i = 0; i < 100 && b - a > 1e-13 * (1 + fabs(b)); i++) {
+    for (int i = 0; i < 200 && b - a > 1e-13 * (1 + fabs(b)); i++) {
         double m = (a * gb - b * ga) / (gb - ga);
-        if (!(m > a && m < b))
+        /* fall back to bisection when the secant hugs an end (a guard
+         * nudged off zero at a has a near-zero ga) */
+        if (!(m > a + 1e-3 * (b - a) && m < b - 1e-3 * (b - a)))
             m = 0.5 * (a + b);
         rb_rk_dense_eval(st, m, y);
         rb_guard_eval(sv, m, y, g);
@@ -179,6 +181,7 @@ static int find_event(rb_solver *sv, const rb_rk_step *st, const double *g0, dou
     unsigned mask = rb_guard_mask(sv);
     double ga[G_COUNT], gb[G_COUNT], y[RB_NY];
     memcpy(ga, g0, sizeof ga);
+    rb_guard_nudge(ga);
     for (int j = 1; j <= SUB; j++) {
         double ta = st->t0 + st->h * (j - 1) / SUB;
         double tb = j == SUB ? st->t0 + st->h : st->t0 + st->h * j / SUB;

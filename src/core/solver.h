@@ -42,6 +42,7 @@ typedef struct {
 unsigned rb_guard_mask(const rb_solver *sv);
 void rb_guard_eval(const rb_solver *sv, double t, const double *y, double *g);
 int rb_guard_crossed(int guard, double before, double after);
+void rb_guard_nudge(double *g);
 /* Apply the transition of 'guard' at the current (t, y). */
 void rb_transition(rb_solver *sv, int guard);
 /* Transitions that hold the moment a stage starts (a bolt impact that

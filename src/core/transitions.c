@@ -8,6 +8,7 @@
  * in (the uplift guard is the stage-2 moment equation at theta = 0, the bolt
  * force is the stage-4 moment equation), so a transition never lands the
  * state on the wrong side of the boundary it just crossed. */
+#include <float.h>
 #include <math.h>
 #include "solver.h"
 
@@ -24,6 +25,18 @@ int rb_guard_crossed(int guard, double a, double b)
     case -1: return a > 0 && b <= 0;
     default: return (a < 0 && b >= 0) || (a > 0 && b <= 0);
     }
+}
+
+/* A guard that starts a step exactly on its boundary (theta = 0 right after
+ * a floor impact or an uplift, the chord = gap right after a release) is
+ * counted as just inside its inactive side; otherwise a short excursion that
+ * leaves and re-crosses the boundary inside one check interval (a small hop
+ * after an impact) would read 0 -> negative and be missed. */
+void rb_guard_nudge(double *g)
+{
+    for (int k = 0; k < G_COUNT; k++)
+        if (g[k] == 0 && guard_dir[k] != 0)
+            g[k] = guard_dir[k] > 0 ? -DBL_MIN : DBL_MIN;
 }
 
 static int row_intact(const rb_solver *sv, int side)
