@@ -11,6 +11,7 @@
  * were written in, so errors in inherited values point into the base. */
 #define _POSIX_C_SOURCE 200809L
 #include <limits.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "case_internal.h"
@@ -104,8 +105,21 @@ static char *rb_extends_path(const char *including, const char *rel)
 
 typedef struct {
     char *ids[RB_CASE_MAX_EXTENDS + 1];  /* canonical paths, owned */
+    const char *names[RB_CASE_MAX_EXTENDS + 1]; /* as in messages, borrowed */
     size_t n;
 } rb_chain;
+
+/* "a.yaml -> b.yaml -> a.yaml" from chain entry first on, then last. */
+static void rb_chain_str(const rb_chain *chain, size_t first, const char *last,
+                         char *buf, size_t size)
+{
+    size_t n = 0;
+    buf[0] = '\0';
+    for (size_t i = first; i < chain->n && n < size; i++)
+        n += (size_t)snprintf(buf + n, size - n, "%s -> ", chain->names[i]);
+    if (n < size)
+        snprintf(buf + n, size - n, "%s", last);
+}
 
 static char *rb_canonical(const char *path)
 {
@@ -162,8 +176,9 @@ static rb_status rb_read_chain(rb_cctx *c, const char *file, const rb_ynode *whe
     }
     for (size_t i = 0; i < chain->n; i++) {
         if (strcmp(chain->ids[i], id) == 0) {
-            rb_cctx_error(c, where, "extends", "'%s' extends itself through "
-                          "a cycle of extends", where->text);
+            char cycle[400];
+            rb_chain_str(chain, i, file, cycle, sizeof cycle);
+            rb_cctx_error(c, where, "extends", "extends cycle: %s", cycle);
             free(id);
             return RB_ERR_INVALID;
         }
@@ -174,6 +189,7 @@ static rb_status rb_read_chain(rb_cctx *c, const char *file, const rb_ynode *whe
         free(id);
         return RB_ERR_LIMIT;
     }
+    chain->names[chain->n] = file;
     chain->ids[chain->n++] = id;
     rb_status st = rb_yaml_read_tree(c, file, where, "extends", root);
     if (st == RB_OK)

@@ -201,12 +201,28 @@ static int rb_read_record(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
     return ok;
 }
 
+/* polarity: +1 (as recorded) or -1 (reversed). */
+static void rb_read_polarity(rb_cctx *c, const rb_ynode *v, const char *key,
+                             int *out)
+{
+    if (v->kind == RB_YNODE_SCALAR && (strcmp(v->text, "1") == 0
+                                       || strcmp(v->text, "+1") == 0)) {
+        *out = 1;
+    } else if (v->kind == RB_YNODE_SCALAR && strcmp(v->text, "-1") == 0) {
+        *out = -1;
+    } else if (v->kind == RB_YNODE_SCALAR) {
+        rb_cctx_error(c, v, key, "expected +1 or -1, found '%s'", v->text);
+    } else {
+        rb_cctx_error(c, v, key, "expected +1 or -1, found %s",
+                      rb_ynode_kind_str(v));
+    }
+}
+
 static void rb_read_motion(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
 {
     static const char *const types[] = {"harmonic", "pulse", "record", NULL};
     char k[RB_CASE_KEY_MAX];
     int t;
-    long pol;
     rb_motion_init(&cm->motion);
     cm->map = map;
     if (!rb_cv_map(c, map, cm->key))
@@ -217,11 +233,8 @@ static void rb_read_motion(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
         rb_cv_string(c, v, k, &cm->name);
     v = rb_cv_get(c, map, cm->key, "polarity", 0, "");
     rb_case_keypath(k, cm->key, "polarity");
-    if (v && rb_cv_int(c, v, k, -1, 1, &pol)) {
-        if (pol == 0)
-            rb_cctx_error(c, v, k, "expected +1 or -1, found '%s'", v->text);
-        cm->motion.polarity = pol < 0 ? -1 : 1;
-    }
+    if (v)
+        rb_read_polarity(c, v, k, &cm->motion.polarity);
     v = rb_cv_get(c, map, cm->key, "type", 1, "harmonic, pulse or record");
     rb_case_keypath(k, cm->key, "type");
     if (!v || !rb_cv_enum(c, v, k, types, &t)) {

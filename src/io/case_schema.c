@@ -343,8 +343,12 @@ void rb_case_read_schema(rb_cctx *c, rb_ynode *root, rb_case *cs)
         rb_read_anchorage(c, an, &cs->model);
     else
         c->model_errors++;
-    if (an)
+    if (an) {
         rb_read_gap(c, root, &cs->model);
+    } else {
+        rb_cv_get(c, root, "", "gap", 0, "");   /* judged with the anchorage */
+        rb_cv_get(c, root, "", "gap_ratio", 0, "");
+    }
     if ((v = rb_section(c, root, "criteria", 0, "")))
         rb_read_criteria(c, v, &cs->criteria);
     if ((v = rb_section(c, root, "analysis", 0, "")))

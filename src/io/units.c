@@ -174,10 +174,13 @@ static size_t rb_unit_scan_number(const char *s)
     return i;
 }
 
-/* 1 if s (after an optional sign) spells NaN or infinity in any case. */
+/* 1 if s (after an optional sign) spells NaN or infinity in any case, in
+ * C's spelling or YAML's (".nan", ".inf"). */
 static int rb_unit_is_nonfinite_word(const char *s)
 {
     if (*s == '+' || *s == '-')
+        s++;
+    if (*s == '.')
         s++;
     return rb_unit_casecmp(s, "nan", 3) == 0 || rb_unit_casecmp(s, "inf", 3) == 0;
 }

@@ -121,6 +121,8 @@ static void test_errors(void)
     parse_bad("nan", RB_DIM_RATIO, "'nan' is not a finite number");
     parse_bad("-inf kg", RB_DIM_MASS, "'-inf kg' is not a finite number");
     parse_bad("Infinity", RB_DIM_RATIO, "not a finite number");
+    parse_bad(".nan", RB_DIM_RATIO, "'.nan' is not a finite number");
+    parse_bad("-.inf kg", RB_DIM_MASS, "'-.inf kg' is not a finite number");
     parse_bad("1e999 m", RB_DIM_LENGTH, "number '1e999' is out of range");
     parse_bad("1e308 MN", RB_DIM_FORCE, "is out of range");
     parse_bad("7.8", RB_DIM_LENGTH, "missing unit on '7.8' (expected a length: m, mm, cm, in, ft)");
