@@ -88,17 +88,18 @@ rb_status rb_rec_reader_next(rb_rec_reader *r, int *got)
 {
     int c;
     *got = 0;
-    r->len = 0;
     if (!r->line && rb_rec_reader_grow(r) != RB_OK)
         return RB_ERR_NOMEM;
-    r->line[0] = '\0';
     c = getc(r->fp);
+    /* At the end the last line stays, so that an error can point just
+     * after its last character. */
     if (c == EOF) {
         if (ferror(r->fp))
             return rb_rec_fail_at(r, RB_ERR_IO, r->lineno + 1, 0,
                                   "read error: %s", strerror(errno));
         return RB_OK;
     }
+    r->len = 0;
     r->lineno++;
     *got = 1;
     for (; c != EOF && c != '\n'; c = getc(r->fp)) {
@@ -197,14 +198,14 @@ int rb_rec_token_field(const rb_rec_reader *r, size_t start, size_t width,
 {
     if (start >= r->len)
         return 0;
-    size_t end = start + width < r->len ? start + width : r->len;
+    size_t end = start + width < r->len ? start + width : r->len, field = start;
     while (start < end && rb_rec_is_blank((unsigned char)r->line[start]))
         start++;
     while (end > start && rb_rec_is_blank((unsigned char)r->line[end - 1]))
         end--;
     tok->s = r->line + start;
     tok->len = end - start;
-    tok->col = (int)start + 1;
+    tok->col = (int)(tok->len ? start : field) + 1;
     return 1;
 }
 
