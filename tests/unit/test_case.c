@@ -1,0 +1,316 @@
+/* Unit tests for the case loader (case.h): every shipped case loads to the
+ * SI values of the reference cabinet, extends merges as documented, and a
+ * bad case reports all of its problems with file, line, column and key.
+ * Run from the repository root (ctest does). */
+#define _POSIX_C_SOURCE 200809L
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include "harness.h"
+#include "rockbolt/case.h"
+
+#define PI 3.14159265358979323846
+#define AREA_1_2_IN (PI * 0.0127 * 0.0127 / 4)   /* 126.7 mm^2 */
+
+static rb_status load(const char *path, rb_case *c, rb_diag_list *l)
+{
+    memset(l, 0, sizeof *l);
+    rb_status st = rb_case_load(path, c, l);
+    for (size_t i = 0; st == RB_OK && i < l->n; i++)
+        fprintf(stderr, "unexpected diag %s:%d:%d: %s: %s\n", l->items[i].file,
+                l->items[i].line, l->items[i].col, l->items[i].key, l->items[i].msg);
+    for (size_t i = 0; st != RB_OK && i < l->n; i++)
+        fprintf(stderr, "  (diag %s:%d:%d: %s: %s)\n", l->items[i].file,
+                l->items[i].line, l->items[i].col, l->items[i].key, l->items[i].msg);
+    return st;
+}
+
+/* The index of the first diag with this key and a message containing msg,
+ * or -1. */
+static long find_diag(const rb_diag_list *l, const char *key, const char *msg)
+{
+    for (size_t i = 0; i < l->n; i++)
+        if (strcmp(l->items[i].key, key) == 0 && strstr(l->items[i].msg, msg))
+            return (long)i;
+    fprintf(stderr, "no diag %s: ...%s...\n", key, msg);
+    return -1;
+}
+
+static void check_reference_model(const rb_model *m, double rel)
+{
+    rb_derived d;
+    CHECK_REL(m->mass_kg, 454.0, rel);
+    CHECK_REL(m->cm_height_m, 0.979, rel);
+    CHECK_REL(m->half_width_m, 0.45, rel);
+    CHECK_REL(m->freq_hz, 5.0, rel);
+    CHECK_REL(m->damping, 0.01, rel);
+    CHECK(m->bolt_model == RB_BOLT_RIGID_PLASTIC);
+    CHECK(m->bolts_per_row == 2);
+    CHECK_REL(m->bolt_area_m2, AREA_1_2_IN, rel);
+    CHECK_REL(m->yield_stress_pa, 248e6, 2 * rel + 1e-3);
+    CHECK_REL(m->toughness_jpm3, 82.7e6, 2 * rel + 1e-3);
+    CHECK_REL(m->deformable_length_m, 0.100, rel);
+    CHECK_REL(m->lever_arm_m, 0.78, rel);
+    CHECK_REL(m->gap_m, 0.0078, rel);
+    CHECK(m->restitution < 0);   /* Housner */
+    CHECK(rb_model_derive(m, &d, NULL) == RB_OK);
+    CHECK_REL(d.fy_row_n, 2 * 126.7e-6 * 248e6, 1e-3 + 2 * rel);
+    CHECK_REL(d.a_star_mps2, 11.7 * RB_G0, 0.01);
+}
+
+static double a_star_of(const rb_model *m)
+{
+    rb_derived d;
+    return rb_model_derive(m, &d, NULL) == RB_OK ? d.a_star_mps2 : 0.0;
+}
+
+static void test_reference_harmonic(void)
+{
+    rb_case c;
+    rb_diag_list l;
+    CHECK(load("cases/reference-harmonic.yaml", &c, &l) == RB_OK);
+    check_reference_model(&c.model, 1e-12);
+    CHECK(strcmp(c.name, "reference-harmonic") == 0);
+    CHECK(c.description != NULL);
+    CHECK(c.n_motions == 1);
+    const rb_motion *m = &c.motions[0].motion;
+    CHECK(m->kind == RB_MOTION_HARMONIC);
+    CHECK_REL(m->amplitude_mps2, 0.6 * a_star_of(&c.model), 1e-12);
+    CHECK_REL(m->freq_hz, 4.0, 1e-15);
+    CHECK_REL(m->duration_s, 2.5, 1e-15);
+    CHECK(m->ramp_s == 0.0);
+    CHECK(m->polarity == 1);
+    CHECK(c.criteria.kind == RB_CRIT_NO_BREAK);
+    CHECK(l.n == 0);
+    rb_case_free(&c);
+    rb_case_free(&c);   /* a freed case can be freed again */
+    rb_diag_list_free(&l);
+}
+
+/* A record motion: building filter recorded, peak scaled to 0.4 A*. */
+static void check_record(const rb_case *c, size_t n, double duration)
+{
+    CHECK(c->n_motions == 1);
+    const rb_case_motion *cm = &c->motions[0];
+    double target = 0.4 * a_star_of(&c->model);
+    CHECK(cm->motion.kind == RB_MOTION_SAMPLED);
+    CHECK(cm->motion.series == &cm->series);
+    CHECK(cm->motion.scale == 1.0);
+    CHECK(cm->series.n == n);
+    CHECK_REL(cm->series.dt_s, 0.01, 1e-12);
+    CHECK_REL(rb_series_peak(&cm->series), target, 1e-12);
+    CHECK_REL(cm->target_peak_mps2, target, 1e-12);
+    CHECK_REL(cm->building_freq_hz, 5.0, 1e-15);
+    CHECK_REL(cm->building_damping, 0.05, 1e-15);
+    CHECK_REL(cm->motion.duration_s, duration, 1e-9);
+    CHECK(cm->source != NULL && strstr(cm->source, "cases/records/") != NULL);
+    CHECK(c->solve.stretch_past_failure == 1);
+}
+
+static void test_reference_records(void)
+{
+    rb_case c;
+    rb_diag_list l;
+    CHECK(load("cases/reference-elcentro.yaml", &c, &l) == RB_OK);
+    check_reference_model(&c.model, 1e-12);
+    check_record(&c, 4000, 39.99);
+    CHECK(c.motions[0].name && strcmp(c.motions[0].name, "elcentro_1940_ns.at2") == 0);
+    rb_case_free(&c);
+    rb_diag_list_free(&l);
+    CHECK(load("cases/reference-taft.yaml", &c, &l) == RB_OK);
+    check_reference_model(&c.model, 1e-12);
+    check_record(&c, 5437, 54.36);
+    rb_case_free(&c);
+    rb_diag_list_free(&l);
+}
+
+static void test_free_standing_and_customary(void)
+{
+    rb_case c, r;
+    rb_diag_list l;
+    CHECK(load("cases/free-standing.yaml", &c, &l) == RB_OK);
+    CHECK(c.model.bolt_model == RB_BOLT_NONE);
+    CHECK_REL(c.motions[0].motion.amplitude_mps2, 0.6 * RB_G0, 1e-12);
+    rb_case_free(&c);
+    rb_diag_list_free(&l);
+    CHECK(load("cases/us-customary.yaml", &c, &l) == RB_OK);
+    check_reference_model(&c.model, 1e-4);
+    CHECK(load("cases/reference-harmonic.yaml", &r, &l) == RB_OK);
+    CHECK_REL(c.motions[0].motion.amplitude_mps2,
+              r.motions[0].motion.amplitude_mps2, 2e-3);
+    rb_case_free(&c);
+    rb_case_free(&r);
+    rb_diag_list_free(&l);
+    CHECK(load("templates/starter.yaml", &c, &l) == RB_OK);
+    CHECK(l.n == 0);
+    rb_case_free(&c);
+    rb_diag_list_free(&l);
+}
+
+static void test_extends_merge(void)
+{
+    rb_case c;
+    rb_diag_list l;
+    CHECK(load("tests/unit/case_data/override.yaml", &c, &l) == RB_OK);
+    CHECK(strcmp(c.name, "override") == 0);
+    CHECK_REL(c.model.mass_kg, 454.0, 1e-15);            /* inherited */
+    CHECK_REL(c.model.cm_height_m, 1.0, 1e-15);          /* cm_height hides height */
+    CHECK_REL(c.model.restitution, 0.9, 1e-15);
+    CHECK(c.model.bolt_model == RB_BOLT_NONYIELDING);
+    CHECK_REL(c.model.bolt_area_m2, AREA_1_2_IN, 1e-12); /* inherited diameter */
+    CHECK_REL(c.model.lever_arm_m, 0.8, 1e-15);          /* hides edge_distance */
+    CHECK_REL(c.model.gap_m, 0.005, 1e-15);              /* hides gap_ratio */
+    CHECK(c.n_motions == 2);
+    const rb_motion *h = &c.motions[0].motion, *p = &c.motions[1].motion;
+    CHECK(strcmp(c.motions[0].name, "ramped") == 0);
+    CHECK_REL(h->amplitude_mps2, 0.3 * a_star_of(&c.model), 1e-12);
+    CHECK_REL(h->freq_hz, 4.0, 1e-10);
+    CHECK_REL(h->ramp_s, 0.5, 1e-15);
+    CHECK(h->polarity == -1);
+    CHECK(p->kind == RB_MOTION_PULSE);
+    CHECK(p->pulse == RB_PULSE_HALF_SINE);
+    CHECK_REL(p->amplitude_mps2, 0.5 * RB_G0, 1e-15);
+    CHECK_REL(p->pulse_s, 0.2, 1e-15);
+    CHECK_REL(p->duration_s, 4.0, 1e-15);
+    CHECK(c.criteria.kind == RB_CRIT_NO_YIELD);
+    CHECK_REL(c.criteria.max_shear_over_w, 2.0, 1e-15);
+    CHECK(c.solve.formulation == RB_FORM_SMALL);
+    CHECK_REL(c.solve.rtol, 1e-6, 1e-15);
+    CHECK(c.write_history == 1);
+    CHECK_REL(c.solve.history_dt_s, 0.005, 1e-15);
+    CHECK(c.solve.stretch_past_failure == 1);
+    CHECK_REL(c.design.scan_start, 0.1, 1e-15);
+    CHECK_REL(c.design.scan_end, 1.0, 1e-15);
+    CHECK_REL(c.design.scan_step, 0.05, 1e-15);          /* default */
+    CHECK_REL(c.design.gap_ratio_max, 0.04, 1e-15);
+    rb_case_free(&c);
+    rb_diag_list_free(&l);
+}
+
+static void test_extends_errors(void)
+{
+    rb_case c;
+    rb_diag_list l;
+    long i;
+    /* An inherited bad value is reported in the file that holds it. */
+    CHECK(load("tests/unit/case_data/child-of-bad.yaml", &c, &l) == RB_ERR_INVALID);
+    CHECK((i = find_diag(&l, "equipment.damping", "must be >= 0 and < 1")) >= 0);
+    if (i >= 0) {
+        CHECK(strcmp(l.items[i].file, "tests/unit/case_data/bad-base.yaml") == 0);
+        CHECK(l.items[i].line == 4 && l.items[i].col == 12);
+    }
+    rb_diag_list_free(&l);
+    /* Nine files in a chain: one more than allowed. */
+    CHECK(load("tests/unit/case_data/deep1.yaml", &c, &l) != RB_OK);
+    CHECK((i = find_diag(&l, "extends", "more than 8 files")) >= 0);
+    if (i >= 0)
+        CHECK(strcmp(l.items[i].file, "tests/unit/case_data/deep8.yaml") == 0);
+    rb_diag_list_free(&l);
+    /* Eight are fine (the case is then incomplete, but not for extends). */
+    CHECK(load("tests/unit/case_data/deep2.yaml", &c, &l) != RB_OK);
+    for (size_t k = 0; k < l.n; k++)
+        CHECK(strcmp(l.items[k].key, "extends") != 0);
+    rb_diag_list_free(&l);
+    CHECK(load("tests/errors/24-extends-cycle.yaml", &c, &l) != RB_OK);
+    CHECK(find_diag(&l, "extends", "extends cycle: ") >= 0);
+    rb_diag_list_free(&l);
+}
+
+static void test_all_errors(void)
+{
+    rb_case c;
+    rb_diag_list l;
+    const char *f = "tests/unit/case_data/many-errors.yaml";
+    CHECK(load(f, &c, &l) == RB_ERR_INVALID);
+    CHECK(c.motions == NULL && c.name == NULL);   /* nothing left to free */
+    CHECK(l.n == 5);
+    long i[5] = {
+        find_diag(&l, "equipment.mass", "must be > 0 (got '-1 kg')"),
+        find_diag(&l, "equipment.frequncy", "did you mean 'frequency'?"),
+        find_diag(&l, "anchorage.yield_stress", "is a unit of length, not of stress"),
+        find_diag(&l, "anchorage.toughness", "'lots' is not a number"),
+        find_diag(&l, "motion.duration", "missing required key 'duration'")};
+    static const int lines[5] = {4, 5, 7, 8, 10}, cols[5] = {9, 3, 17, 14, 3};
+    for (int k = 0; k < 5; k++) {
+        CHECK(i[k] == k);   /* in reading order */
+        if (i[k] < 0)
+            continue;
+        CHECK(strcmp(l.items[i[k]].file, f) == 0);
+        CHECK(l.items[i[k]].line == lines[k]);
+        CHECK(l.items[i[k]].col == cols[k]);
+    }
+    rb_diag_list_free(&l);
+    rb_diag_list_free(&l);   /* freeing twice is safe */
+}
+
+/* Every catalogue entry's first diag, formatted as the CLI prints it,
+ * equals its .expect line (the CLI tests check the same through the
+ * binary). */
+static void test_error_catalogue(void)
+{
+    static const char *const names[] = {"03-unknown-key", "13-gap-too-large",
+        "16-duplicate-key", "19-alias", "20-deep-nesting", "21-long-scalar",
+        "23-missing-record", "31-two-documents", NULL};
+    for (size_t k = 0; names[k]; k++) {
+        char path[128], expect[128], want[1024] = "", got[1200];
+        rb_case c;
+        rb_diag_list l;
+        snprintf(path, sizeof path, "tests/errors/%s.yaml", names[k]);
+        snprintf(expect, sizeof expect, "tests/errors/%s.expect", names[k]);
+        FILE *fp = fopen(expect, "r");
+        CHECK(fp != NULL);
+        if (!fp)
+            continue;
+        if (!fgets(want, sizeof want, fp))
+            want[0] = '\0';
+        fclose(fp);
+        want[strcspn(want, "\n")] = '\0';
+        CHECK(load(path, &c, &l) != RB_OK);
+        CHECK(l.n >= 1);
+        if (l.n >= 1) {
+            const rb_diag *d = &l.items[0];
+            snprintf(got, sizeof got, "%s:%d:%d: error: %s: %s", d->file,
+                     d->line, d->col, d->key, d->msg);
+            if (strcmp(got, want) != 0)
+                fprintf(stderr, "want: %s\ngot:  %s\n", want, got);
+            CHECK(strcmp(got, want) == 0);
+        }
+        rb_diag_list_free(&l);
+    }
+}
+
+/* A file over 4 MiB is refused before parsing. */
+static void test_file_size_limit(void)
+{
+    char path[] = "/tmp/rb-case-big-XXXXXX";
+    int fd = mkstemp(path);
+    CHECK(fd >= 0);
+    if (fd < 0)
+        return;
+    FILE *fp = fdopen(fd, "w");
+    for (int i = 0; i < 4 * 1024 * 64 + 1; i++)
+        fputs("# padding padding padding padding padding padding padding\n", fp);
+    fclose(fp);
+    rb_case c;
+    rb_diag_list l;
+    CHECK(load(path, &c, &l) == RB_ERR_LIMIT);
+    CHECK(l.n == 1 && strstr(l.items[0].msg, "larger than the limit of 4 MiB"));
+    rb_diag_list_free(&l);
+    remove(path);
+    CHECK(load("tests/unit/case_data/no-such-file.yaml", &c, &l) == RB_ERR_IO);
+    CHECK(l.n == 1 && strstr(l.items[0].msg, "cannot open"));
+    rb_diag_list_free(&l);
+}
+
+int main(void)
+{
+    test_reference_harmonic();
+    test_reference_records();
+    test_free_standing_and_customary();
+    test_extends_merge();
+    test_extends_errors();
+    test_all_errors();
+    test_error_catalogue();
+    test_file_size_limit();
+    TEST_MAIN_END();
+}
