@@ -281,8 +281,25 @@ test_template() {
     echo "template: ok"
 }
 
+# A solver failure is exit 3, one diagnostic naming the motion, and no
+# output. The tolerance of 1e-300 makes the integrator's step underflow at
+# once; if the case loader ever rejects it, find another way to fail.
+test_solver_error() {
+    printf 'extends: %s/cases/base/reference-cabinet.yaml\nmotion:\n  type: harmonic\n  amplitude: 0.6 A*\n  frequency: 4 Hz\n  duration: 1 s\nanalysis:\n  tolerance: 1e-300\n' \
+        "$(pwd)" >"$D/tight.yaml"
+    echo old >"$D/keep.json"
+    run check "$D/tight.yaml" --json "$D/keep.json" --history "$D/h.csv"
+    expect_rc 3 "solver failure"
+    grep -q "^$D/tight.yaml: error: motion '[^']*': " "$D/err" || fail "solver diagnostic form"
+    [ "$(cat "$D/keep.json")" = old ] || fail "output changed by a failed solve"
+    [ -e "$D/h.csv" ] && fail "history written by a failed solve"
+    [ -s "$D/out" ] && fail "stdout not empty after a failed solve"
+    no_temp_files "$D"
+    echo "solver error: ok"
+}
+
 case "$T" in
-    help|usage|harmonic|consistency|stdout|elcentro|unwritable|preserved|history|init|template)
+    help|usage|harmonic|consistency|stdout|elcentro|unwritable|preserved|history|init|template|solver_error)
         "test_$T" ;;
     *) echo "unknown test $T"; exit 1 ;;
 esac
