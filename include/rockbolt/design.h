@@ -1,0 +1,254 @@
+/* Design checks (thesis sec. 6.6): the design factor, the recommended gap
+ * ratio, frequency and amplitude sweeps, and the code-static comparison
+ * (ASCE 7-16 / 7-22 component force against ACI 318-19 anchor steel).
+ *
+ * Every search is a set of independent solver runs. They run on n_threads
+ * POSIX threads (n_threads <= 0: one per online processor), and the results
+ * do not depend on n_threads: each grid point has its own slot, decisions
+ * read the points in grid order, and runs made ahead of need by idle
+ * threads are discarded and only counted in runs_speculative. The model
+ * and the motion are read-only; levels are set on private copies. Library
+ * code: nothing here prints. docs/design.md describes the algorithms. */
+#ifndef ROCKBOLT_DESIGN_H
+#define ROCKBOLT_DESIGN_H
+
+#include <stddef.h>
+#include <stdio.h>
+#include "rockbolt/case.h"
+#include "rockbolt/criteria.h"
+#include "rockbolt/model.h"
+#include "rockbolt/motion.h"
+#include "rockbolt/solve.h"
+
+/* rb_design_opts (scan grid, resolution, gap grid) is declared in case.h
+ * because case files carry it. Fills in the documented defaults: scan
+ * 0.05 to 1.5 A* in steps of 0.05 A*, resolution 0.001 A*, gap ratios 0 to
+ * 0.06 in steps of 0.0025. */
+void rb_design_opts_defaults(rb_design_opts *o);
+
+/* Number of threads used for n_threads <= 0: the online processors (>= 1). */
+int rb_design_threads_default(void);
+
+/* ---- Design factor ------------------------------------------------------ */
+
+/* The largest peak floor acceleration of the motion's shape that meets the
+ * criteria: scan upward from scan_start in steps of scan_step (in A*) to
+ * scan_end, stop at the first failing level, bisect between the last passing
+ * and that failing level until they are at most resolution apart. If
+ * scan_start already fails the bisection starts from 0 (a motion of zero
+ * amplitude is taken to pass without a run). */
+typedef struct {
+    double a_star_mps2;         /* A* of the model */
+    double level_mps2;          /* largest passing peak floor acceleration found */
+    double level_astar;         /* the same in A* */
+    double factor;              /* A* / level; HUGE_VAL when level is 0 */
+    double fail_mps2, fail_astar;   /* lowest failing level found (upper end of
+                                       the final bracket); HUGE_VAL if none */
+    double first_fail_astar;    /* first failing level on the scan grid;
+                                   HUGE_VAL if none */
+    double resolution_astar;    /* the resolution asked for */
+    double bracket_astar;       /* fail - level reached (0 if no failure) */
+    int no_failure;             /* 1: no failing level up to scan_end; level
+                                   is then the last scan level and the factor
+                                   only an upper bound */
+    int fails_at_start;         /* 1: scan_start already fails */
+    long runs;                  /* solver runs the search needed (the same
+                                   for every thread count) */
+    long scan_runs, bisect_runs;/* runs = scan_runs + bisect_runs */
+    long runs_speculative;      /* runs made ahead by idle threads and not
+                                   used; depends on n_threads */
+    char pass_reason[160];      /* criteria verdict at level ("" if level 0) */
+    char fail_reason[160];      /* verdict at fail ("" if no failure) */
+} rb_design_factor_result;
+
+/* motion gives the shape: sampled motions are rescaled through
+ * motion->scale, closed forms through amplitude_mps2; polarity, duration
+ * and everything else are kept. opts may be NULL (solver defaults); a time
+ * history is never recorded. With criteria of kind RB_CRIT_NO_YIELD a run
+ * also fails when a bolt row force reaches Fy without a yield being
+ * recorded (non-yielding bolts). Errors: RB_ERR_INVALID (bad grid, model or
+ * a motion of zero peak), RB_ERR_NOMEM, or the status of a solver run the
+ * search needed, with the level named in diag->msg. */
+rb_status rb_design_factor(const rb_model *model, const rb_motion *motion,
+                           const rb_solve_opts *opts, const rb_criteria *criteria,
+                           const rb_design_opts *design, int n_threads,
+                           rb_design_factor_result *out, rb_diag *diag);
+
+/* ---- Recommended gap ratio ---------------------------------------------- */
+
+typedef struct {
+    double gap_ratio;           /* g0 / l of this run */
+    int meets;                  /* 1 if the run meets the criteria */
+    double max_force_over_fy;   /* larger of the two rows */
+    double max_u_over_ustatic;
+    double max_theta_over_alpha;
+    double usage_max;           /* larger toughness usage of the two rows */
+    char reason[160];           /* criteria verdict */
+} rb_gap_point;
+
+typedef struct {
+    int found;                  /* 0: no gap in the range works */
+    double gap_ratio;           /* recommended: smallest grid gap from which
+                                   every larger grid gap meets the criteria */
+    double gap_m;               /* gap_ratio x lever arm */
+    rb_gap_point *points;       /* owned; the grid, ascending */
+    size_t n_points;
+    long runs;                  /* n_points, plus 1 for the yielding run */
+    /* The thesis's reading (sec. 6.6): a run with yielding bolts (stretching
+     * past failure) at the case's own gap; its final gaps tell how large a
+     * gap the motion opens. yield_run = 0 for a model without bolts. */
+    int yield_run;
+    double yield_initial_gap_ratio;
+    double yield_final_gap_ratio[2];   /* [RB_LEFT], [RB_RIGHT] */
+    double yield_final_gap_ratio_max;
+    double yield_usage[2];
+} rb_gap_result;
+
+/* Run the model, with its gap set to each grid ratio in [gap_ratio_min,
+ * gap_ratio_max] (step gap_ratio_step), under the motion as given, judge
+ * each run, and recommend the smallest ratio g such that g and every larger
+ * grid ratio meet the criteria. Errors as for rb_design_factor. out is
+ * owned by the caller: rb_gap_result_free. */
+rb_status rb_gap_recommend(const rb_model *model, const rb_motion *motion,
+                           const rb_solve_opts *opts, const rb_criteria *criteria,
+                           const rb_design_opts *design, int n_threads,
+                           rb_gap_result *out, rb_diag *diag);
+
+/* Free what a gap result owns; accepts NULL. */
+void rb_gap_result_free(rb_gap_result *r);
+
+/* ---- Sweeps --------------------------------------------------------------- */
+
+typedef enum {
+    RB_SWEEP_FREQUENCY = 0,  /* harmonic motion, x = excitation / fixed-base frequency */
+    RB_SWEEP_AMPLITUDE       /* the given motion's shape, x = peak level in A* */
+} rb_sweep_kind;
+
+typedef struct {
+    rb_sweep_kind kind;
+    double from, to;          /* range of x */
+    size_t n_points;          /* >= 1; equally spaced, from and to included */
+    /* frequency sweeps only */
+    double amplitude_astar;   /* peak floor acceleration in A* */
+    double duration_s;        /* run length; <= 0 -> 8 s */
+    double ramp_s;            /* linear ramp-up of the harmonic; 0 for none */
+} rb_sweep_opts;
+
+void rb_sweep_opts_init(rb_sweep_opts *o, rb_sweep_kind kind);
+
+typedef struct {
+    double x;                   /* frequency ratio, or level in A* */
+    double freq_hz;             /* excitation frequency (0 for amplitude sweeps
+                                   of non-harmonic motions) */
+    double peak_mps2;           /* peak floor acceleration of the run */
+    double level_astar;         /* peak_mps2 / A* */
+    double max_u_over_ustatic;
+    double max_force_over_fy[2];/* [RB_LEFT], [RB_RIGHT] */
+    double max_theta_over_alpha;
+    double usage[2];
+    int yielded[2], broken[2], overturned;
+    int meets;                  /* criteria verdict; -1 when none were given */
+    rb_status status;           /* solver status of this point (RB_OK, or why
+                                   the point has no numbers) */
+} rb_sweep_point;
+
+typedef struct {
+    rb_sweep_kind kind;
+    double a_star_mps2;
+    double fixed_base_hz;       /* the model's fixed-base frequency */
+    double amplitude_astar;     /* frequency sweeps: the level used */
+    rb_sweep_point *points;     /* owned; n_points */
+    size_t n_points;
+} rb_sweep;
+
+/* Frequency response: the model under a harmonic floor motion of peak
+ * amplitude_astar A*, at each frequency ratio of the range. A point whose
+ * run fails keeps its status and zero numbers; the sweep still returns
+ * RB_OK. criteria may be NULL. Returns RB_ERR_INVALID for a bad range, a
+ * rigid model (no fixed-base frequency) or a bad model; RB_ERR_NOMEM. */
+rb_status rb_sweep_frequency(const rb_model *model, const rb_solve_opts *opts,
+                             const rb_criteria *criteria, const rb_sweep_opts *sw,
+                             int n_threads, rb_sweep *out, rb_diag *diag);
+
+/* Amplitude sweep: the motion's shape at each level of the range (in A*). */
+rb_status rb_sweep_amplitude(const rb_model *model, const rb_motion *motion,
+                             const rb_solve_opts *opts, const rb_criteria *criteria,
+                             const rb_sweep_opts *sw, int n_threads, rb_sweep *out,
+                             rb_diag *diag);
+
+/* Free what a sweep owns; accepts NULL. */
+void rb_sweep_free(rb_sweep *s);
+
+/* Writers: one row (CSV, with a header line) or one object (JSON, under
+ * "points") per point. The FILE* forms write to an open stream; the path
+ * forms write atomically (temporary file, then rename) and report errors in
+ * diag. RB_ERR_IO on a write error, RB_ERR_NOMEM. */
+rb_status rb_sweep_write_csv(const rb_sweep *s, FILE *fp);
+rb_status rb_sweep_write_json(const rb_sweep *s, FILE *fp);
+rb_status rb_sweep_save_csv(const rb_sweep *s, const char *path, rb_diag *diag);
+rb_status rb_sweep_save_json(const rb_sweep *s, const char *path, rb_diag *diag);
+
+/* The sweep as a cJSON object (caller owns it: cJSON_Delete), for reports
+ * that embed it. NULL on allocation failure. */
+struct cJSON;
+struct cJSON *rb_sweep_to_json(const rb_sweep *s);
+
+/* ---- Code-static comparison --------------------------------------------- */
+
+typedef enum {
+    RB_ASCE7_16 = 16,   /* ASCE/SEI 7-16, eq. 13.3-1 to 13.3-3 */
+    RB_ASCE7_22 = 22    /* ASCE/SEI 7-22, eq. 13.3-1 to 13.3-3 with Hf, Rmu */
+} rb_code_edition;
+
+typedef struct {
+    rb_code_edition edition;
+    double sds;               /* SDS, in g */
+    double ip;                /* component importance factor Ip (1.0 or 1.5) */
+    double z_over_h;          /* attachment height / roof height, 0..1 */
+    int at_or_below_grade;    /* 7-22: Hf = Rmu = 1 */
+    /* ASCE 7-16 */
+    double ap, rp;            /* component amplification, response modification */
+    /* ASCE 7-22 */
+    double car, rpo;          /* Table 13.5-1 / 13.6-1 */
+    double ta_s;              /* building approximate period; <= 0: unknown,
+                                 Hf = 1 + 2.5 z/h */
+    double r, ie, omega0;     /* building's R, Ie, Omega0 (for Rmu) */
+    /* anchorage */
+    int anchorage_in_concrete;/* 1: Fp x Omega0p for the anchors (13.4.2) */
+    double omega0p;           /* component overstrength Omega0p */
+    double futa_pa;           /* specified anchor tensile strength */
+    double ase_m2;            /* effective tensile area of one anchor;
+                                 <= 0: the model's bolt area */
+} rb_code_inputs;
+
+/* Edition 7-22, Ip = 1, Omega0p = 2, anchorage in concrete, Ta unknown;
+ * every other field 0 (to be given). */
+void rb_code_inputs_init(rb_code_inputs *in);
+
+typedef struct {
+    double fp_formula_n;      /* Fp from eq. 13.3-1 before the bounds */
+    double fp_min_n, fp_max_n;/* 0.3 SDS Ip Wp, 1.6 SDS Ip Wp */
+    double fp_n;              /* design Fp after the bounds */
+    int bound;                /* -1 minimum governs, +1 maximum, 0 neither */
+    double hf, rmu;           /* 7-22 factors (7-16: 1 + 2 z/h and 1) */
+    double fp_anchor_n;       /* Fp x Omega0p when anchorage in concrete */
+    double fp_over_wp;        /* Fp / Wp, the equivalent static floor
+                                 acceleration in g */
+    double accel_mps2;        /* Fp / Wp x g */
+    double accel_astar;       /* accel_mps2 / A* */
+    double a_star_mps2;
+    double tension_n;         /* row tension T, >= 0 */
+    double tension_raw_n;     /* before clipping at 0 (negative: no uplift) */
+    double futa_used_pa;      /* min(futa, 1.9 fya, 861.8 MPa) */
+    double phi_nsa_n;         /* 0.75 n Ase futa of one row */
+    double ratio;             /* T / phi Nsa */
+} rb_code_result;
+
+/* Compare the model's anchorage with the code-static design. W, h, b, l,
+ * the number of bolts per row, their area and yield stress come from the
+ * model. RB_ERR_INVALID (diag->key names the field) for missing or out of
+ * range inputs. */
+rb_status rb_code_static(const rb_model *model, const rb_code_inputs *in,
+                         rb_code_result *out, rb_diag *diag);
+
+#endif

@@ -1,0 +1,200 @@
+/* The design factor of thesis sec. 6.6: A* over the largest peak floor
+ * acceleration of a motion's shape that the anchorage withstands. The
+ * response is not monotonic in the level, so the search scans upward on a
+ * grid, stops at the first failing level and bisects below it. Threads
+ * evaluate scan levels and bisection midpoints ahead of need; the decisions
+ * read them in the order a single thread would, so the result is the
+ * single-threaded one whatever the thread count. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "design_internal.h"
+
+/* Largest scan grid accepted: a guard against a step of 1e-12. */
+#define RB_SCAN_MAX_POINTS 100000
+
+typedef struct {
+    const rb_design_ctx *ctx;
+    const double *levels_astar;
+    rb_design_run *runs;
+} factor_batch;
+
+typedef struct {
+    const rb_design_ctx *ctx;
+    rb_design_factor_result *out;
+    double *levels;        /* nt slots */
+    rb_design_run *runs;   /* nt slots */
+    size_t nt;
+    int n_threads;
+    double lo, hi;         /* current bracket in A*; hi = HUGE_VAL before a failure */
+} factor_search;
+
+static rb_status batch_job(void *v, size_t i)
+{
+    factor_batch *b = v;
+    rb_motion m;
+    rb_design_motion_at(b->ctx, b->levels_astar[i] * b->ctx->a_star_mps2, &m);
+    rb_design_run_one(b->ctx, b->ctx->model, &m, &b->runs[i]);
+    return b->runs[i].status;
+}
+
+static rb_status eval_levels(factor_search *s, size_t n)
+{
+    factor_batch b = {s->ctx, s->levels, s->runs};
+    return rb_design_parallel(n, s->n_threads, batch_job, &b, NULL);
+}
+
+/* A run the search needs must have worked: there is no verdict otherwise. */
+static rb_status check_run(const rb_design_run *run, double level, rb_diag *diag)
+{
+    char msg[200];
+    if (run->status == RB_OK)
+        return RB_OK;
+    snprintf(msg, sizeof msg, "the solver run at %.6g A* failed: %s", level,
+             rb_status_str(run->status));
+    return rb_design_fail(diag, run->status, "motion", msg);
+}
+
+static rb_status check_grid(const rb_design_opts *d, rb_diag *diag)
+{
+    if (!(d->scan_start > 0) || !(d->scan_step > 0) || !(d->resolution > 0)
+        || !isfinite(d->scan_start) || !isfinite(d->scan_step) || !isfinite(d->scan_end)
+        || !isfinite(d->resolution) || !(d->scan_end >= d->scan_start))
+        return rb_design_fail(diag, RB_ERR_INVALID, "design",
+                              "the scan needs 0 < start <= end, step > 0, resolution > 0");
+    if ((d->scan_end - d->scan_start) / d->scan_step + 1 > RB_SCAN_MAX_POINTS)
+        return rb_design_fail(diag, RB_ERR_INVALID, "design.scan_step",
+                              "the scan grid has more than 100000 levels");
+    return RB_OK;
+}
+
+/* Scan the grid in rounds of nt levels; stop at the first failing one. */
+static rb_status scan(factor_search *s, const rb_design_opts *d, rb_diag *diag)
+{
+    rb_design_factor_result *out = s->out;
+    /* levels are start + k step, never accumulated, so that every thread
+     * count sees the same doubles */
+    size_t n_grid = (size_t)floor((d->scan_end - d->scan_start) / d->scan_step + 1e-9) + 1;
+    for (size_t k = 0; k < n_grid;) {
+        size_t n = n_grid - k < s->nt ? n_grid - k : s->nt;
+        for (size_t j = 0; j < n; j++)
+            s->levels[j] = d->scan_start + (double)(k + j) * d->scan_step;
+        rb_status st = eval_levels(s, n);
+        if (st != RB_OK)
+            return st;
+        for (size_t j = 0; j < n; j++) {
+            const rb_design_run *run = &s->runs[j];
+            out->scan_runs++;
+            if ((st = check_run(run, s->levels[j], diag)) != RB_OK)
+                return st;
+            if (run->meets) {
+                s->lo = s->levels[j];
+                memcpy(out->pass_reason, run->reason, sizeof out->pass_reason);
+                continue;
+            }
+            s->hi = out->first_fail_astar = s->levels[j];
+            memcpy(out->fail_reason, run->reason, sizeof out->fail_reason);
+            out->fails_at_start = k + j == 0;
+            out->runs_speculative += (long)(n - j - 1);
+            return RB_OK;
+        }
+        k += n;
+    }
+    out->no_failure = 1;
+    return RB_OK;
+}
+
+/* Bisect [lo, hi] to the resolution. Each round evaluates the first nt
+ * nodes (breadth first) of the bisection tree below the bracket and then
+ * walks down it as sequential bisection would. */
+static rb_status bisect(factor_search *s, double res, rb_diag *diag)
+{
+    rb_design_factor_result *out = s->out;
+    while (s->hi - s->lo > res) {
+        double lo_k[64], hi_k[64];
+        size_t m = s->nt < 63 ? s->nt : 63;
+        lo_k[0] = s->lo;
+        hi_k[0] = s->hi;
+        for (size_t k = 0; k < m; k++) {
+            double mid = 0.5 * (lo_k[k] + hi_k[k]);
+            s->levels[k] = mid;
+            if (2 * k + 2 < 64) {
+                lo_k[2 * k + 1] = lo_k[k], hi_k[2 * k + 1] = mid;
+                lo_k[2 * k + 2] = mid, hi_k[2 * k + 2] = hi_k[k];
+            }
+        }
+        rb_status st = eval_levels(s, m);
+        if (st != RB_OK)
+            return st;
+        size_t used = 0;
+        for (size_t k = 0; k < m && s->hi - s->lo > res; used++) {
+            const rb_design_run *run = &s->runs[k];
+            out->bisect_runs++;
+            if ((st = check_run(run, s->levels[k], diag)) != RB_OK)
+                return st;
+            if (run->meets) {
+                s->lo = s->levels[k];
+                memcpy(out->pass_reason, run->reason, sizeof out->pass_reason);
+                k = 2 * k + 2;
+            } else {
+                s->hi = s->levels[k];
+                memcpy(out->fail_reason, run->reason, sizeof out->fail_reason);
+                k = 2 * k + 1;
+            }
+        }
+        out->runs_speculative += (long)(m - used);
+    }
+    return RB_OK;
+}
+
+static void finish(factor_search *s, double a_star, double res)
+{
+    rb_design_factor_result *out = s->out;
+    out->a_star_mps2 = a_star;
+    out->resolution_astar = res;
+    out->level_astar = s->lo;
+    out->level_mps2 = s->lo * a_star;
+    out->factor = s->lo > 0 ? 1.0 / s->lo : HUGE_VAL;
+    out->fail_astar = s->hi;
+    out->fail_mps2 = out->no_failure ? HUGE_VAL : s->hi * a_star;
+    out->bracket_astar = out->no_failure ? 0 : s->hi - s->lo;
+    out->runs = out->scan_runs + out->bisect_runs;
+}
+
+rb_status rb_design_factor(const rb_model *model, const rb_motion *motion,
+                           const rb_solve_opts *opts, const rb_criteria *criteria,
+                           const rb_design_opts *design, int n_threads,
+                           rb_design_factor_result *out, rb_diag *diag)
+{
+    rb_design_ctx ctx;
+    factor_search s;
+    rb_status st;
+    memset(out, 0, sizeof *out);
+    out->first_fail_astar = out->fail_astar = out->fail_mps2 = HUGE_VAL;
+    if (!model || !motion || !criteria || !design)
+        return rb_design_fail(diag, RB_ERR_INVALID, "", "missing model, motion, criteria "
+                              "or design options");
+    if ((st = check_grid(design, diag)) != RB_OK
+        || (st = rb_design_ctx_init(&ctx, model, motion, opts, criteria, diag)) != RB_OK)
+        return st;
+    memset(&s, 0, sizeof s);
+    s.ctx = &ctx;
+    s.out = out;
+    s.n_threads = n_threads > 0 ? n_threads : rb_design_threads_default();
+    s.nt = (size_t)s.n_threads;
+    s.hi = HUGE_VAL;
+    s.levels = malloc(s.nt * sizeof *s.levels);
+    s.runs = malloc(s.nt * sizeof *s.runs);
+    if (!s.levels || !s.runs)
+        st = RB_ERR_NOMEM;
+    if (st == RB_OK)
+        st = scan(&s, design, diag);
+    if (st == RB_OK && !out->no_failure)
+        st = bisect(&s, design->resolution, diag);
+    if (st == RB_OK)
+        finish(&s, ctx.a_star_mps2, design->resolution);
+    free(s.levels);
+    free(s.runs);
+    return st;
+}

@@ -1,0 +1,63 @@
+/* Shared internals of the design checks: the parallel map over independent
+ * solver runs and the evaluation of one run (model, motion at a level,
+ * verdict). Not part of the public API. */
+#ifndef RB_DESIGN_INTERNAL_H
+#define RB_DESIGN_INTERNAL_H
+
+#include <stddef.h>
+#include "rockbolt/design.h"
+
+/* One job of a parallel map: fills slot i of whatever ctx points to and
+ * returns its status. Jobs must not share writable state. */
+typedef rb_status (*rb_design_job)(void *ctx, size_t i);
+
+/* Run job(ctx, i) for i in [0, n) on up to n_threads threads (<= 0: all
+ * processors). Every job runs, whatever the others return; the statuses go
+ * to status[i] (may be NULL). Returns RB_ERR_NOMEM only if no thread could
+ * be created and the jobs could not run; otherwise RB_OK. */
+rb_status rb_design_parallel(size_t n, int n_threads, rb_design_job job, void *ctx,
+                             rb_status *status);
+
+/* Everything one run needs, read-only and shared by all jobs of a search. */
+typedef struct {
+    const rb_model *model;
+    const rb_motion *motion;     /* the shape */
+    rb_solve_opts opts;          /* history off */
+    const rb_criteria *criteria; /* may be NULL: meets = -1 */
+    double a_star_mps2;
+    double shape_peak;           /* peak of the shape's samples (sampled) */
+} rb_design_ctx;
+
+/* Prepare ctx: derive the model, copy the options (NULL -> defaults) with
+ * the history turned off, take the shape's peak. RB_ERR_INVALID with diag
+ * filled for a bad model or a sampled motion of zero peak. */
+rb_status rb_design_ctx_init(rb_design_ctx *ctx, const rb_model *model,
+                             const rb_motion *motion, const rb_solve_opts *opts,
+                             const rb_criteria *criteria, rb_diag *diag);
+
+/* A copy of the shape whose peak floor acceleration is level_mps2. */
+void rb_design_motion_at(const rb_design_ctx *ctx, double level_mps2, rb_motion *out);
+
+/* Outcome of one run, what the searches keep of an rb_result. */
+typedef struct {
+    rb_status status;
+    int meets;                   /* 1 / 0; -1 without criteria */
+    char reason[160];
+    rb_result r;                 /* summary (no history) */
+} rb_design_run;
+
+/* Run model under motion and judge it. The rb_result inside out owns
+ * nothing (no history is recorded). */
+void rb_design_run_one(const rb_design_ctx *ctx, const rb_model *model,
+                       const rb_motion *motion, rb_design_run *out);
+
+/* Larger of two doubles (fmax without NaN questions). */
+static inline double rb_design_max2(double a, double b)
+{
+    return a > b ? a : b;
+}
+
+/* Fill diag with a message (diag may be NULL); returns st. */
+rb_status rb_design_fail(rb_diag *diag, rb_status st, const char *key, const char *msg);
+
+#endif

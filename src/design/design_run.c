@@ -1,0 +1,104 @@
+/* One run of a design search: the model under the motion's shape scaled to a
+ * level, judged against the criteria. Shared by the searches and sweeps so
+ * that they scale motions and judge runs the same way. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include "design_internal.h"
+
+void rb_design_opts_defaults(rb_design_opts *o)
+{
+    o->scan_start = 0.05;
+    o->scan_step = 0.05;
+    o->scan_end = 1.5;
+    o->resolution = 0.001;
+    o->gap_ratio_min = 0.0;
+    o->gap_ratio_max = 0.06;
+    o->gap_ratio_step = 0.0025;
+}
+
+rb_status rb_design_fail(rb_diag *diag, rb_status st, const char *key, const char *msg)
+{
+    if (diag) {
+        rb_diag_clear(diag);
+        snprintf(diag->key, sizeof diag->key, "%s", key ? key : "");
+        snprintf(diag->msg, sizeof diag->msg, "%s", msg);
+    }
+    return st;
+}
+
+rb_status rb_design_ctx_init(rb_design_ctx *ctx, const rb_model *model,
+                             const rb_motion *motion, const rb_solve_opts *opts,
+                             const rb_criteria *criteria, rb_diag *diag)
+{
+    rb_derived d;
+    rb_status st = rb_model_derive(model, &d, diag);
+    if (st != RB_OK)
+        return st;
+    memset(ctx, 0, sizeof *ctx);
+    ctx->model = model;
+    ctx->motion = motion;
+    ctx->criteria = criteria;
+    ctx->a_star_mps2 = d.a_star_mps2;
+    if (opts)
+        ctx->opts = *opts;
+    else
+        rb_solve_opts_init(&ctx->opts);
+    /* a search keeps only summaries; histories would cost memory per run */
+    ctx->opts.history_dt_s = 0;
+    if (!(ctx->a_star_mps2 > 0) || !isfinite(ctx->a_star_mps2))
+        return rb_design_fail(diag, RB_ERR_INVALID, "model", "A* of the model is not positive");
+    if (motion && motion->kind == RB_MOTION_SAMPLED) {
+        const rb_series *s = motion->series;
+        ctx->shape_peak = s ? rb_series_peak(s) : 0;
+        if (!(ctx->shape_peak > 0) || !isfinite(ctx->shape_peak))
+            return rb_design_fail(diag, RB_ERR_INVALID, "motion",
+                                  "the sampled motion has no nonzero sample to scale");
+    }
+    return RB_OK;
+}
+
+void rb_design_motion_at(const rb_design_ctx *ctx, double level_mps2, rb_motion *out)
+{
+    *out = *ctx->motion;
+    /* the sign of the shape's factor is kept: it is part of the shape */
+    if (out->kind == RB_MOTION_SAMPLED)
+        out->scale = copysign(level_mps2 / ctx->shape_peak, ctx->motion->scale);
+    else
+        out->amplitude_mps2 = copysign(level_mps2, ctx->motion->amplitude_mps2);
+}
+
+/* The criteria's verdict, plus one case they cannot see: non-yielding bolts
+ * never record a yield, so "no yield" must read their force against Fy. */
+static int judge(const rb_design_ctx *ctx, const rb_model *model, const rb_result *r,
+                 char *reason, size_t n)
+{
+    int ok = rb_criteria_judge(ctx->criteria, r, reason, n);
+    if (ok && ctx->criteria->kind == RB_CRIT_NO_YIELD
+        && model->bolt_model == RB_BOLT_NONYIELDING && r->fy_row_n > 0) {
+        double f = rb_design_max2(r->max_bolt_force_n[0], r->max_bolt_force_n[1])
+                   / r->fy_row_n;
+        if (f >= 1.0) {
+            snprintf(reason, n, "a bolt row force reaches Fy (max force / Fy = %.3f; "
+                     "criterion: no yield)", f);
+            ok = 0;
+        }
+    }
+    return ok;
+}
+
+void rb_design_run_one(const rb_design_ctx *ctx, const rb_model *model,
+                       const rb_motion *motion, rb_design_run *out)
+{
+    memset(out, 0, sizeof *out);
+    out->status = rb_solve_run(model, motion, &ctx->opts, &out->r, NULL);
+    /* no history was asked for, but free whatever the result might own */
+    rb_result_free(&out->r);
+    out->r.history = NULL;
+    out->meets = -1;
+    if (out->status == RB_OK && ctx->criteria)
+        out->meets = judge(ctx, model, &out->r, out->reason, sizeof out->reason);
+    else if (out->status != RB_OK)
+        snprintf(out->reason, sizeof out->reason, "the run failed: %s",
+                 rb_status_str(out->status));
+}

@@ -1,0 +1,165 @@
+/* The recommended gap ratio (thesis sec. 6.6): the smallest gap on a grid
+ * from which every larger grid gap keeps the anchorage within the criteria
+ * under the case's own motion. Because the response is not monotonic in
+ * the gap, a gap that passes between failing ones is not recommended: the
+ * recommendation is the start of the passing run that reaches the range's
+ * end. The thesis read the gap off the final gaps of yielding runs; that
+ * run is made too and reported beside the search. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "design_internal.h"
+
+#define RB_GAP_MAX_POINTS 100000
+
+typedef struct {
+    const rb_design_ctx *ctx;
+    const double *ratios;
+    rb_design_run *runs;
+} gap_batch;
+
+static rb_status gap_job(void *v, size_t i)
+{
+    gap_batch *b = v;
+    rb_model m = *b->ctx->model;
+    m.gap_m = b->ratios[i] * m.lever_arm_m;
+    rb_design_run_one(b->ctx, &m, b->ctx->motion, &b->runs[i]);
+    return b->runs[i].status;
+}
+
+static rb_status check_grid(const rb_design_opts *d, const rb_model *m, rb_diag *diag)
+{
+    if (m->bolt_model == RB_BOLT_NONE)
+        return rb_design_fail(diag, RB_ERR_INVALID, "anchorage",
+                              "a model without bolts has no gap to recommend");
+    if (!(d->gap_ratio_min >= 0) || !(d->gap_ratio_step > 0)
+        || !isfinite(d->gap_ratio_max) || !isfinite(d->gap_ratio_step)
+        || !(d->gap_ratio_max >= d->gap_ratio_min))
+        return rb_design_fail(diag, RB_ERR_INVALID, "design",
+                              "the gap grid needs 0 <= min <= max and step > 0");
+    if ((d->gap_ratio_max - d->gap_ratio_min) / d->gap_ratio_step + 1 > RB_GAP_MAX_POINTS)
+        return rb_design_fail(diag, RB_ERR_INVALID, "design.gap_ratio_step",
+                              "the gap grid has more than 100000 points");
+    return RB_OK;
+}
+
+static void keep_point(rb_gap_point *p, double ratio, const rb_design_run *run)
+{
+    const rb_result *r = &run->r;
+    p->gap_ratio = ratio;
+    p->meets = run->meets == 1;
+    p->max_force_over_fy = r->fy_row_n > 0
+        ? rb_design_max2(r->max_bolt_force_n[0], r->max_bolt_force_n[1]) / r->fy_row_n : 0;
+    p->max_u_over_ustatic = r->max_u_over_ustatic;
+    p->max_theta_over_alpha = r->max_theta_over_alpha;
+    p->usage_max = rb_design_max2(r->usage[0], r->usage[1]);
+    memcpy(p->reason, run->reason, sizeof p->reason);
+}
+
+/* The thesis's yielding run: the case's gap, bolts that yield, and bolts
+ * that keep stretching past their capacity, so the final gaps show how far
+ * the motion would open them. */
+static rb_status yield_run(const rb_design_ctx *ctx, rb_gap_result *out, rb_diag *diag)
+{
+    rb_design_ctx yc = *ctx;
+    rb_model m = *ctx->model;
+    rb_design_run run;
+    if (m.bolt_model == RB_BOLT_NONYIELDING)
+        m.bolt_model = RB_BOLT_RIGID_PLASTIC;
+    yc.opts.stretch_past_failure = 1;
+    rb_design_run_one(&yc, &m, ctx->motion, &run);
+    out->runs++;
+    if (run.status != RB_OK) {
+        char msg[200];
+        snprintf(msg, sizeof msg, "the yielding run at the case's gap failed: %s",
+                 rb_status_str(run.status));
+        return rb_design_fail(diag, run.status, "motion", msg);
+    }
+    out->yield_run = 1;
+    out->yield_initial_gap_ratio = m.gap_m / m.lever_arm_m;
+    for (int s = 0; s < 2; s++) {
+        out->yield_final_gap_ratio[s] = run.r.final_gap_m[s] / m.lever_arm_m;
+        out->yield_usage[s] = run.r.usage[s];
+    }
+    out->yield_final_gap_ratio_max = rb_design_max2(out->yield_final_gap_ratio[0],
+                                                    out->yield_final_gap_ratio[1]);
+    return RB_OK;
+}
+
+/* Evaluate every grid gap; the first failed run in grid order is reported. */
+static rb_status run_grid(const rb_design_ctx *ctx, double *ratios, int n_threads,
+                          rb_gap_result *out, rb_diag *diag)
+{
+    size_t n = out->n_points;
+    rb_design_run *runs = malloc(n * sizeof *runs);
+    rb_status st = runs ? RB_OK : RB_ERR_NOMEM;
+    gap_batch b = {ctx, ratios, runs};
+    if (st == RB_OK)
+        st = rb_design_parallel(n, n_threads, gap_job, &b, NULL);
+    for (size_t i = 0; st == RB_OK && i < n; i++) {
+        out->runs++;
+        if (runs[i].status != RB_OK) {
+            char msg[200];
+            snprintf(msg, sizeof msg, "the solver run at gap ratio %.6g failed: %s",
+                     ratios[i], rb_status_str(runs[i].status));
+            st = rb_design_fail(diag, runs[i].status, "gap_ratio", msg);
+        } else {
+            keep_point(&out->points[i], ratios[i], &runs[i]);
+        }
+    }
+    free(runs);
+    return st;
+}
+
+rb_status rb_gap_recommend(const rb_model *model, const rb_motion *motion,
+                           const rb_solve_opts *opts, const rb_criteria *criteria,
+                           const rb_design_opts *design, int n_threads,
+                           rb_gap_result *out, rb_diag *diag)
+{
+    rb_design_ctx ctx;
+    rb_status st;
+    memset(out, 0, sizeof *out);
+    if (!model || !motion || !criteria || !design)
+        return rb_design_fail(diag, RB_ERR_INVALID, "", "missing model, motion, criteria "
+                              "or design options");
+    if ((st = check_grid(design, model, diag)) != RB_OK
+        || (st = rb_design_ctx_init(&ctx, model, motion, opts, criteria, diag)) != RB_OK)
+        return st;
+    size_t n = (size_t)floor((design->gap_ratio_max - design->gap_ratio_min)
+                             / design->gap_ratio_step + 1e-9) + 1;
+    double *ratios = malloc(n * sizeof *ratios);
+    out->points = calloc(n, sizeof *out->points);
+    if (!ratios || !out->points) {
+        free(ratios);
+        rb_gap_result_free(out);
+        return RB_ERR_NOMEM;
+    }
+    out->n_points = n;
+    for (size_t i = 0; i < n; i++)
+        ratios[i] = design->gap_ratio_min + (double)i * design->gap_ratio_step;
+    st = run_grid(&ctx, ratios, n_threads, out, diag);
+    free(ratios);
+    if (st == RB_OK)
+        st = yield_run(&ctx, out, diag);
+    if (st != RB_OK) {
+        rb_gap_result_free(out);
+        return st;
+    }
+    /* the passing run that reaches the end of the range */
+    for (size_t i = n; i-- > 0 && out->points[i].meets;) {
+        out->found = 1;
+        out->gap_ratio = out->points[i].gap_ratio;
+    }
+    out->gap_m = out->found ? out->gap_ratio * model->lever_arm_m : 0;
+    return RB_OK;
+}
+
+void rb_gap_result_free(rb_gap_result *r)
+{
+    if (!r)
+        return;
+    free(r->points);
+    r->points = NULL;
+    r->n_points = 0;
+}
