@@ -228,6 +228,10 @@ rb_exit rb_cli_check_run(const rb_cli_opts *o)
             printf("%s: %s\n", r.rep.pass ? "PASS" : "FAIL", r.rep.reason);
         else
             fputs(r.text, stdout);
+        if (fflush(stdout) != 0 || ferror(stdout)) {
+            rb_cli_error(NULL, NULL, "cannot write the report to standard output");
+            e = RB_EXIT_INTERNAL;
+        }
     }
     if (e == RB_EXIT_PASS)
         e = r.rep.pass ? RB_EXIT_PASS : RB_EXIT_FAIL;
