@@ -43,7 +43,8 @@ rb_status rb_record_read(const char *path, const rb_record_opts *opts,
  * values than the header announces, empty file), RB_ERR_INVALID (dt <= 0,
  * NaN or infinite values, non-uniform time column, missing units,
  * conflicting options), RB_ERR_LIMIT (more than max_points values, or a
- * line over 65536 characters), RB_ERR_NOMEM. On error out is empty. */
+ * line over 65536 characters), RB_ERR_NOMEM. On error out is empty.
+ * out is overwritten, not freed: free a series before reading into it. */
 
 /* Factor to m/s^2 of an acceleration unit as records spell it: g, mg,
  * m/s^2, cm/s^2, gal, mm/s^2, in/s^2, ft/s^2; any case, "sec" for "s",
