@@ -23,9 +23,9 @@ static rb_status io_fail(rb_diag *diag, const char *path, const char *what, int 
         diag->line = diag->col = 0;
         diag->key[0] = '\0';
         if (err)
-            snprintf(diag->msg, sizeof diag->msg, "%s: %s", what, strerror(err));
+            snprintf(diag->msg, sizeof diag->msg, "%.300s: %.200s", what, strerror(err));
         else
-            snprintf(diag->msg, sizeof diag->msg, "%s", what);
+            snprintf(diag->msg, sizeof diag->msg, "%.500s", what);
     }
     return RB_ERR_IO;
 }

@@ -52,11 +52,12 @@ static rb_status read_whole(const char *path, char **text, int *missing,
     *text = buf;
     return RB_OK;
 fail:
+    err = errno;
     free(buf);
     if (diag) {
-        snprintf(diag->file, sizeof diag->file, "%s", path);
+        snprintf(diag->file, sizeof diag->file, "%.500s", path);
         snprintf(diag->msg, sizeof diag->msg, "cannot read template: %s",
-                 errno ? strerror(errno) : "too large");
+                 err ? strerror(err) : "too large");
     }
     return RB_ERR_IO;
 }
