@@ -147,6 +147,7 @@ static void rb_follow_extends(rb_cctx *c, const char *file, rb_ynode *root,
     if (v->kind != RB_YNODE_SCALAR || rb_ynode_is_null(v) || !v->text[0]) {
         rb_cctx_error(c, v, "extends", "expected the path of a base case file, "
                       "found %s", rb_ynode_kind_str(v));
+        c->fatal = 1;
         return;
     }
     char *path = rb_extends_path(file, v->text);

@@ -71,8 +71,12 @@ const rb_ynode *rb_cv_number(rb_cctx *c, rb_ynode *map, const char *path,
 {
     char k[RB_CASE_KEY_MAX], expected[200], range[80];
     rb_quantity q;
-    snprintf(expected, sizeof expected, "%s in %s", rb_dim_str(dim),
-             rb_dim_units(dim));
+    if (dim == RB_DIM_RATIO)
+        snprintf(expected, sizeof expected, "a dimensionless number such as "
+                 "0.01 or 1 %%");
+    else
+        snprintf(expected, sizeof expected, "%s in %s", rb_dim_str(dim),
+                 rb_dim_units(dim));
     rb_ynode *v = rb_cv_get(c, map, path, key, required, expected);
     if (!v)
         return NULL;
