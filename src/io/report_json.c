@@ -70,6 +70,13 @@ static void j_norm(jctx *cx, cJSON *o, const char *key, double v)
     j_opt(cx, o, key, !isnan(v), v);
 }
 
+/* theta0 is +infinity when there are no bolts (the plate never meets a
+ * bolt head): that is "no such angle", not a bug. */
+static void j_theta0(jctx *cx, cJSON *o, double v)
+{
+    j_opt(cx, o, "theta0_rad", !(isinf(v) && v > 0), v);
+}
+
 static void j_bool(jctx *cx, cJSON *o, const char *key, int v)
 {
     if (cx->st == RB_OK)
@@ -166,7 +173,7 @@ static void add_derived(jctx *cx, cJSON *root, const rb_derived *d)
     j_num(cx, o, "a_uplift_mps2", d->a_uplift_mps2);
     j_norm(cx, o, "a_uplift_over_a_star",
            rb_report_ratio(d->a_uplift_mps2, d->a_star_mps2));
-    j_num(cx, o, "theta0_rad", d->theta0_rad);
+    j_theta0(cx, o, d->theta0_rad);
 }
 
 static void add_settings(jctx *cx, cJSON *root, const rb_case *c)
@@ -241,7 +248,7 @@ static void add_peaks(jctx *cx, cJSON *res_o, const rb_result *r,
     j_num(cx, o, "peak_floor_mps2", r->peak_floor_mps2);
     j_num(cx, o, "u_static_m", r->u_static_m);
     j_num(cx, o, "alpha_rad", r->alpha_rad);
-    j_num(cx, o, "theta0_rad", r->theta0_rad);
+    j_theta0(cx, o, r->theta0_rad);
     j_num(cx, o, "fy_row_n", r->fy_row_n);
     j_num(cx, o, "capacity_j", r->capacity_j);
     j_num(cx, o, "weight_n", r->weight_n);
