@@ -82,6 +82,7 @@ static void case_vars(tvars *t, const rb_report *r)
     tv_num(t, "freq_hz", m->freq_hz);
     tv_num(t, "damping", m->damping);
     tv_str(t, "bolt_model", rb_report_bolt_model_str(m->bolt_model));
+    tv_int(t, "has_bolts", m->bolt_model != RB_BOLT_NONE);
     tv_int(t, "bolts_per_row", m->bolts_per_row);
     tv_num(t, "bolt_area_mm2", m->bolt_area_m2 * 1e6);
     tv_num(t, "yield_stress_mpa", m->yield_stress_pa * 1e-6);
