@@ -18,7 +18,9 @@
 #include "rockbolt/solve.h"
 #include "rockbolt/criteria.h"
 #include "rockbolt/record.h"
+#include "rockbolt/units.h"
 #include "rockbolt/case.h"
 #include "rockbolt/report.h"
+#include "rockbolt/design.h"
 
 #endif
