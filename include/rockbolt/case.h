@@ -12,7 +12,10 @@
 #include "rockbolt/solve.h"
 #include "rockbolt/criteria.h"
 
-/* One floor motion of a case, ready for rb_solve_run. */
+/* One floor motion of a case, ready for rb_solve_run. For records the
+ * samples are already filtered, windowed and scaled to target_peak_mps2 in
+ * place, so motion.scale is 1; motion.duration_s is the case's run_time or
+ * the record's length. Amplitudes given in A* are already multiplied out. */
 typedef struct {
     char *name;           /* owned; from the case or the record file name */
     char *source;         /* owned; record path as resolved, or a description */
@@ -54,7 +57,14 @@ void rb_diag_list_free(rb_diag_list *l);
 
 /* Load and validate a case. Returns RB_OK, or RB_ERR_PARSE / RB_ERR_INVALID
  * / RB_ERR_IO with every problem found appended to diags. On error *out is
- * left empty (nothing to free, but rb_case_free is safe). */
+ * left empty (nothing to free, but rb_case_free is safe).
+ * Also RB_ERR_LIMIT (file over 4 MiB, value over 4096 bytes, nesting over
+ * 32, extends chain over 8) and RB_ERR_NOMEM. Each diag has file (as given,
+ * or a base/record path resolved from it), 1-based line and col (0 when the
+ * file itself could not be opened), a non-empty dotted key
+ * ("anchorage.yield_stress", "motions[2].peak"; "case" for the file as a
+ * whole) and a message; diags are in reading order. The format is in
+ * docs/case-format.md. */
 rb_status rb_case_load(const char *path, rb_case *out, rb_diag_list *diags);
 
 /* Free what a case owns; accepts NULL. */

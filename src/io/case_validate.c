@@ -110,6 +110,22 @@ static char *rb_strdup(rb_cctx *c, const char *s)
     return p;
 }
 
+/* Report an unreadable record at its `file:` value, with the reader's own
+ * diagnostic (which names the line of the record when it has one). */
+static void rb_record_fail(rb_cctx *c, const rb_cmotion *cm, const char *key,
+                           const char *path, rb_status st, const rb_diag *rd)
+{
+    const rb_ynode *v = cm->file_node;
+    rb_status as = st == RB_ERR_NOMEM ? st : RB_ERR_IO;
+    if (rd->line > 0)
+        rb_cctx_error_at(c, as, v->file, v->line, v->col, key, "cannot read "
+                         "record '%s' (line %d: %s)", path, rd->line, rd->msg);
+    else
+        rb_cctx_error_at(c, as, v->file, v->line, v->col, key, "cannot read "
+                         "record '%s' (%s)", path,
+                         rd->msg[0] ? rd->msg : rb_status_str(st));
+}
+
 /* Read, filter, window and scale one record into out->series. */
 static int rb_load_record(rb_cctx *c, const rb_cmotion *cm, rb_case_motion *out,
                           double peak_mps2)
@@ -125,17 +141,7 @@ static int rb_load_record(rb_cctx *c, const rb_cmotion *cm, rb_case_motion *out,
     }
     rb_status st = rb_record_read(out->source, &cm->ropts, &out->series, &rd);
     if (st != RB_OK) {
-        if (rd.line > 0)
-            rb_cctx_error_at(c, st == RB_ERR_NOMEM ? st : RB_ERR_IO,
-                             cm->file_node->file, cm->file_node->line,
-                             cm->file_node->col, k, "cannot read record '%s' "
-                             "(line %d: %s)", out->source, rd.line, rd.msg);
-        else
-            rb_cctx_error_at(c, st == RB_ERR_NOMEM ? st : RB_ERR_IO,
-                             cm->file_node->file, cm->file_node->line,
-                             cm->file_node->col, k, "cannot read record '%s' "
-                             "(%s)", out->source, rd.msg[0] ? rd.msg
-                             : rb_status_str(st));
+        rb_record_fail(c, cm, k, out->source, st, &rd);
         return 0;
     }
     if (cm->building_freq_hz > 0) {
