@@ -7,8 +7,10 @@
  * do not depend on n_threads: each grid point has its own slot, decisions
  * read the points in grid order, and runs made ahead of need by idle
  * threads are discarded and only counted in runs_speculative. The model
- * and the motion are read-only; levels are set on private copies. Library
- * code: nothing here prints. docs/design.md describes the algorithms. */
+ * and the motion are read-only; levels are set on private copies. Levels
+ * are in A* = (Fy_row l + W b) / (M h); for a model without bolts, Fy = 0
+ * and A* is the uplift level W b / (M h). Library code: nothing here
+ * prints. docs/design.md describes the algorithms. */
 #ifndef ROCKBOLT_DESIGN_H
 #define ROCKBOLT_DESIGN_H
 
@@ -77,7 +79,9 @@ rb_status rb_design_factor(const rb_model *model, const rb_motion *motion,
 /* ---- Recommended gap ratio ---------------------------------------------- */
 
 typedef struct {
-    double gap_ratio;           /* g0 / l of this run */
+    double gap_ratio;           /* g0 / l of this grid point */
+    int evaluated;              /* 0: below the highest failing gap, not run
+                                   (the rest of the point is then zero) */
     int meets;                  /* 1 if the run meets the criteria */
     double max_force_over_fy;   /* larger of the two rows */
     double max_u_over_ustatic;
@@ -93,7 +97,10 @@ typedef struct {
     double gap_m;               /* gap_ratio x lever arm */
     rb_gap_point *points;       /* owned; the grid, ascending */
     size_t n_points;
-    long runs;                  /* n_points, plus 1 for the yielding run */
+    long fail_index;            /* highest failing grid point, -1 if none */
+    long runs;                  /* grid runs the search needed, plus 1 for
+                                   the yielding run (same for any n_threads) */
+    long runs_speculative;      /* grid runs made ahead and discarded */
     /* The thesis's reading (sec. 6.6): a run with yielding bolts (stretching
      * past failure) at the case's own gap; its final gaps tell how large a
      * gap the motion opens. yield_run = 0 for a model without bolts. */
@@ -104,11 +111,11 @@ typedef struct {
     double yield_usage[2];
 } rb_gap_result;
 
-/* Run the model, with its gap set to each grid ratio in [gap_ratio_min,
- * gap_ratio_max] (step gap_ratio_step), under the motion as given, judge
- * each run, and recommend the smallest ratio g such that g and every larger
- * grid ratio meet the criteria. Errors as for rb_design_factor. out is
- * owned by the caller: rb_gap_result_free. */
+/* Run the model, with its gap set to the grid ratios of [gap_ratio_min,
+ * gap_ratio_max] (step gap_ratio_step) from the largest down to the first
+ * that fails, under the motion as given, and recommend the smallest ratio g
+ * such that g and every larger grid ratio meet the criteria. Errors as for
+ * rb_design_factor. out is owned by the caller: rb_gap_result_free. */
 rb_status rb_gap_recommend(const rb_model *model, const rb_motion *motion,
                            const rb_solve_opts *opts, const rb_criteria *criteria,
                            const rb_design_opts *design, int n_threads,

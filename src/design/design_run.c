@@ -39,7 +39,8 @@ rb_status rb_design_ctx_init(rb_design_ctx *ctx, const rb_model *model,
     ctx->model = model;
     ctx->motion = motion;
     ctx->criteria = criteria;
-    ctx->a_star_mps2 = d.a_star_mps2;
+    /* without bolts A* = (Fy l + W b) / (M h) has Fy = 0: the uplift level */
+    ctx->a_star_mps2 = model->bolt_model == RB_BOLT_NONE ? d.a_uplift_mps2 : d.a_star_mps2;
     if (opts)
         ctx->opts = *opts;
     else

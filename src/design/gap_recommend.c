@@ -3,7 +3,7 @@
  * under the case's own motion. Because the response is not monotonic in
  * the gap, a gap that passes between failing ones is not recommended: the
  * recommendation is the start of the passing run that reaches the range's
- * end. The thesis read the gap off the final gaps of yielding runs; that
+ * end, found by walking down from the largest gap to the first failure. The thesis read the gap off the final gaps of yielding runs; that
  * run is made too and reported beside the search. */
 #include <math.h>
 #include <stdio.h>
@@ -48,6 +48,7 @@ static void keep_point(rb_gap_point *p, double ratio, const rb_design_run *run)
 {
     const rb_result *r = &run->r;
     p->gap_ratio = ratio;
+    p->evaluated = 1;
     p->meets = run->meets == 1;
     p->max_force_over_fy = r->fy_row_n > 0
         ? rb_design_max2(r->max_bolt_force_n[0], r->max_bolt_force_n[1]) / r->fy_row_n : 0;
@@ -87,26 +88,44 @@ static rb_status yield_run(const rb_design_ctx *ctx, rb_gap_result *out, rb_diag
     return RB_OK;
 }
 
-/* Evaluate every grid gap; the first failed run in grid order is reported. */
-static rb_status run_grid(const rb_design_ctx *ctx, double *ratios, int n_threads,
+/* Walk the grid down from the largest gap in rounds of nt runs, and stop at
+ * the first failing gap: the gaps below it cannot change the answer. Runs
+ * made past that point in the last round are discarded, so the points kept
+ * are those a single thread would have run. */
+static rb_status run_grid(const rb_design_ctx *ctx, const double *ratios, int n_threads,
                           rb_gap_result *out, rb_diag *diag)
 {
     size_t n = out->n_points;
-    rb_design_run *runs = malloc(n * sizeof *runs);
-    rb_status st = runs ? RB_OK : RB_ERR_NOMEM;
-    gap_batch b = {ctx, ratios, runs};
-    if (st == RB_OK)
-        st = rb_design_parallel(n, n_threads, gap_job, &b, NULL);
-    for (size_t i = 0; st == RB_OK && i < n; i++) {
-        out->runs++;
-        if (runs[i].status != RB_OK) {
-            char msg[200];
-            snprintf(msg, sizeof msg, "the solver run at gap ratio %.6g failed: %s",
-                     ratios[i], rb_status_str(runs[i].status));
-            st = rb_design_fail(diag, runs[i].status, "gap_ratio", msg);
-        } else {
-            keep_point(&out->points[i], ratios[i], &runs[i]);
+    size_t nt = (size_t)(n_threads > 0 ? n_threads : rb_design_threads_default());
+    rb_design_run *runs = malloc(nt * sizeof *runs);
+    if (!runs)
+        return RB_ERR_NOMEM;
+    rb_status st = RB_OK;
+    out->fail_index = -1;
+    for (size_t k = n; st == RB_OK && k > 0 && out->fail_index < 0;) {
+        size_t m = k < nt ? k : nt;
+        gap_batch b = {ctx, ratios + (k - m), runs};
+        if ((st = rb_design_parallel(m, n_threads, gap_job, &b, NULL)) != RB_OK)
+            break;
+        /* slot j holds grid point k - m + j; read them from the top down */
+        for (size_t j = m; j-- > 0;) {
+            size_t i = k - m + j;
+            out->runs++;
+            if (runs[j].status != RB_OK) {
+                char msg[200];
+                snprintf(msg, sizeof msg, "the solver run at gap ratio %.6g failed: %s",
+                         ratios[i], rb_status_str(runs[j].status));
+                st = rb_design_fail(diag, runs[j].status, "gap_ratio", msg);
+                break;
+            }
+            keep_point(&out->points[i], ratios[i], &runs[j]);
+            if (!runs[j].meets) {
+                out->fail_index = (long)i;
+                out->runs_speculative += (long)j;
+                break;
+            }
         }
+        k -= m;
     }
     free(runs);
     return st;
@@ -138,20 +157,22 @@ rb_status rb_gap_recommend(const rb_model *model, const rb_motion *motion,
     out->n_points = n;
     for (size_t i = 0; i < n; i++)
         ratios[i] = design->gap_ratio_min + (double)i * design->gap_ratio_step;
+    for (size_t i = 0; i < n; i++)
+        out->points[i].gap_ratio = ratios[i];
     st = run_grid(&ctx, ratios, n_threads, out, diag);
-    free(ratios);
     if (st == RB_OK)
         st = yield_run(&ctx, out, diag);
     if (st != RB_OK) {
+        free(ratios);
         rb_gap_result_free(out);
         return st;
     }
     /* the passing run that reaches the end of the range */
-    for (size_t i = n; i-- > 0 && out->points[i].meets;) {
-        out->found = 1;
-        out->gap_ratio = out->points[i].gap_ratio;
-    }
+    size_t first = (size_t)(out->fail_index + 1);
+    out->found = first < n;
+    out->gap_ratio = out->found ? ratios[first] : 0;
     out->gap_m = out->found ? out->gap_ratio * model->lever_arm_m : 0;
+    free(ratios);
     return RB_OK;
 }
 

@@ -1,0 +1,118 @@
+/* Design benchmark: wall time of a full design of the reference cabinet
+ * under the El Centro 1940 N-S floor motion (5 Hz, 5 % building, scaled to
+ * 0.4 A*): the design factor for both criteria (bolts stay elastic; bolts
+ * may yield but not break) and the recommended gap ratio. Prints the
+ * figures and the time of each part. Usage: bench_design [RECORD]
+ * [THREADS]. Target: the whole design in under 1 s. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <time.h>
+#include "rockbolt/design.h"
+#include "rockbolt/record.h"
+
+static double now_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static int floor_motion(const char *path, rb_series *s)
+{
+    rb_record_opts ro;
+    rb_diag diag;
+    rb_record_opts_init(&ro);
+    if (rb_record_read(path, &ro, s, &diag) != RB_OK) {
+        fprintf(stderr, "%s:%d:%d: error: %s\n", path, diag.line, diag.col, diag.msg);
+        return -1;
+    }
+    return rb_series_building_filter(s, 5.0, 0.05) == RB_OK ? 0 : -1;
+}
+
+static int factor(const char *name, const rb_model *m, const rb_motion *mo,
+                  rb_criterion_kind kind, const rb_design_opts *d, int nt)
+{
+    rb_criteria c;
+    rb_design_factor_result f;
+    rb_diag diag;
+    rb_criteria_init(&c);
+    c.kind = kind;
+    double t0 = now_s();
+    rb_status st = rb_design_factor(m, mo, NULL, &c, d, nt, &f, &diag);
+    double t = now_s() - t0;
+    if (st != RB_OK) {
+        fprintf(stderr, "design factor (%s): %s: %s\n", name, rb_status_str(st), diag.msg);
+        return -1;
+    }
+    printf("design factor, %-9s %6.2f  (withstands %.4f A* = %.3f g; first failing scan "
+           "level %.2f A*; fails at %.4f A*: %s)\n", name, f.factor, f.level_astar,
+           f.level_mps2 / RB_G0, f.first_fail_astar, f.fail_astar, f.fail_reason);
+    printf("  %ld runs (%ld scan, %ld bisection, %ld speculative), %.3f s\n", f.runs,
+           f.scan_runs, f.bisect_runs, f.runs_speculative, t);
+    return 0;
+}
+
+static int gap(const rb_model *m, const rb_motion *mo, const rb_design_opts *d, int nt)
+{
+    rb_criteria c;
+    rb_gap_result g;
+    rb_diag diag;
+    rb_criteria_init(&c);
+    c.kind = RB_CRIT_NO_YIELD;
+    double t0 = now_s();
+    rb_status st = rb_gap_recommend(m, mo, NULL, &c, d, nt, &g, &diag);
+    double t = now_s() - t0;
+    if (st != RB_OK) {
+        fprintf(stderr, "gap: %s: %s\n", rb_status_str(st), diag.msg);
+        return -1;
+    }
+    if (g.found)
+        printf("recommended gap ratio %.4f (bolts stay elastic from there to %.4f)\n",
+               g.gap_ratio, d->gap_ratio_max);
+    else
+        printf("recommended gap ratio: none in [%.4f, %.4f]\n", d->gap_ratio_min,
+               d->gap_ratio_max);
+    printf("  yielding run at g_r = %.4f: final gap ratios L/R %.4f / %.4f, usage "
+           "%.3f / %.3f\n", g.yield_initial_gap_ratio, g.yield_final_gap_ratio[0],
+           g.yield_final_gap_ratio[1], g.yield_usage[0], g.yield_usage[1]);
+    printf("  grid (+ meets, - fails, . not needed):");
+    for (size_t i = 0; i < g.n_points; i++)
+        printf(" %.4f%s", g.points[i].gap_ratio,
+               !g.points[i].evaluated ? "." : g.points[i].meets ? "+" : "-");
+    printf("\n  %ld runs (%ld speculative), %.3f s\n", g.runs, g.runs_speculative, t);
+    rb_gap_result_free(&g);
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    const char *path = argc > 1 ? argv[1] : "cases/records/elcentro_1940_ns.at2";
+    int nt = argc > 2 ? atoi(argv[2]) : 0;
+    rb_series s = {0};
+    rb_model m;
+    rb_derived dv;
+    rb_motion mo;
+    rb_design_opts d;
+    if (floor_motion(path, &s) != 0)
+        return 2;
+    rb_model_reference(&m);
+    rb_model_derive(&m, &dv, NULL);
+    rb_motion_init(&mo);
+    mo.kind = RB_MOTION_SAMPLED;
+    mo.series = &s;
+    mo.scale = 0.4 * dv.a_star_mps2 / rb_series_peak(&s);
+    mo.duration_s = s.t0_s + (double)s.n * s.dt_s;
+    rb_design_opts_defaults(&d);
+    printf("reference cabinet (A* = %.2f g, g_r = %.4f), %s through a 5 Hz, 5 %% "
+           "building, %.1f s, at 0.4 A*; %d threads\n", dv.a_star_mps2 / RB_G0,
+           m.gap_m / m.lever_arm_m, path, mo.duration_s,
+           nt > 0 ? nt : rb_design_threads_default());
+    double t0 = now_s();
+    int rc = factor("no-yield", &m, &mo, RB_CRIT_NO_YIELD, &d, nt)
+             || factor("no-break", &m, &mo, RB_CRIT_NO_BREAK, &d, nt)
+             || gap(&m, &mo, &d, nt);
+    double t = now_s() - t0;
+    printf("full design         %.3f s (target 1 s: %s)\n", t, t < 1.0 ? "met" : "NOT met");
+    rb_series_free(&s);
+    return rc ? 3 : 0;
+}

@@ -1,0 +1,419 @@
+/* Design checks on cases whose answer is known: the overturning threshold
+ * of the rigid block under a triangular pulse (Table 2.2, eq. 2.17), the
+ * static uplift level W b / (M h) of a stiff cabinet under a slow harmonic,
+ * the plate rotation theta0 of a held plate against a rotation limit (gap
+ * search), the damped SDOF amplification (frequency sweep); the same
+ * numbers with 1, 2 and 3 threads; the sweep writers. */
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include <cjson/cJSON.h>
+#include "harness.h"
+#include "rockbolt/design.h"
+#include "rockbolt/record.h"
+
+/* ---- Rigid block, triangular-decreasing pulse, p t1 = 7 ------------------ */
+
+static void block_model(rb_model *m)
+{
+    rb_model_init(m);
+    m->mass_kg = 100;
+    m->cm_height_m = 0.6;
+    m->half_width_m = 0.25;
+    m->rigid = 1;
+    m->bolt_model = RB_BOLT_NONE;
+    m->restitution = 0.778;
+    m->inertia_kgm2 = 4.0 / 3.0 * m->mass_kg * (0.6 * 0.6 + 0.25 * 0.25);
+}
+
+static void block_pulse(const rb_model *m, rb_motion *mo, rb_solve_opts *o)
+{
+    rb_derived d;
+    rb_model_derive(m, &d, NULL);
+    rb_motion_init(mo);
+    mo->kind = RB_MOTION_PULSE;
+    mo->pulse = RB_PULSE_TRI_DEC;
+    mo->pulse_s = 7.0 / sqrt(d.W * d.R / d.Io);
+    mo->amplitude_mps2 = d.g * d.alpha; /* the shape; the search rescales it */
+    mo->duration_s = mo->pulse_s + 15.0;
+    rb_solve_opts_init(o);
+    o->formulation = RB_FORM_SMALL;
+    o->rtol = 1e-10;
+}
+
+/* eq. 2.17: normalised overturning amplitude K = a / (g alpha) */
+static double eq_2_17(double pt1)
+{
+    double c1 = 2 * sinh(pt1) / pt1 - 2;
+    double c2 = 2 * sinh(pt1) / pt1 + (2 - 2 * cosh(pt1)) / (pt1 * pt1) - 1;
+    return (c1 + sqrt(c1 * c1 + 4 * c2)) / (2 * c2);
+}
+
+static void factor_finds_overturn_threshold(void)
+{
+    rb_model m;
+    rb_motion mo;
+    rb_solve_opts o;
+    rb_criteria c;
+    rb_design_opts d;
+    rb_design_factor_result f;
+    rb_derived dv;
+    block_model(&m);
+    block_pulse(&m, &mo, &o);
+    rb_model_derive(&m, &dv, NULL);
+    rb_criteria_init(&c); /* no break, no overturn: for a block, no overturn */
+    rb_design_opts_defaults(&d);
+    CHECK(rb_design_factor(&m, &mo, &o, &c, &d, 0, &f, NULL) == RB_OK);
+    /* K in A*: a = K g alpha, A* = W b / (M h) for a block without bolts */
+    double to_astar = dv.g * dv.alpha / dv.a_uplift_mps2;
+    double k = eq_2_17(7.0);
+    printf("block: level %.5f A*, fails at %.5f A* (eq. 2.17: %.5f A*), factor %.4f, "
+           "%ld runs (%ld scan, %ld bisection, %ld speculative)\n", f.level_astar,
+           f.fail_astar, k * to_astar, f.factor, f.runs, f.scan_runs, f.bisect_runs,
+           f.runs_speculative);
+    CHECK(!f.no_failure && !f.fails_at_start);
+    CHECK(f.fail_astar - f.level_astar <= d.resolution);
+    CHECK_NEAR(f.bracket_astar, f.fail_astar - f.level_astar, 1e-15);
+    /* the solver's own threshold lies in [1.1662, 1.1668] (test_rigid_block) */
+    CHECK(f.level_astar <= 1.1668 * to_astar && f.fail_astar >= 1.1662 * to_astar);
+    CHECK_REL(0.5 * (f.level_astar + f.fail_astar), k * to_astar, 1e-3);
+    CHECK_NEAR(f.first_fail_astar, 1.15, 1e-12);
+    CHECK_NEAR(f.factor, 1.0 / f.level_astar, 1e-12);
+    CHECK_NEAR(f.level_mps2, f.level_astar * dv.a_uplift_mps2, 1e-9);
+    CHECK(f.a_star_mps2 == dv.a_uplift_mps2);
+    CHECK(f.runs == f.scan_runs + f.bisect_runs && f.scan_runs == 23);
+    CHECK(strstr(f.fail_reason, "overturns") != NULL);
+    /* no failing level up to scan_end */
+    d.scan_end = 0.5;
+    CHECK(rb_design_factor(&m, &mo, &o, &c, &d, 2, &f, NULL) == RB_OK);
+    CHECK(f.no_failure && f.level_astar == 0.5 && f.factor == 2.0);
+    CHECK(f.fail_astar == HUGE_VAL && f.first_fail_astar == HUGE_VAL && f.runs == 10);
+}
+
+/* ---- Stiff cabinet: uplift at W b / (M h) ---------------------------------- */
+
+static void stiff_cabinet(rb_model *m, rb_motion *mo, rb_criteria *c)
+{
+    rb_model_reference(m);
+    m->freq_hz = 50.0;   /* (0.5 / 50)^2: the frame's share is 1e-4 of the level */
+    m->damping = 0.05;
+    rb_motion_init(mo);
+    mo->kind = RB_MOTION_HARMONIC;
+    mo->freq_hz = 0.5;
+    mo->ramp_s = 2.0;
+    mo->duration_s = 4.0;
+    mo->amplitude_mps2 = 1.0;
+    rb_criteria_init(c);
+    c->max_theta_over_alpha = 1e-12; /* any uplift fails */
+}
+
+static void factor_finds_uplift_level(void)
+{
+    rb_model m;
+    rb_motion mo;
+    rb_criteria c;
+    rb_design_opts d;
+    rb_design_factor_result f;
+    rb_derived dv;
+    stiff_cabinet(&m, &mo, &c);
+    rb_model_derive(&m, &dv, NULL);
+    rb_design_opts_defaults(&d);
+    d.scan_start = 0.01;
+    d.scan_step = 0.01;
+    d.resolution = 1e-4;
+    double want = dv.a_uplift_mps2 / dv.a_star_mps2;
+    CHECK(rb_design_factor(&m, &mo, NULL, &c, &d, 2, &f, NULL) == RB_OK);
+    printf("uplift: level %.6f A*, fails at %.6f A*, W b / (M h) = %.6f A*; %ld runs\n",
+           f.level_astar, f.fail_astar, want, f.runs);
+    CHECK(!f.no_failure && !f.fails_at_start && f.first_fail_astar == 0.04);
+    CHECK(f.fail_astar - f.level_astar <= d.resolution);
+    /* bracket holds the level, to 2e-4 of it for the frame's share */
+    CHECK(f.level_astar <= want * (1 + 2e-4) && f.fail_astar >= want * (1 - 2e-4));
+    /* the same level when the scan's first level already fails */
+    d.scan_start = d.scan_step = 0.05;
+    CHECK(rb_design_factor(&m, &mo, NULL, &c, &d, 2, &f, NULL) == RB_OK);
+    printf("uplift from 0: level %.6f A*, fails at %.6f A*; %ld runs\n", f.level_astar,
+           f.fail_astar, f.runs);
+    CHECK(f.fails_at_start && f.scan_runs == 1 && f.first_fail_astar == 0.05);
+    CHECK(f.fail_astar - f.level_astar <= d.resolution);
+    CHECK(f.level_astar <= want * (1 + 2e-4) && f.fail_astar >= want * (1 - 2e-4));
+}
+
+/* ---- Gap search against theta0 --------------------------------------------- */
+
+/* Held by non-yielding bolts under a slow motion twice the uplift level,
+ * the plate tips until it meets the bolt heads and stays there: the peak
+ * rotation is theta0 = 2 asin(g / 2l), increasing with the gap. */
+static void gap_search_known_rotation(void)
+{
+    rb_model m;
+    rb_motion mo;
+    rb_criteria c;
+    rb_design_opts d;
+    rb_gap_result g;
+    rb_derived dv;
+    stiff_cabinet(&m, &mo, &c);
+    m.bolt_model = RB_BOLT_NONYIELDING;
+    rb_model_derive(&m, &dv, NULL);
+    mo.amplitude_mps2 = 2 * dv.a_uplift_mps2;
+    c.max_theta_over_alpha = 2 * asin(0.03125 / 2) / dv.alpha; /* between 0.03 and 0.0325 */
+    rb_design_opts_defaults(&d);
+    d.gap_ratio_max = 0.03;
+    CHECK(rb_gap_recommend(&m, &mo, NULL, &c, &d, 1, &g, NULL) == RB_OK);
+    CHECK(g.found && g.gap_ratio == 0 && g.fail_index == -1 && g.n_points == 13);
+    for (size_t i = 0; i < g.n_points; i++) {
+        double th0 = 2 * asin(g.points[i].gap_ratio / 2);
+        CHECK(g.points[i].evaluated && g.points[i].meets);
+        CHECK_NEAR(g.points[i].max_theta_over_alpha, th0 / dv.alpha, 2e-3 * th0 / dv.alpha);
+    }
+    CHECK(g.runs == 14 && g.yield_run);
+    rb_gap_result_free(&g);
+    /* wider range: the largest gaps rotate too far, so no gap works */
+    d.gap_ratio_max = 0.06;
+    CHECK(rb_gap_recommend(&m, &mo, NULL, &c, &d, 1, &g, NULL) == RB_OK);
+    CHECK(!g.found && g.fail_index == 24 && g.runs == 2 && g.points[24].evaluated);
+    CHECK(!g.points[24].meets && !g.points[23].evaluated);
+    rb_gap_result_free(&g);
+    rb_gap_result_free(NULL);
+}
+
+/* ---- El Centro: consistency and determinism ---------------------------------- */
+
+static int elcentro(rb_series *s, rb_motion *mo, const rb_model *m, double level)
+{
+    rb_record_opts ro;
+    rb_derived d;
+    rb_record_opts_init(&ro);
+    if (rb_record_read("cases/records/elcentro_1940_ns.at2", &ro, s, NULL) != RB_OK
+        || rb_series_building_filter(s, 5.0, 0.05) != RB_OK
+        || rb_series_window(s, 0.0, 12.0) != RB_OK)
+        return 0;
+    rb_model_derive(m, &d, NULL);
+    rb_motion_init(mo);
+    mo->kind = RB_MOTION_SAMPLED;
+    mo->series = s;
+    mo->scale = level * d.a_star_mps2 / rb_series_peak(s);
+    mo->duration_s = 12.0;
+    return 1;
+}
+
+static int run_meets(const rb_model *m, const rb_motion *mo, const rb_criteria *c)
+{
+    rb_result r;
+    int ok = rb_solve_run(m, mo, NULL, &r, NULL) == RB_OK && rb_criteria_judge(c, &r, NULL, 0);
+    rb_result_free(&r);
+    return ok;
+}
+
+static void gap_search_consistent(const rb_model *m, const rb_motion *mo)
+{
+    rb_criteria c;
+    rb_design_opts d;
+    rb_gap_result g[3];
+    rb_criteria_init(&c);
+    c.kind = RB_CRIT_NO_YIELD;
+    rb_design_opts_defaults(&d);
+    for (int t = 0; t < 3; t++)
+        CHECK(rb_gap_recommend(m, mo, NULL, &c, &d, t + 1, &g[t], NULL) == RB_OK);
+    printf("El Centro 0.3 A*: recommended gap ratio %.4f, %ld runs; yielding run final "
+           "gaps %.4f / %.4f\n", g[0].gap_ratio, g[0].runs, g[0].yield_final_gap_ratio[0],
+           g[0].yield_final_gap_ratio[1]);
+    CHECK(g[0].found && g[0].fail_index >= 0);
+    for (size_t i = 0; i < g[0].n_points; i++)
+        CHECK(g[0].points[i].evaluated == ((long)i >= g[0].fail_index));
+    /* the recommendation and the gap below it, run directly */
+    rb_model mm = *m;
+    mm.gap_m = g[0].gap_ratio * m->lever_arm_m;
+    CHECK(run_meets(&mm, mo, &c));
+    mm.gap_m = g[0].points[g[0].fail_index].gap_ratio * m->lever_arm_m;
+    CHECK(!run_meets(&mm, mo, &c));
+    for (int t = 1; t < 3; t++) {
+        CHECK(g[t].found == g[0].found && g[t].gap_ratio == g[0].gap_ratio);
+        CHECK(g[t].runs == g[0].runs && g[t].fail_index == g[0].fail_index);
+        CHECK(memcmp(g[t].points, g[0].points, g[0].n_points * sizeof *g[0].points) == 0);
+        CHECK(memcmp(g[t].yield_final_gap_ratio, g[0].yield_final_gap_ratio,
+                     sizeof g[0].yield_final_gap_ratio) == 0);
+    }
+    for (int t = 0; t < 3; t++)
+        rb_gap_result_free(&g[t]);
+}
+
+static void factor_deterministic(const rb_model *m, const rb_motion *mo)
+{
+    rb_criteria c;
+    rb_design_opts d;
+    rb_design_factor_result f[3];
+    rb_criteria_init(&c);
+    c.kind = RB_CRIT_NO_YIELD;
+    rb_design_opts_defaults(&d);
+    for (int t = 0; t < 3; t++)
+        CHECK(rb_design_factor(m, mo, NULL, &c, &d, t + 1, &f[t], NULL) == RB_OK);
+    printf("El Centro no-yield factor %.4f (level %.5f A*), %ld runs; speculative with "
+           "1/2/3 threads: %ld/%ld/%ld\n", f[0].factor, f[0].level_astar, f[0].runs,
+           f[0].runs_speculative, f[1].runs_speculative, f[2].runs_speculative);
+    CHECK(f[0].runs_speculative == 0);
+    for (int t = 0; t < 3; t++)
+        f[t].runs_speculative = 0;
+    CHECK(memcmp(&f[1], &f[0], sizeof f[0]) == 0);
+    CHECK(memcmp(&f[2], &f[0], sizeof f[0]) == 0);
+    /* the verdicts the search relied on hold in direct runs */
+    rb_motion at = *mo;
+    double peak = mo->scale * rb_series_peak(mo->series);
+    at.scale = mo->scale * f[0].level_mps2 / peak;
+    CHECK(run_meets(m, &at, &c));
+    at.scale = mo->scale * f[0].fail_mps2 / peak;
+    CHECK(!run_meets(m, &at, &c));
+}
+
+static void elcentro_checks(void)
+{
+    rb_series s = {0};
+    rb_model m;
+    rb_motion mo;
+    rb_model_reference(&m);
+    CHECK(elcentro(&s, &mo, &m, 0.3));
+    if (s.n) {
+        factor_deterministic(&m, &mo);
+        gap_search_consistent(&m, &mo);
+    }
+    rb_series_free(&s);
+}
+
+/* ---- Sweeps -------------------------------------------------------------------- */
+
+static void frequency_sweep_sdof(void)
+{
+    rb_model m;
+    rb_sweep_opts o;
+    rb_sweep s[2];
+    rb_derived dv;
+    rb_model_reference(&m);
+    m.damping = 0.05;
+    rb_model_derive(&m, &dv, NULL);
+    rb_sweep_opts_init(&o, RB_SWEEP_FREQUENCY);
+    o.from = 0.2;
+    o.to = 0.6;
+    o.n_points = 3;
+    o.amplitude_astar = 0.2 * dv.a_uplift_mps2 / dv.a_star_mps2; /* never uplifts */
+    /* the kink at the end of the ramp starts a free vibration that adds
+     * about r^2 / (omega T) to the peak: 0.5 % at r = 0.6 */
+    o.ramp_s = 10.0;
+    o.duration_s = 14.0;
+    for (int t = 0; t < 2; t++)
+        CHECK(rb_sweep_frequency(&m, NULL, NULL, &o, t + 1, &s[t], NULL) == RB_OK);
+    CHECK(s[0].n_points == 3 && s[0].kind == RB_SWEEP_FREQUENCY);
+    for (size_t i = 0; i < s[0].n_points; i++) {
+        const rb_sweep_point *p = &s[0].points[i];
+        double r = p->x;
+        /* steady state N* a / K* over U_static = pi^2 a / (8 omega^2): 32 / pi^3 */
+        double want = 32 / (M_PI * M_PI * M_PI)
+                      / sqrt(pow(1 - r * r, 2) + pow(2 * 0.05 * r, 2));
+        printf("sweep r = %.2f: U/U_static %.4f (SDOF %.4f), force/Fy %.3f/%.3f\n", r,
+               p->max_u_over_ustatic, want, p->max_force_over_fy[0], p->max_force_over_fy[1]);
+        CHECK(p->status == RB_OK && p->meets == -1);
+        CHECK_NEAR(p->freq_hz, r * 5.0, 1e-12);
+        CHECK_NEAR(p->level_astar, o.amplitude_astar, 1e-12);
+        CHECK_REL(p->max_u_over_ustatic, want, 0.01);
+        CHECK(p->max_theta_over_alpha == 0 && !p->yielded[0] && !p->overturned);
+    }
+    CHECK(memcmp(s[0].points, s[1].points, 3 * sizeof *s[0].points) == 0);
+    rb_sweep_free(&s[0]);
+    rb_sweep_free(&s[1]);
+    rb_sweep_free(NULL);
+    /* a rigid model has no frequency to sweep */
+    m.rigid = 1;
+    CHECK(rb_sweep_frequency(&m, NULL, NULL, &o, 1, &s[0], NULL) == RB_ERR_INVALID);
+}
+
+static int count_lines(FILE *fp)
+{
+    int n = 0, ch;
+    rewind(fp);
+    while ((ch = fgetc(fp)) != EOF)
+        n += ch == '\n';
+    return n;
+}
+
+static void writers(const rb_sweep *s)
+{
+    FILE *fp = tmpfile();
+    CHECK(fp && rb_sweep_write_csv(s, fp) == RB_OK);
+    if (fp) {
+        CHECK(count_lines(fp) == (int)s->n_points + 1);
+        fclose(fp);
+    }
+    cJSON *j = rb_sweep_to_json(s);
+    cJSON *pts = cJSON_GetObjectItem(j, "points");
+    CHECK(j && cJSON_GetArraySize(pts) == (int)s->n_points);
+    cJSON *p0 = cJSON_GetArrayItem(pts, 0);
+    CHECK(cJSON_IsBool(cJSON_GetObjectItem(p0, "overturned")));
+    CHECK_NEAR(cJSON_GetObjectItem(p0, "level_astar")->valuedouble, s->points[0].level_astar,
+               1e-12);
+    cJSON_Delete(j);
+    char dir[] = "/tmp/rb-design-XXXXXX", path[64];
+    CHECK(mkdtemp(dir) != NULL);
+    snprintf(path, sizeof path, "%s/sweep.json", dir);
+    CHECK(rb_sweep_save_json(s, path, NULL) == RB_OK);
+    fp = fopen(path, "rb");
+    char buf[1 << 16];
+    size_t n = fp ? fread(buf, 1, sizeof buf - 1, fp) : 0;
+    buf[n] = '\0';
+    if (fp)
+        fclose(fp);
+    cJSON *back = cJSON_Parse(buf);
+    CHECK(back && cJSON_GetArraySize(cJSON_GetObjectItem(back, "points")) == (int)s->n_points);
+    cJSON_Delete(back);
+    unlink(path);
+    snprintf(path, sizeof path, "%s/sweep.csv", dir);
+    CHECK(rb_sweep_save_csv(s, path, NULL) == RB_OK);
+    CHECK(access(path, F_OK) == 0);
+    unlink(path);
+    rmdir(dir);
+    rb_diag diag;
+    CHECK(rb_sweep_save_csv(s, "/nonexistent-dir/x/sweep.csv", &diag) == RB_ERR_IO);
+}
+
+static void amplitude_sweep_block(void)
+{
+    rb_model m;
+    rb_motion mo;
+    rb_solve_opts so;
+    rb_criteria c;
+    rb_sweep_opts o;
+    rb_sweep s;
+    rb_derived dv;
+    block_model(&m);
+    block_pulse(&m, &mo, &so);
+    rb_model_derive(&m, &dv, NULL);
+    rb_criteria_init(&c);
+    rb_sweep_opts_init(&o, RB_SWEEP_AMPLITUDE);
+    double kt = eq_2_17(7.0) * dv.g * dv.alpha / dv.a_uplift_mps2;
+    o.from = kt - 0.02;
+    o.to = kt + 0.02;
+    o.n_points = 5;
+    if (rb_sweep_amplitude(&m, &mo, &so, &c, &o, 0, &s, NULL) != RB_OK) {
+        CHECK(!"amplitude sweep");
+        return;
+    }
+    for (size_t i = 0; i < s.n_points; i++) {
+        const rb_sweep_point *p = &s.points[i];
+        CHECK(p->status == RB_OK);
+        CHECK_NEAR(p->level_astar, p->x, 1e-12);
+        CHECK(p->overturned == (i > 2) && p->meets == (i <= 2));
+    }
+    writers(&s);
+    rb_sweep_free(&s);
+}
+
+int main(void)
+{
+    factor_finds_overturn_threshold();
+    factor_finds_uplift_level();
+    gap_search_known_rotation();
+    elcentro_checks();
+    frequency_sweep_sdof();
+    amplitude_sweep_block();
+    TEST_MAIN_END();
+}
