@@ -92,6 +92,8 @@ void rb_guard_eval(const rb_solver *sv, double t, const double *y, double *g)
     double th = D->side * y[RB_Y_TH], thd = D->side * y[RB_Y_THD];
     int row = rb_row_of_side(D->side);
     double chord = rb_dyn_chord(S, th);
+    for (int k = 0; k < G_COUNT; k++)
+        g[k] = 0; /* inactive guards are never read as crossings, but are copied */
     if (mask & 1u << G_UP_POS) {
         g[G_UP_POS] = rb_dyn_uplift_guard(S, t, y, 1);
         g[G_UP_NEG] = rb_dyn_uplift_guard(S, t, y, -1);

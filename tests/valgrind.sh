@@ -1,0 +1,30 @@
+#!/bin/bash
+# Runs every unit test and the CLI on each shipped case under valgrind's
+# memcheck: any invalid access, uninitialised read or leak fails the run.
+# Usage: tests/valgrind.sh BUILD_DIR   (from the repository root)
+set -euo pipefail
+build=${1:?usage: tests/valgrind.sh BUILD_DIR}
+vg=(valgrind --quiet --error-exitcode=99 --leak-check=full --errors-for-leak-kinds=definite,indirect)
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+fail=0 pass=0
+run() {
+    local name=$1; shift
+    local rc=0
+    "${vg[@]}" "$@" >"$out/log" 2>&1 || rc=$?
+    # exit codes 0-3 are the tool's own verdicts; 99 is memcheck's
+    if [ "$rc" -ge 99 ] || [ "$rc" -gt 3 ]; then
+        echo "valgrind: $name FAILED (exit $rc)"; tail -n 30 "$out/log"; fail=$((fail + 1))
+    else
+        pass=$((pass + 1))
+    fi
+}
+for t in "$build"/test_*; do
+    [ -x "$t" ] && run "$(basename "$t")" "$t"
+done
+for c in cases/*.yaml; do
+    run "check $c" "$build/rockbolt" check "$c" --json "$out/r.json" --text "$out/r.txt"
+done
+run "bad input" "$build/rockbolt" check tests/errors/03-unknown-key.yaml
+echo "valgrind: $pass passed, $fail failed"
+[ "$fail" -eq 0 ]
