@@ -69,25 +69,25 @@ double rb_motion_next_break(const rb_motion *m, double t)
 {
     switch (m->kind) {
     case RB_MOTION_HARMONIC:
-        return (m->ramp_s > 0 && t < m->ramp_s) ? m->ramp_s : INFINITY;
+        return (m->ramp_s > 0 && t < m->ramp_s) ? m->ramp_s : HUGE_VAL;
     case RB_MOTION_PULSE:
-        return t < m->pulse_s ? m->pulse_s : INFINITY;
+        return t < m->pulse_s ? m->pulse_s : HUGE_VAL;
     case RB_MOTION_SAMPLED: {
         const rb_series *s = m->series;
         if (!s || s->n < 2)
-            return INFINITY;
+            return HUGE_VAL;
         double x = (t - s->t0_s) / s->dt_s;
         if (x < 0)
             return s->t0_s;
         double k = floor(x + 1e-9) + 1;
         if (k > (double)(s->n - 1))
-            return INFINITY;
+            return HUGE_VAL;
         return s->t0_s + k * s->dt_s;
     }
     case RB_MOTION_CRITICAL:
-        return INFINITY;
+        return HUGE_VAL;
     }
-    return INFINITY;
+    return HUGE_VAL;
 }
 
 double rb_motion_peak(const rb_motion *m)
