@@ -113,7 +113,12 @@ static rb_status bisect(factor_search *s, double res, rb_diag *diag)
     rb_design_factor_result *out = s->out;
     while (s->hi - s->lo > res) {
         double lo_k[64], hi_k[64];
-        size_t m = s->nt < 63 ? s->nt : 63;
+        size_t m = s->nt < 63 ? s->nt : 63, depth = 0;
+        /* no deeper than the halvings still needed: deeper nodes are waste */
+        for (double w = s->hi - s->lo; w > res && depth < 6; w *= 0.5)
+            depth++;
+        if (m > ((size_t)1 << depth) - 1)
+            m = ((size_t)1 << depth) - 1;
         lo_k[0] = s->lo;
         hi_k[0] = s->hi;
         for (size_t k = 0; k < m; k++) {

@@ -12,9 +12,10 @@
 typedef rb_status (*rb_design_job)(void *ctx, size_t i);
 
 /* Run job(ctx, i) for i in [0, n) on up to n_threads threads (<= 0: all
- * processors). Every job runs, whatever the others return; the statuses go
- * to status[i] (may be NULL). Returns RB_ERR_NOMEM only if no thread could
- * be created and the jobs could not run; otherwise RB_OK. */
+ * processors), the calling thread included. Every job runs, whatever the
+ * others return; the statuses go to status[i] (may be NULL). If threads
+ * cannot be created the calling thread runs the rest. Returns RB_ERR_NOMEM
+ * when the thread table cannot be allocated (no job has run then). */
 rb_status rb_design_parallel(size_t n, int n_threads, rb_design_job job, void *ctx,
                              rb_status *status);
 

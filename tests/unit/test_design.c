@@ -1,7 +1,8 @@
 /* Design checks on cases whose answer is known: the overturning threshold
  * of the rigid block under a triangular pulse (Table 2.2, eq. 2.17), the
  * static uplift level W b / (M h) of a stiff cabinet under a slow harmonic,
- * the plate rotation theta0 of a held plate against a rotation limit (gap
+ * the static yield level A* of the same cabinet without a gap, the plate
+ * rotation theta0 of a held plate against a rotation limit (gap
  * search), the damped SDOF amplification (frequency sweep); the same
  * numbers with 1, 2 and 3 threads; the sweep writers. */
 #define _POSIX_C_SOURCE 200809L
@@ -139,6 +140,69 @@ static void factor_finds_uplift_level(void)
     CHECK(f.fails_at_start && f.scan_runs == 1 && f.first_fail_astar == 0.05);
     CHECK(f.fail_astar - f.level_astar <= d.resolution);
     CHECK(f.level_astar <= want * (1 + 2e-4) && f.fail_astar >= want * (1 - 2e-4));
+}
+
+/* Without a gap and under the same slow motion the held plate loads its bolt
+ * row statically: it reaches Fy at exactly A*, so the factor is 1. The
+ * non-yielding bolt reads its force against Fy; the rigid-plastic one
+ * yields. */
+static void factor_finds_static_yield(void)
+{
+    static const rb_bolt_model bolts[2] = {RB_BOLT_RIGID_PLASTIC, RB_BOLT_NONYIELDING};
+    for (int k = 0; k < 2; k++) {
+        rb_model m;
+        rb_motion mo;
+        rb_criteria c;
+        rb_design_opts d;
+        rb_design_factor_result f;
+        stiff_cabinet(&m, &mo, &c);
+        m.bolt_model = bolts[k];
+        m.gap_m = 0;
+        c.kind = RB_CRIT_NO_YIELD;
+        c.max_theta_over_alpha = 0;
+        rb_design_opts_defaults(&d);
+        d.resolution = 1e-4;
+        CHECK(rb_design_factor(&m, &mo, NULL, &c, &d, 0, &f, NULL) == RB_OK);
+        printf("static yield (%s bolts): level %.5f A*, fails at %.5f A*: %s\n",
+               k ? "non-yielding" : "rigid-plastic", f.level_astar, f.fail_astar,
+               f.fail_reason);
+        CHECK(f.first_fail_astar == 1.0 || f.first_fail_astar == 1.05);
+        CHECK(f.fail_astar - f.level_astar <= d.resolution);
+        CHECK(f.level_astar <= 1 + 2e-4 && f.fail_astar >= 1 - 2e-4);
+        CHECK_NEAR(f.factor, 1.0, 3e-4);
+    }
+}
+
+static void invalid_requests(void)
+{
+    rb_model m, block;
+    rb_motion mo;
+    rb_criteria c;
+    rb_design_opts d;
+    rb_design_factor_result f;
+    rb_gap_result g;
+    rb_diag diag;
+    rb_series empty = {0};
+    stiff_cabinet(&m, &mo, &c);
+    rb_design_opts_defaults(&d);
+    d.scan_step = 0;
+    CHECK(rb_design_factor(&m, &mo, NULL, &c, &d, 1, &f, &diag) == RB_ERR_INVALID);
+    CHECK(f.runs == 0 && strcmp(diag.key, "design") == 0);
+    rb_design_opts_defaults(&d);
+    CHECK(rb_design_factor(&m, &mo, NULL, NULL, &d, 1, &f, &diag) == RB_ERR_INVALID);
+    d.gap_ratio_step = -1;
+    CHECK(rb_gap_recommend(&m, &mo, NULL, &c, &d, 1, &g, &diag) == RB_ERR_INVALID);
+    CHECK(g.points == NULL);
+    rb_design_opts_defaults(&d);
+    block_model(&block);
+    CHECK(rb_gap_recommend(&block, &mo, NULL, &c, &d, 1, &g, &diag) == RB_ERR_INVALID);
+    mo.kind = RB_MOTION_SAMPLED;
+    mo.series = &empty;
+    CHECK(rb_design_factor(&m, &mo, NULL, &c, &d, 1, &f, &diag) == RB_ERR_INVALID);
+    CHECK(strcmp(diag.key, "motion") == 0);
+    m.gap_m = 0.5; /* beyond alpha */
+    mo.kind = RB_MOTION_HARMONIC;
+    CHECK(rb_design_factor(&m, &mo, NULL, &c, &d, 1, &f, &diag) == RB_ERR_INVALID);
 }
 
 /* ---- Gap search against theta0 --------------------------------------------- */
@@ -411,6 +475,8 @@ int main(void)
 {
     factor_finds_overturn_threshold();
     factor_finds_uplift_level();
+    factor_finds_static_yield();
+    invalid_requests();
     gap_search_known_rotation();
     elcentro_checks();
     frequency_sweep_sdof();
