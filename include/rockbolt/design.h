@@ -49,6 +49,7 @@ typedef struct {
     double first_fail_astar;    /* first failing level on the scan grid;
                                    HUGE_VAL if none */
     double resolution_astar;    /* the resolution asked for */
+    double scan_end_astar;      /* the top of the scan asked for */
     double bracket_astar;       /* fail - level reached (0 if no failure) */
     int no_failure;             /* 1: no failing level up to scan_end; level
                                    is then the last scan level and the factor
@@ -75,6 +76,12 @@ rb_status rb_design_factor(const rb_model *model, const rb_motion *motion,
                            const rb_solve_opts *opts, const rb_criteria *criteria,
                            const rb_design_opts *design, int n_threads,
                            rb_design_factor_result *out, rb_diag *diag);
+
+/* One English sentence for reports, e.g. "design factor 4.13: meets the
+ * criteria up to 0.2422 A* (27.81 m/s^2); fails at 0.2430 A* (first failing
+ * scan level 0.25 A*); resolution 0.001 A*; 11 runs", or, when nothing
+ * fails, one that says "no failing level up to scan_end (1.5 A*)". */
+void rb_design_factor_describe(const rb_design_factor_result *f, char *buf, size_t n);
 
 /* ---- Recommended gap ratio ---------------------------------------------- */
 
@@ -120,6 +127,10 @@ rb_status rb_gap_recommend(const rb_model *model, const rb_motion *motion,
                            const rb_solve_opts *opts, const rb_criteria *criteria,
                            const rb_design_opts *design, int n_threads,
                            rb_gap_result *out, rb_diag *diag);
+
+/* One English sentence: the recommended gap ratio and the range it holds
+ * over, or "no gap ratio in [min, max] meets the criteria". */
+void rb_gap_describe(const rb_gap_result *g, char *buf, size_t n);
 
 /* Free what a gap result owns; accepts NULL. */
 void rb_gap_result_free(rb_gap_result *r);

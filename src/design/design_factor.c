@@ -28,6 +28,7 @@ typedef struct {
     size_t nt;
     int n_threads;
     double lo, hi;         /* current bracket in A*; hi = HUGE_VAL before a failure */
+    double scan_end;
 } factor_search;
 
 static rb_status batch_job(void *v, size_t i)
@@ -158,6 +159,7 @@ static void finish(factor_search *s, double a_star, double res)
     rb_design_factor_result *out = s->out;
     out->a_star_mps2 = a_star;
     out->resolution_astar = res;
+    out->scan_end_astar = s->scan_end;
     out->level_astar = s->lo;
     out->level_mps2 = s->lo * a_star;
     out->factor = s->lo > 0 ? 1.0 / s->lo : HUGE_VAL;
@@ -189,6 +191,7 @@ rb_status rb_design_factor(const rb_model *model, const rb_motion *motion,
     s.n_threads = n_threads > 0 ? n_threads : rb_design_threads_default();
     s.nt = (size_t)s.n_threads;
     s.hi = HUGE_VAL;
+    s.scan_end = design->scan_end;
     s.levels = malloc(s.nt * sizeof *s.levels);
     s.runs = malloc(s.nt * sizeof *s.runs);
     if (!s.levels || !s.runs)
@@ -202,4 +205,24 @@ rb_status rb_design_factor(const rb_model *model, const rb_motion *motion,
     free(s.levels);
     free(s.runs);
     return st;
+}
+
+void rb_design_factor_describe(const rb_design_factor_result *f, char *buf, size_t n)
+{
+    if (!buf || n == 0)
+        return;
+    if (f->no_failure)
+        snprintf(buf, n, "no failing level up to scan_end (%.4g A*): the criteria are met "
+                 "up to %.4f A* (%.4g m/s^2) at least, so the design factor is at most "
+                 "%.3g; %ld runs", f->scan_end_astar, f->level_astar, f->level_mps2,
+                 f->factor, f->runs);
+    else if (!(f->level_astar > 0))
+        snprintf(buf, n, "no level meets the criteria: fails at %.4f A* (%.4g m/s^2) "
+                 "already; resolution %.4g A*; %ld runs", f->fail_astar, f->fail_mps2,
+                 f->resolution_astar, f->runs);
+    else
+        snprintf(buf, n, "design factor %.3g: meets the criteria up to %.4f A* "
+                 "(%.4g m/s^2); fails at %.4f A* (first failing scan level %.4g A*); "
+                 "resolution %.4g A*; %ld runs", f->factor, f->level_astar, f->level_mps2,
+                 f->fail_astar, f->first_fail_astar, f->resolution_astar, f->runs);
 }

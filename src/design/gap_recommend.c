@@ -184,3 +184,18 @@ void rb_gap_result_free(rb_gap_result *r)
     r->points = NULL;
     r->n_points = 0;
 }
+
+void rb_gap_describe(const rb_gap_result *g, char *buf, size_t n)
+{
+    if (!buf || n == 0)
+        return;
+    if (g->n_points == 0)
+        snprintf(buf, n, "no gap ratio was evaluated");
+    else if (!g->found)
+        snprintf(buf, n, "no gap ratio in [%.4g, %.4g] meets the criteria: the largest "
+                 "fails", g->points[0].gap_ratio, g->points[g->n_points - 1].gap_ratio);
+    else
+        snprintf(buf, n, "recommended gap ratio %.4g (gap %.4g mm): every grid gap ratio "
+                 "from there to %.4g meets the criteria", g->gap_ratio, 1e3 * g->gap_m,
+                 g->points[g->n_points - 1].gap_ratio);
+}

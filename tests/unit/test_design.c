@@ -91,6 +91,10 @@ static void factor_finds_overturn_threshold(void)
     CHECK(rb_design_factor(&m, &mo, &o, &c, &d, 2, &f, NULL) == RB_OK);
     CHECK(f.no_failure && f.level_astar == 0.5 && f.factor == 2.0);
     CHECK(f.fail_astar == HUGE_VAL && f.first_fail_astar == HUGE_VAL && f.runs == 10);
+    char line[400];
+    rb_design_factor_describe(&f, line, sizeof line);
+    printf("%s\n", line);
+    CHECK(strstr(line, "no failing level up to scan_end (0.5 A*)") != NULL);
 }
 
 /* ---- Stiff cabinet: uplift at W b / (M h) ---------------------------------- */
@@ -233,12 +237,18 @@ static void gap_search_known_rotation(void)
         CHECK_NEAR(g.points[i].max_theta_over_alpha, th0 / dv.alpha, 2e-3 * th0 / dv.alpha);
     }
     CHECK(g.runs == 14 && g.yield_run);
+    char line[300];
+    rb_gap_describe(&g, line, sizeof line);
+    CHECK(strstr(line, "recommended gap ratio 0 ") != NULL);
     rb_gap_result_free(&g);
     /* wider range: the largest gaps rotate too far, so no gap works */
     d.gap_ratio_max = 0.06;
     CHECK(rb_gap_recommend(&m, &mo, NULL, &c, &d, 1, &g, NULL) == RB_OK);
     CHECK(!g.found && g.fail_index == 24 && g.runs == 2 && g.points[24].evaluated);
     CHECK(!g.points[24].meets && !g.points[23].evaluated);
+    rb_gap_describe(&g, line, sizeof line);
+    printf("%s\n", line);
+    CHECK(strstr(line, "no gap ratio in [0, 0.06]") != NULL);
     rb_gap_result_free(&g);
     rb_gap_result_free(NULL);
 }
