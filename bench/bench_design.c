@@ -6,28 +6,8 @@
  * [THREADS]. Target: the whole design in under 1 s. */
 #include <stdio.h>
 #include <stdlib.h>
-#include <time.h>
 #include "rockbolt/design.h"
-#include "rockbolt/record.h"
-
-static double now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static int floor_motion(const char *path, rb_series *s)
-{
-    rb_record_opts ro;
-    rb_diag diag;
-    rb_record_opts_init(&ro);
-    if (rb_record_read(path, &ro, s, &diag) != RB_OK) {
-        fprintf(stderr, "%s:%d:%d: error: %s\n", path, diag.line, diag.col, diag.msg);
-        return -1;
-    }
-    return rb_series_building_filter(s, 5.0, 0.05) == RB_OK ? 0 : -1;
-}
+#include "bench_common.h"
 
 static int factor(const char *name, const rb_model *m, const rb_motion *mo,
                   rb_criterion_kind kind, const rb_design_opts *d, int nt)
@@ -37,9 +17,9 @@ static int factor(const char *name, const rb_model *m, const rb_motion *mo,
     rb_diag diag;
     rb_criteria_init(&c);
     c.kind = kind;
-    double t0 = now_s();
+    double t0 = rb_bench_now_s();
     rb_status st = rb_design_factor(m, mo, NULL, &c, d, nt, &f, &diag);
-    double t = now_s() - t0;
+    double t = rb_bench_now_s() - t0;
     if (st != RB_OK) {
         fprintf(stderr, "design factor (%s): %s: %s\n", name, rb_status_str(st), diag.msg);
         return -1;
@@ -59,9 +39,9 @@ static int gap(const rb_model *m, const rb_motion *mo, const rb_design_opts *d, 
     rb_diag diag;
     rb_criteria_init(&c);
     c.kind = RB_CRIT_NO_YIELD;
-    double t0 = now_s();
+    double t0 = rb_bench_now_s();
     rb_status st = rb_gap_recommend(m, mo, NULL, &c, d, nt, &g, &diag);
-    double t = now_s() - t0;
+    double t = rb_bench_now_s() - t0;
     if (st != RB_OK) {
         fprintf(stderr, "gap: %s: %s\n", rb_status_str(st), diag.msg);
         return -1;
@@ -93,7 +73,7 @@ int main(int argc, char **argv)
     rb_derived dv;
     rb_motion mo;
     rb_design_opts d;
-    if (floor_motion(path, &s) != 0)
+    if (rb_bench_floor_motion(path, &s) != 0)
         return 2;
     rb_model_reference(&m);
     rb_model_derive(&m, &dv, NULL);
@@ -107,11 +87,11 @@ int main(int argc, char **argv)
            "building, %.1f s, at 0.4 A*; %d threads\n", dv.a_star_mps2 / RB_G0,
            m.gap_m / m.lever_arm_m, path, mo.duration_s,
            nt > 0 ? nt : rb_design_threads_default());
-    double t0 = now_s();
+    double t0 = rb_bench_now_s();
     int rc = factor("no-yield", &m, &mo, RB_CRIT_NO_YIELD, &d, nt)
              || factor("no-break", &m, &mo, RB_CRIT_NO_BREAK, &d, nt)
              || gap(&m, &mo, &d, nt);
-    double t = now_s() - t0;
+    double t = rb_bench_now_s() - t0;
     printf("full design         %.3f s (target 1 s: %s)\n", t, t < 1.0 ? "met" : "NOT met");
     rb_series_free(&s);
     return rc ? 3 : 0;

@@ -8,16 +8,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
-#include "rockbolt/record.h"
+#include "bench_common.h"
 #include "rockbolt/solve.h"
-
-static double now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 static int cmp(const void *a, const void *b)
 {
@@ -27,16 +19,8 @@ static int cmp(const void *a, const void *b)
 
 static int floor_motion_50hz(const char *path, rb_series *out)
 {
-    rb_record_opts ro;
     rb_series raw = {0};
-    rb_diag diag;
-    rb_record_opts_init(&ro);
-    if (rb_record_read(path, &ro, &raw, &diag) != RB_OK) {
-        fprintf(stderr, "%s:%d:%d: error: %s\n", path, diag.line, diag.col, diag.msg);
-        return -1;
-    }
-    if (rb_series_building_filter(&raw, 5.0, 0.05) != RB_OK
-        || rb_series_alloc(out, 2500, 0.02) != RB_OK) {
+    if (rb_bench_floor_motion(path, &raw) != 0 || rb_series_alloc(out, 2500, 0.02) != RB_OK) {
         rb_series_free(&raw);
         return -1;
     }
@@ -73,9 +57,9 @@ int main(int argc, char **argv)
     if (!t)
         return 3;
     for (int i = 0; i < runs; i++) {
-        double t0 = now_s();
+        double t0 = rb_bench_now_s();
         rb_status st = rb_solve_run(&m, &mo, &o, &r, NULL);
-        t[i] = now_s() - t0;
+        t[i] = rb_bench_now_s() - t0;
         if (st != RB_OK) {
             fprintf(stderr, "solve failed: %s\n", rb_status_str(st));
             return 3;

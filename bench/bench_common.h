@@ -1,0 +1,36 @@
+/* What the benchmarks share: a monotonic clock and the El Centro floor
+ * motion of the thesis (record through a 5 Hz, 5 % building). Header-only
+ * because CMake builds each benchmark source as its own program. */
+#ifndef RB_BENCH_COMMON_H
+#define RB_BENCH_COMMON_H
+
+#include <stdio.h>
+#include <time.h>
+#include "rockbolt/record.h"
+
+static inline double rb_bench_now_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* Read a record and turn it into the floor motion of a 5 Hz, 5 % building.
+ * Returns 0, or -1 after printing why. s is the caller's to free. */
+static inline int rb_bench_floor_motion(const char *path, rb_series *s)
+{
+    rb_record_opts ro;
+    rb_diag diag;
+    rb_record_opts_init(&ro);
+    if (rb_record_read(path, &ro, s, &diag) != RB_OK) {
+        fprintf(stderr, "%s:%d:%d: error: %s\n", path, diag.line, diag.col, diag.msg);
+        return -1;
+    }
+    if (rb_series_building_filter(s, 5.0, 0.05) != RB_OK) {
+        fprintf(stderr, "%s: building filter failed\n", path);
+        return -1;
+    }
+    return 0;
+}
+
+#endif
