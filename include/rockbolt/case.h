@@ -34,6 +34,51 @@ typedef struct {
     double gap_ratio_min, gap_ratio_max, gap_ratio_step; /* defaults 0, 0.06, 0.0025 */
 } rb_design_opts;
 
+/* Sweeps and the code-static comparison a case asks `rockbolt design`
+ * for; the functions that use them are in design.h. */
+typedef enum {
+    RB_SWEEP_FREQUENCY = 0,  /* harmonic motion, x = excitation / fixed-base frequency */
+    RB_SWEEP_AMPLITUDE       /* the given motion's shape, x = peak level in A* */
+} rb_sweep_kind;
+
+typedef struct {
+    rb_sweep_kind kind;
+    double from, to;          /* range of x */
+    size_t n_points;          /* >= 1; equally spaced, from and to included */
+    /* frequency sweeps only */
+    double amplitude_astar;   /* peak floor acceleration in A* */
+    double duration_s;        /* run length; <= 0 -> 8 s */
+    double ramp_s;            /* linear ramp-up of the harmonic; 0 for none */
+} rb_sweep_opts;
+
+typedef enum {
+    RB_ASCE7_16 = 16,   /* ASCE/SEI 7-16, eq. 13.3-1 to 13.3-3 */
+    RB_ASCE7_22 = 22    /* ASCE/SEI 7-22, eq. 13.3-1 to 13.3-3 with Hf, Rmu */
+} rb_code_edition;
+
+typedef struct {
+    rb_code_edition edition;
+    double sds;               /* SDS, in g */
+    double ip;                /* component importance factor Ip (1.0 or 1.5) */
+    double z_over_h;          /* attachment height / roof height, 0..1 */
+    int at_or_below_grade;    /* 7-22: Hf = Rmu = 1 */
+    /* ASCE 7-16 */
+    double ap, rp;            /* component amplification, response modification */
+    /* ASCE 7-22 */
+    double car, rpo;          /* Table 13.5-1 / 13.6-1 */
+    double ta_s;              /* building approximate period; <= 0: unknown,
+                                 Hf = 1 + 2.5 z/h */
+    double r, ie, omega0;     /* building's R, Ie, Omega0 (for Rmu) */
+    /* anchorage */
+    int anchorage_in_concrete;/* 1: Fp x Omega0p for the anchors (13.4.2) */
+    double omega0p;           /* component overstrength Omega0p */
+    double futa_pa;           /* specified anchor tensile strength */
+    double ase_m2;            /* effective tensile area of one anchor;
+                                 <= 0: the model's bolt area */
+} rb_code_inputs;
+
+#define RB_CASE_MAX_SWEEPS 8
+
 typedef struct {
     char *path;               /* owned; the file as given */
     char *name;               /* owned; case name (defaults to the file stem) */
@@ -42,6 +87,10 @@ typedef struct {
     rb_solve_opts solve;
     rb_criteria criteria;
     rb_design_opts design;
+    rb_sweep_opts sweeps[RB_CASE_MAX_SWEEPS]; /* design.sweeps */
+    size_t n_sweeps;
+    int has_code;             /* design.code given */
+    rb_code_inputs code;
     rb_case_motion *motions;  /* owned array of n_motions (>= 1) */
     size_t n_motions;
     int write_history;        /* analysis.history: true */

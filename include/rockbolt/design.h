@@ -137,20 +137,7 @@ void rb_gap_result_free(rb_gap_result *r);
 
 /* ---- Sweeps --------------------------------------------------------------- */
 
-typedef enum {
-    RB_SWEEP_FREQUENCY = 0,  /* harmonic motion, x = excitation / fixed-base frequency */
-    RB_SWEEP_AMPLITUDE       /* the given motion's shape, x = peak level in A* */
-} rb_sweep_kind;
 
-typedef struct {
-    rb_sweep_kind kind;
-    double from, to;          /* range of x */
-    size_t n_points;          /* >= 1; equally spaced, from and to included */
-    /* frequency sweeps only */
-    double amplitude_astar;   /* peak floor acceleration in A* */
-    double duration_s;        /* run length; <= 0 -> 8 s */
-    double ramp_s;            /* linear ramp-up of the harmonic; 0 for none */
-} rb_sweep_opts;
 
 void rb_sweep_opts_init(rb_sweep_opts *o, rb_sweep_kind kind);
 
@@ -213,31 +200,7 @@ struct cJSON *rb_sweep_to_json(const rb_sweep *s);
 
 /* ---- Code-static comparison --------------------------------------------- */
 
-typedef enum {
-    RB_ASCE7_16 = 16,   /* ASCE/SEI 7-16, eq. 13.3-1 to 13.3-3 */
-    RB_ASCE7_22 = 22    /* ASCE/SEI 7-22, eq. 13.3-1 to 13.3-3 with Hf, Rmu */
-} rb_code_edition;
 
-typedef struct {
-    rb_code_edition edition;
-    double sds;               /* SDS, in g */
-    double ip;                /* component importance factor Ip (1.0 or 1.5) */
-    double z_over_h;          /* attachment height / roof height, 0..1 */
-    int at_or_below_grade;    /* 7-22: Hf = Rmu = 1 */
-    /* ASCE 7-16 */
-    double ap, rp;            /* component amplification, response modification */
-    /* ASCE 7-22 */
-    double car, rpo;          /* Table 13.5-1 / 13.6-1 */
-    double ta_s;              /* building approximate period; <= 0: unknown,
-                                 Hf = 1 + 2.5 z/h */
-    double r, ie, omega0;     /* building's R, Ie, Omega0 (for Rmu) */
-    /* anchorage */
-    int anchorage_in_concrete;/* 1: Fp x Omega0p for the anchors (13.4.2) */
-    double omega0p;           /* component overstrength Omega0p */
-    double futa_pa;           /* specified anchor tensile strength */
-    double ase_m2;            /* effective tensile area of one anchor;
-                                 <= 0: the model's bolt area */
-} rb_code_inputs;
 
 /* Edition 7-22, Ip = 1, Omega0p = 2, anchorage in concrete, Ta unknown;
  * every other field 0 (to be given). */

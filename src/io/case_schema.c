@@ -29,9 +29,6 @@ static const char *const rb_criteria_keys[] = {
 static const char *const rb_analysis_keys[] = {
     "formulation", "tolerance", "output_interval", "history",
     "stretch_past_failure", NULL};
-static const char *const rb_design_keys[] = {
-    "scan_start", "scan_step", "scan_end", "resolution", "gap_ratio_min",
-    "gap_ratio_max", "gap_ratio_step", NULL};
 
 /* Which of two alternative keys the map gives: 0 for a, 1 for b, -1 when
  * neither (an error if required) or both (always an error). */
@@ -265,48 +262,6 @@ static void rb_read_analysis(rb_cctx *c, rb_ynode *an, rb_case *cs)
     rb_cv_unknown_keys(c, an, p, rb_analysis_keys);
 }
 
-/* A design setting: a plain fraction of A* or "<x> A*", > 0 (>= 0 when
- * zero_ok). */
-static void rb_design_value(rb_cctx *c, rb_ynode *d, const char *key,
-                            int zero_ok, int astar_ok, double *out)
-{
-    char k[RB_CASE_KEY_MAX];
-    rb_quantity q;
-    rb_ynode *v = rb_cv_get(c, d, "design", key, 0, "");
-    if (!v)
-        return;
-    rb_case_keypath(k, "design", key);
-    size_t len = v->kind == RB_YNODE_SCALAR ? strlen(v->text) : 0;
-    int astar = astar_ok && len >= 2 && strcmp(v->text + len - 2, "A*") == 0;
-    if (!rb_cv_quantity(c, v, k, astar ? RB_DIM_ACCEL : RB_DIM_RATIO, &q))
-        return;
-    if (q.value < 0 || (!zero_ok && q.value == 0)) {
-        rb_cctx_error(c, v, k, "must be %s 0 (got '%s')", zero_ok ? ">=" : ">",
-                      v->text);
-        return;
-    }
-    *out = q.value;
-}
-
-static void rb_read_design(rb_cctx *c, rb_ynode *d, rb_design_opts *o)
-{
-    rb_design_value(c, d, "scan_start", 0, 1, &o->scan_start);
-    rb_design_value(c, d, "scan_step", 0, 1, &o->scan_step);
-    rb_design_value(c, d, "scan_end", 0, 1, &o->scan_end);
-    rb_design_value(c, d, "resolution", 0, 1, &o->resolution);
-    rb_design_value(c, d, "gap_ratio_min", 1, 0, &o->gap_ratio_min);
-    rb_design_value(c, d, "gap_ratio_max", 1, 0, &o->gap_ratio_max);
-    rb_design_value(c, d, "gap_ratio_step", 0, 0, &o->gap_ratio_step);
-    if (o->scan_end < o->scan_start)
-        rb_cctx_error(c, d, "design.scan_end", "must not be below scan_start "
-                      "(%g < %g A*)", o->scan_end, o->scan_start);
-    if (o->gap_ratio_max < o->gap_ratio_min)
-        rb_cctx_error(c, d, "design.gap_ratio_max", "must not be below "
-                      "gap_ratio_min (%g < %g)", o->gap_ratio_max,
-                      o->gap_ratio_min);
-    rb_cv_unknown_keys(c, d, "design", rb_design_keys);
-}
-
 /* The case name defaults to the file name without directory and extension. */
 static void rb_default_name(rb_cctx *c, rb_case *cs)
 {
@@ -354,7 +309,7 @@ void rb_case_read_schema(rb_cctx *c, rb_ynode *root, rb_case *cs)
     if ((v = rb_section(c, root, "analysis", 0, "")))
         rb_read_analysis(c, v, cs);
     if ((v = rb_section(c, root, "design", 0, "")))
-        rb_read_design(c, v, &cs->design);
+        rb_case_read_design(c, v, cs);
     rb_case_read_motions(c, root);
     rb_cv_unknown_keys(c, root, "", rb_top_keys);
 }
