@@ -15,317 +15,211 @@
 #include <cjson/cJSON.h>
 #include "rockbolt/rockbolt.h"
 #include "report_internal.h"
+#include "report_json_build.h"
 
-/* Builder state: the first problem met is kept, later calls are no-ops. */
-typedef struct {
-    rb_status st;
-    const char *where;     /* section being written, for diagnostics */
-    char where_buf[64];    /* "motions[i]" */
-    char bad_key[128];
-} jctx;
-
-static void j_oom(jctx *cx, const void *added)
+static void add_model(rb_jctx *cx, cJSON *root, const rb_model *m)
 {
-    if (!added && cx->st == RB_OK)
-        cx->st = RB_ERR_NOMEM;
-}
-
-static cJSON *j_obj(jctx *cx, cJSON *parent, const char *key)
-{
-    cJSON *o = cx->st == RB_OK ? cJSON_AddObjectToObject(parent, key) : NULL;
-    j_oom(cx, o);
-    return o;
-}
-
-static void j_num(jctx *cx, cJSON *o, const char *key, double v)
-{
-    if (cx->st != RB_OK)
-        return;
-    if (!isfinite(v)) {
-        cx->st = RB_ERR_NONFINITE;
-        snprintf(cx->bad_key, sizeof cx->bad_key, "%s.%s", cx->where, key);
-        return;
-    }
-    j_oom(cx, cJSON_AddNumberToObject(o, key, v));
-}
-
-static void j_null(jctx *cx, cJSON *o, const char *key)
-{
-    if (cx->st == RB_OK)
-        j_oom(cx, cJSON_AddNullToObject(o, key));
-}
-
-/* A value that may legitimately be absent: written only when have. */
-static void j_opt(jctx *cx, cJSON *o, const char *key, int have, double v)
-{
-    if (have)
-        j_num(cx, o, key, v);
-    else
-        j_null(cx, o, key);
-}
-
-/* A normalised form: NAN (no denominator) becomes null. */
-static void j_norm(jctx *cx, cJSON *o, const char *key, double v)
-{
-    j_opt(cx, o, key, !isnan(v), v);
-}
-
-/* theta0 is +infinity when there are no bolts (the plate never meets a
- * bolt head): that is "no such angle", not a bug. */
-static void j_theta0(jctx *cx, cJSON *o, double v)
-{
-    j_opt(cx, o, "theta0_rad", !(isinf(v) && v > 0), v);
-}
-
-static void j_bool(jctx *cx, cJSON *o, const char *key, int v)
-{
-    if (cx->st == RB_OK)
-        j_oom(cx, cJSON_AddBoolToObject(o, key, v != 0));
-}
-
-static void j_str(jctx *cx, cJSON *o, const char *key, const char *s)
-{
-    if (cx->st != RB_OK)
-        return;
-    if (s)
-        j_oom(cx, cJSON_AddStringToObject(o, key, s));
-    else
-        j_null(cx, o, key);
-}
-
-static void j_pair(jctx *cx, cJSON *o, const char *key, const double v[2])
-{
-    cJSON *p = j_obj(cx, o, key);
-    j_num(cx, p, "left", v[RB_LEFT]);
-    j_num(cx, p, "right", v[RB_RIGHT]);
-}
-
-static void j_pair_norm(jctx *cx, cJSON *o, const char *key, const double v[2])
-{
-    cJSON *p = j_obj(cx, o, key);
-    j_norm(cx, p, "left", v[RB_LEFT]);
-    j_norm(cx, p, "right", v[RB_RIGHT]);
-}
-
-static void j_pair_bool(jctx *cx, cJSON *o, const char *key, const int v[2])
-{
-    cJSON *p = j_obj(cx, o, key);
-    j_bool(cx, p, "left", v[RB_LEFT]);
-    j_bool(cx, p, "right", v[RB_RIGHT]);
-}
-
-/* Times of events per row: null where the event did not happen. */
-static void j_pair_when(jctx *cx, cJSON *o, const char *key, const int happened[2],
-                        const double t[2])
-{
-    cJSON *p = j_obj(cx, o, key);
-    j_opt(cx, p, "left", happened[RB_LEFT], t[RB_LEFT]);
-    j_opt(cx, p, "right", happened[RB_RIGHT], t[RB_RIGHT]);
-}
-
-static void add_model(jctx *cx, cJSON *root, const rb_model *m)
-{
-    cJSON *o = j_obj(cx, root, "model");
+    cJSON *o = rb_j_obj(cx, root, "model");
     cx->where = "model";
-    j_num(cx, o, "mass_kg", m->mass_kg);
-    j_num(cx, o, "cm_height_m", m->cm_height_m);
-    j_num(cx, o, "half_width_m", m->half_width_m);
-    j_bool(cx, o, "rigid", m->rigid);
-    j_num(cx, o, "freq_hz", m->freq_hz);
-    j_num(cx, o, "damping", m->damping);
-    j_opt(cx, o, "inertia_kgm2", m->inertia_kgm2 > 0, m->inertia_kgm2);
-    j_opt(cx, o, "restitution", m->restitution >= 0, m->restitution);
-    j_str(cx, o, "bolt_model", rb_report_bolt_model_str(m->bolt_model));
-    j_num(cx, o, "bolts_per_row", m->bolts_per_row);
-    j_num(cx, o, "bolt_area_m2", m->bolt_area_m2);
-    j_num(cx, o, "yield_stress_pa", m->yield_stress_pa);
-    j_num(cx, o, "toughness_jpm3", m->toughness_jpm3);
-    j_num(cx, o, "deformable_length_m", m->deformable_length_m);
-    j_opt(cx, o, "elastic_modulus_pa", m->elastic_modulus_pa > 0,
+    rb_j_num(cx, o, "mass_kg", m->mass_kg);
+    rb_j_num(cx, o, "cm_height_m", m->cm_height_m);
+    rb_j_num(cx, o, "half_width_m", m->half_width_m);
+    rb_j_bool(cx, o, "rigid", m->rigid);
+    rb_j_num(cx, o, "freq_hz", m->freq_hz);
+    rb_j_num(cx, o, "damping", m->damping);
+    rb_j_opt(cx, o, "inertia_kgm2", m->inertia_kgm2 > 0, m->inertia_kgm2);
+    rb_j_opt(cx, o, "restitution", m->restitution >= 0, m->restitution);
+    rb_j_str(cx, o, "bolt_model", rb_report_bolt_model_str(m->bolt_model));
+    rb_j_num(cx, o, "bolts_per_row", m->bolts_per_row);
+    rb_j_num(cx, o, "bolt_area_m2", m->bolt_area_m2);
+    rb_j_num(cx, o, "yield_stress_pa", m->yield_stress_pa);
+    rb_j_num(cx, o, "toughness_jpm3", m->toughness_jpm3);
+    rb_j_num(cx, o, "deformable_length_m", m->deformable_length_m);
+    rb_j_opt(cx, o, "elastic_modulus_pa", m->elastic_modulus_pa > 0,
           m->elastic_modulus_pa);
-    j_num(cx, o, "lever_arm_m", m->lever_arm_m);
-    j_num(cx, o, "gap_m", m->gap_m);
-    j_norm(cx, o, "gap_ratio", rb_report_ratio(m->gap_m, m->lever_arm_m));
-    j_opt(cx, o, "gravity_mps2", m->gravity_mps2 > 0, m->gravity_mps2);
+    rb_j_num(cx, o, "lever_arm_m", m->lever_arm_m);
+    rb_j_num(cx, o, "gap_m", m->gap_m);
+    rb_j_norm(cx, o, "gap_ratio", rb_report_ratio(m->gap_m, m->lever_arm_m));
+    rb_j_opt(cx, o, "gravity_mps2", m->gravity_mps2 > 0, m->gravity_mps2);
 }
 
-static void add_derived(jctx *cx, cJSON *root, const rb_derived *d)
+static void add_derived(rb_jctx *cx, cJSON *root, const rb_derived *d)
 {
-    cJSON *o = j_obj(cx, root, "derived");
+    cJSON *o = rb_j_obj(cx, root, "derived");
     cx->where = "derived";
-    j_num(cx, o, "g_mps2", d->g);
-    j_num(cx, o, "weight_n", d->W);
-    j_num(cx, o, "R_m", d->R);
-    j_num(cx, o, "alpha_rad", d->alpha);
-    j_num(cx, o, "omega_radps", d->omega);
-    j_num(cx, o, "Mstar_kg", d->Mstar);
-    j_num(cx, o, "Nstar_kg", d->Nstar);
-    j_num(cx, o, "Fstar_kgm", d->Fstar);
-    j_num(cx, o, "Kstar_npm", d->Kstar);
-    j_num(cx, o, "Cstar_nspm", d->Cstar);
-    j_num(cx, o, "Io_kgm2", d->Io);
-    j_num(cx, o, "delta", d->delta);
-    j_num(cx, o, "fy_row_n", d->fy_row_n);
-    j_num(cx, o, "capacity_j", d->capacity_j);
-    j_num(cx, o, "k_row_npm", d->k_row_npm);
-    j_num(cx, o, "a_star_mps2", d->a_star_mps2);
-    j_norm(cx, o, "a_star_g", rb_report_ratio(d->a_star_mps2, d->g));
-    j_num(cx, o, "a_uplift_mps2", d->a_uplift_mps2);
-    j_norm(cx, o, "a_uplift_over_a_star",
+    rb_j_num(cx, o, "g_mps2", d->g);
+    rb_j_num(cx, o, "weight_n", d->W);
+    rb_j_num(cx, o, "R_m", d->R);
+    rb_j_num(cx, o, "alpha_rad", d->alpha);
+    rb_j_num(cx, o, "omega_radps", d->omega);
+    rb_j_num(cx, o, "Mstar_kg", d->Mstar);
+    rb_j_num(cx, o, "Nstar_kg", d->Nstar);
+    rb_j_num(cx, o, "Fstar_kgm", d->Fstar);
+    rb_j_num(cx, o, "Kstar_npm", d->Kstar);
+    rb_j_num(cx, o, "Cstar_nspm", d->Cstar);
+    rb_j_num(cx, o, "Io_kgm2", d->Io);
+    rb_j_num(cx, o, "delta", d->delta);
+    rb_j_num(cx, o, "fy_row_n", d->fy_row_n);
+    rb_j_num(cx, o, "capacity_j", d->capacity_j);
+    rb_j_num(cx, o, "k_row_npm", d->k_row_npm);
+    rb_j_num(cx, o, "a_star_mps2", d->a_star_mps2);
+    rb_j_norm(cx, o, "a_star_g", rb_report_ratio(d->a_star_mps2, d->g));
+    rb_j_num(cx, o, "a_uplift_mps2", d->a_uplift_mps2);
+    rb_j_norm(cx, o, "a_uplift_over_a_star",
            rb_report_ratio(d->a_uplift_mps2, d->a_star_mps2));
-    j_theta0(cx, o, d->theta0_rad);
+    rb_j_theta0(cx, o, d->theta0_rad);
 }
 
-static void add_settings(jctx *cx, cJSON *root, const rb_case *c)
+static void add_settings(rb_jctx *cx, cJSON *root, const rb_case *c)
 {
     const rb_solve_opts *s = &c->solve;
     const rb_criteria *k = &c->criteria;
-    cJSON *o = j_obj(cx, root, "solver");
+    cJSON *o = rb_j_obj(cx, root, "solver");
     cx->where = "solver";
-    j_str(cx, o, "formulation", rb_report_formulation_str(s->formulation));
-    j_num(cx, o, "rtol", s->rtol);
-    j_num(cx, o, "event_tol", s->event_tol);
-    j_opt(cx, o, "max_step_s", s->max_step_s > 0, s->max_step_s);
-    j_bool(cx, o, "stretch_past_failure", s->stretch_past_failure);
-    j_opt(cx, o, "history_dt_s", s->history_dt_s > 0, s->history_dt_s);
-    j_num(cx, o, "rest_fraction", s->rest_fraction);
-    j_num(cx, o, "max_events_per_s", (double)s->max_events_per_s);
-    j_num(cx, o, "max_steps", (double)s->max_steps);
-    j_num(cx, o, "theta_init_rad", s->theta_init_rad);
-    o = j_obj(cx, root, "criteria");
+    rb_j_str(cx, o, "formulation", rb_report_formulation_str(s->formulation));
+    rb_j_num(cx, o, "rtol", s->rtol);
+    rb_j_num(cx, o, "event_tol", s->event_tol);
+    rb_j_opt(cx, o, "max_step_s", s->max_step_s > 0, s->max_step_s);
+    rb_j_bool(cx, o, "stretch_past_failure", s->stretch_past_failure);
+    rb_j_opt(cx, o, "history_dt_s", s->history_dt_s > 0, s->history_dt_s);
+    rb_j_num(cx, o, "rest_fraction", s->rest_fraction);
+    rb_j_num(cx, o, "max_events_per_s", (double)s->max_events_per_s);
+    rb_j_num(cx, o, "max_steps", (double)s->max_steps);
+    rb_j_num(cx, o, "theta_init_rad", s->theta_init_rad);
+    o = rb_j_obj(cx, root, "criteria");
     cx->where = "criteria";
-    j_str(cx, o, "kind", rb_report_criterion_str(k->kind));
-    j_num(cx, o, "usage_limit", k->usage_limit);
-    j_opt(cx, o, "max_shear_over_w", k->max_shear_over_w > 0, k->max_shear_over_w);
-    j_opt(cx, o, "max_theta_over_alpha", k->max_theta_over_alpha > 0,
+    rb_j_str(cx, o, "kind", rb_report_criterion_str(k->kind));
+    rb_j_num(cx, o, "usage_limit", k->usage_limit);
+    rb_j_opt(cx, o, "max_shear_over_w", k->max_shear_over_w > 0, k->max_shear_over_w);
+    rb_j_opt(cx, o, "max_theta_over_alpha", k->max_theta_over_alpha > 0,
           k->max_theta_over_alpha);
 }
 
-static void add_motion_desc(jctx *cx, cJSON *parent, const rb_case_motion *cm,
+static void add_motion_desc(rb_jctx *cx, cJSON *parent, const rb_case_motion *cm,
                             const rb_report_norms *n, const rb_result *res)
 {
     const rb_motion *m = &cm->motion;
-    cJSON *o = j_obj(cx, parent, "motion"), *b;
-    j_str(cx, o, "kind", rb_report_motion_kind_str(m->kind));
-    j_str(cx, o, "source", cm->source);
-    j_num(cx, o, "peak_floor_mps2", res->peak_floor_mps2);
-    j_norm(cx, o, "peak_floor_g", n->peak_g);
-    j_norm(cx, o, "peak_floor_over_a_star", n->peak_over_a_star);
-    j_num(cx, o, "duration_s", m->duration_s);
-    j_num(cx, o, "polarity", m->polarity);
+    cJSON *o = rb_j_obj(cx, parent, "motion"), *b;
+    rb_j_str(cx, o, "kind", rb_report_motion_kind_str(m->kind));
+    rb_j_str(cx, o, "source", cm->source);
+    rb_j_num(cx, o, "peak_floor_mps2", res->peak_floor_mps2);
+    rb_j_norm(cx, o, "peak_floor_g", n->peak_g);
+    rb_j_norm(cx, o, "peak_floor_over_a_star", n->peak_over_a_star);
+    rb_j_num(cx, o, "duration_s", m->duration_s);
+    rb_j_num(cx, o, "polarity", m->polarity);
     if (m->kind == RB_MOTION_SAMPLED) {
         const rb_series *s = m->series;
-        j_num(cx, o, "scale", m->scale);
-        j_num(cx, o, "samples", s ? (double)s->n : 0);
-        j_opt(cx, o, "dt_s", s != NULL, s ? s->dt_s : 0);
+        rb_j_num(cx, o, "scale", m->scale);
+        rb_j_num(cx, o, "samples", s ? (double)s->n : 0);
+        rb_j_opt(cx, o, "dt_s", s != NULL, s ? s->dt_s : 0);
     } else {
-        j_num(cx, o, "amplitude_mps2", m->amplitude_mps2);
+        rb_j_num(cx, o, "amplitude_mps2", m->amplitude_mps2);
     }
     if (m->kind == RB_MOTION_HARMONIC) {
-        j_num(cx, o, "freq_hz", m->freq_hz);
-        j_num(cx, o, "ramp_s", m->ramp_s);
+        rb_j_num(cx, o, "freq_hz", m->freq_hz);
+        rb_j_num(cx, o, "ramp_s", m->ramp_s);
     }
     if (m->kind == RB_MOTION_PULSE) {
-        j_str(cx, o, "pulse_shape", rb_report_pulse_str(m->pulse));
-        j_num(cx, o, "pulse_s", m->pulse_s);
+        rb_j_str(cx, o, "pulse_shape", rb_report_pulse_str(m->pulse));
+        rb_j_num(cx, o, "pulse_s", m->pulse_s);
     }
-    j_opt(cx, o, "target_peak_mps2", cm->target_peak_mps2 > 0, cm->target_peak_mps2);
+    rb_j_opt(cx, o, "target_peak_mps2", cm->target_peak_mps2 > 0, cm->target_peak_mps2);
     if (cm->building_freq_hz > 0) {
-        b = j_obj(cx, o, "building");
-        j_num(cx, b, "freq_hz", cm->building_freq_hz);
-        j_num(cx, b, "damping", cm->building_damping);
+        b = rb_j_obj(cx, o, "building");
+        rb_j_num(cx, b, "freq_hz", cm->building_freq_hz);
+        rb_j_num(cx, b, "damping", cm->building_damping);
     } else {
-        j_null(cx, o, "building");
+        rb_j_null(cx, o, "building");
     }
 }
 
-static void add_peaks(jctx *cx, cJSON *res_o, const rb_result *r,
+static void add_peaks(rb_jctx *cx, cJSON *res_o, const rb_result *r,
                       const rb_report_norms *n)
 {
-    cJSON *o = j_obj(cx, res_o, "constants");
-    j_num(cx, o, "a_star_mps2", r->a_star_mps2);
-    j_num(cx, o, "a_uplift_mps2", r->a_uplift_mps2);
-    j_num(cx, o, "peak_floor_mps2", r->peak_floor_mps2);
-    j_num(cx, o, "u_static_m", r->u_static_m);
-    j_num(cx, o, "alpha_rad", r->alpha_rad);
-    j_theta0(cx, o, r->theta0_rad);
-    j_num(cx, o, "fy_row_n", r->fy_row_n);
-    j_num(cx, o, "capacity_j", r->capacity_j);
-    j_num(cx, o, "weight_n", r->weight_n);
-    j_num(cx, o, "v0_n", n->v0_n);
-    j_num(cx, o, "delta", r->delta);
-    o = j_obj(cx, res_o, "peaks");
-    j_num(cx, o, "max_theta_rad", r->max_theta_rad);
-    j_num(cx, o, "max_theta_over_alpha", r->max_theta_over_alpha);
-    j_num(cx, o, "max_u_m", r->max_u_m);
-    j_num(cx, o, "max_u_over_ustatic", r->max_u_over_ustatic);
-    j_num(cx, o, "max_shear_elastic_n", r->max_shear_elastic_n);
-    j_norm(cx, o, "max_shear_elastic_over_w", n->shear_elastic_over_w);
-    j_norm(cx, o, "max_shear_elastic_over_v0", n->shear_elastic_over_v0);
-    j_num(cx, o, "max_shear_total_n", r->max_shear_total_n);
-    j_norm(cx, o, "max_shear_total_over_w", n->shear_total_over_w);
-    j_norm(cx, o, "max_shear_total_over_v0", n->shear_total_over_v0);
-    j_num(cx, o, "max_friction_demand", r->max_friction_demand);
-    j_pair(cx, o, "max_bolt_force_n", r->max_bolt_force_n);
-    j_pair_norm(cx, o, "max_bolt_force_over_fy", n->force_over_fy);
+    cJSON *o = rb_j_obj(cx, res_o, "constants");
+    rb_j_num(cx, o, "a_star_mps2", r->a_star_mps2);
+    rb_j_num(cx, o, "a_uplift_mps2", r->a_uplift_mps2);
+    rb_j_num(cx, o, "peak_floor_mps2", r->peak_floor_mps2);
+    rb_j_num(cx, o, "u_static_m", r->u_static_m);
+    rb_j_num(cx, o, "alpha_rad", r->alpha_rad);
+    rb_j_theta0(cx, o, r->theta0_rad);
+    rb_j_num(cx, o, "fy_row_n", r->fy_row_n);
+    rb_j_num(cx, o, "capacity_j", r->capacity_j);
+    rb_j_num(cx, o, "weight_n", r->weight_n);
+    rb_j_num(cx, o, "v0_n", n->v0_n);
+    rb_j_num(cx, o, "delta", r->delta);
+    o = rb_j_obj(cx, res_o, "peaks");
+    rb_j_num(cx, o, "max_theta_rad", r->max_theta_rad);
+    rb_j_num(cx, o, "max_theta_over_alpha", r->max_theta_over_alpha);
+    rb_j_num(cx, o, "max_u_m", r->max_u_m);
+    rb_j_num(cx, o, "max_u_over_ustatic", r->max_u_over_ustatic);
+    rb_j_num(cx, o, "max_shear_elastic_n", r->max_shear_elastic_n);
+    rb_j_norm(cx, o, "max_shear_elastic_over_w", n->shear_elastic_over_w);
+    rb_j_norm(cx, o, "max_shear_elastic_over_v0", n->shear_elastic_over_v0);
+    rb_j_num(cx, o, "max_shear_total_n", r->max_shear_total_n);
+    rb_j_norm(cx, o, "max_shear_total_over_w", n->shear_total_over_w);
+    rb_j_norm(cx, o, "max_shear_total_over_v0", n->shear_total_over_v0);
+    rb_j_num(cx, o, "max_friction_demand", r->max_friction_demand);
+    rb_j_pair(cx, o, "max_bolt_force_n", r->max_bolt_force_n);
+    rb_j_pair_norm(cx, o, "max_bolt_force_over_fy", n->force_over_fy);
 }
 
-static void add_rows_outcome(jctx *cx, cJSON *res_o, const rb_result *r,
+static void add_rows_outcome(rb_jctx *cx, cJSON *res_o, const rb_result *r,
                              const rb_report_norms *n)
 {
     static const char *const stage_names[6] = { NULL, "fixed", "uplift",
                                                 "impact", "held", "yield" };
-    cJSON *o = j_obj(cx, res_o, "bolts"), *t;
+    cJSON *o = rb_j_obj(cx, res_o, "bolts"), *t;
     int s;
-    j_pair(cx, o, "final_gap_m", r->final_gap_m);
-    j_pair_norm(cx, o, "final_gap_ratio", n->final_gap_ratio);
-    j_pair(cx, o, "absorbed_j", r->absorbed_j);
-    j_pair(cx, o, "usage", r->usage);
-    j_pair_bool(cx, o, "yielded", r->yielded);
-    j_pair_when(cx, o, "first_yield_s", r->yielded, r->first_yield_s);
-    j_pair_bool(cx, o, "broken", r->broken);
-    j_pair_when(cx, o, "break_s", r->broken, r->break_s);
-    o = j_obj(cx, res_o, "outcome");
-    j_bool(cx, o, "overturned", r->overturned);
+    rb_j_pair(cx, o, "final_gap_m", r->final_gap_m);
+    rb_j_pair_norm(cx, o, "final_gap_ratio", n->final_gap_ratio);
+    rb_j_pair(cx, o, "absorbed_j", r->absorbed_j);
+    rb_j_pair(cx, o, "usage", r->usage);
+    rb_j_pair_bool(cx, o, "yielded", r->yielded);
+    rb_j_pair_when(cx, o, "first_yield_s", r->yielded, r->first_yield_s);
+    rb_j_pair_bool(cx, o, "broken", r->broken);
+    rb_j_pair_when(cx, o, "break_s", r->broken, r->break_s);
+    o = rb_j_obj(cx, res_o, "outcome");
+    rb_j_bool(cx, o, "overturned", r->overturned);
     if (r->overturned)
-        j_str(cx, o, "overturn_side", rb_report_side_str(r->overturn_side));
+        rb_j_str(cx, o, "overturn_side", rb_report_side_str(r->overturn_side));
     else
-        j_null(cx, o, "overturn_side");
-    j_opt(cx, o, "overturn_s", r->overturned, r->overturn_s);
-    j_num(cx, o, "t_end_s", r->t_end_s);
-    t = j_obj(cx, o, "stage_time_s");
+        rb_j_null(cx, o, "overturn_side");
+    rb_j_opt(cx, o, "overturn_s", r->overturned, r->overturn_s);
+    rb_j_num(cx, o, "t_end_s", r->t_end_s);
+    t = rb_j_obj(cx, o, "stage_time_s");
     for (s = 1; s <= 5; s++)
-        j_num(cx, t, stage_names[s], r->stage_time_s[s]);
-    j_num(cx, o, "floor_impacts", (double)r->floor_impacts);
-    j_num(cx, o, "bolt_impacts", (double)r->bolt_impacts);
-    j_num(cx, o, "uplifts", (double)r->uplifts);
+        rb_j_num(cx, t, stage_names[s], r->stage_time_s[s]);
+    rb_j_num(cx, o, "floor_impacts", (double)r->floor_impacts);
+    rb_j_num(cx, o, "bolt_impacts", (double)r->bolt_impacts);
+    rb_j_num(cx, o, "uplifts", (double)r->uplifts);
 }
 
-static void add_energy_cost(jctx *cx, cJSON *res_o, const rb_result *r)
+static void add_energy_cost(rb_jctx *cx, cJSON *res_o, const rb_result *r)
 {
-    cJSON *o = j_obj(cx, res_o, "energy_j");
-    j_num(cx, o, "input", r->e_input);
-    j_num(cx, o, "kinetic", r->e_kinetic);
-    j_num(cx, o, "potential", r->e_potential);
-    j_num(cx, o, "strain", r->e_strain);
-    j_num(cx, o, "damping", r->e_damping);
-    j_num(cx, o, "impact", r->e_impact);
-    j_num(cx, o, "plastic", r->e_plastic);
-    j_num(cx, o, "coupling", r->e_coupling);
-    o = j_obj(cx, res_o, "cost");
-    j_num(cx, o, "steps", (double)r->steps);
-    j_num(cx, o, "rejected_steps", (double)r->rejected_steps);
-    j_num(cx, o, "events", (double)r->events);
-    j_num(cx, o, "rhs_evals", (double)r->rhs_evals);
-    j_num(cx, o, "history_rows", r->history ? (double)r->history->n : 0);
+    cJSON *o = rb_j_obj(cx, res_o, "energy_j");
+    rb_j_num(cx, o, "input", r->e_input);
+    rb_j_num(cx, o, "kinetic", r->e_kinetic);
+    rb_j_num(cx, o, "potential", r->e_potential);
+    rb_j_num(cx, o, "strain", r->e_strain);
+    rb_j_num(cx, o, "damping", r->e_damping);
+    rb_j_num(cx, o, "impact", r->e_impact);
+    rb_j_num(cx, o, "plastic", r->e_plastic);
+    rb_j_num(cx, o, "coupling", r->e_coupling);
+    o = rb_j_obj(cx, res_o, "cost");
+    rb_j_num(cx, o, "steps", (double)r->steps);
+    rb_j_num(cx, o, "rejected_steps", (double)r->rejected_steps);
+    rb_j_num(cx, o, "events", (double)r->events);
+    rb_j_num(cx, o, "rhs_evals", (double)r->rhs_evals);
+    rb_j_num(cx, o, "history_rows", r->history ? (double)r->history->n : 0);
 }
 
 /* One column of a history as a JSON array of numbers. */
-static void j_column(jctx *cx, cJSON *o, const char *key, const double *v, size_t n)
+static void j_column(rb_jctx *cx, cJSON *o, const char *key, const double *v, size_t n)
 {
     cJSON *a = cx->st == RB_OK ? cJSON_AddArrayToObject(o, key) : NULL;
     size_t i;
-    j_oom(cx, a);
+    rb_j_oom(cx, a);
     for (i = 0; i < n && cx->st == RB_OK; i++) {
         cJSON *x;
         if (!isfinite(v[i])) {
@@ -343,16 +237,16 @@ static void j_column(jctx *cx, cJSON *o, const char *key, const double *v, size_
 }
 
 /* The time history, column-wise (same columns as the CSV). */
-static void add_history(jctx *cx, cJSON *parent, const rb_history *h)
+static void add_history(rb_jctx *cx, cJSON *parent, const rb_history *h)
 {
     cJSON *o, *a;
     size_t i;
     if (!h) {
-        j_null(cx, parent, "history");
+        rb_j_null(cx, parent, "history");
         return;
     }
-    o = j_obj(cx, parent, "history");
-    j_num(cx, o, "rows", (double)h->n);
+    o = rb_j_obj(cx, parent, "history");
+    rb_j_num(cx, o, "rows", (double)h->n);
     j_column(cx, o, "t_s", h->t, h->n);
     j_column(cx, o, "accel_mps2", h->accel, h->n);
     j_column(cx, o, "theta_rad", h->theta, h->n);
@@ -367,7 +261,7 @@ static void add_history(jctx *cx, cJSON *parent, const rb_history *h)
     j_column(cx, o, "potential_j", h->potential, h->n);
     j_column(cx, o, "strain_j", h->strain, h->n);
     a = cx->st == RB_OK ? cJSON_AddArrayToObject(o, "stage") : NULL;
-    j_oom(cx, a);
+    rb_j_oom(cx, a);
     for (i = 0; i < h->n && cx->st == RB_OK; i++) {
         cJSON *x = cJSON_CreateNumber(h->stage[i]);
         if (!x || !cJSON_AddItemToArray(a, x)) {
@@ -377,7 +271,7 @@ static void add_history(jctx *cx, cJSON *parent, const rb_history *h)
     }
 }
 
-static void add_motion(jctx *cx, cJSON *arr, const rb_report *r, size_t i)
+static void add_motion(rb_jctx *cx, cJSON *arr, const rb_report *r, size_t i)
 {
     const rb_report_motion *m = &r->motions[i];
     rb_report_norms n;
@@ -392,13 +286,13 @@ static void add_motion(jctx *cx, cJSON *arr, const rb_report *r, size_t i)
     snprintf(cx->where_buf, sizeof cx->where_buf, "motions[%zu]", i);
     cx->where = cx->where_buf;
     rb_report_norms_compute(r, m, &n);
-    j_num(cx, o, "index", (double)(i + 1));
-    j_str(cx, o, "name", m->motion->name);
+    rb_j_num(cx, o, "index", (double)(i + 1));
+    rb_j_str(cx, o, "name", m->motion->name);
     add_motion_desc(cx, o, m->motion, &n, m->result);
-    v = j_obj(cx, o, "verdict");
-    j_bool(cx, v, "pass", m->pass);
-    j_str(cx, v, "reason", m->reason);
-    v = j_obj(cx, o, "result");
+    v = rb_j_obj(cx, o, "verdict");
+    rb_j_bool(cx, v, "pass", m->pass);
+    rb_j_str(cx, v, "reason", m->reason);
+    v = rb_j_obj(cx, o, "result");
     add_peaks(cx, v, m->result, &n);
     add_rows_outcome(cx, v, m->result, &n);
     add_energy_cost(cx, v, m->result);
@@ -406,28 +300,28 @@ static void add_motion(jctx *cx, cJSON *arr, const rb_report *r, size_t i)
         add_history(cx, o, m->result->history);
 }
 
-static void add_head(jctx *cx, cJSON *root, const rb_report *r)
+static void add_head(rb_jctx *cx, cJSON *root, const rb_report *r)
 {
     cJSON *o;
     size_t i, failed = 0;
     cx->where = "report";
-    j_str(cx, root, "format", "rockbolt-report");
-    j_num(cx, root, "format_version", RB_REPORT_FORMAT_VERSION);
-    o = j_obj(cx, root, "tool");
-    j_str(cx, o, "name", "rockbolt");
-    j_str(cx, o, "version", RB_VERSION_STRING);
-    o = j_obj(cx, root, "case");
-    j_str(cx, o, "name", r->kase->name);
-    j_str(cx, o, "path", r->kase->path);
-    j_str(cx, o, "description", r->kase->description);
+    rb_j_str(cx, root, "format", "rockbolt-report");
+    rb_j_num(cx, root, "format_version", RB_REPORT_FORMAT_VERSION);
+    o = rb_j_obj(cx, root, "tool");
+    rb_j_str(cx, o, "name", "rockbolt");
+    rb_j_str(cx, o, "version", RB_VERSION_STRING);
+    o = rb_j_obj(cx, root, "case");
+    rb_j_str(cx, o, "name", r->kase->name);
+    rb_j_str(cx, o, "path", r->kase->path);
+    rb_j_str(cx, o, "description", r->kase->description);
     for (i = 0; i < r->n_motions; i++)
         failed += !r->motions[i].pass;
-    o = j_obj(cx, root, "verdict");
-    j_bool(cx, o, "pass", r->pass);
-    j_str(cx, o, "result", r->pass ? "PASS" : "FAIL");
-    j_str(cx, o, "reason", r->reason);
-    j_num(cx, o, "motions", (double)r->n_motions);
-    j_num(cx, o, "motions_failed", (double)failed);
+    o = rb_j_obj(cx, root, "verdict");
+    rb_j_bool(cx, o, "pass", r->pass);
+    rb_j_str(cx, o, "result", r->pass ? "PASS" : "FAIL");
+    rb_j_str(cx, o, "reason", r->reason);
+    rb_j_num(cx, o, "motions", (double)r->n_motions);
+    rb_j_num(cx, o, "motions_failed", (double)failed);
 }
 
 /* cJSON_Print's text plus the final newline a text file should end with,
@@ -450,7 +344,7 @@ static char *print_with_newline(cJSON *root)
 
 rb_status rb_report_json_render(const rb_report *r, char **out, rb_diag *diag)
 {
-    jctx cx = { RB_OK, "report", "", "" };
+    rb_jctx cx = { RB_OK, "report", "", "" };
     cJSON *root = cJSON_CreateObject(), *arr = NULL;
     size_t i;
     *out = NULL;

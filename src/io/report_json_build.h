@@ -1,0 +1,32 @@
+/* The JSON report's tree builders, shared by report_json*.c. Private to
+ * src/io. */
+#ifndef RB_REPORT_JSON_BUILD_H
+#define RB_REPORT_JSON_BUILD_H
+
+#include <cjson/cJSON.h>
+#include "rockbolt/status.h"
+
+/* Builder state: the first problem met is kept, later calls are no-ops. */
+typedef struct {
+    rb_status st;
+    const char *where;     /* section being written, for diagnostics */
+    char where_buf[64];    /* "motions[i]" */
+    char bad_key[128];
+} rb_jctx;
+
+void rb_j_oom(rb_jctx *cx, const void *added);
+cJSON *rb_j_obj(rb_jctx *cx, cJSON *parent, const char *key);
+void rb_j_num(rb_jctx *cx, cJSON *o, const char *key, double v);
+void rb_j_null(rb_jctx *cx, cJSON *o, const char *key);
+void rb_j_opt(rb_jctx *cx, cJSON *o, const char *key, int have, double v);
+void rb_j_norm(rb_jctx *cx, cJSON *o, const char *key, double v);
+void rb_j_theta0(rb_jctx *cx, cJSON *o, double v);
+void rb_j_bool(rb_jctx *cx, cJSON *o, const char *key, int v);
+void rb_j_str(rb_jctx *cx, cJSON *o, const char *key, const char *s);
+void rb_j_pair(rb_jctx *cx, cJSON *o, const char *key, const double v[2]);
+void rb_j_pair_norm(rb_jctx *cx, cJSON *o, const char *key, const double v[2]);
+void rb_j_pair_bool(rb_jctx *cx, cJSON *o, const char *key, const int v[2]);
+void rb_j_pair_when(rb_jctx *cx, cJSON *o, const char *key,
+                    const int happened[2], const double t[2]);
+
+#endif
