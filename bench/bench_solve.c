@@ -72,6 +72,8 @@ int main(int argc, char **argv)
            1e3 * t[runs - 1]);
     printf("per simulated s     %.1f us\n", 1e6 * med / 50.0);
     printf("steps               %ld accepted, %ld rejected\n", r.steps, r.rejected_steps);
+    printf("steps per stage     1: %ld  2: %ld  4: %ld  5: %ld\n", r.stage_steps[1],
+           r.stage_steps[2], r.stage_steps[4], r.stage_steps[5]);
     printf("rhs evaluations     %ld\n", r.rhs_evals);
     printf("events              %ld (uplifts %ld, floor impacts %ld, bolt impacts %ld)\n",
            r.events, r.uplifts, r.floor_impacts, r.bolt_impacts);

@@ -87,6 +87,7 @@ typedef struct {
            e_plastic, e_coupling;
     /* cost */
     long steps, rejected_steps, events, rhs_evals;
+    long stage_steps[6];          /* accepted steps (or exact intervals) per stage */
     rb_history *history;          /* owned; NULL unless asked for */
 } rb_result;
 

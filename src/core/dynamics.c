@@ -21,6 +21,24 @@
 #include <math.h>
 #include "dynamics.h"
 
+
+double rb_dyn_contact_angle(const rb_sys *S, double g)
+{
+    return S->form == RB_FORM_SMALL ? g / S->l : 2 * asin(g / (2 * S->l));
+}
+
+/* cos and sin of a rotation; stage 1 (th = 0) skips the library call. */
+static void cos_sin(double th, double *c, double *sn)
+{
+    if (th == 0) {
+        *c = 1;
+        *sn = 0;
+        return;
+    }
+    *c = cos(th);
+    *sn = sin(th);
+}
+
 double rb_dyn_chord(const rb_sys *S, double th)
 {
     return S->form == RB_FORM_SMALL ? S->l * th : 2 * S->l * sin(th / 2);
@@ -31,14 +49,10 @@ double rb_dyn_lever(const rb_sys *S, double th)
     return S->form == RB_FORM_SMALL ? S->l : S->l * cos(th / 2);
 }
 
-double rb_dyn_contact_angle(const rb_sys *S, double g)
-{
-    return S->form == RB_FORM_SMALL ? g / S->l : 2 * asin(g / (2 * S->l));
-}
-
 /* Generalized loads of the mirrored 2-DOF system at angle th. */
 typedef struct {
     double QU, Qth, J, cent, gyro, in_U, in_th, cpl_U;
+    double c, sn; /* cos th, sin th */
 } rb_loads;
 
 static void loads(const rb_sys *S, double x, double U, double Ud, double th,
@@ -46,7 +60,10 @@ static void loads(const rb_sys *S, double x, double U, double Ud, double th,
 {
     const rb_derived *d = &S->d;
     double g = d->g, M = S->M, b = S->b, h = S->h;
-    double c = cos(th), sn = sin(th);
+    double c, sn;
+    cos_sin(th, &c, &sn);
+    L->c = c;
+    L->sn = sn;
     switch (S->form) {
     case RB_FORM_SMALL:
         L->in_U = d->Nstar;
@@ -73,10 +90,12 @@ static void loads(const rb_sys *S, double x, double U, double Ud, double th,
     case RB_FORM_LARGE:
         break;
     }
+    /* R cos(alpha - th) and R sin(alpha - th) by the angle-difference
+     * formulas (R cos alpha = h, R sin alpha = b): one sincos per call */
     L->in_U = d->Nstar * c;
-    L->in_th = M * d->R * cos(d->alpha - th);
+    L->in_th = M * (h * c + b * sn);
     L->QU = d->Nstar * (x * c + g * sn) - d->Kstar * U;
-    L->Qth = x * L->in_th - d->W * d->R * sin(d->alpha - th);
+    L->Qth = x * L->in_th - d->W * (b * c - h * sn);
     L->J = d->Io;
     L->cent = d->Nstar * b * thd * thd;
     L->gyro = 0;
@@ -118,6 +137,8 @@ static void solve_rocking(const rb_sys *S, const rb_disc *D, double x, const dou
     double U = m[0], Ud = m[1], th = m[2], thd = m[3];
     loads(S, x, U, Ud, th, thd, &L);
     double Mb = bolt_moment(S, D, th, &a->bolt_force);
+    a->cos_th = L.c;
+    a->sin_th = L.sn;
     double Rth = L.Qth - Mb - L.gyro;
     if (S->model->rigid) {
         a->udd = 0;
@@ -141,6 +162,8 @@ static void solve_still(const rb_sys *S, const rb_disc *D, double x, const doubl
     rb_loads L;
     double U = m[0], Ud = m[1], th = m[2];
     loads(S, x, U, Ud, th, 0, &L);
+    a->cos_th = L.c;
+    a->sin_th = L.sn;
     a->udd = S->model->rigid ? 0 : (L.QU - d->Cstar * Ud) / d->Mstar;
     a->thdd = 0;
     a->bolt_force = 0;
@@ -188,19 +211,23 @@ void rb_dyn_rhs(const rb_sys *S, const rb_disc *D, double t, const double *y,
 
 double rb_dyn_uplift_guard(const rb_sys *S, double t, const double *y, int side)
 {
+    double g[2];
+    rb_dyn_uplift_guards(S, t, y, g);
+    return side < 0 ? g[1] : g[0];
+}
+
+/* The guard is affine in (x'', U, U') with the same constant part Q0 on
+ * both sides, and the mirror negates the rest: g(-) = 2 Q0 - g(+). */
+void rb_dyn_uplift_guards(const rb_sys *S, double t, const double *y, double *g)
+{
     const rb_derived *d = &S->d;
-    rb_disc D = {0};
     rb_loads L;
-    double m[4];
-    D.side = side;
-    D.stage = RB_STAGE_FIXED;
-    mirror(&D, y, m);
-    double x = (side < 0 ? -1.0 : 1.0) * floor_accel(S, t, y);
-    loads(S, x, m[0], m[1], 0, 0, &L);
-    if (S->model->rigid)
-        return L.Qth;
-    double udd = (L.QU - d->Cstar * m[1]) / d->Mstar;
-    return L.Qth - d->Fstar * udd;
+    double x = floor_accel(S, t, y);
+    loads(S, x, y[RB_Y_U], y[RB_Y_UD], 0, 0, &L);
+    double q0 = L.Qth - x * L.in_th;
+    g[0] = S->model->rigid ? L.Qth
+           : L.Qth - d->Fstar * (L.QU - d->Cstar * y[RB_Y_UD]) / d->Mstar;
+    g[1] = 2 * q0 - g[0];
 }
 
 double rb_dyn_kinetic(const rb_sys *S, const rb_disc *D, const double *y)
@@ -252,9 +279,8 @@ void rb_dyn_reactions(const rb_sys *S, const rb_disc *D, const double *y,
     const rb_derived *d = &S->d;
     double s = D->side < 0 ? -1.0 : 1.0, m[4];
     mirror(D, y, m);
-    if (D->stage == RB_STAGE_HELD && !S->elastic_bolts)
-        m[2] = D->theta_hold;
-    double th = m[2], thd = m[3], c = cos(th), sn = sin(th);
+    /* the angle's cosine and sine come with aux, from the same evaluation */
+    double thd = m[3], c = a->cos_th, sn = a->sin_th;
     double Mb = S->M * S->b - (S->form == RB_FORM_CONSISTENT ? d->Nstar * m[0] : 0);
     double Ad = d->Nstar * a->udd + S->M * S->h * a->thdd + Mb * thd * thd;
     double A2 = -S->M * S->h * thd * thd - 2 * d->Nstar * m[1] * thd + Mb * a->thdd;

@@ -42,6 +42,7 @@ typedef struct {
     double udd, thdd;  /* mirrored accelerations */
     double bolt_force; /* tension of the loaded row (0 when slack) */
     double p_input, p_coupling;
+    double cos_th, sin_th; /* of the mirrored angle the equations used */
 } rb_aux;
 
 static inline int rb_row_of_side(int side) { return side > 0 ? RB_RIGHT : RB_LEFT; }
@@ -60,6 +61,8 @@ void rb_dyn_rhs(const rb_sys *S, const rb_disc *D, double t, const double *y,
  * that edge (eq. 5.3d written through the stage-2 moment equation so that it
  * agrees in sign with theta'' of stage 2). */
 double rb_dyn_uplift_guard(const rb_sys *S, double t, const double *y, int side);
+/* Both sides at once: g[0] about the left edge, g[1] about the right. */
+void rb_dyn_uplift_guards(const rb_sys *S, double t, const double *y, double *g);
 
 /* Energies in the relative frame (J). */
 double rb_dyn_kinetic(const rb_sys *S, const rb_disc *D, const double *y);

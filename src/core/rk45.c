@@ -46,7 +46,7 @@ double rb_rk_step_try(const rb_sys *S, const rb_disc *D, double t0, const double
     for (i = 0; i < RB_NY; i++)
         st->y1[i] = y0[i] + h * (A71 * k[0][i] + A73 * k[2][i] + A74 * k[3][i]
                                  + A75 * k[4][i] + A76 * k[5][i]);
-    rb_dyn_rhs(S, D, t0 + h, st->y1, k[6], NULL);
+    rb_dyn_rhs(S, D, t0 + h, st->y1, k[6], &st->aux1);
     double err = 0;
     for (i = 0; i < RB_NY; i++) {
         if (atol[i] <= 0)
@@ -83,4 +83,19 @@ void rb_rk_dense_eval(const rb_rk_step *st, double t, double *y)
     for (int i = 0; i < RB_NY; i++)
         y[i] = st->cont[0][i] + s * (st->cont[1][i] + s1 * (st->cont[2][i]
                + s * (st->cont[3][i] + s1 * st->cont[4][i])));
+}
+
+void rb_rk_dense_state(const rb_rk_step *st, double t, double *y)
+{
+    double s = st->h != 0 ? (t - st->t0) / st->h : 0, s1 = 1 - s;
+    for (int i = RB_Y_U; i <= RB_Y_THD; i++)
+        y[i] = st->cont[0][i] + s * (st->cont[1][i] + s1 * (st->cont[2][i]
+               + s * (st->cont[3][i] + s1 * st->cont[4][i])));
+}
+
+double rb_rk_dense_one(const rb_rk_step *st, double t, int i)
+{
+    double s = st->h != 0 ? (t - st->t0) / st->h : 0, s1 = 1 - s;
+    return st->cont[0][i] + s * (st->cont[1][i] + s1 * (st->cont[2][i]
+           + s * (st->cont[3][i] + s1 * st->cont[4][i])));
 }

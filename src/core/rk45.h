@@ -15,6 +15,7 @@ typedef struct {
     double y0[RB_NY], y1[RB_NY];
     double k[7][RB_NY];     /* stage derivatives; k[6] = f(t0 + h, y1) */
     double cont[5][RB_NY];  /* dense-output coefficients */
+    rb_aux aux1;            /* what the evaluation of k[6] yields besides it */
 } rb_rk_step;
 
 /* Take a step of size h from (t0, y0) whose derivative f0 is known. Writes
@@ -29,5 +30,12 @@ void rb_rk_dense_init(rb_rk_step *st);
 
 /* The state at time t in [t0, t0 + h]. */
 void rb_rk_dense_eval(const rb_rk_step *st, double t, double *y);
+
+/* Only the mechanical state (U, U', theta, theta') at t: what guards and
+ * peaks read, at about half the cost. The work components are left alone. */
+void rb_rk_dense_state(const rb_rk_step *st, double t, double *y);
+
+/* Component c alone at t. */
+double rb_rk_dense_one(const rb_rk_step *st, double t, int c);
 
 #endif

@@ -149,7 +149,7 @@ static rb_status setup(rb_solver *sv, const rb_model *model, const rb_motion *mo
 static double locate(rb_solver *sv, const rb_rk_step *st, int guard, double a, double b,
                      double ga, double gb)
 {
-    double g[G_COUNT], y[RB_NY];
+    double y[RB_NY] = {0};
     int last = 0;
     for (int i = 0; i < 200 && b - a > 1e-13 * (1 + fabs(b)); i++) {
         double m = (a * gb - b * ga) / (gb - ga);
@@ -157,16 +157,16 @@ static double locate(rb_solver *sv, const rb_rk_step *st, int guard, double a, d
          * nudged off zero at a has a near-zero ga) */
         if (!(m > a + 1e-3 * (b - a) && m < b - 1e-3 * (b - a)))
             m = 0.5 * (a + b);
-        rb_rk_dense_eval(st, m, y);
-        rb_guard_eval(sv, m, y, g);
-        if (rb_guard_crossed(guard, ga, g[guard]) || g[guard] == 0) {
+        rb_rk_dense_state(st, m, y);
+        double gm = rb_guard_one(sv, guard, m, y);
+        if (rb_guard_crossed(guard, ga, gm) || gm == 0) {
             b = m;
-            gb = g[guard];
+            gb = gm;
             if (last == -1) ga *= 0.5;
             last = -1;
         } else {
             a = m;
-            ga = g[guard];
+            ga = gm;
             if (last == 1) gb *= 0.5;
             last = 1;
         }
@@ -174,21 +174,19 @@ static double locate(rb_solver *sv, const rb_rk_step *st, int guard, double a, d
     return b;
 }
 
-/* Earliest guard crossing inside the accepted step, or -1. */
-static int find_event(rb_solver *sv, const rb_rk_step *st, const double *g0, double *t_event)
+/* Earliest guard crossing inside the accepted step, or -1. ys[j] is the
+ * state at the end of check interval j of RB_SUB (ys[RB_SUB - 1] = y1). */
+static int find_event(rb_solver *sv, const rb_rk_step *st, const double *g0,
+                      double (*ys)[RB_NY], double *t_event)
 {
-    enum { SUB = 4 };
     unsigned mask = rb_guard_mask(sv);
-    double ga[G_COUNT], gb[G_COUNT], y[RB_NY];
+    double ga[G_COUNT], gb[G_COUNT];
     memcpy(ga, g0, sizeof ga);
     rb_guard_nudge(ga);
-    for (int j = 1; j <= SUB; j++) {
-        double ta = st->t0 + st->h * (j - 1) / SUB;
-        double tb = j == SUB ? st->t0 + st->h : st->t0 + st->h * j / SUB;
-        rb_rk_dense_eval(st, tb, y);
-        if (j == SUB)
-            memcpy(y, st->y1, sizeof y);
-        rb_guard_eval(sv, tb, y, gb);
+    for (int j = 1; j <= RB_SUB; j++) {
+        double ta = st->t0 + st->h * (j - 1) / RB_SUB;
+        double tb = j == RB_SUB ? st->t0 + st->h : st->t0 + st->h * j / RB_SUB;
+        rb_guard_eval(sv, tb, ys[j - 1], gb);
         int best = -1;
         double tbest = HUGE_VAL;
         for (int k = 0; k < G_COUNT; k++) {
@@ -247,10 +245,17 @@ static rb_status restart(rb_solver *sv, double *g, rb_diag *diag)
 static rb_status advance(rb_solver *sv, rb_rk_step *st, double *g, rb_diag *diag)
 {
     double t_event, tb = st->t0 + st->h;
-    int ev = find_event(sv, st, g, &t_event);
+    /* the check points serve the guards and the peaks alike */
+    double ys[RB_SUB][RB_NY];
+    for (int j = 1; j < RB_SUB; j++)
+        rb_rk_dense_state(st, st->t0 + st->h * j / RB_SUB, ys[j - 1]);
+    memcpy(ys[RB_SUB - 1], st->y1, sizeof ys[0]);
+    if (!state_finite(st->y1))
+        return fail(sv, diag, RB_ERR_NONFINITE, "non-finite state");
+    int ev = find_event(sv, st, g, ys, &t_event);
     if (ev >= 0)
         tb = t_event;
-    rb_track_interval(sv, st, st->t0, tb);
+    rb_track_interval(sv, st, st->t0, tb, ev < 0 ? (const double (*)[RB_NY])ys : NULL);
     if (rb_history_sample(sv, st, st->t0, tb) != RB_OK)
         return RB_ERR_NOMEM;
     sv->res->stage_time_s[sv->disc.stage] += tb - st->t0;
@@ -258,10 +263,8 @@ static rb_status advance(rb_solver *sv, rb_rk_step *st, double *g, rb_diag *diag
     if (ev < 0) {
         memcpy(sv->y, st->y1, sizeof sv->y);
         memcpy(sv->f, st->k[6], sizeof sv->f);
-        if (!state_finite(sv->y))
-            return fail(sv, diag, RB_ERR_NONFINITE, "non-finite state");
         rb_guard_eval(sv, sv->t, sv->y, g);
-        rb_track_point(sv, sv->t, sv->y);
+        rb_track_aux(sv, sv->y, &st->aux1);
         return RB_OK;
     }
     rb_rk_dense_eval(st, tb, sv->y);
@@ -295,6 +298,7 @@ static rb_status run(rb_solver *sv, rb_diag *diag)
             continue;
         }
         sv->res->steps++;
+        sv->res->stage_steps[sv->disc.stage]++;
         rb_rk_dense_init(&st);
         s = advance(sv, &st, g, diag);
         sv->h = fmax(h, 1e-14) * fmin(5, fmax(0.2, fac));

@@ -41,6 +41,8 @@ typedef struct {
 /* transitions.c */
 unsigned rb_guard_mask(const rb_solver *sv);
 void rb_guard_eval(const rb_solver *sv, double t, const double *y, double *g);
+/* One guard; what locating its root needs. */
+double rb_guard_one(const rb_solver *sv, int guard, double t, const double *y);
 int rb_guard_crossed(int guard, double before, double after);
 void rb_guard_nudge(double *g);
 /* Apply the transition of 'guard' at the current (t, y). */
@@ -50,9 +52,17 @@ void rb_transition(rb_solver *sv, int guard);
 int rb_transition_immediate(rb_solver *sv);
 double rb_absorbed_now(const rb_solver *sv, int row);
 
+/* Guards and peaks are checked at RB_SUB equally spaced points of a step. */
+#define RB_SUB 4
+
 /* track.c */
 void rb_track_point(rb_solver *sv, double t, const double *y);
-void rb_track_interval(rb_solver *sv, const rb_rk_step *st, double ta, double tb);
+/* The same with the evaluation at (t, y) already done. */
+void rb_track_aux(rb_solver *sv, const double *y, const rb_aux *a);
+/* Peaks inside [ta, tb] of a step; ys, when not NULL, holds the state at
+ * the RB_SUB check points of the whole step (tb = its end). */
+void rb_track_interval(rb_solver *sv, const rb_rk_step *st, double ta, double tb,
+                       const double (*ys)[RB_NY]);
 rb_status rb_history_sample(rb_solver *sv, const rb_rk_step *st, double ta, double tb);
 rb_status rb_history_push(rb_solver *sv, double t, const double *y);
 

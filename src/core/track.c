@@ -16,64 +16,78 @@ static void note_displacements(rb_solver *sv, const double *y)
     r->max_theta_rad = fmax(r->max_theta_rad, fabs(y[RB_Y_TH]));
 }
 
-void rb_track_point(rb_solver *sv, double t, const double *y)
+void rb_track_aux(rb_solver *sv, const double *y, const rb_aux *a)
 {
     const rb_sys *S = &sv->sys;
     rb_result *r = sv->res;
-    rb_aux a;
     double H, V;
     note_displacements(sv, y);
-    rb_dyn_rhs(S, &sv->disc, t, y, NULL, &a);
-    if (sv->disc.side != 0 && a.bolt_force > 0) {
+    if (sv->disc.side != 0 && a->bolt_force > 0) {
         int row = rb_row_of_side(sv->disc.side);
-        r->max_bolt_force_n[row] = fmax(r->max_bolt_force_n[row], a.bolt_force);
+        r->max_bolt_force_n[row] = fmax(r->max_bolt_force_n[row], a->bolt_force);
     }
-    rb_dyn_reactions(S, &sv->disc, y, &a, &H, &V);
+    rb_dyn_reactions(S, &sv->disc, y, a, &H, &V);
     r->max_shear_total_n = fmax(r->max_shear_total_n, fabs(H));
     if (V > 0)
         r->max_friction_demand = fmax(r->max_friction_demand, fabs(H) / V);
 }
 
-/* Root of component c of the dense output in [a, b], where it changes sign. */
-static double dense_root(const rb_rk_step *st, int c, double a, double b)
+void rb_track_point(rb_solver *sv, double t, const double *y)
 {
-    double y[RB_NY], fa, fb;
-    rb_rk_dense_eval(st, a, y);
-    fa = y[c];
-    rb_rk_dense_eval(st, b, y);
-    fb = y[c];
-    for (int i = 0; i < 60 && b - a > 1e-14 * (1 + fabs(b)); i++) {
-        double m = 0.5 * (a + b);
-        rb_rk_dense_eval(st, m, y);
-        if ((y[c] < 0) == (fa < 0)) {
+    rb_aux a;
+    rb_dyn_rhs(&sv->sys, &sv->disc, t, y, NULL, &a);
+    rb_track_aux(sv, y, &a);
+}
+
+/* Root of component c of the dense output in [a, b], where it changes sign
+ * from fa to fb: Illinois steps, which converge superlinearly on these
+ * quartics, to the resolution the bisection this replaces reached. */
+static double dense_root(const rb_rk_step *st, int c, double a, double b, double fa,
+                         double fb)
+{
+    int last = 0;
+    for (int i = 0; i < 100 && b - a > 1e-14 * (1 + fabs(b)); i++) {
+        double m = (a * fb - b * fa) / (fb - fa);
+        if (!(m > a + 1e-3 * (b - a) && m < b - 1e-3 * (b - a)))
+            m = 0.5 * (a + b);
+        double fm = rb_rk_dense_one(st, m, c);
+        if (fm == 0)
+            return m;
+        if ((fm < 0) == (fa < 0)) {
             a = m;
-            fa = y[c];
+            fa = fm;
+            if (last == 1) fb *= 0.5;
+            last = 1;
         } else {
             b = m;
-            fb = y[c];
+            fb = fm;
+            if (last == -1) fa *= 0.5;
+            last = -1;
         }
     }
-    (void)fb;
     return 0.5 * (a + b);
 }
 
-void rb_track_interval(rb_solver *sv, const rb_rk_step *st, double ta, double tb)
+void rb_track_interval(rb_solver *sv, const rb_rk_step *st, double ta, double tb,
+                       const double (*ys)[RB_NY])
 {
-    enum { SUB = 4 };
-    double prev[RB_NY], cur[RB_NY], y[RB_NY];
-    rb_rk_dense_eval(st, ta, prev);
-    for (int j = 1; j <= SUB; j++) {
-        double t0 = ta + (tb - ta) * (j - 1) / SUB, t1 = ta + (tb - ta) * j / SUB;
-        rb_rk_dense_eval(st, t1, cur);
+    double prev[RB_NY] = {0}, cur[RB_NY] = {0}, y[RB_NY] = {0};
+    rb_rk_dense_state(st, ta, prev);
+    for (int j = 1; j <= RB_SUB; j++) {
+        double t0 = ta + (tb - ta) * (j - 1) / RB_SUB, t1 = ta + (tb - ta) * j / RB_SUB;
+        if (ys)
+            memcpy(cur, ys[j - 1], sizeof cur);
+        else
+            rb_rk_dense_state(st, t1, cur);
         static const int rates[2] = {RB_Y_UD, RB_Y_THD};
         for (int k = 0; k < 2; k++) {
             int c = rates[k];
             if ((prev[c] < 0) != (cur[c] < 0)) {
-                rb_rk_dense_eval(st, dense_root(st, c, t0, t1), y);
+                rb_rk_dense_state(st, dense_root(st, c, t0, t1, prev[c], cur[c]), y);
                 note_displacements(sv, y);
             }
         }
-        if (j < SUB && sv->disc.stage == RB_STAGE_HELD)
+        if (j < RB_SUB && sv->disc.stage == RB_STAGE_HELD)
             rb_track_point(sv, t1, cur);
         memcpy(prev, cur, sizeof prev);
     }

@@ -84,32 +84,55 @@ double rb_absorbed_now(const rb_solver *sv, int row)
     return D->absorbed_entry + sv->sys.d.fy_row_n * (rb_dyn_chord(&sv->sys, th) - D->chord_entry);
 }
 
-void rb_guard_eval(const rb_solver *sv, double t, const double *y, double *g)
+double rb_guard_one(const rb_solver *sv, int guard, double t, const double *y)
 {
     const rb_sys *S = &sv->sys;
     const rb_disc *D = &sv->disc;
+    double th = D->side * y[RB_Y_TH];
+    switch (guard) {
+    case G_UP_POS: return rb_dyn_uplift_guard(S, t, y, 1);
+    case G_UP_NEG: return rb_dyn_uplift_guard(S, t, y, -1);
+    case G_FLOOR: return th;
+    case G_CONTACT: return rb_dyn_chord(S, th) - D->gap[rb_row_of_side(D->side)];
+    case G_OVERTURN: return th - S->d.alpha;
+    case G_UNLOAD: return D->side * y[RB_Y_THD];
+    case G_SWITCH: return y[RB_Y_THD];
+    case G_BREAK:
+        return D->absorbed_entry + S->d.fy_row_n * (rb_dyn_chord(S, th) - D->chord_entry)
+               - S->d.capacity_j;
+    case G_SLACK:
+    case G_YIELD: {
+        rb_aux a;
+        if (guard == G_SLACK && S->elastic_bolts)
+            return rb_dyn_chord(S, th) - D->gap[rb_row_of_side(D->side)];
+        rb_dyn_rhs(S, D, t, y, NULL, &a);
+        return guard == G_YIELD ? a.bolt_force - S->d.fy_row_n : a.bolt_force;
+    }
+    default:
+        return 0;
+    }
+}
+
+void rb_guard_eval(const rb_solver *sv, double t, const double *y, double *g)
+{
     unsigned mask = rb_guard_mask(sv);
-    double th = D->side * y[RB_Y_TH], thd = D->side * y[RB_Y_THD];
-    int row = rb_row_of_side(D->side);
-    double chord = rb_dyn_chord(S, th);
     for (int k = 0; k < G_COUNT; k++)
         g[k] = 0; /* inactive guards are never read as crossings, but are copied */
-    if (mask & 1u << G_UP_POS) {
-        g[G_UP_POS] = rb_dyn_uplift_guard(S, t, y, 1);
-        g[G_UP_NEG] = rb_dyn_uplift_guard(S, t, y, -1);
-    }
-    g[G_FLOOR] = th;
-    g[G_CONTACT] = chord - D->gap[row];
-    g[G_OVERTURN] = th - S->d.alpha;
-    g[G_UNLOAD] = thd;
-    g[G_SWITCH] = y[RB_Y_THD];
-    g[G_BREAK] = D->absorbed_entry + S->d.fy_row_n * (chord - D->chord_entry) - S->d.capacity_j;
-    if (mask & (1u << G_SLACK | 1u << G_YIELD)) {
+    /* the rigid bolt's force serves both of stage 4's guards */
+    if ((mask & 1u << G_YIELD) && !sv->sys.elastic_bolts) {
         rb_aux a;
-        rb_dyn_rhs(S, D, t, y, NULL, &a);
-        g[G_SLACK] = S->elastic_bolts ? chord - D->gap[row] : a.bolt_force;
-        g[G_YIELD] = a.bolt_force - S->d.fy_row_n;
+        rb_dyn_rhs(&sv->sys, &sv->disc, t, y, NULL, &a);
+        g[G_SLACK] = a.bolt_force;
+        g[G_YIELD] = a.bolt_force - sv->sys.d.fy_row_n;
+        mask &= ~(1u << G_SLACK | 1u << G_YIELD);
     }
+    if (mask & 1u << G_UP_POS) {
+        rb_dyn_uplift_guards(&sv->sys, t, y, g + G_UP_POS);
+        mask &= ~(1u << G_UP_POS | 1u << G_UP_NEG);
+    }
+    for (int k = 0; k < G_COUNT; k++)
+        if (mask & 1u << k)
+            g[k] = rb_guard_one(sv, k, t, y);
 }
 
 static void count_event(rb_solver *sv)
