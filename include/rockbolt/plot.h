@@ -1,0 +1,77 @@
+/* Figures of a check, written as SVG and HTML text (io layer).
+ *
+ * The figures follow the thesis's stacked time-history plots (Figs. 5.13 to
+ * 6.18) and its response curves (Figs. 5.23 to 6.4). The module draws them
+ * itself, with no plotting library, and does no file I/O: every renderer
+ * returns a malloc'd NUL-terminated string that the caller owns and frees
+ * with free(); on error *out is NULL. Nothing here prints.
+ *
+ * The SVG is standalone (xmlns set, no XML declaration, no ids, no
+ * scripts, no external references), so the same string can be saved as a
+ * .svg file or pasted verbatim into an HTML page. Every text taken from the
+ * input (case, motion, title, report) is escaped, and bytes that are not
+ * valid UTF-8 or not allowed in XML are replaced, so the output always
+ * parses as XML. Non-finite numbers are never written: a NaN or infinite
+ * sample breaks its line. Each plotted series is exactly one <path>
+ * element; nothing else is drawn with <path>. docs/plots.md describes the
+ * figures and their conventions. */
+#ifndef ROCKBOLT_PLOT_H
+#define ROCKBOLT_PLOT_H
+
+#include <stddef.h>
+#include "rockbolt/status.h"
+#include "rockbolt/report.h"
+#include "rockbolt/design.h"
+
+/* Series of the time-history figure, top panel to bottom, in the order
+ * their <path> elements appear: floor acceleration; theta; U; left and
+ * right bolt row force; elastic (frame) and total base shear; energy
+ * absorbed by the left and right row. */
+#define RB_PLOT_HISTORY_SERIES 9
+
+/* Stacked time-history figure of motion motion_index of rep. The motion's
+ * result must carry a history (solve with rb_solve_opts.history_dt_s > 0;
+ * the CLI's 0.01 s is fine, 0.005 s is smoother). Panels, sharing the time
+ * axis in s: floor acceleration / g; theta / alpha; U / U_static; bolt row
+ * force / Fy (left row drawn negative, right row positive); base shear / W
+ * (frame and total); absorbed energy / capacity per row. A panel whose
+ * normaliser is zero (no bolts, no motion) is drawn in engineering units
+ * instead. The stage of each sample is shaded behind the panels, and the
+ * first yield of each row, each break and the overturn are vertical
+ * markers. Histories longer than two samples per pixel column are reduced
+ * to the minimum and maximum of each column. Returns RB_ERR_INVALID (diag
+ * says why) for a motion index out of range or a motion without a history
+ * of at least two rows, RB_ERR_NOMEM. */
+rb_status rb_plot_history_svg(const rb_report *rep, size_t motion_index,
+                              char **out, rb_diag *diag);
+
+/* Response curve of a sweep: peak U / U_static (top) and peak bolt row
+ * force / Fy per row (bottom) against x, the excitation frequency over the
+ * fixed-base frequency (frequency sweeps) or the peak floor level in A*
+ * (amplitude sweeps). Points where a bolt row yielded are marked o, points
+ * that failed (a row broke or the body overturned) x, as in the thesis.
+ * Points without a result (status not RB_OK) break the curves and are
+ * counted in a note under the figure. title (may be NULL) heads the
+ * figure. RB_ERR_INVALID for a sweep without points, RB_ERR_NOMEM. */
+rb_status rb_plot_sweep_svg(const rb_sweep *s, const char *title, char **out,
+                            rb_diag *diag);
+
+/* A self-contained page: title as <title> and heading, text_report (may be
+ * NULL) escaped in a <pre>, then each of the n_svgs figures inline, in
+ * order. The page is XHTML-compatible (it parses as XML as well as HTML)
+ * and refers to nothing outside itself. Each svgs[i] must be an <svg>
+ * element as the renderers above produce; a leading XML declaration is
+ * dropped. RB_ERR_INVALID if one is NULL or does not start with <svg,
+ * RB_ERR_NOMEM. */
+rb_status rb_plot_html_page(const char *title, const char *text_report,
+                            const char *const *svgs, size_t n_svgs,
+                            char **out, rb_diag *diag);
+
+/* The page of a whole check: the text report and the time-history figure of
+ * every motion that has a history, titled after the case and its verdict.
+ * Motions without a history are skipped. Errors as for the two calls it
+ * makes. */
+rb_status rb_plot_report_html(const rb_report *rep, const char *text_report,
+                              char **out, rb_diag *diag);
+
+#endif

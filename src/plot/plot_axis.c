@@ -1,0 +1,201 @@
+/* Axes: tick values that a reader can add up in their head (1, 2 or 5
+ * times a power of ten), panels that map data onto the figure, and their
+ * frames, grid, labels, reference lines and legends. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include "plot_internal.h"
+
+static double nice_step(double span, int target)
+{
+    double raw = span / (target > 1 ? target : 1);
+    double p = pow(10, floor(log10(raw)));
+    double m = raw / p;
+    if (m <= 1)
+        return p;
+    if (m <= 2)
+        return 2 * p;
+    if (m <= 5)
+        return 5 * p;
+    return 10 * p;
+}
+
+void rb_axis_nice(rb_axis *ax, double lo, double hi, int target, int round_out)
+{
+    double step, first, t;
+    int k;
+    if (!isfinite(lo))
+        lo = 0;
+    if (!isfinite(hi))
+        hi = 0;
+    if (!isfinite(hi - lo)) {   /* only a broken input gets here */
+        lo = -1;
+        hi = 1;
+    }
+    if (lo > hi) {
+        t = lo;
+        lo = hi;
+        hi = t;
+    }
+    if (hi - lo <= 1e-12 * fmax(fabs(lo), fabs(hi))) {
+        double w = lo != 0 ? 0.1 * fabs(lo) : 1;
+        lo -= w;
+        hi += w;
+    }
+    step = nice_step(hi - lo, target);
+    /* a target too small for the span could still give many ticks */
+    while ((hi - lo) / step > RB_PLOT_MAX_TICKS - 2)
+        step *= 2;
+    if (round_out) {
+        lo = floor(lo / step + 1e-9) * step;
+        hi = ceil(hi / step - 1e-9) * step;
+    }
+    ax->lo = lo;
+    ax->hi = hi;
+    ax->step = step;
+    ax->n_ticks = 0;
+    first = ceil(lo / step - 1e-9);
+    for (k = 0; k < RB_PLOT_MAX_TICKS; k++) {
+        t = (first + k) * step;
+        if (t > hi + 1e-9 * step)
+            break;
+        if (fabs(t) < 1e-9 * step)
+            t = 0;
+        ax->ticks[ax->n_ticks++] = t;
+    }
+    ax->decimals = step >= 1 ? 0 : (int)ceil(-log10(step) - 1e-9);
+    if (ax->decimals > 9)
+        ax->decimals = 9;
+}
+
+void rb_axis_label(const rb_axis *ax, double v, char *buf, size_t n)
+{
+    if (fabs(v) < 1e-9 * ax->step)
+        v = 0;
+    if (fabs(v) >= 1e6 || (v != 0 && ax->step < 1e-6))
+        snprintf(buf, n, "%.3g", v);
+    else
+        snprintf(buf, n, "%.*f", ax->decimals, v);
+}
+
+/* Map onto the panel; anything non-finite lands on the axis so that no
+ * "nan" can reach the SVG through a coordinate. */
+double rb_panel_x(const rb_panel *p, double x)
+{
+    double v = p->x0 + (x - p->xa.lo) / (p->xa.hi - p->xa.lo) * p->w;
+    return isfinite(v) ? v : p->x0;
+}
+
+double rb_panel_y(const rb_panel *p, double y)
+{
+    double v = p->y0 + p->h - (y - p->ya.lo) / (p->ya.hi - p->ya.lo) * p->h;
+    return isfinite(v) ? v : p->y0 + p->h;
+}
+
+void rb_panel_draw(rb_sbuf *b, const rb_panel *p, const char *y_title,
+                   int x_labels, const char *x_title)
+{
+    char lab[64];
+    int i;
+    rb_sbuf_puts(b, "<g class=\"grid\" stroke=\"#dddddd\" stroke-width=\"0.6\">\n");
+    for (i = 0; i < p->ya.n_ticks; i++) {
+        double y = rb_panel_y(p, p->ya.ticks[i]);
+        rb_sbuf_printf(b, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\"/>\n",
+                       p->x0, y, p->x0 + p->w, y);
+    }
+    for (i = 0; i < p->xa.n_ticks; i++) {
+        double x = rb_panel_x(p, p->xa.ticks[i]);
+        rb_sbuf_printf(b, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\"/>\n",
+                       x, p->y0, x, p->y0 + p->h);
+    }
+    rb_sbuf_puts(b, "</g>\n");
+    /* zero line: signs matter in every panel */
+    if (p->ya.lo < 0 && p->ya.hi > 0)
+        rb_sbuf_printf(b, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" "
+                       "stroke=\"#999999\" stroke-width=\"0.8\"/>\n",
+                       p->x0, rb_panel_y(p, 0), p->x0 + p->w, rb_panel_y(p, 0));
+    rb_sbuf_printf(b, "<rect class=\"frame\" x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" "
+                   "height=\"%.1f\" fill=\"none\" stroke=\"#333333\" "
+                   "stroke-width=\"0.8\"/>\n", p->x0, p->y0, p->w, p->h);
+    for (i = 0; i < p->ya.n_ticks; i++) {
+        rb_axis_label(&p->ya, p->ya.ticks[i], lab, sizeof lab);
+        rb_svg_text(b, p->x0 - 5, rb_panel_y(p, p->ya.ticks[i]) + 4, 11, "end",
+                    NULL, lab);
+    }
+    if (y_title) {
+        double cx = p->x0 - 52, cy = p->y0 + p->h / 2;
+        rb_sbuf_printf(b, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"12\" "
+                       "text-anchor=\"middle\" transform=\"rotate(-90 %.1f %.1f)\">",
+                       cx, cy, cx, cy);
+        rb_sbuf_escape(b, y_title);
+        rb_sbuf_puts(b, "</text>\n");
+    }
+    if (!x_labels)
+        return;
+    for (i = 0; i < p->xa.n_ticks; i++) {
+        rb_axis_label(&p->xa, p->xa.ticks[i], lab, sizeof lab);
+        rb_svg_text(b, rb_panel_x(p, p->xa.ticks[i]), p->y0 + p->h + 15, 11,
+                    "middle", NULL, lab);
+    }
+    if (x_title)
+        rb_svg_text(b, p->x0 + p->w / 2, p->y0 + p->h + 34, 12, "middle", NULL,
+                    x_title);
+}
+
+void rb_panel_hline(rb_sbuf *b, const rb_panel *p, double y, const char *colour)
+{
+    double py;
+    if (!isfinite(y) || y < p->ya.lo || y > p->ya.hi)
+        return;
+    py = rb_panel_y(p, y);
+    rb_sbuf_printf(b, "<line class=\"ref\" x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" "
+                   "y2=\"%.1f\" stroke=\"%s\" stroke-width=\"0.8\" "
+                   "stroke-dasharray=\"5 3\"/>\n", p->x0, py, p->x0 + p->w, py, colour);
+}
+
+void rb_panel_legend(rb_sbuf *b, const rb_panel *p, const char *const *names,
+                     const char *const *colours, int n)
+{
+    /* right-aligned entries, measured with an average glyph width */
+    double x = p->x0 + p->w - 6, y = p->y0 + 13;
+    int i;
+    for (i = n - 1; i >= 0; i--) {
+        double text_w = 6.0 * (double)strlen(names[i]);
+        double x_line = x - text_w - 26;
+        rb_sbuf_printf(b, "<rect x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"14\" "
+                       "fill=\"#ffffff\" fill-opacity=\"0.8\"/>\n",
+                       x_line - 2, y - 10, text_w + 30);
+        rb_sbuf_printf(b, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" "
+                       "stroke=\"%s\" stroke-width=\"2\"/>\n",
+                       x_line, y - 4, x_line + 20, y - 4, colours[i]);
+        rb_svg_text(b, x_line + 24, y, 11, "start", NULL, names[i]);
+        x = x_line - 10;
+    }
+}
+
+void rb_svg_open(rb_sbuf *b, double width, double height)
+{
+    rb_sbuf_printf(b, "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" "
+                   "width=\"%.0f\" height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\" "
+                   "font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\">\n",
+                   width, height, width, height);
+    rb_sbuf_printf(b, "<rect x=\"0\" y=\"0\" width=\"%.0f\" height=\"%.0f\" "
+                   "fill=\"#ffffff\"/>\n", width, height);
+}
+
+void rb_svg_close(rb_sbuf *b)
+{
+    rb_sbuf_puts(b, "</svg>\n");
+}
+
+void rb_svg_text(rb_sbuf *b, double x, double y, double size, const char *anchor,
+                 const char *weight, const char *s)
+{
+    rb_sbuf_printf(b, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"%.0f\" "
+                   "text-anchor=\"%s\"", x, y, size, anchor);
+    if (weight)
+        rb_sbuf_printf(b, " font-weight=\"%s\"", weight);
+    rb_sbuf_puts(b, ">");
+    rb_sbuf_escape(b, s);
+    rb_sbuf_puts(b, "</text>\n");
+}

@@ -1,0 +1,168 @@
+/* The growing text buffer of the renderers and XML escaping. A failed
+ * allocation only sets a flag, so drawing code can append without checking
+ * every call; rb_sbuf_finish turns the flag into RB_ERR_NOMEM once. */
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "plot_internal.h"
+
+static int reserve(rb_sbuf *b, size_t more)
+{
+    size_t cap;
+    char *p;
+    if (b->oom)
+        return 0;
+    if (b->n + more + 1 <= b->cap)
+        return 1;
+    cap = b->cap ? b->cap : 4096;
+    while (cap < b->n + more + 1) {
+        if (cap > ((size_t)-1) / 2) {
+            b->oom = 1;
+            return 0;
+        }
+        cap *= 2;
+    }
+    p = realloc(b->p, cap);
+    if (!p) {
+        b->oom = 1;
+        return 0;
+    }
+    b->p = p;
+    b->cap = cap;
+    return 1;
+}
+
+void rb_sbuf_putn(rb_sbuf *b, const char *s, size_t n)
+{
+    if (!reserve(b, n))
+        return;
+    memcpy(b->p + b->n, s, n);
+    b->n += n;
+    b->p[b->n] = '\0';
+}
+
+void rb_sbuf_puts(rb_sbuf *b, const char *s)
+{
+    rb_sbuf_putn(b, s, strlen(s));
+}
+
+void rb_sbuf_printf(rb_sbuf *b, const char *fmt, ...)
+{
+    char small[256];
+    va_list ap;
+    int len;
+    va_start(ap, fmt);
+    len = vsnprintf(small, sizeof small, fmt, ap);
+    va_end(ap);
+    if (len < 0) {
+        b->oom = 1;
+        return;
+    }
+    if ((size_t)len < sizeof small) {
+        rb_sbuf_putn(b, small, (size_t)len);
+        return;
+    }
+    if (!reserve(b, (size_t)len))
+        return;
+    va_start(ap, fmt);
+    vsnprintf(b->p + b->n, (size_t)len + 1, fmt, ap);
+    va_end(ap);
+    b->n += (size_t)len;
+}
+
+/* Length of the valid UTF-8 sequence at s (1 to 4), or 0 if it is not one.
+ * Overlong forms, surrogates and code points past U+10FFFF are invalid,
+ * as are U+FFFE and U+FFFF, which XML does not allow either. */
+static size_t utf8_len(const unsigned char *s)
+{
+    unsigned c = s[0];
+    size_t n, i;
+    unsigned long cp;
+    if (c < 0x80)
+        return 1;
+    if (c >= 0xC2 && c <= 0xDF) {
+        n = 2;
+        cp = c & 0x1F;
+    } else if (c >= 0xE0 && c <= 0xEF) {
+        n = 3;
+        cp = c & 0x0F;
+    } else if (c >= 0xF0 && c <= 0xF4) {
+        n = 4;
+        cp = c & 0x07;
+    } else {
+        return 0;
+    }
+    for (i = 1; i < n; i++) {
+        if ((s[i] & 0xC0) != 0x80)
+            return 0;
+        cp = (cp << 6) | (s[i] & 0x3F);
+    }
+    if ((n == 3 && cp < 0x800) || (n == 4 && cp < 0x10000) || cp > 0x10FFFF
+        || (cp >= 0xD800 && cp <= 0xDFFF) || cp == 0xFFFE || cp == 0xFFFF)
+        return 0;
+    return n;
+}
+
+void rb_sbuf_escape(rb_sbuf *b, const char *s)
+{
+    const unsigned char *p = (const unsigned char *)s;
+    if (!s)
+        return;
+    while (*p) {
+        const unsigned char *run = p;
+        size_t k;
+        /* copy plain bytes in one go: escaping is per character */
+        while (*p >= 0x20 && *p < 0x80 && *p != '&' && *p != '<' && *p != '>'
+               && *p != '"' && *p != '\'')
+            p++;
+        if (p > run)
+            rb_sbuf_putn(b, (const char *)run, (size_t)(p - run));
+        if (!*p)
+            break;
+        switch (*p) {
+        case '&': rb_sbuf_puts(b, "&amp;"); p++; continue;
+        case '<': rb_sbuf_puts(b, "&lt;"); p++; continue;
+        case '>': rb_sbuf_puts(b, "&gt;"); p++; continue;
+        case '"': rb_sbuf_puts(b, "&quot;"); p++; continue;
+        case '\'': rb_sbuf_puts(b, "&#39;"); p++; continue;
+        case '\t': case '\n': rb_sbuf_putn(b, (const char *)p, 1); p++; continue;
+        default: break;
+        }
+        if (*p < 0x20) {        /* not allowed in XML 1.0, even escaped */
+            p++;
+            continue;
+        }
+        k = utf8_len(p);
+        if (k) {
+            rb_sbuf_putn(b, (const char *)p, k);
+            p += k;
+        } else {
+            rb_sbuf_puts(b, "\xEF\xBF\xBD");
+            p++;
+        }
+    }
+}
+
+rb_status rb_sbuf_finish(rb_sbuf *b, char **out, rb_diag *diag)
+{
+    if (b->oom || !b->p) {
+        rb_sbuf_free(b);
+        *out = NULL;
+        if (diag)
+            snprintf(diag->msg, sizeof diag->msg, "out of memory while drawing");
+        return RB_ERR_NOMEM;
+    }
+    *out = b->p;
+    b->p = NULL;
+    b->n = b->cap = 0;
+    return RB_OK;
+}
+
+void rb_sbuf_free(rb_sbuf *b)
+{
+    free(b->p);
+    b->p = NULL;
+    b->n = b->cap = 0;
+    b->oom = 0;
+}

@@ -1,0 +1,111 @@
+/* The HTML page of a check: the text report and the figures inline, so the
+ * page can be mailed or archived as one file. It is written as XHTML-
+ * compatible markup (closed empty elements, only the XML entities) so that
+ * an XML parser accepts it as well as a browser. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "plot_internal.h"
+
+static const char style[] =
+    "body{font-family:\"DejaVu Sans\",Helvetica,Arial,sans-serif;margin:24px;"
+    "color:#222222;background:#ffffff}\n"
+    "h1{font-size:20px}\n"
+    "pre{font-family:\"DejaVu Sans Mono\",Menlo,Consolas,monospace;font-size:12px;"
+    "background:#f7f7f7;border:1px solid #dddddd;padding:12px;overflow-x:auto}\n"
+    "figure{margin:24px 0}\n"
+    "svg{max-width:100%;height:auto;border:1px solid #eeeeee}\n";
+
+/* The <svg> element of a figure, past any XML declaration and whitespace. */
+static const char *svg_start(const char *s)
+{
+    s += strspn(s, " \t\r\n");
+    if (strncmp(s, "<?xml", 5) == 0) {
+        const char *e = strstr(s, "?>");
+        if (!e)
+            return NULL;
+        s = e + 2;
+        s += strspn(s, " \t\r\n");
+    }
+    return strncmp(s, "<svg", 4) == 0 ? s : NULL;
+}
+
+rb_status rb_plot_html_page(const char *title, const char *text_report,
+                            const char *const *svgs, size_t n_svgs,
+                            char **out, rb_diag *diag)
+{
+    rb_sbuf b = {0};
+    size_t i;
+    *out = NULL;
+    for (i = 0; i < n_svgs; i++) {
+        if (!svgs || !svgs[i] || !svg_start(svgs[i])) {
+            if (diag)
+                snprintf(diag->msg, sizeof diag->msg,
+                         "figure %zu is not an <svg> element", i + 1);
+            return RB_ERR_INVALID;
+        }
+    }
+    if (!title)
+        title = "rockbolt";
+    rb_sbuf_puts(&b, "<!DOCTYPE html>\n<html xmlns=\"http://www.w3.org/1999/xhtml\" "
+                 "lang=\"en\">\n<head>\n<meta charset=\"utf-8\"/>\n<title>");
+    rb_sbuf_escape(&b, title);
+    rb_sbuf_puts(&b, "</title>\n<style>\n");
+    rb_sbuf_puts(&b, style);
+    rb_sbuf_puts(&b, "</style>\n</head>\n<body>\n<h1>");
+    rb_sbuf_escape(&b, title);
+    rb_sbuf_puts(&b, "</h1>\n");
+    if (text_report) {
+        rb_sbuf_puts(&b, "<pre class=\"report\">");
+        rb_sbuf_escape(&b, text_report);
+        rb_sbuf_puts(&b, "</pre>\n");
+    }
+    for (i = 0; i < n_svgs; i++) {
+        rb_sbuf_printf(&b, "<figure class=\"figure\" data-figure=\"%zu\">\n", i + 1);
+        rb_sbuf_puts(&b, svg_start(svgs[i]));
+        rb_sbuf_puts(&b, "</figure>\n");
+    }
+    rb_sbuf_puts(&b, "</body>\n</html>\n");
+    return rb_sbuf_finish(&b, out, diag);
+}
+
+rb_status rb_plot_report_html(const rb_report *rep, const char *text_report,
+                              char **out, rb_diag *diag)
+{
+    char **svgs;
+    char title[512];
+    size_t i, n = 0;
+    rb_status st = RB_OK;
+    *out = NULL;
+    if (!rep) {
+        if (diag)
+            snprintf(diag->msg, sizeof diag->msg, "no report to draw");
+        return RB_ERR_INVALID;
+    }
+    svgs = calloc(rep->n_motions ? rep->n_motions : 1, sizeof *svgs);
+    if (!svgs) {
+        if (diag)
+            snprintf(diag->msg, sizeof diag->msg, "out of memory while drawing");
+        return RB_ERR_NOMEM;
+    }
+    for (i = 0; i < rep->n_motions && st == RB_OK; i++) {
+        const rb_history *h = rep->motions[i].result ? rep->motions[i].result->history
+                                                      : NULL;
+        if (!h || h->n < 2)
+            continue;       /* a motion without a history has no figure */
+        st = rb_plot_history_svg(rep, i, &svgs[n], diag);
+        if (st == RB_OK)
+            n++;
+    }
+    if (st == RB_OK) {
+        snprintf(title, sizeof title, "%s: %.200s",
+                 rep->pass ? "PASS" : "FAIL",
+                 rep->kase && rep->kase->name ? rep->kase->name : "rockbolt check");
+        st = rb_plot_html_page(title, text_report, (const char *const *)svgs, n, out,
+                               diag);
+    }
+    for (i = 0; i < n; i++)
+        free(svgs[i]);
+    free(svgs);
+    return st;
+}

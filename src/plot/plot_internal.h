@@ -1,0 +1,105 @@
+/* What the figure renderers share: a growing text buffer that remembers an
+ * allocation failure instead of reporting each one, XML escaping, nice
+ * axis ticks, panels with their axes, and decimated series. Private to
+ * src/plot. */
+#ifndef RB_PLOT_INTERNAL_H
+#define RB_PLOT_INTERNAL_H
+
+#include <stddef.h>
+#include "rockbolt/plot.h"
+
+/* ---- Text buffer ---------------------------------------------------------- */
+
+typedef struct {
+    char *p;       /* owned; NUL-terminated while !oom */
+    size_t n, cap;
+    int oom;       /* an append failed: the text is incomplete */
+} rb_sbuf;
+
+void rb_sbuf_puts(rb_sbuf *b, const char *s);
+void rb_sbuf_putn(rb_sbuf *b, const char *s, size_t n);
+#if defined(__GNUC__)
+__attribute__((format(printf, 2, 3)))
+#endif
+void rb_sbuf_printf(rb_sbuf *b, const char *fmt, ...);
+/* Append s with & < > " ' escaped, control characters other than tab and
+ * newline dropped and invalid UTF-8 replaced by U+FFFD, so that the result
+ * is always well-formed XML text or attribute content. NULL appends
+ * nothing. */
+void rb_sbuf_escape(rb_sbuf *b, const char *s);
+/* Hand the text over: *out gets it (RB_OK) or NULL (RB_ERR_NOMEM, with
+ * diag->msg set). The buffer is empty afterwards either way. */
+rb_status rb_sbuf_finish(rb_sbuf *b, char **out, rb_diag *diag);
+void rb_sbuf_free(rb_sbuf *b);
+
+/* ---- Axes ------------------------------------------------------------------ */
+
+#define RB_PLOT_MAX_TICKS 16
+
+/* An axis range rounded out to nice ticks (1, 2 or 5 times a power of 10). */
+typedef struct {
+    double lo, hi;                  /* range drawn */
+    double step;
+    double ticks[RB_PLOT_MAX_TICKS];
+    int n_ticks;
+    int decimals;                   /* for the tick labels */
+} rb_axis;
+
+/* Ticks for data in [lo, hi] (any order, non-finite ends taken as 0), about
+ * target ticks. With round_out the range grows to the outer ticks;
+ * otherwise it stays [lo, hi] and only ticks inside are kept. A zero-width
+ * range is widened around its value. */
+void rb_axis_nice(rb_axis *ax, double lo, double hi, int target, int round_out);
+
+/* Format v as a tick label of ax (no "-0"). */
+void rb_axis_label(const rb_axis *ax, double v, char *buf, size_t n);
+
+/* A rectangle of the figure with an x and a y axis mapped onto it. */
+typedef struct {
+    double x0, y0, w, h;            /* SVG user units, y0 is the top */
+    rb_axis xa, ya;
+} rb_panel;
+
+double rb_panel_x(const rb_panel *p, double x);
+double rb_panel_y(const rb_panel *p, double y);
+
+/* Frame, grid lines and y tick labels of p, and the y axis title (rotated,
+ * left of the labels). With x_labels the x tick labels and x_title go
+ * below the panel. */
+void rb_panel_draw(rb_sbuf *b, const rb_panel *p, const char *y_title,
+                   int x_labels, const char *x_title);
+
+/* A dashed horizontal reference line at y, if y is inside the panel. */
+void rb_panel_hline(rb_sbuf *b, const rb_panel *p, double y, const char *colour);
+
+/* Legend entries in the panel's top right corner: a short line of each
+ * colour and its name. Drawn with <line> and <text>, never <path>. */
+void rb_panel_legend(rb_sbuf *b, const rb_panel *p, const char *const *names,
+                     const char *const *colours, int n);
+
+/* ---- Series ---------------------------------------------------------------- */
+
+/* One <path> for the points (x[i], scale * y[i]), i < n, in panel p. When
+ * there are more than two points per pixel column, each column keeps its
+ * minimum and maximum, in the order they occur. A non-finite point ends
+ * the current subpath. Always exactly one <path> element, even when no
+ * point is finite (its d is then empty). dash may be NULL; name goes
+ * into the path's data-series attribute. */
+void rb_series_path(rb_sbuf *b, const rb_panel *p, const double *x,
+                    const double *y, size_t n, double scale,
+                    const char *colour, const char *dash, const char *name);
+
+/* Smallest and largest finite value of scale * y[i]; returns 0 if none. */
+int rb_series_range(const double *y, size_t n, double scale, double *lo,
+                    double *hi);
+
+/* ---- Common SVG pieces ---------------------------------------------------- */
+
+/* <svg ...> with its size and the shared font, and a white background. */
+void rb_svg_open(rb_sbuf *b, double width, double height);
+void rb_svg_close(rb_sbuf *b);
+/* A text element; s is escaped. anchor is "start", "middle" or "end". */
+void rb_svg_text(rb_sbuf *b, double x, double y, double size, const char *anchor,
+                 const char *weight, const char *s);
+
+#endif
