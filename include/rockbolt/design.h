@@ -232,4 +232,41 @@ typedef struct {
 rb_status rb_code_static(const rb_model *model, const rb_code_inputs *in,
                          rb_code_result *out, rb_diag *diag);
 
+/* ---- Everything a case asks for -------------------------------------------- */
+
+/* The design of one motion of a case. */
+typedef struct {
+    rb_design_factor_result no_yield;  /* bolts stay elastic */
+    rb_design_factor_result no_break;  /* bolts may yield, usage below the
+                                          case's limit (1.0 unless the case
+                                          sets one for no-break) */
+    int has_gap;                       /* 0 for a model without bolts */
+    rb_gap_result gap;                 /* against the case's own criteria */
+    rb_sweep *sweeps;                  /* owned: the case's amplitude sweeps
+                                          of this motion, n_sweeps of them */
+    size_t n_sweeps;
+} rb_motion_design;
+
+typedef struct {
+    rb_criteria no_yield, no_break, gap_criteria; /* as judged */
+    rb_motion_design *motions;         /* owned, one per motion of the case */
+    size_t n_motions;
+    rb_sweep *sweeps;                  /* owned: the frequency sweeps */
+    size_t n_sweeps;
+    int has_code;                      /* the case gave design.code */
+    rb_code_result code;
+} rb_case_design;
+
+/* Run the whole design of a case: for every motion the two design factors,
+ * the recommended gap ratio and the amplitude sweeps; once for the case the
+ * frequency sweeps and the code-static comparison. Both design factors keep
+ * the case's optional limits on shear and rotation. out is owned by the
+ * caller (rb_case_design_free, also after an error). Errors as for
+ * rb_design_factor; diag->key then names the motion and the search. */
+rb_status rb_design_case(const rb_case *c, int n_threads, rb_case_design *out,
+                         rb_diag *diag);
+
+/* Free what a case design owns; accepts NULL and a zeroed design. */
+void rb_case_design_free(rb_case_design *d);
+
 #endif

@@ -17,6 +17,7 @@
 #include "rockbolt/solve.h"
 #include "rockbolt/criteria.h"
 #include "rockbolt/case.h"
+#include "rockbolt/design.h"
 
 /* Bumped whenever a JSON field is renamed, removed or changes meaning;
  * adding a field does not bump it. */
@@ -38,6 +39,8 @@ typedef struct {
     const rb_report_motion *motions; /* borrowed array of n_motions */
     size_t n_motions;
     int with_history;              /* JSON: include each motion's history */
+    const rb_case_design *design;  /* borrowed; NULL for a check: the
+                                      reports then have no design parts */
     int pass;                      /* 1 when every motion passes */
     char reason[384];              /* one line: what governed the verdict */
 } rb_report;

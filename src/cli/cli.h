@@ -21,6 +21,7 @@ typedef enum {
     RB_CMD_HELP,
     RB_CMD_VERSION,
     RB_CMD_CHECK,
+    RB_CMD_DESIGN,
     RB_CMD_INIT
 } rb_cli_command;
 
@@ -32,13 +33,25 @@ typedef struct {
     const char *history_path; /* --history FILE, or NULL */
     int quiet;                /* --quiet: nothing on stdout */
     const char *init_path;    /* init: the file to create */
+    const char *sweep_csv_path; /* design: --sweep-csv FILE, or NULL */
+    int threads;              /* design: -j N; 0: every processor */
 } rb_cli_opts;
 
 /* Parse argv into o. Returns RB_EXIT_PASS, or RB_EXIT_USAGE after printing
  * what is wrong. Strings in o point into argv. */
 rb_exit rb_cli_args_parse(int argc, char **argv, rb_cli_opts *o);
 
+/* check and design share one flow; design adds the searches. */
 rb_exit rb_cli_check_run(const rb_cli_opts *o);
+
+/* The design step of `rockbolt design`, between solving and reporting:
+ * runs rb_design_case and prints a failure. */
+rb_exit rb_cli_design_step(const rb_cli_opts *o, const rb_case *c, rb_case_design *d);
+
+/* The file name of the i-th of n sweep CSVs: the --sweep-csv name itself
+ * when n is 1, else with "-<i+1>" before its extension. NULL on overflow. */
+const char *rb_cli_sweep_csv_name(const char *base, size_t i, size_t n, char *buf,
+                                  size_t size);
 rb_exit rb_cli_init_run(const rb_cli_opts *o);
 
 /* --help on stdout; --version on stdout. */

@@ -4,6 +4,7 @@
  * "--json=FILE"; "--" ends the options. Every mistake is a usage error
  * (exit 2) with one line naming the offending argument, and is found
  * before anything is read or written. */
+#include <stdlib.h>
 #include <string.h>
 #include "cli.h"
 
@@ -49,10 +50,53 @@ static rb_exit take_value(int argc, char **argv, int *i, const char *name,
     return RB_EXIT_PASS;
 }
 
-/* One option of "check"; RB_EXIT_USAGE if arg is not one. */
+/* -j N / --threads N: a whole number from 1 to 1024. */
+static rb_exit take_threads(int argc, char **argv, int *i, const char *inline_val,
+                            rb_cli_opts *o)
+{
+    const char *v = inline_val;
+    char *end;
+    long n;
+    if (!v) {
+        if (*i + 1 >= argc) {
+            rb_cli_error(NULL, NULL, "option '-j' needs a number of threads");
+            return RB_EXIT_USAGE;
+        }
+        v = argv[++*i];
+    }
+    n = strtol(v, &end, 10);
+    if (end == v || *end || n < 1 || n > 1024) {
+        rb_cli_error(NULL, NULL, "option '-j' needs a whole number of threads from 1 "
+                     "to 1024 (got '%s')", v);
+        return RB_EXIT_USAGE;
+    }
+    o->threads = (int)n;
+    return RB_EXIT_PASS;
+}
+
+/* Options only `design` takes; RB_EXIT_INTERNAL when arg is not one. */
+static rb_exit design_option(int argc, char **argv, int *i, rb_cli_opts *o)
+{
+    const char *arg = argv[*i], *val = NULL;
+    if (opt_is(arg, "--sweep-csv", &val))
+        return take_value(argc, argv, i, "--sweep-csv", val, &o->sweep_csv_path);
+    if (opt_is(arg, "--threads", &val) || opt_is(arg, "-j", &val))
+        return take_threads(argc, argv, i, val, o);
+    if (strncmp(arg, "-j", 2) == 0 && arg[2])
+        return take_threads(argc, argv, i, arg + 2, o);
+    return RB_EXIT_INTERNAL;
+}
+
+/* One option of "check" or "design"; RB_EXIT_USAGE if arg is not one. */
 static rb_exit check_option(int argc, char **argv, int *i, rb_cli_opts *o)
 {
     const char *arg = argv[*i], *val = NULL;
+    const char *cmd = o->command == RB_CMD_DESIGN ? "design" : "check";
+    if (o->command == RB_CMD_DESIGN) {
+        rb_exit e = design_option(argc, argv, i, o);
+        if (e != RB_EXIT_INTERNAL)
+            return e;
+    }
     if (opt_is(arg, "--json", &val))
         return take_value(argc, argv, i, "--json", val, &o->json_path);
     if (opt_is(arg, "--text", &val))
@@ -63,19 +107,21 @@ static rb_exit check_option(int argc, char **argv, int *i, rb_cli_opts *o)
         o->quiet = 1;
         return RB_EXIT_PASS;
     }
-    rb_cli_error(NULL, NULL, "unknown option '%s' for 'check' (see rockbolt --help)",
-                 arg);
+    rb_cli_error(NULL, NULL, "unknown option '%s' for '%s' (see rockbolt --help)",
+                 arg, cmd);
     return RB_EXIT_USAGE;
 }
 
 /* Two outputs, or an output and the case, must not be the same file. */
 static rb_exit check_distinct(const rb_cli_opts *o)
 {
-    const char *p[4] = { o->json_path, o->text_path, o->history_path, o->case_path };
-    static const char *const what[4] = { "--json", "--text", "--history", "the case" };
+    const char *p[5] = { o->json_path, o->text_path, o->history_path,
+                         o->sweep_csv_path, o->case_path };
+    static const char *const what[5] = { "--json", "--text", "--history",
+                                         "--sweep-csv", "the case" };
     int a, b;
-    for (a = 0; a < 3; a++)
-        for (b = a + 1; b < 4; b++)
+    for (a = 0; a < 4; a++)
+        for (b = a + 1; b < 5; b++)
             if (p[a] && p[b] && strcmp(p[a], p[b]) == 0) {
                 rb_cli_error(p[a], what[a], "same file as %s", what[b]);
                 return RB_EXIT_USAGE;
@@ -86,7 +132,8 @@ static rb_exit check_distinct(const rb_cli_opts *o)
 /* Positional arguments and options after the command name. */
 static rb_exit parse_rest(int argc, char **argv, rb_cli_opts *o)
 {
-    const char **positional = o->command == RB_CMD_CHECK ? &o->case_path : &o->init_path;
+    int takes_case = o->command == RB_CMD_CHECK || o->command == RB_CMD_DESIGN;
+    const char **positional = takes_case ? &o->case_path : &o->init_path;
     int i, options_done = 0;
     for (i = 2; i < argc; i++) {
         const char *arg = argv[i];
@@ -100,7 +147,7 @@ static rb_exit parse_rest(int argc, char **argv, rb_cli_opts *o)
             continue;
         }
         if (!options_done && arg[0] == '-' && arg[1] != '\0') {
-            if (o->command != RB_CMD_CHECK) {
+            if (!takes_case) {
                 rb_cli_error(NULL, NULL, "unknown option '%s' for 'init' "
                              "(see rockbolt --help)", arg);
                 return RB_EXIT_USAGE;
@@ -138,6 +185,8 @@ rb_exit rb_cli_args_parse(int argc, char **argv, rb_cli_opts *o)
     }
     if (!strcmp(cmd, "check"))
         o->command = RB_CMD_CHECK;
+    else if (!strcmp(cmd, "design"))
+        o->command = RB_CMD_DESIGN;
     else if (!strcmp(cmd, "init"))
         o->command = RB_CMD_INIT;
     else {
@@ -146,11 +195,15 @@ rb_exit rb_cli_args_parse(int argc, char **argv, rb_cli_opts *o)
     }
     if ((e = parse_rest(argc, argv, o)) != RB_EXIT_PASS || o->command == RB_CMD_HELP)
         return e;
-    if (o->command == RB_CMD_CHECK && !o->case_path) {
-        rb_cli_error(NULL, NULL, "'check' needs a case file: rockbolt check CASE.yaml");
+    if (o->command == RB_CMD_INIT) {
+        if (!o->init_path)
+            o->init_path = "case.yaml";
+        return RB_EXIT_PASS;
+    }
+    if (!o->case_path) {
+        const char *c = o->command == RB_CMD_DESIGN ? "design" : "check";
+        rb_cli_error(NULL, NULL, "'%s' needs a case file: rockbolt %s CASE.yaml", c, c);
         return RB_EXIT_USAGE;
     }
-    if (o->command == RB_CMD_INIT && !o->init_path)
-        o->init_path = "case.yaml";
-    return o->command == RB_CMD_CHECK ? check_distinct(o) : RB_EXIT_PASS;
+    return check_distinct(o);
 }

@@ -1,4 +1,5 @@
-/* "rockbolt check CASE.yaml": load, solve every motion, judge, report.
+/* "rockbolt check CASE.yaml": load, solve every motion, judge, report;
+ * "rockbolt design CASE.yaml" adds the design searches before reporting.
  *
  * Order matters for the exit-code contract: output paths are checked and
  * the case and the template loaded before any solving, so usage and input
@@ -20,6 +21,7 @@ typedef struct {
     char *tmpl;              /* report template text, owned */
     const char *tmpl_origin;
     char *json, *text;       /* rendered reports, owned */
+    rb_case_design design;   /* design only; owned */
 } check_run;
 
 static void run_free(check_run *r)
@@ -33,16 +35,19 @@ static void run_free(check_run *r)
     free(r->tmpl);
     free(r->json);
     free(r->text);
+    rb_case_design_free(&r->design);
     rb_case_free(&r->c);
 }
 
 /* Every output's directory must exist and be writable before we start. */
 static rb_exit check_output_paths(const rb_cli_opts *o)
 {
-    const char *paths[3] = { o->json_path, o->text_path, o->history_path };
-    static const char *const opts[3] = { "--json", "--text", "--history" };
+    const char *paths[4] = { o->json_path, o->text_path, o->history_path,
+                             o->sweep_csv_path };
+    static const char *const opts[4] = { "--json", "--text", "--history",
+                                         "--sweep-csv" };
     int i;
-    for (i = 0; i < 3; i++) {
+    for (i = 0; i < 4; i++) {
         rb_diag d;
         rb_diag_clear(&d);
         if (paths[i] && rb_outfile_check(paths[i], &d) != RB_OK) {
@@ -160,12 +165,77 @@ static rb_exit render_reports(const rb_cli_opts *o, check_run *r)
     return RB_EXIT_PASS;
 }
 
-/* Fill one opened output: index 0 JSON, 1 text, 2 history. */
-static rb_status fill_output(int which, FILE *fp, const check_run *r, rb_diag *d)
+typedef enum { OUT_JSON, OUT_TEXT, OUT_HISTORY, OUT_SWEEP } out_kind;
+
+/* One output file of the run; sweeps are numbered frequency sweeps first,
+ * then each motion's amplitude sweeps, in case order. */
+typedef struct {
+    out_kind kind;
+    const char *path;
+    char name[4096];         /* path storage for derived sweep names */
+    const rb_sweep *sweep;
+} out_file;
+
+static size_t count_sweeps(const rb_case_design *d)
 {
-    const char *s = which == 0 ? r->json : r->text;
-    if (which == 2)
+    size_t i, n = d->n_sweeps;
+    for (i = 0; i < d->n_motions; i++)
+        n += d->motions[i].n_sweeps;
+    return n;
+}
+
+static const rb_sweep *sweep_at(const rb_case_design *d, size_t k)
+{
+    size_t i;
+    if (k < d->n_sweeps)
+        return &d->sweeps[k];
+    k -= d->n_sweeps;
+    for (i = 0; i < d->n_motions; i++) {
+        if (k < d->motions[i].n_sweeps)
+            return &d->motions[i].sweeps[k];
+        k -= d->motions[i].n_sweeps;
+    }
+    return NULL;
+}
+
+/* The list of outputs asked for; *n_out set. NULL (after printing) if the
+ * list cannot be made. */
+static out_file *list_outputs(const rb_cli_opts *o, const check_run *r, size_t *n_out)
+{
+    size_t n_sw = o->sweep_csv_path ? count_sweeps(&r->design) : 0, n = 0, k;
+    out_file *f = calloc(3 + n_sw, sizeof *f);
+    if (!f) {
+        rb_cli_error(NULL, NULL, "out of memory");
+        return NULL;
+    }
+    if (o->json_path)
+        f[n].kind = OUT_JSON, f[n++].path = o->json_path;
+    if (o->text_path)
+        f[n].kind = OUT_TEXT, f[n++].path = o->text_path;
+    if (o->history_path)
+        f[n].kind = OUT_HISTORY, f[n++].path = o->history_path;
+    for (k = 0; k < n_sw; k++, n++) {
+        f[n].kind = OUT_SWEEP;
+        f[n].sweep = sweep_at(&r->design, k);
+        f[n].path = rb_cli_sweep_csv_name(o->sweep_csv_path, k, n_sw, f[n].name,
+                                          sizeof f[n].name);
+        if (!f[n].path) {
+            rb_cli_error(o->sweep_csv_path, "--sweep-csv", "file name too long");
+            free(f);
+            return NULL;
+        }
+    }
+    *n_out = n;
+    return f;
+}
+
+static rb_status fill_output(const out_file *of, FILE *fp, const check_run *r, rb_diag *d)
+{
+    const char *s = of->kind == OUT_JSON ? r->json : r->text;
+    if (of->kind == OUT_HISTORY)
         return rb_history_write_csv(fp, &r->rep, d);
+    if (of->kind == OUT_SWEEP)
+        return rb_sweep_write_csv(of->sweep, fp);
     if (fwrite(s, 1, strlen(s), fp) != strlen(s)) {
         snprintf(d->msg, sizeof d->msg, "cannot write");
         return RB_ERR_IO;
@@ -177,29 +247,34 @@ static rb_status fill_output(int which, FILE *fp, const check_run *r, rb_diag *d
  * all: an error before the renames leaves no output touched. */
 static rb_exit write_outputs(const rb_cli_opts *o, check_run *r)
 {
-    const char *paths[3] = { o->json_path, o->text_path, o->history_path };
-    rb_outfile f[3];
+    size_t n = 0, i;
+    out_file *of = list_outputs(o, r, &n);
+    rb_outfile *f;
     rb_status st = RB_OK;
     rb_diag d;
-    int i;
-    memset(f, 0, sizeof f);
+    if (!of)
+        return RB_EXIT_INTERNAL;
+    if (!(f = calloc(n ? n : 1, sizeof *f))) {
+        free(of);
+        rb_cli_error(NULL, NULL, "out of memory");
+        return RB_EXIT_INTERNAL;
+    }
     rb_diag_clear(&d);
-    for (i = 0; i < 3 && st == RB_OK; i++) {
-        if (!paths[i])
-            continue;
-        st = rb_outfile_open(&f[i], paths[i], 0, &d);
+    for (i = 0; i < n && st == RB_OK; i++) {
+        st = rb_outfile_open(&f[i], of[i].path, 0, &d);
         if (st == RB_OK)
-            st = fill_output(i, f[i].fp, r, &d);
+            st = fill_output(&of[i], f[i].fp, r, &d);
         if (st == RB_OK)
             st = rb_outfile_finish(&f[i], &d);
         if (st != RB_OK && !d.file[0])
-            snprintf(d.file, sizeof d.file, "%s", paths[i]);
+            snprintf(d.file, sizeof d.file, "%s", of[i].path);
     }
-    for (i = 0; i < 3 && st == RB_OK; i++)
-        if (paths[i])
-            st = rb_outfile_commit(&f[i], &d);
-    for (i = 0; i < 3; i++)
+    for (i = 0; i < n && st == RB_OK; i++)
+        st = rb_outfile_commit(&f[i], &d);
+    for (i = 0; i < n; i++)
         rb_outfile_abort(&f[i]);
+    free(f);
+    free(of);
     if (st != RB_OK) {
         rb_cli_diag_print(&d);
         return RB_EXIT_INTERNAL;
@@ -219,6 +294,10 @@ rb_exit rb_cli_check_run(const rb_cli_opts *o)
         e = prepare(o, &r);
     if (e == RB_EXIT_PASS)
         e = solve_all(o, &r);
+    if (e == RB_EXIT_PASS && o->command == RB_CMD_DESIGN) {
+        e = rb_cli_design_step(o, &r.c, &r.design);
+        r.rep.design = &r.design;
+    }
     if (e == RB_EXIT_PASS)
         e = render_reports(o, &r);
     if (e == RB_EXIT_PASS)

@@ -16,6 +16,7 @@ int main(int argc, char **argv)
         rb_cli_version_print();
         return RB_EXIT_PASS;
     case RB_CMD_CHECK:
+    case RB_CMD_DESIGN:
         return (int)rb_cli_check_run(&o);
     case RB_CMD_INIT:
         return (int)rb_cli_init_run(&o);

@@ -134,6 +134,26 @@ static void rb_code_flag(rb_cctx *c, rb_ynode *m, const char *key, int *out)
         rb_cv_bool(c, v, k, out);
 }
 
+/* A factor of the other edition is a mix-up the engineer should hear of,
+ * not a value to ignore. */
+static void reject_other_edition(rb_cctx *c, rb_ynode *m, int e16)
+{
+    static const char *const only16[] = {"ap", "rp", NULL};
+    static const char *const only22[] = {"car", "rpo", "ta", "r", "ie", "omega0", NULL};
+    const char *const *k;
+    for (k = e16 ? only22 : only16; *k; k++) {
+        rb_yentry *e = rb_ymap_find(m, *k);
+        char key[RB_CASE_KEY_MAX];
+        if (!e)
+            continue;
+        e->used = 1;
+        rb_case_keypath(key, "design.code", *k);
+        rb_cctx_error(c, e->value, key, "'%s' belongs to ASCE %s, but the edition is "
+                      "ASCE %s (7-16 takes ap and rp; 7-22 takes car, rpo, ta, r, ie "
+                      "and omega0)", *k, e16 ? "7-22" : "7-16", e16 ? "7-16" : "7-22");
+    }
+}
+
 static void rb_read_code(rb_cctx *c, rb_ynode *m, rb_case *cs)
 {
     static const char *const editions[] = {"ASCE 7-16", "ASCE 7-22", NULL};
@@ -155,6 +175,7 @@ static void rb_read_code(rb_cctx *c, rb_ynode *m, rb_case *cs)
     rb_code_factor(c, m, "ip", 0, &in->ip);
     rb_cv_number(c, m, "design.code", "z_over_h", 1, RB_DIM_RATIO, 0, 1, 1, 1,
                  &in->z_over_h);
+    reject_other_edition(c, m, e16);
     rb_code_factor(c, m, "ap", e16, &in->ap);
     rb_code_factor(c, m, "rp", e16, &in->rp);
     rb_code_factor(c, m, "car", !e16, &in->car);

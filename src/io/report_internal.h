@@ -32,4 +32,33 @@ const char *rb_report_formulation_str(rb_formulation form);
 const char *rb_report_criterion_str(rb_criterion_kind kind);
 const char *rb_report_side_str(int side); /* RB_LEFT, RB_RIGHT */
 
+/* ---- report_text_vars.c: template variable tables ---------------------- */
+#define RB_TXT_MAX_VARS 96 /* per scope; an assert guards it */
+
+/* A table being filled; holds at most RB_TXT_MAX_VARS (asserted). */
+typedef struct {
+    rb_tvar *v;
+    size_t n;
+} rb_tvars;
+rb_tvar *rb_tv_add(rb_tvars *t, const char *name, rb_tval_kind kind);
+/* A number; NAN (a ratio without a denominator) renders as "n/a". */
+void rb_tv_num(rb_tvars *t, const char *name, double x);
+/* x when have, else "n/a". */
+void rb_tv_opt(rb_tvars *t, const char *name, int have, double x);
+void rb_tv_int(rb_tvars *t, const char *name, long x);
+/* A string; NULL renders as "n/a" and is false in a section. */
+void rb_tv_str(rb_tvars *t, const char *name, const char *s);
+const char *rb_yes_no(int b);
+
+/* ---- report_text_design.c: the design lists of the text report ---------- */
+typedef struct rb_txt_arena rb_txt_arena;
+rb_txt_arena *rb_txt_arena_new(void);        /* NULL when out of memory */
+void rb_txt_arena_free(rb_txt_arena *a);     /* accepts NULL */
+/* The top-level list "design" and a motion's list "motion_design": one item
+ * when r->design is set, none otherwise. Tables live in a. */
+rb_status rb_report_text_case_design(const rb_report *r, rb_txt_arena *a,
+                                     rb_tlist *out);
+rb_status rb_report_text_motion_design(const rb_report *r, size_t i, rb_txt_arena *a,
+                                       rb_tlist *out);
+
 #endif

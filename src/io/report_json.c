@@ -296,6 +296,7 @@ static void add_motion(rb_jctx *cx, cJSON *arr, const rb_report *r, size_t i)
     add_peaks(cx, v, m->result, &n);
     add_rows_outcome(cx, v, m->result, &n);
     add_energy_cost(cx, v, m->result);
+    rb_report_json_motion_design(cx, o, r, i);
     if (r->with_history)
         add_history(cx, o, m->result->history);
 }
@@ -358,6 +359,7 @@ rb_status rb_report_json_render(const rb_report *r, char **out, rb_diag *diag)
         cx.st = RB_ERR_NOMEM;
     for (i = 0; i < r->n_motions && cx.st == RB_OK; i++)
         add_motion(&cx, arr, r, i);
+    rb_report_json_case_design(&cx, root, r);
     if (cx.st == RB_OK && !(*out = print_with_newline(root)))
         cx.st = RB_ERR_NOMEM;
     cJSON_Delete(root);

@@ -4,7 +4,7 @@
 #define RB_REPORT_JSON_BUILD_H
 
 #include <cjson/cJSON.h>
-#include "rockbolt/status.h"
+#include "rockbolt/report.h"
 
 /* Builder state: the first problem met is kept, later calls are no-ops. */
 typedef struct {
@@ -28,5 +28,11 @@ void rb_j_pair_norm(rb_jctx *cx, cJSON *o, const char *key, const double v[2]);
 void rb_j_pair_bool(rb_jctx *cx, cJSON *o, const char *key, const int v[2]);
 void rb_j_pair_when(rb_jctx *cx, cJSON *o, const char *key,
                     const int happened[2], const double t[2]);
+
+/* report_json_design.c: the design parts, written only when r->design is
+ * set; the case's part under the root, a motion's under its object. */
+void rb_report_json_case_design(rb_jctx *cx, cJSON *root, const rb_report *r);
+void rb_report_json_motion_design(rb_jctx *cx, cJSON *motion_o, const rb_report *r,
+                                  size_t i);
 
 #endif

@@ -5,134 +5,89 @@
  * to their normalised forms, so the layout can change without touching C.
  * The normalised forms come from report_common.c, as in the JSON report,
  * so the two agree digit for digit at the precision shown. */
-#include <assert.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "rockbolt/rockbolt.h"
 #include "report_internal.h"
 
-#define TXT_MAX_VARS 96 /* per scope; an assert guards it */
-
-typedef struct {
-    rb_tvar *v;
-    size_t n;
-} tvars;
-
-static rb_tvar *tv_add(tvars *t, const char *name, rb_tval_kind kind)
-{
-    rb_tvar *v;
-    assert(t->n < TXT_MAX_VARS);
-    v = &t->v[t->n++];
-    memset(v, 0, sizeof *v);
-    v->name = name;
-    v->kind = kind;
-    return v;
-}
-
-/* A number; NAN (a ratio without a denominator) renders as "n/a". */
-static void tv_num(tvars *t, const char *name, double x)
-{
-    tv_add(t, name, isnan(x) ? RB_TVAL_NONE : RB_TVAL_NUM)->num = x;
-}
-
-static void tv_opt(tvars *t, const char *name, int have, double x)
-{
-    tv_num(t, name, have ? x : (double)NAN);
-}
-
-static void tv_int(tvars *t, const char *name, long x)
-{
-    tv_add(t, name, RB_TVAL_INT)->integer = x;
-}
-
-static void tv_str(tvars *t, const char *name, const char *s)
-{
-    tv_add(t, name, s ? RB_TVAL_STR : RB_TVAL_NONE)->str = s;
-}
-
-static const char *yes_no(int b)
-{
-    return b ? "yes" : "no";
-}
-
-static void case_vars(tvars *t, const rb_report *r)
+static void case_vars(rb_tvars *t, const rb_report *r)
 {
     const rb_model *m = &r->kase->model;
     const rb_derived *d = &r->derived;
     size_t i, failed = 0;
     for (i = 0; i < r->n_motions; i++)
         failed += !r->motions[i].pass;
-    tv_str(t, "verdict", r->pass ? "PASS" : "FAIL");
-    tv_str(t, "reason", r->reason);
-    tv_str(t, "version", RB_VERSION_STRING);
-    tv_str(t, "case_name", r->kase->name);
-    tv_str(t, "case_path", r->kase->path);
-    tv_str(t, "description", r->kase->description);
-    tv_str(t, "criterion", rb_report_criterion_str(r->kase->criteria.kind));
-    tv_num(t, "usage_limit", r->kase->criteria.usage_limit);
-    tv_str(t, "formulation", rb_report_formulation_str(r->kase->solve.formulation));
-    tv_int(t, "n_motions", (long)r->n_motions);
-    tv_int(t, "n_failed", (long)failed);
-    tv_num(t, "mass_kg", m->mass_kg);
-    tv_num(t, "h_m", m->cm_height_m);
-    tv_num(t, "height_m", 2 * m->cm_height_m);
-    tv_num(t, "width_m", 2 * m->half_width_m);
-    tv_str(t, "rigid", yes_no(m->rigid));
-    tv_num(t, "freq_hz", m->freq_hz);
-    tv_num(t, "damping", m->damping);
-    tv_str(t, "bolt_model", rb_report_bolt_model_str(m->bolt_model));
-    tv_int(t, "has_bolts", m->bolt_model != RB_BOLT_NONE);
-    tv_int(t, "bolts_per_row", m->bolts_per_row);
-    tv_num(t, "bolt_area_mm2", m->bolt_area_m2 * 1e6);
-    tv_num(t, "yield_stress_mpa", m->yield_stress_pa * 1e-6);
-    tv_num(t, "lever_arm_m", m->lever_arm_m);
-    tv_num(t, "gap_mm", m->gap_m * 1e3);
-    tv_num(t, "gap_ratio", rb_report_ratio(m->gap_m, m->lever_arm_m));
-    tv_num(t, "fy_row_kn", d->fy_row_n * 1e-3);
-    tv_num(t, "capacity_j", d->capacity_j);
-    tv_num(t, "weight_kn", d->W * 1e-3);
-    tv_num(t, "a_star_mps2", d->a_star_mps2);
-    tv_num(t, "a_star_g", rb_report_ratio(d->a_star_mps2, d->g));
-    tv_num(t, "a_uplift_g", rb_report_ratio(d->a_uplift_mps2, d->g));
-    tv_num(t, "alpha_rad", d->alpha);
-    tv_num(t, "theta0_rad", d->theta0_rad);
-    tv_num(t, "delta", d->delta);
+    rb_tv_str(t, "verdict", r->pass ? "PASS" : "FAIL");
+    rb_tv_str(t, "reason", r->reason);
+    rb_tv_str(t, "version", RB_VERSION_STRING);
+    rb_tv_str(t, "case_name", r->kase->name);
+    rb_tv_str(t, "case_path", r->kase->path);
+    rb_tv_str(t, "description", r->kase->description);
+    rb_tv_str(t, "criterion", rb_report_criterion_str(r->kase->criteria.kind));
+    rb_tv_num(t, "usage_limit", r->kase->criteria.usage_limit);
+    rb_tv_str(t, "formulation", rb_report_formulation_str(r->kase->solve.formulation));
+    rb_tv_int(t, "n_motions", (long)r->n_motions);
+    rb_tv_int(t, "n_failed", (long)failed);
+    rb_tv_num(t, "mass_kg", m->mass_kg);
+    rb_tv_num(t, "h_m", m->cm_height_m);
+    rb_tv_num(t, "height_m", 2 * m->cm_height_m);
+    rb_tv_num(t, "width_m", 2 * m->half_width_m);
+    rb_tv_str(t, "rigid", rb_yes_no(m->rigid));
+    rb_tv_num(t, "freq_hz", m->freq_hz);
+    rb_tv_num(t, "damping", m->damping);
+    rb_tv_str(t, "bolt_model", rb_report_bolt_model_str(m->bolt_model));
+    rb_tv_int(t, "has_bolts", m->bolt_model != RB_BOLT_NONE);
+    rb_tv_int(t, "bolts_per_row", m->bolts_per_row);
+    rb_tv_num(t, "bolt_area_mm2", m->bolt_area_m2 * 1e6);
+    rb_tv_num(t, "yield_stress_mpa", m->yield_stress_pa * 1e-6);
+    rb_tv_num(t, "lever_arm_m", m->lever_arm_m);
+    rb_tv_num(t, "gap_mm", m->gap_m * 1e3);
+    rb_tv_num(t, "gap_ratio", rb_report_ratio(m->gap_m, m->lever_arm_m));
+    rb_tv_num(t, "fy_row_kn", d->fy_row_n * 1e-3);
+    rb_tv_num(t, "capacity_j", d->capacity_j);
+    rb_tv_num(t, "weight_kn", d->W * 1e-3);
+    rb_tv_num(t, "a_star_mps2", d->a_star_mps2);
+    rb_tv_num(t, "a_star_g", rb_report_ratio(d->a_star_mps2, d->g));
+    rb_tv_num(t, "a_uplift_g", rb_report_ratio(d->a_uplift_mps2, d->g));
+    rb_tv_num(t, "alpha_rad", d->alpha);
+    rb_tv_num(t, "theta0_rad", d->theta0_rad);
+    rb_tv_num(t, "delta", d->delta);
 }
 
-static void motion_head_vars(tvars *t, const rb_report *r, size_t i,
+static void motion_head_vars(rb_tvars *t, const rb_report *r, size_t i,
                              const rb_report_norms *n)
 {
     const rb_report_motion *rm = &r->motions[i];
     const rb_result *res = rm->result;
-    tv_int(t, "index", (long)(i + 1));
-    tv_str(t, "name", rm->motion->name);
-    tv_str(t, "source", rm->motion->source);
-    tv_str(t, "motion_verdict", rm->pass ? "PASS" : "FAIL");
-    tv_str(t, "motion_reason", rm->reason);
-    tv_str(t, "kind", rb_report_motion_kind_str(rm->motion->motion.kind));
-    tv_num(t, "peak_mps2", res->peak_floor_mps2);
-    tv_num(t, "peak_g", n->peak_g);
-    tv_num(t, "peak_over_a_star", n->peak_over_a_star);
-    tv_num(t, "duration_s", rm->motion->motion.duration_s);
-    tv_num(t, "t_end_s", res->t_end_s);
-    tv_num(t, "max_u_mm", res->max_u_m * 1e3);
-    tv_num(t, "u_static_mm", res->u_static_m * 1e3);
-    tv_num(t, "max_u_over_ustatic", res->max_u_over_ustatic);
-    tv_num(t, "max_theta_rad", res->max_theta_rad);
-    tv_num(t, "max_theta_over_alpha", res->max_theta_over_alpha);
-    tv_num(t, "shear_elastic_kn", res->max_shear_elastic_n * 1e-3);
-    tv_num(t, "shear_elastic_over_w", n->shear_elastic_over_w);
-    tv_num(t, "shear_elastic_over_v0", n->shear_elastic_over_v0);
-    tv_num(t, "shear_total_kn", res->max_shear_total_n * 1e-3);
-    tv_num(t, "shear_total_over_w", n->shear_total_over_w);
-    tv_num(t, "shear_total_over_v0", n->shear_total_over_v0);
-    tv_num(t, "v0_kn", n->v0_n * 1e-3);
-    tv_num(t, "friction_demand", res->max_friction_demand);
+    rb_tv_int(t, "index", (long)(i + 1));
+    rb_tv_str(t, "name", rm->motion->name);
+    rb_tv_str(t, "source", rm->motion->source);
+    rb_tv_str(t, "motion_verdict", rm->pass ? "PASS" : "FAIL");
+    rb_tv_str(t, "motion_reason", rm->reason);
+    rb_tv_str(t, "kind", rb_report_motion_kind_str(rm->motion->motion.kind));
+    rb_tv_num(t, "peak_mps2", res->peak_floor_mps2);
+    rb_tv_num(t, "peak_g", n->peak_g);
+    rb_tv_num(t, "peak_over_a_star", n->peak_over_a_star);
+    rb_tv_num(t, "duration_s", rm->motion->motion.duration_s);
+    rb_tv_num(t, "t_end_s", res->t_end_s);
+    rb_tv_num(t, "max_u_mm", res->max_u_m * 1e3);
+    rb_tv_num(t, "u_static_mm", res->u_static_m * 1e3);
+    rb_tv_num(t, "max_u_over_ustatic", res->max_u_over_ustatic);
+    rb_tv_num(t, "max_theta_rad", res->max_theta_rad);
+    rb_tv_num(t, "max_theta_over_alpha", res->max_theta_over_alpha);
+    rb_tv_num(t, "shear_elastic_kn", res->max_shear_elastic_n * 1e-3);
+    rb_tv_num(t, "shear_elastic_over_w", n->shear_elastic_over_w);
+    rb_tv_num(t, "shear_elastic_over_v0", n->shear_elastic_over_v0);
+    rb_tv_num(t, "shear_total_kn", res->max_shear_total_n * 1e-3);
+    rb_tv_num(t, "shear_total_over_w", n->shear_total_over_w);
+    rb_tv_num(t, "shear_total_over_v0", n->shear_total_over_v0);
+    rb_tv_num(t, "v0_kn", n->v0_n * 1e-3);
+    rb_tv_num(t, "friction_demand", res->max_friction_demand);
 }
 
 /* Per-row values as name_left / name_right. */
-static void motion_row_vars(tvars *t, const rb_result *res, const rb_report_norms *n)
+static void motion_row_vars(rb_tvars *t, const rb_result *res, const rb_report_norms *n)
 {
     static const char *const names[2][10] = {
         { "force_left_kn", "force_left_over_fy", "usage_left", "absorbed_left_j",
@@ -145,56 +100,55 @@ static void motion_row_vars(tvars *t, const rb_result *res, const rb_report_norm
     int s;
     for (s = 0; s < 2; s++) {
         const char *const *nm = names[s];
-        tv_num(t, nm[0], res->max_bolt_force_n[s] * 1e-3);
-        tv_num(t, nm[1], n->force_over_fy[s]);
-        tv_num(t, nm[2], res->usage[s]);
-        tv_num(t, nm[3], res->absorbed_j[s]);
-        tv_str(t, nm[4], yes_no(res->yielded[s]));
-        tv_opt(t, nm[5], res->yielded[s], res->first_yield_s[s]);
-        tv_str(t, nm[6], yes_no(res->broken[s]));
-        tv_opt(t, nm[7], res->broken[s], res->break_s[s]);
-        tv_num(t, nm[8], res->final_gap_m[s] * 1e3);
-        tv_num(t, nm[9], n->final_gap_ratio[s]);
+        rb_tv_num(t, nm[0], res->max_bolt_force_n[s] * 1e-3);
+        rb_tv_num(t, nm[1], n->force_over_fy[s]);
+        rb_tv_num(t, nm[2], res->usage[s]);
+        rb_tv_num(t, nm[3], res->absorbed_j[s]);
+        rb_tv_str(t, nm[4], rb_yes_no(res->yielded[s]));
+        rb_tv_opt(t, nm[5], res->yielded[s], res->first_yield_s[s]);
+        rb_tv_str(t, nm[6], rb_yes_no(res->broken[s]));
+        rb_tv_opt(t, nm[7], res->broken[s], res->break_s[s]);
+        rb_tv_num(t, nm[8], res->final_gap_m[s] * 1e3);
+        rb_tv_num(t, nm[9], n->final_gap_ratio[s]);
     }
 }
 
-static void motion_outcome_vars(tvars *t, const rb_result *res)
+static void motion_outcome_vars(rb_tvars *t, const rb_result *res)
 {
-    tv_num(t, "t_fixed_s", res->stage_time_s[RB_STAGE_FIXED]);
-    tv_num(t, "t_uplift_s", res->stage_time_s[RB_STAGE_UPLIFT]);
-    tv_num(t, "t_held_s", res->stage_time_s[RB_STAGE_HELD]);
-    tv_num(t, "t_yield_s", res->stage_time_s[RB_STAGE_YIELD]);
-    tv_int(t, "floor_impacts", res->floor_impacts);
-    tv_int(t, "bolt_impacts", res->bolt_impacts);
-    tv_int(t, "uplifts", res->uplifts);
-    tv_str(t, "overturned", yes_no(res->overturned));
-    tv_opt(t, "overturn_s", res->overturned, res->overturn_s);
-    tv_str(t, "overturn_side", res->overturned
+    rb_tv_num(t, "t_fixed_s", res->stage_time_s[RB_STAGE_FIXED]);
+    rb_tv_num(t, "t_uplift_s", res->stage_time_s[RB_STAGE_UPLIFT]);
+    rb_tv_num(t, "t_held_s", res->stage_time_s[RB_STAGE_HELD]);
+    rb_tv_num(t, "t_yield_s", res->stage_time_s[RB_STAGE_YIELD]);
+    rb_tv_int(t, "floor_impacts", res->floor_impacts);
+    rb_tv_int(t, "bolt_impacts", res->bolt_impacts);
+    rb_tv_int(t, "uplifts", res->uplifts);
+    rb_tv_str(t, "overturned", rb_yes_no(res->overturned));
+    rb_tv_opt(t, "overturn_s", res->overturned, res->overturn_s);
+    rb_tv_str(t, "overturn_side", res->overturned
            ? rb_report_side_str(res->overturn_side) : NULL);
-    tv_num(t, "e_input_j", res->e_input);
-    tv_num(t, "e_damping_j", res->e_damping);
-    tv_num(t, "e_impact_j", res->e_impact);
-    tv_num(t, "e_plastic_j", res->e_plastic);
-    tv_int(t, "steps", res->steps);
-    tv_int(t, "events", res->events);
+    rb_tv_num(t, "e_input_j", res->e_input);
+    rb_tv_num(t, "e_damping_j", res->e_damping);
+    rb_tv_num(t, "e_impact_j", res->e_impact);
+    rb_tv_num(t, "e_plastic_j", res->e_plastic);
+    rb_tv_int(t, "steps", res->steps);
+    rb_tv_int(t, "events", res->events);
 }
 
 rb_status rb_report_text_render(const rb_report *r, const char *tmpl,
                                 char **out, rb_diag *diag)
 {
     size_t n = r->n_motions, i;
-    rb_tvar *vars = calloc((n + 1) * TXT_MAX_VARS, sizeof *vars);
+    rb_tvar *vars = calloc((n + 1) * RB_TXT_MAX_VARS, sizeof *vars);
     rb_tscope *items = calloc(n ? n : 1, sizeof *items);
+    rb_tlist *motion_lists = calloc(n ? n : 1, sizeof *motion_lists);
+    rb_txt_arena *arena = rb_txt_arena_new();
     rb_tscope top = {0};
-    rb_tlist list = { "motions", NULL, 0 };
-    tvars t;
-    rb_status st;
+    rb_tlist lists[2] = { { "motions", NULL, 0 }, { "design", NULL, 0 } };
+    rb_tvars t;
+    rb_status st = RB_ERR_NOMEM;
     *out = NULL;
-    if (!vars || !items) {
-        free(vars);
-        free(items);
-        return RB_ERR_NOMEM;
-    }
+    if (!vars || !items || !motion_lists || !arena)
+        goto done;
     t.v = vars;
     t.n = 0;
     case_vars(&t, r);
@@ -203,19 +157,28 @@ rb_status rb_report_text_render(const rb_report *r, const char *tmpl,
     for (i = 0; i < n; i++) {
         rb_report_norms norms;
         rb_report_norms_compute(r, &r->motions[i], &norms);
-        t.v = vars + (i + 1) * TXT_MAX_VARS;
+        t.v = vars + (i + 1) * RB_TXT_MAX_VARS;
         t.n = 0;
         motion_head_vars(&t, r, i, &norms);
         motion_row_vars(&t, r->motions[i].result, &norms);
         motion_outcome_vars(&t, r->motions[i].result);
         items[i].vars = t.v;
         items[i].n_vars = t.n;
+        if (rb_report_text_motion_design(r, i, arena, &motion_lists[i]) != RB_OK)
+            goto done;
+        items[i].lists = &motion_lists[i];
+        items[i].n_lists = 1;
     }
-    list.items = items;
-    list.n = n;
-    top.lists = &list;
-    top.n_lists = 1;
+    if (rb_report_text_case_design(r, arena, &lists[1]) != RB_OK)
+        goto done;
+    lists[0].items = items;
+    lists[0].n = n;
+    top.lists = lists;
+    top.n_lists = 2;
     st = rb_template_render(tmpl, &top, out, diag);
+done:
+    rb_txt_arena_free(arena);
+    free(motion_lists);
     free(vars);
     free(items);
     return st;

@@ -310,8 +310,57 @@ test_solver_error() {
     echo "solver error: ok"
 }
 
+DESIGN=cases/reference-design.yaml
+
+# `design`: the same verdict and exit code as `check`, the design results
+# in both reports, one CSV per sweep, and relations the searches must obey.
+test_design() {
+    run check "$DESIGN" --quiet
+    check_rc=$rc
+    run design "$DESIGN" --json "$D/d.json" --text "$D/d.txt" --sweep-csv "$D/sw.csv"
+    expect_rc "$check_rc" "design (check exits $check_rc)"
+    verdict_agrees "$D/d.json" "$D/d.txt"
+    ny=$(jget "$D/d.json" motions.0.design.design_factor.no_yield.factor)
+    nb=$(jget "$D/d.json" motions.0.design.design_factor.no_break.factor)
+    lv=$(jget "$D/d.json" motions.0.design.design_factor.no_yield.level_astar)
+    holds "$ny" "$lv" "A * B > 0.999999 && A * B < 1.000001" "factor = 1 / level in A*"
+    # a run that breaks nothing may still yield: no-yield is the stricter
+    holds "$nb" "$ny" "A <= B && A > 1" "no-break factor <= no-yield factor"
+    fl=$(jget "$D/d.json" motions.0.design.design_factor.no_yield.fail_astar)
+    holds "$fl" "$lv" "A > B && A - B <= 0.001 + 1e-12" "bracket within the resolution"
+    holds "$(jget "$D/d.json" design.frequency_sweeps.0.points.18.frequency_ratio)" 2 \
+        "A - B < 1e-12 && B - A < 1e-12" "19-point frequency sweep ends at 2"
+    t=$(jget "$D/d.json" design.code_static.tension_n)
+    c=$(jget "$D/d.json" design.code_static.phi_nsa_n)
+    holds "$(jget "$D/d.json" design.code_static.ratio)" "$t / $c" \
+        "A - $t / $c < 1e-9 && $t / $c - A < 1e-9" "code ratio = T / phi Nsa"
+    [ -f "$D/sw-1.csv" ] && [ -f "$D/sw-2.csv" ] || fail "sweep CSVs: $(ls "$D")"
+    [ "$(wc -l <"$D/sw-1.csv")" -eq 20 ] || fail "frequency sweep CSV: 19 rows + header"
+    [ "$(wc -l <"$D/sw-2.csv")" -eq 13 ] || fail "amplitude sweep CSV: 12 rows + header"
+    grep -q "design factor, no yield" "$D/d.txt" || fail "design factor not in text"
+    grep -q "^code-static  ASCE 7-22" "$D/d.txt" || fail "code-static not in text"
+    grep -q "^frequency sweep 1" "$D/d.txt" || fail "frequency sweep not in text"
+    no_temp_files "$D"
+    echo "design: ok (factors $ny / $nb, exit $rc)"
+}
+
+# The searches give byte-identical reports on one thread and on two.
+test_design_threads() {
+    run design "$DESIGN" -j 1 --json "$D/j1.json" --quiet
+    rc1=$rc
+    run design "$DESIGN" -j2 --json "$D/j2.json" --quiet
+    [ "$rc" -eq "$rc1" ] || fail "exit codes differ: $rc1 and $rc"
+    cmp -s "$D/j1.json" "$D/j2.json" || fail "reports differ between -j 1 and -j 2"
+    run design "$DESIGN" -j 0; expect_rc 2 "-j 0"
+    run check "$DESIGN" -j 2; expect_rc 2 "-j on check"
+    run check "$DESIGN" --sweep-csv "$D/x.csv"; expect_rc 2 "--sweep-csv on check"
+    run design "$DESIGN" --sweep-csv /nonexistent-rockbolt-dir/s.csv
+    expect_rc 2 "unwritable --sweep-csv"
+    echo "design threads: ok"
+}
+
 case "$T" in
-    help|usage|harmonic|consistency|stdout|elcentro|unwritable|preserved|history|init|template|solver_error|free_standing)
+    help|usage|harmonic|consistency|stdout|elcentro|unwritable|preserved|history|init|template|solver_error|free_standing|design|design_threads)
         "test_$T" ;;
     *) echo "unknown test $T"; exit 1 ;;
 esac

@@ -1,0 +1,34 @@
+/* The searches of `rockbolt design` and the names of its sweep files. */
+#include <stdio.h>
+#include <string.h>
+#include "cli.h"
+
+rb_exit rb_cli_design_step(const rb_cli_opts *o, const rb_case *c, rb_case_design *d)
+{
+    rb_diag diag;
+    rb_status st;
+    rb_diag_clear(&diag);
+    st = rb_design_case(c, o->threads, d, &diag);
+    if (st == RB_OK)
+        return RB_EXIT_PASS;
+    rb_cli_error(o->case_path, diag.key, "%s%s%s", rb_status_str(st),
+                 diag.msg[0] ? ": " : "", diag.msg);
+    return st == RB_ERR_INVALID ? RB_EXIT_USAGE : RB_EXIT_INTERNAL;
+}
+
+const char *rb_cli_sweep_csv_name(const char *base, size_t i, size_t n, char *buf,
+                                  size_t size)
+{
+    const char *slash = strrchr(base, '/');
+    const char *dot = strrchr(base, '.');
+    size_t stem;
+    int w;
+    if (n == 1)
+        return base;
+    /* a dot in a directory name, or a leading dot, is not an extension */
+    if (!dot || (slash && dot < slash) || dot == (slash ? slash + 1 : base))
+        dot = base + strlen(base);
+    stem = (size_t)(dot - base);
+    w = snprintf(buf, size, "%.*s-%zu%s", (int)stem, base, i + 1, dot);
+    return w > 0 && (size_t)w < size ? buf : NULL;
+}

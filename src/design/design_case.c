@@ -1,0 +1,137 @@
+/* The whole design a case asks for, in the order an engineer reads it: per
+ * motion the design factors and the recommended gap, then the sweeps and
+ * the code-static comparison. Each search already uses every thread it is
+ * given, so the searches themselves run one after another. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "rockbolt/design.h"
+
+static rb_status fail_at(rb_diag *diag, const char *motion, const char *what,
+                         rb_status st)
+{
+    if (diag) {
+        char msg[sizeof diag->msg];
+        snprintf(msg, sizeof msg, "%s", diag->msg);
+        snprintf(diag->key, sizeof diag->key, "motion '%.60s': %s",
+                 motion ? motion : "?", what);
+        snprintf(diag->msg, sizeof diag->msg, "%s", msg[0] ? msg : rb_status_str(st));
+    }
+    return st;
+}
+
+static rb_status design_motion(const rb_case *c, const rb_case_motion *cm, int n_threads,
+                               const rb_case_design *cd, rb_motion_design *md,
+                               rb_diag *diag)
+{
+    const rb_motion *mo = &cm->motion;
+    rb_status st;
+    size_t i, n_amp = 0;
+    st = rb_design_factor(&c->model, mo, &c->solve, &cd->no_yield, &c->design, n_threads,
+                          &md->no_yield, diag);
+    if (st != RB_OK)
+        return fail_at(diag, cm->name, "design factor (no yield)", st);
+    st = rb_design_factor(&c->model, mo, &c->solve, &cd->no_break, &c->design, n_threads,
+                          &md->no_break, diag);
+    if (st != RB_OK)
+        return fail_at(diag, cm->name, "design factor (no break)", st);
+    if (c->model.bolt_model != RB_BOLT_NONE) {
+        st = rb_gap_recommend(&c->model, mo, &c->solve, &cd->gap_criteria, &c->design,
+                              n_threads, &md->gap, diag);
+        md->has_gap = st == RB_OK;
+        if (st != RB_OK)
+            return fail_at(diag, cm->name, "recommended gap", st);
+    }
+    for (i = 0; i < c->n_sweeps; i++)
+        n_amp += c->sweeps[i].kind == RB_SWEEP_AMPLITUDE;
+    if (n_amp && !(md->sweeps = calloc(n_amp, sizeof *md->sweeps)))
+        return RB_ERR_NOMEM;
+    for (i = 0; i < c->n_sweeps; i++) {
+        if (c->sweeps[i].kind != RB_SWEEP_AMPLITUDE)
+            continue;
+        st = rb_sweep_amplitude(&c->model, mo, &c->solve, &c->criteria, &c->sweeps[i],
+                                n_threads, &md->sweeps[md->n_sweeps++], diag);
+        if (st != RB_OK)
+            return fail_at(diag, cm->name, "amplitude sweep", st);
+    }
+    return RB_OK;
+}
+
+static rb_status design_sweeps(const rb_case *c, int n_threads, rb_case_design *out,
+                               rb_diag *diag)
+{
+    size_t i, n = 0;
+    for (i = 0; i < c->n_sweeps; i++)
+        n += c->sweeps[i].kind == RB_SWEEP_FREQUENCY;
+    if (!n)
+        return RB_OK;
+    if (!(out->sweeps = calloc(n, sizeof *out->sweeps)))
+        return RB_ERR_NOMEM;
+    for (i = 0; i < c->n_sweeps; i++) {
+        rb_status st;
+        if (c->sweeps[i].kind != RB_SWEEP_FREQUENCY)
+            continue;
+        st = rb_sweep_frequency(&c->model, &c->solve, &c->criteria, &c->sweeps[i],
+                                n_threads, &out->sweeps[out->n_sweeps++], diag);
+        if (st != RB_OK) {
+            snprintf(diag->key, sizeof diag->key, "design.sweeps[%zu]", i + 1);
+            return st;
+        }
+    }
+    return RB_OK;
+}
+
+rb_status rb_design_case(const rb_case *c, int n_threads, rb_case_design *out,
+                         rb_diag *diag)
+{
+    rb_status st = RB_OK;
+    size_t i;
+    memset(out, 0, sizeof *out);
+    out->no_yield = c->criteria;
+    out->no_yield.kind = RB_CRIT_NO_YIELD;
+    out->no_break = c->criteria;
+    out->no_break.kind = RB_CRIT_NO_BREAK;
+    /* a case judged on "no yield" still has a no-break factor: at the
+     * default usage limit, not whatever the no-yield case left there */
+    if (c->criteria.kind != RB_CRIT_NO_BREAK) {
+        rb_criteria def;
+        rb_criteria_init(&def);
+        out->no_break.usage_limit = def.usage_limit;
+    }
+    out->gap_criteria = c->criteria;
+    if (!(out->motions = calloc(c->n_motions ? c->n_motions : 1, sizeof *out->motions)))
+        return RB_ERR_NOMEM;
+    out->n_motions = c->n_motions;
+    for (i = 0; i < c->n_motions && st == RB_OK; i++)
+        st = design_motion(c, &c->motions[i], n_threads, out, &out->motions[i], diag);
+    if (st == RB_OK)
+        st = design_sweeps(c, n_threads, out, diag);
+    if (st == RB_OK && c->has_code) {
+        st = rb_code_static(&c->model, &c->code, &out->code, diag);
+        if (st != RB_OK) {
+            char key[sizeof diag->key];
+            snprintf(key, sizeof key, "design.code.%.100s", diag->key);
+            snprintf(diag->key, sizeof diag->key, "%s", key);
+        }
+        out->has_code = st == RB_OK;
+    }
+    return st;
+}
+
+void rb_case_design_free(rb_case_design *d)
+{
+    size_t i, j;
+    if (!d)
+        return;
+    for (i = 0; d->motions && i < d->n_motions; i++) {
+        rb_gap_result_free(&d->motions[i].gap);
+        for (j = 0; j < d->motions[i].n_sweeps; j++)
+            rb_sweep_free(&d->motions[i].sweeps[j]);
+        free(d->motions[i].sweeps);
+    }
+    free(d->motions);
+    for (i = 0; i < d->n_sweeps; i++)
+        rb_sweep_free(&d->sweeps[i]);
+    free(d->sweeps);
+    memset(d, 0, sizeof *d);
+}
