@@ -76,7 +76,8 @@ double rb_motion_accel(const rb_motion *m, double t, double theta_dot);
  * never steps across one. */
 double rb_motion_next_break(const rb_motion *m, double t);
 
-/* Largest |x''| the motion can reach (the peak floor acceleration 'a'). */
+/* Largest |x''| the motion can reach (the peak floor acceleration 'a').
+ * Non-finite samples are left out: the solver stops where it meets one. */
 double rb_motion_peak(const rb_motion *m);
 
 #endif

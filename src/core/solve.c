@@ -42,6 +42,33 @@ static rb_status fail(rb_solver *sv, rb_diag *diag, rb_status st, const char *wh
     return st;
 }
 
+#define OPT_REQUIRE(cond, k, fmt, v) do { if (!(cond)) { if (diag) { \
+        snprintf(diag->key, sizeof diag->key, "%s", k); \
+        snprintf(diag->msg, sizeof diag->msg, fmt, v); } \
+        return RB_ERR_INVALID; } } while (0)
+
+/* Options that would make a run unbounded or its tolerance unattainable
+ * are refused up front, naming the limit. */
+static rb_status check_opts(const rb_solve_opts *o, rb_diag *diag)
+{
+    OPT_REQUIRE(isfinite(o->rtol) && o->rtol >= RB_RTOL_MIN && o->rtol <= RB_RTOL_MAX,
+                "rtol", "must be between 1e-13 (what double precision can meet) and 0.01 "
+                "(got %g)", o->rtol);
+    OPT_REQUIRE(o->max_events_per_s >= 1, "max_events_per_s", "must be at least 1 (got %g)",
+                (double)o->max_events_per_s);
+    OPT_REQUIRE(o->max_steps >= 1, "max_steps", "must be at least 1 (got %g)",
+                (double)o->max_steps);
+    OPT_REQUIRE(isfinite(o->rest_fraction) && o->rest_fraction >= 0 && o->rest_fraction < 1,
+                "rest_fraction", "must be in [0, 1) (got %g)", o->rest_fraction);
+    OPT_REQUIRE(isfinite(o->max_step_s), "max_step_s", "must be finite (got %g s)",
+                o->max_step_s);
+    OPT_REQUIRE(isfinite(o->history_dt_s) && o->history_dt_s >= 0, "history_dt_s",
+                "must be finite and >= 0 (got %g s)", o->history_dt_s);
+    OPT_REQUIRE(isfinite(o->theta_init_rad), "theta_init_rad", "must be finite (got %g)",
+                o->theta_init_rad);
+    return RB_OK;
+}
+
 static double highest_frequency(const rb_solver *sv)
 {
     const rb_sys *S = &sv->sys;
@@ -106,6 +133,8 @@ static rb_status setup(rb_solver *sv, const rb_model *model, const rb_motion *mo
     rb_status st = rb_model_derive(model, &S->d, diag);
     if (st != RB_OK)
         return st;
+    if ((st = check_opts(&sv->opts, diag)) != RB_OK)
+        return st;
     S->model = model;
     S->motion = motion;
     S->form = sv->opts.formulation;
@@ -119,6 +148,11 @@ static rb_status setup(rb_solver *sv, const rb_model *model, const rb_motion *mo
     sv->disc.gap[0] = sv->disc.gap[1] = model->gap_m;
     sv->disc.stage = RB_STAGE_FIXED;
     fill_constants(sv, motion);
+    if (!isfinite(out->peak_floor_mps2)) {
+        memset(out, 0, sizeof *out);
+        return fail(sv, diag, RB_ERR_INVALID, "the floor motion's amplitude or scale is not "
+                    "finite");
+    }
     set_tolerances(sv);
     sv->t_end = motion->duration_s;
     if (!(isfinite(sv->t_end) && sv->t_end > 0))
@@ -229,6 +263,35 @@ static int state_finite(const double *y)
     return 1;
 }
 
+/* Name what went non-finite at (t, y): the excitation, the state, or the
+ * equations (a model whose constants overflow in them). */
+static rb_status nonfinite(rb_solver *sv, rb_diag *diag, double t, const double *y)
+{
+    rb_aux a;
+    double dy[RB_NY];
+    sv->t = t;
+    if (!state_finite(y))
+        return fail(sv, diag, RB_ERR_NONFINITE, "non-finite state");
+    rb_dyn_rhs(&sv->sys, &sv->disc, t, y, dy, &a);
+    if (!isfinite(a.x))
+        return fail(sv, diag, RB_ERR_NONFINITE, "non-finite floor acceleration");
+    return fail(sv, diag, RB_ERR_NONFINITE, "non-finite value in the equations of motion");
+}
+
+/* Every trial step from the current point, down to the smallest, gave
+ * non-finite values while the point itself is finite: what lies just
+ * ahead is not computable. The excitation is the usual culprit (a bad
+ * sample read by interpolation over the interval that leads to it). */
+static rb_status nonfinite_ahead(rb_solver *sv, rb_diag *diag, double h)
+{
+    double t = sv->t + h;
+    double thd = sv->y[RB_Y_THD] != 0 ? sv->y[RB_Y_THD] : -sv->y[RB_Y_TH];
+    if (!isfinite(rb_motion_accel(sv->sys.motion, t, thd)))
+        return fail(sv, diag, RB_ERR_NONFINITE, "non-finite floor acceleration just ahead");
+    return fail(sv, diag, RB_ERR_NONFINITE, "non-finite values in every trial step down "
+                "to the smallest step");
+}
+
 /* After a transition: settle immediate follow-ups, refresh f and guards. */
 static rb_status restart(rb_solver *sv, double *g, rb_diag *diag)
 {
@@ -236,10 +299,11 @@ static rb_status restart(rb_solver *sv, double *g, rb_diag *diag)
         if (n > 16)
             return fail(sv, diag, RB_ERR_WORK_LIMIT, "stage transitions do not settle");
     rb_dyn_rhs(&sv->sys, &sv->disc, sv->t, sv->y, sv->f, NULL);
+    if (!state_finite(sv->y) || !state_finite(sv->f))
+        return nonfinite(sv, diag, sv->t, sv->y);
     rb_guard_eval(sv, sv->t, sv->y, g);
     rb_track_point(sv, sv->t, sv->y);
-    return state_finite(sv->y) ? RB_OK
-           : fail(sv, diag, RB_ERR_NONFINITE, "non-finite state");
+    return RB_OK;
 }
 
 static rb_status advance(rb_solver *sv, rb_rk_step *st, double *g, rb_diag *diag)
@@ -250,8 +314,9 @@ static rb_status advance(rb_solver *sv, rb_rk_step *st, double *g, rb_diag *diag
     for (int j = 1; j < RB_SUB; j++)
         rb_rk_dense_state(st, st->t0 + st->h * j / RB_SUB, ys[j - 1]);
     memcpy(ys[RB_SUB - 1], st->y1, sizeof ys[0]);
-    if (!state_finite(st->y1))
-        return fail(sv, diag, RB_ERR_NONFINITE, "non-finite state");
+    /* the step end and its derivative (the next step's first stage) */
+    if (!state_finite(st->y1) || !state_finite(st->k[6]))
+        return nonfinite(sv, diag, st->t0 + st->h, st->y1);
     int ev = find_event(sv, st, g, ys, &t_event);
     if (ev >= 0)
         tb = t_event;
@@ -277,6 +342,7 @@ static rb_status run(rb_solver *sv, rb_diag *diag)
 {
     rb_rk_step st;
     double g[G_COUNT];
+    int nonfinite_trial = 0;
     rb_status s = rb_history_push(sv, 0, sv->y);
     sv->hist_k = 1;
     if (s == RB_OK)
@@ -287,10 +353,13 @@ static rb_status run(rb_solver *sv, rb_diag *diag)
         double brk = rb_motion_next_break(sv->sys.motion, sv->t);
         double h = fmin(fmin(sv->h, sv->h_max), fmin(brk, sv->t_end) - sv->t);
         if (!(h > 1e-14 * (1 + sv->t)))
-            return fail(sv, diag, RB_ERR_STEP_TOO_SMALL, "step size underflow");
+            return nonfinite_trial ? nonfinite_ahead(sv, diag, h)
+                   : fail(sv, diag, RB_ERR_STEP_TOO_SMALL, "step size underflow: the "
+                          "tolerance cannot be met");
         double err = rb_rk_step_try(&sv->sys, &sv->disc, sv->t, sv->y, sv->f, h,
                                     sv->atol, sv->opts.rtol, &st);
         sv->res->rhs_evals += 6;
+        nonfinite_trial = err == HUGE_VAL;
         double fac = err > 0 ? 0.9 * pow(err, -0.2) : 5;
         if (err > 1) {
             sv->res->rejected_steps++;

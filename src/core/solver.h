@@ -7,6 +7,11 @@
 #include "dynamics.h"
 #include "rk45.h"
 
+/* Tolerances the integrator accepts: below RB_RTOL_MIN rounding error
+ * dominates and steps shrink to underflow. */
+#define RB_RTOL_MIN 1e-13
+#define RB_RTOL_MAX 1e-2
+
 /* Guard functions: a stage ends where one crosses zero in its direction. */
 enum {
     G_UP_POS,   /* stage 1: uplift about the left edge (+1) */

@@ -100,8 +100,10 @@ double rb_motion_peak(const rb_motion *m)
     case RB_MOTION_SAMPLED: {
         const rb_series *s = m->series;
         double p = 0;
+        /* a non-finite sample is the solver's to report, at its time */
         for (size_t i = 0; s && i < s->n; i++)
-            p = fmax(p, fabs(s->accel_mps2[i]));
+            if (isfinite(s->accel_mps2[i]))
+                p = fmax(p, fabs(s->accel_mps2[i]));
         return p * fabs(m->scale);
     }
     }
