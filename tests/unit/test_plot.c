@@ -1,0 +1,364 @@
+/* Figures: the reference cabinet solved through the library with a time
+ * history (0.6 A*, 4 Hz: it yields, breaks a row and overturns), drawn as
+ * SVG; a hand-made sweep; the HTML page. Checks the structure a reader and
+ * a parser rely on: one <path> per series, the event markers, escaped
+ * text, no "nan" or "inf" anywhere, decimation of long histories, errors
+ * for what cannot be drawn. */
+#include <ctype.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "harness.h"
+#include "rockbolt/rockbolt.h"
+#include "rockbolt/plot.h"
+#include "../../src/plot/plot_internal.h"
+
+static rb_case kase;
+static rb_case_motion cm;
+static rb_result res;
+static rb_report_motion rm;
+static rb_report rep;
+
+static size_t count(const char *s, const char *needle)
+{
+    size_t n = 0, k = strlen(needle);
+    while ((s = strstr(s, needle)) != NULL) {
+        n++;
+        s += k;
+    }
+    return n;
+}
+
+/* "nan" or "inf" in any case, as printf would write a non-finite double. */
+static int has_nonfinite(const char *s)
+{
+    for (; *s; s++) {
+        char a = (char)tolower((unsigned char)s[0]);
+        if (!s[1] || !s[2])
+            break;
+        if ((a == 'n' && tolower((unsigned char)s[1]) == 'a'
+             && tolower((unsigned char)s[2]) == 'n')
+            || (a == 'i' && tolower((unsigned char)s[1]) == 'n'
+                && tolower((unsigned char)s[2]) == 'f'))
+            return 1;
+    }
+    return 0;
+}
+
+/* Coordinate pairs in the d of the path with data-series="name". */
+static size_t path_points(const char *svg, const char *name, size_t *subpaths)
+{
+    char key[64];
+    const char *p, *d, *end;
+    size_t n = 0;
+    snprintf(key, sizeof key, "data-series=\"%s\"", name);
+    p = strstr(svg, key);
+    *subpaths = 0;
+    if (!p || !(d = strstr(p, " d=\"")) || !(end = strchr(d + 4, '"')))
+        return 0;
+    for (p = d + 4; p < end; p++) {
+        n += *p == ',';
+        *subpaths += *p == 'M';
+    }
+    return n;
+}
+
+static rb_status solve(double a_over_astar, double duration, double dt)
+{
+    rb_derived d;
+    rb_solve_opts o;
+    rb_result_free(&res);
+    rb_model_derive(&kase.model, &d, NULL);
+    cm.motion.amplitude_mps2 = a_over_astar * d.a_star_mps2;
+    cm.motion.duration_s = duration;
+    rb_solve_opts_init(&o);
+    o.history_dt_s = dt;
+    rb_status st = rb_solve_run(&kase.model, &cm.motion, &o, &res, NULL);
+    rm.pass = rb_criteria_judge(&kase.criteria, &res, rm.reason, sizeof rm.reason);
+    rb_report_conclude(&rep);
+    return st;
+}
+
+static void setup(void)
+{
+    memset(&kase, 0, sizeof kase);
+    rb_model_reference(&kase.model);
+    rb_solve_opts_init(&kase.solve);
+    rb_criteria_init(&kase.criteria);
+    kase.path = "cases/x.yaml";
+    kase.name = "pump & <motor> \"A\"";
+    cm.name = "harmonic <4 Hz> & 'more'";
+    cm.source = "harmonic";
+    rb_motion_init(&cm.motion);
+    cm.motion.kind = RB_MOTION_HARMONIC;
+    cm.motion.freq_hz = 4;
+    kase.motions = &cm;
+    kase.n_motions = 1;
+    rm.motion = &cm;
+    rm.result = &res;
+    rep.kase = &kase;
+    CHECK(rb_model_derive(&kase.model, &rep.derived, NULL) == RB_OK);
+    rep.motions = &rm;
+    rep.n_motions = 1;
+}
+
+static void test_history_figure(void)
+{
+    static const char *const series[RB_PLOT_HISTORY_SERIES] = {
+        "accel", "theta", "u", "bolt_left", "bolt_right", "shear_frame",
+        "shear_total", "energy_left", "energy_right"
+    };
+    char *svg = NULL;
+    rb_diag d;
+    size_t i, sub, n_rows;
+    rb_diag_clear(&d);
+    CHECK(solve(0.6, 8.0, 0.005) == RB_OK);
+    CHECK(res.history && res.history->n > 100);
+    CHECK(res.overturned && (res.broken[0] || res.broken[1]));
+    if (!res.history)
+        return;
+    n_rows = res.history->n;
+    CHECK(rb_plot_history_svg(&rep, 0, &svg, &d) == RB_OK);
+    CHECK(svg != NULL);
+    if (!svg)
+        return;
+    CHECK(strncmp(svg, "<svg xmlns=\"http://www.w3.org/2000/svg\"", 39) == 0);
+    CHECK(count(svg, "</svg>") == 1);
+    CHECK(count(svg, "<path") == RB_PLOT_HISTORY_SERIES);
+    for (i = 0; i < RB_PLOT_HISTORY_SERIES; i++) {
+        char key[64];
+        snprintf(key, sizeof key, "data-series=\"%s\"", series[i]);
+        CHECK(count(svg, key) == 1);
+    }
+    /* markers: every event the result has, and no other */
+    CHECK(count(svg, "class=\"marker yield\"") == (size_t)(res.yielded[0] + res.yielded[1]));
+    CHECK(count(svg, "class=\"marker break\"") == (size_t)(res.broken[0] + res.broken[1]));
+    CHECK(count(svg, "class=\"marker overturn\"") == 1);
+    CHECK(strstr(svg, ">overturn ") != NULL);
+    /* the stages it went through are shaded, and all five named */
+    CHECK(count(svg, "class=\"stage s1\"") > 0);
+    CHECK(count(svg, "class=\"stage s2\"") > 0);
+    CHECK(count(svg, "class=\"stage s4\"") > 0);
+    CHECK(count(svg, "class=\"stage s5\"") > 0);
+    CHECK(count(svg, "class=\"stage-key s") == 5);
+    /* normalised panels and units */
+    CHECK(strstr(svg, "bolt force / Fy (-)") != NULL);
+    CHECK(strstr(svg, "energy / capacity (-)") != NULL);
+    CHECK(strstr(svg, ">time (s)<") != NULL);
+    /* text escaped; the raw name never appears */
+    CHECK(strstr(svg, "pump &amp; &lt;motor&gt; &quot;A&quot;") != NULL);
+    CHECK(strstr(svg, "harmonic &lt;4 Hz&gt; &amp; &#39;more&#39;") != NULL);
+    CHECK(strstr(svg, "<motor>") == NULL);
+    CHECK(!has_nonfinite(svg));
+    /* short enough to keep every point: one subpath of n points */
+    CHECK(n_rows <= 2 * 868);
+    CHECK(path_points(svg, "theta", &sub) == n_rows && sub == 1);
+    free(svg);
+
+    /* a NaN sample breaks the line instead of reaching the file */
+    res.history->theta[n_rows / 2] = NAN;
+    res.history->u[n_rows / 3] = HUGE_VAL;
+    CHECK(rb_plot_history_svg(&rep, 0, &svg, &d) == RB_OK);
+    CHECK(svg && !has_nonfinite(svg));
+    CHECK(svg && path_points(svg, "theta", &sub) == n_rows - 1 && sub == 2);
+    CHECK(svg && path_points(svg, "u", &sub) == n_rows - 1 && sub == 2);
+    CHECK(svg && count(svg, "<path") == RB_PLOT_HISTORY_SERIES);
+    free(svg);
+
+    /* no bolts to divide by: engineering units instead */
+    res.fy_row_n = 0;
+    res.capacity_j = 0;
+    CHECK(rb_plot_history_svg(&rep, 0, &svg, &d) == RB_OK);
+    CHECK(svg && strstr(svg, "bolt force (kN)") != NULL);
+    CHECK(svg && strstr(svg, "absorbed energy (J)") != NULL);
+    CHECK(svg && !has_nonfinite(svg));
+    free(svg);
+}
+
+static void test_decimation(void)
+{
+    char *svg = NULL;
+    rb_diag d;
+    size_t sub, pts;
+    rb_diag_clear(&d);
+    CHECK(solve(0.2, 30.0, 0.001) == RB_OK);
+    CHECK(res.history && res.history->n > 20000);
+    CHECK(rb_plot_history_svg(&rep, 0, &svg, &d) == RB_OK);
+    if (!svg)
+        return;
+    /* two extremes per pixel column of the 868-unit wide panels */
+    pts = path_points(svg, "accel", &sub);
+    printf("decimation: %zu rows -> %zu points, %zu bytes\n", res.history->n, pts,
+           strlen(svg));
+    CHECK(pts > 868 && pts <= 2 * 868 + 2);
+    CHECK(strlen(svg) < 400000);
+    /* the extremes survive: the samples of the largest and smallest floor
+     * acceleration are drawn (panels start at x = 100, 868 wide) */
+    {
+        const rb_history *h = res.history;
+        size_t i, imax = 0, imin = 0;
+        char at[32];
+        const char *path = strstr(svg, "data-series=\"accel\"");
+        const char *end = path ? strstr(path, "/>") : NULL;
+        for (i = 1; i < h->n; i++) {
+            imax = h->accel[i] > h->accel[imax] ? i : imax;
+            imin = h->accel[i] < h->accel[imin] ? i : imin;
+        }
+        CHECK(path && end);
+        snprintf(at, sizeof at, "%.1f,", 100 + 868 * (h->t[imax] - h->t[0])
+                 / (h->t[h->n - 1] - h->t[0]));
+        CHECK(path && (path = strstr(path, at)) != NULL && path < end);
+        path = strstr(svg, "data-series=\"accel\"");
+        snprintf(at, sizeof at, "%.1f,", 100 + 868 * (h->t[imin] - h->t[0])
+                 / (h->t[h->n - 1] - h->t[0]));
+        CHECK(path && (path = strstr(path, at)) != NULL && path < end);
+    }
+    CHECK(!has_nonfinite(svg));
+    free(svg);
+}
+
+static void test_history_errors(void)
+{
+    char *svg = (char *)1;
+    rb_diag d;
+    rb_history *h = res.history;
+    rb_diag_clear(&d);
+    CHECK(rb_plot_history_svg(&rep, 1, &svg, &d) == RB_ERR_INVALID);
+    CHECK(svg == NULL && strstr(d.msg, "no such motion") != NULL);
+    res.history = NULL;
+    svg = (char *)1;
+    CHECK(rb_plot_history_svg(&rep, 0, &svg, &d) == RB_ERR_INVALID);
+    CHECK(svg == NULL && strstr(d.msg, "no time history") != NULL);
+    /* the report page skips it: text only */
+    CHECK(rb_plot_report_html(&rep, "report", &svg, &d) == RB_OK);
+    CHECK(svg && count(svg, "<svg") == 0 && strstr(svg, "<pre class=\"report\">report</pre>"));
+    free(svg);
+    res.history = h;
+}
+
+static void test_sweep(void)
+{
+    rb_sweep_point pts[6];
+    rb_sweep s;
+    char *svg = NULL;
+    rb_diag d;
+    size_t i, sub;
+    rb_diag_clear(&d);
+    memset(pts, 0, sizeof pts);
+    memset(&s, 0, sizeof s);
+    for (i = 0; i < 6; i++) {
+        pts[i].x = 0.5 + 0.2 * (double)i;
+        pts[i].max_u_over_ustatic = 2 + (double)i;
+        pts[i].max_force_over_fy[RB_LEFT] = 0.3 + 0.1 * (double)i;
+        pts[i].max_force_over_fy[RB_RIGHT] = 0.2 + 0.15 * (double)i;
+        pts[i].status = RB_OK;
+        pts[i].meets = 1;
+    }
+    pts[3].yielded[RB_RIGHT] = 1;       /* o on the deflection and right curves */
+    pts[4].yielded[RB_LEFT] = 1;
+    pts[4].broken[RB_LEFT] = 1;         /* x on the deflection and left curves */
+    pts[5].status = RB_ERR_STEP_TOO_SMALL;
+    pts[5].max_u_over_ustatic = NAN;    /* must not be drawn */
+    s.kind = RB_SWEEP_FREQUENCY;
+    s.a_star_mps2 = 114.77;
+    s.fixed_base_hz = 5;
+    s.amplitude_astar = 0.3;
+    s.points = pts;
+    s.n_points = 6;
+    CHECK(rb_plot_sweep_svg(&s, "gap <0.01> & more", &svg, &d) == RB_OK);
+    if (!svg)
+        return;
+    CHECK(count(svg, "<path") == 3);
+    CHECK(count(svg, "class=\"mark-yield\"") == 2);
+    CHECK(count(svg, "class=\"mark-fail\"") == 2);
+    CHECK(path_points(svg, "u_over_ustatic", &sub) == 5 && sub == 1);
+    CHECK(strstr(svg, "gap &lt;0.01&gt; &amp; more") != NULL);
+    CHECK(strstr(svg, "f / f0") != NULL);
+    CHECK(strstr(svg, "1 of 6 points have no result") != NULL);
+    CHECK(!has_nonfinite(svg));
+    free(svg);
+
+    s.kind = RB_SWEEP_AMPLITUDE;
+    pts[5].status = RB_OK;
+    pts[5].max_u_over_ustatic = 1;
+    pts[5].overturned = 1;              /* x on all three curves */
+    CHECK(rb_plot_sweep_svg(&s, NULL, &svg, &d) == RB_OK);
+    CHECK(svg && strstr(svg, "a / A*") != NULL);
+    CHECK(svg && strstr(svg, "Amplitude response") != NULL);
+    CHECK(svg && count(svg, "class=\"mark-fail\"") == 5);
+    CHECK(svg && strstr(svg, "have no result") == NULL);
+    free(svg);
+
+    s.n_points = 0;
+    svg = (char *)1;
+    CHECK(rb_plot_sweep_svg(&s, NULL, &svg, &d) == RB_ERR_INVALID);
+    CHECK(svg == NULL);
+}
+
+static void test_html(void)
+{
+    const char *svgs[2] = { "<?xml version=\"1.0\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\"></svg>",
+                            "<svg xmlns=\"http://www.w3.org/2000/svg\"><text>x</text></svg>" };
+    const char *bad[1] = { "<script>alert(1)</script>" };
+    char *html = NULL;
+    rb_diag d;
+    rb_diag_clear(&d);
+    CHECK(rb_plot_html_page("a<b> & \"c\"", "x < y && z\n\tw\x01\xff", svgs, 2, &html,
+                            &d) == RB_OK);
+    if (!html)
+        return;
+    CHECK(strncmp(html, "<!DOCTYPE html>\n<html xmlns=\"http://www.w3.org/1999/xhtml\"", 58) == 0);
+    CHECK(strstr(html, "<title>a&lt;b&gt; &amp; &quot;c&quot;</title>") != NULL);
+    CHECK(strstr(html, "<pre class=\"report\">x &lt; y &amp;&amp; z\n\tw\xEF\xBF\xBD</pre>") != NULL);
+    CHECK(count(html, "<svg") == 2);
+    CHECK(strstr(html, "<?xml") == NULL);
+    /* nothing from outside the page */
+    CHECK(strstr(html, "src=") == NULL && strstr(html, "href=") == NULL
+          && strstr(html, "url(") == NULL && strstr(html, "<script") == NULL);
+    free(html);
+    html = (char *)1;
+    CHECK(rb_plot_html_page("t", NULL, bad, 1, &html, &d) == RB_ERR_INVALID);
+    CHECK(html == NULL && strstr(d.msg, "figure 1") != NULL);
+
+    /* the whole check: one figure per motion with a history */
+    CHECK(rb_plot_report_html(&rep, "FAIL: text & <report>", &html, &d) == RB_OK);
+    CHECK(html && count(html, "<svg") == 1);
+    CHECK(html && count(html, "<path") == RB_PLOT_HISTORY_SERIES);
+    CHECK(html && strstr(html, "FAIL: text &amp; &lt;report&gt;") != NULL);
+    CHECK(html && strstr(html, "<title>FAIL: pump &amp; &lt;motor&gt;") != NULL);
+    CHECK(html && !has_nonfinite(html));
+    free(html);
+}
+
+static void test_axis(void)
+{
+    rb_axis ax;
+    char lab[32];
+    rb_axis_nice(&ax, 0, 4.68, 5, 1);
+    CHECK(ax.lo == 0 && ax.hi == 5 && ax.step == 1 && ax.n_ticks == 6);
+    rb_axis_nice(&ax, -1.1, 1.1, 5, 1);
+    CHECK_NEAR(ax.lo, -1.5, 1e-12);
+    CHECK_NEAR(ax.hi, 1.5, 1e-12);
+    CHECK(ax.n_ticks == 7 && ax.decimals == 1);
+    rb_axis_label(&ax, ax.ticks[3], lab, sizeof lab);
+    CHECK(strcmp(lab, "0.0") == 0);           /* not "-0.0" */
+    rb_axis_nice(&ax, 0, 39.99, 10, 0);       /* the time axis stays as given */
+    CHECK(ax.lo == 0 && ax.hi == 39.99 && ax.step == 5 && ax.n_ticks == 8);
+    rb_axis_nice(&ax, 3, 3, 5, 1);            /* a flat series still has an axis */
+    CHECK(ax.hi > ax.lo && ax.n_ticks >= 2);
+    rb_axis_nice(&ax, NAN, HUGE_VAL, 5, 1);
+    CHECK(isfinite(ax.lo) && isfinite(ax.hi) && ax.hi > ax.lo);
+}
+
+int main(void)
+{
+    setup();
+    test_axis();
+    test_history_figure();
+    test_html();
+    test_history_errors();
+    test_decimation();
+    test_sweep();
+    rb_result_free(&res);
+    TEST_MAIN_END();
+}
