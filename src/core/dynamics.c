@@ -260,7 +260,10 @@ double rb_dyn_potential(const rb_sys *S, const rb_disc *D, const double *y)
         break;
     }
     if (S->elastic_bolts && D->side != 0 && D->stage != RB_STAGE_FIXED) {
-        double ext = rb_dyn_chord(S, th) - D->gap[rb_row_of_side(D->side)];
+        /* while the row yields its elastic stretch stays at Fy / k; the rest
+         * of the chord's growth is plastic, booked as absorbed energy */
+        double ext = D->stage == RB_STAGE_YIELD ? d->fy_row_n / d->k_row_npm
+                     : rb_dyn_chord(S, th) - D->gap[rb_row_of_side(D->side)];
         if (ext > 0)
             V += 0.5 * d->k_row_npm * ext * ext;
     }
