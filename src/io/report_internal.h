@@ -32,6 +32,19 @@ const char *rb_report_formulation_str(rb_formulation form);
 const char *rb_report_criterion_str(rb_criterion_kind kind);
 const char *rb_report_side_str(int side); /* RB_LEFT, RB_RIGHT */
 
+/* ---- report_suite.c: a case's motions taken together -------------------- */
+#define RB_SUITE_N 6
+/* Names of the suite values, as written in the reports: usage (larger
+ * row), bolt_force_over_fy (larger row), shear_elastic_over_w,
+ * shear_total_over_w, u_over_ustatic, theta_over_alpha. */
+extern const char *const rb_suite_names[RB_SUITE_N];
+typedef struct {
+    size_t governing;            /* index of the governing motion */
+    double mean[RB_SUITE_N];     /* NAN when no motion has the value */
+    double max[RB_SUITE_N];
+} rb_report_suite;
+void rb_report_suite_compute(const rb_report *r, rb_report_suite *s);
+
 /* ---- report_text_vars.c: template variable tables ---------------------- */
 #define RB_TXT_MAX_VARS 96 /* per scope; an assert guards it */
 

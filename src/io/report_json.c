@@ -325,6 +325,29 @@ static void add_head(rb_jctx *cx, cJSON *root, const rb_report *r)
     rb_j_num(cx, o, "motions_failed", (double)failed);
 }
 
+/* Always written, also for one motion, so that readers of many reports
+ * find the governing motion in one place. */
+static void add_suite(rb_jctx *cx, cJSON *root, const rb_report *r)
+{
+    rb_report_suite su;
+    cJSON *o, *mean, *max;
+    size_t k;
+    if (cx->st != RB_OK || r->n_motions == 0)
+        return;
+    cx->where = "suite";
+    rb_report_suite_compute(r, &su);
+    o = rb_j_obj(cx, root, "suite");
+    rb_j_num(cx, o, "motions", (double)r->n_motions);
+    rb_j_num(cx, o, "governing_index", (double)(su.governing + 1));
+    rb_j_str(cx, o, "governing_name", r->motions[su.governing].motion->name);
+    mean = rb_j_obj(cx, o, "mean");
+    max = rb_j_obj(cx, o, "max");
+    for (k = 0; k < RB_SUITE_N; k++) {
+        rb_j_norm(cx, mean, rb_suite_names[k], su.mean[k]);
+        rb_j_norm(cx, max, rb_suite_names[k], su.max[k]);
+    }
+}
+
 /* cJSON_Print's text plus the final newline a text file should end with,
  * in memory the caller can free(). */
 static char *print_with_newline(cJSON *root)
@@ -359,6 +382,7 @@ rb_status rb_report_json_render(const rb_report *r, char **out, rb_diag *diag)
         cx.st = RB_ERR_NOMEM;
     for (i = 0; i < r->n_motions && cx.st == RB_OK; i++)
         add_motion(&cx, arr, r, i);
+    add_suite(&cx, root, r);
     rb_report_json_case_design(&cx, root, r);
     if (cx.st == RB_OK && !(*out = print_with_newline(root)))
         cx.st = RB_ERR_NOMEM;

@@ -55,6 +55,32 @@ static void case_vars(rb_tvars *t, const rb_report *r)
     rb_tv_num(t, "delta", d->delta);
 }
 
+/* The suite: governing motion and mean / max, for cases of several
+ * motions (the template shows it when n_motions > 1). */
+static void suite_vars(rb_tvars *t, const rb_report *r)
+{
+    static const char *const mean_names[RB_SUITE_N] = {
+        "mean_usage", "mean_force_over_fy", "mean_shear_elastic_over_w",
+        "mean_shear_total_over_w", "mean_u_over_ustatic", "mean_theta_over_alpha" };
+    static const char *const max_names[RB_SUITE_N] = {
+        "max_usage", "max_force_over_fy", "max_shear_elastic_over_w",
+        "max_shear_total_over_w", "max_u_over_ustatic_all", "max_theta_over_alpha_all" };
+    rb_report_suite su;
+    size_t k;
+    if (r->n_motions == 0) {
+        rb_tv_int(t, "suite", 0);
+        return;
+    }
+    rb_report_suite_compute(r, &su);
+    rb_tv_int(t, "suite", r->n_motions > 1);
+    rb_tv_int(t, "governing_index", (long)(su.governing + 1));
+    rb_tv_str(t, "governing_name", r->motions[su.governing].motion->name);
+    for (k = 0; k < RB_SUITE_N; k++) {
+        rb_tv_num(t, mean_names[k], su.mean[k]);
+        rb_tv_num(t, max_names[k], su.max[k]);
+    }
+}
+
 static void motion_head_vars(rb_tvars *t, const rb_report *r, size_t i,
                              const rb_report_norms *n)
 {
@@ -152,6 +178,7 @@ rb_status rb_report_text_render(const rb_report *r, const char *tmpl,
     t.v = vars;
     t.n = 0;
     case_vars(&t, r);
+    suite_vars(&t, r);
     top.vars = vars;
     top.n_vars = t.n;
     for (i = 0; i < n; i++) {

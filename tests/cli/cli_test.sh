@@ -359,8 +359,36 @@ test_design_threads() {
     echo "design threads: ok"
 }
 
+# A case of several motions: the suite names the motion of largest demand
+# and the mean and maximum agree with the per-motion results.
+test_suite() {
+    run check cases/reference-suite.yaml --json "$D/s.json" --text "$D/s.txt"
+    [ "$rc" -eq 0 ] || [ "$rc" -eq 1 ] || fail "exit code $rc"
+    verdict_agrees "$D/s.json" "$D/s.txt"
+    [ "$(jget "$D/s.json" suite.motions)" -eq 4 ] || fail "four motions"
+    best=0 bi=0 sum=0
+    for i in 0 1 2 3; do
+        l=$(jget "$D/s.json" motions.$i.result.bolts.usage.left)
+        r=$(jget "$D/s.json" motions.$i.result.bolts.usage.right)
+        u=$(awk -v l="$l" -v r="$r" 'BEGIN { print (l > r ? l : r) }')
+        sum=$(awk -v s="$sum" -v u="$u" 'BEGIN { printf "%.17g", s + u }')
+        if awk -v u="$u" -v b="$best" 'BEGIN { exit !(u > b) }'; then best=$u bi=$((i + 1)); fi
+    done
+    [ "$(jget "$D/s.json" suite.governing_index)" -eq "$bi" ] ||
+        fail "governing motion is not the one of largest usage ($bi)"
+    holds "$(jget "$D/s.json" suite.max.usage)" "$best" \
+        "A - B < 1e-12 && B - A < 1e-12" "suite maximum usage"
+    holds "$(jget "$D/s.json" suite.mean.usage)" "$sum" \
+        "A - B / 4 < 1e-9 && B / 4 - A < 1e-9" "suite mean usage"
+    grep -q "^suite        4 motions; governing: motion $bi" "$D/s.txt" ||
+        fail "suite line missing from the text report"
+    run check "$HARMONIC" --text "$D/h.txt"
+    grep -q "^suite" "$D/h.txt" && fail "suite block for a single motion"
+    echo "suite: ok (governing motion $bi)"
+}
+
 case "$T" in
-    help|usage|harmonic|consistency|stdout|elcentro|unwritable|preserved|history|init|template|solver_error|free_standing|design|design_threads)
+    help|usage|harmonic|consistency|stdout|elcentro|unwritable|preserved|history|init|template|solver_error|free_standing|design|design_threads|suite)
         "test_$T" ;;
     *) echo "unknown test $T"; exit 1 ;;
 esac
