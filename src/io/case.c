@@ -53,9 +53,15 @@ static void rb_cctx_vadd(rb_cctx *c, rb_status st, const char *file, int line,
 {
     c->n_errors++;
     rb_cctx_status(c, st);
-    rb_diag *d = rb_cctx_push(c);
-    if (!d)
+    rb_diag *d;
+    if (c->diags->n - c->first_diag >= RB_CASE_MAX_DIAGS) {
+        if (c->n_dropped++ > 0)
+            return;
+        d = &c->dropped;
+        memset(d, 0, sizeof *d);
+    } else if (!(d = rb_cctx_push(c))) {
         return;
+    }
     snprintf(d->file, sizeof d->file, "%s", file ? file : "");
     d->line = line;
     d->col = col;
@@ -171,7 +177,8 @@ static size_t rb_cctx_file_rank(const rb_cctx *c, const char *file)
 
 /* Put this load's diagnostics (from index first on) in reading order: the
  * case file before its bases, then by line and column. Insertion sort keeps
- * equal positions in the order they were found; lists are short. */
+ * equal positions in the order they were found; lists are short (at most
+ * RB_CASE_MAX_DIAGS). */
 static void rb_cctx_sort(const rb_cctx *c, size_t first)
 {
     rb_diag *d = c->diags->items;
@@ -198,6 +205,7 @@ rb_status rb_case_load(const char *path, rb_case *out, rb_diag_list *diags)
     memset(&c, 0, sizeof c);
     c.diags = diags;
     size_t first = diags->n;
+    c.first_diag = first;
     if (!rb_case_defaults(out, path)) {
         rb_case_free(out);
         return RB_ERR_NOMEM;
@@ -209,6 +217,18 @@ rb_status rb_case_load(const char *path, rb_case *out, rb_diag_list *diags)
     }
     rb_ynode_free(root);
     rb_cctx_sort(&c, first);
+    if (c.n_dropped > 0) {
+        /* After the sort, so that the count comes last. */
+        rb_diag *d = rb_cctx_push(&c);
+        if (d) {
+            *d = c.dropped;
+            char msg[sizeof d->msg];
+            snprintf(msg, sizeof msg, "too many errors: %zu more not shown (at "
+                     "most %d are listed); the first of them: %.400s", c.n_dropped,
+                     RB_CASE_MAX_DIAGS, c.dropped.msg);
+            memcpy(d->msg, msg, sizeof msg);
+        }
+    }
     rb_status st = c.nomem ? RB_ERR_NOMEM : c.status;
     if (st == RB_OK && c.n_errors > 0)
         st = RB_ERR_INVALID;

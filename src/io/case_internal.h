@@ -24,6 +24,18 @@
 #define RB_CASE_MAX_FILES 64         /* files read for one case */
 #define RB_CASE_MAX_MOTIONS 1000
 #define RB_CASE_KEY_MAX 128          /* sizeof rb_diag.key */
+/* Bounds that keep a hostile case cheap; none is near a real case. A 4 MiB
+ * file of "1," would otherwise make 2 million nodes (over 200 MB), and one
+ * mapping of 200 000 keys took minutes, since duplicate keys are found by
+ * a linear search. The largest real case (1000 motions) has ~30 000 nodes. */
+#define RB_CASE_MAX_NODES 100000     /* keys, values and lists in one load */
+#define RB_CASE_MAX_KEYS 1024        /* keys in one mapping */
+/* Diagnostics kept per load; a case with thousands of errors gets the
+ * first ones and a count, and sorting them stays cheap. */
+#define RB_CASE_MAX_DIAGS 200
+/* Samples in all the records of one case together: the reader's own cap
+ * is per file, and 1000 motions may name the same large record. */
+#define RB_CASE_MAX_SAMPLES 10000000u
 
 typedef enum { RB_YNODE_SCALAR, RB_YNODE_MAP, RB_YNODE_SEQ } rb_ynode_kind;
 
@@ -91,6 +103,11 @@ typedef struct {
     int gap_is_ratio;           /* the gap was given as gap_ratio */
     double gap_ratio;
     int model_errors;           /* errors in equipment/anchorage/gap */
+    size_t n_nodes;             /* YAML nodes made, against RB_CASE_MAX_NODES */
+    size_t first_diag;          /* this load's first index in diags */
+    size_t n_dropped;           /* errors past RB_CASE_MAX_DIAGS, not kept */
+    rb_diag dropped;            /* the first of them */
+    size_t n_samples;           /* record samples held, RB_CASE_MAX_SAMPLES */
 } rb_cctx;
 
 /* --- case.c: diagnostics ------------------------------------------------ */

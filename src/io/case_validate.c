@@ -139,11 +139,28 @@ static int rb_load_record(rb_cctx *c, const rb_cmotion *cm, rb_case_motion *out,
         c->nomem = 1;
         return 0;
     }
-    rb_status st = rb_record_read(out->source, &cm->ropts, &out->series, &rd);
+    /* The records of a case share one sample budget (see case_internal.h). */
+    rb_record_opts ro = cm->ropts;
+    size_t budget = RB_CASE_MAX_SAMPLES - c->n_samples;
+    int shared = budget < RB_CASE_MAX_SAMPLES;
+    if (ro.max_points == 0 || ro.max_points > budget)
+        ro.max_points = budget;
+    rb_status st = budget ? rb_record_read(out->source, &ro, &out->series, &rd)
+                          : RB_ERR_LIMIT;
+    if (st == RB_ERR_LIMIT && shared) {
+        rb_series_free(&out->series);
+        rb_cctx_error_at(c, RB_ERR_LIMIT, cm->file_node->file, cm->file_node->line,
+                         cm->file_node->col, k, "cannot read record '%s': the "
+                         "records of one case may hold %u samples in all (the "
+                         "limit), and the motions before this one hold %zu",
+                         out->source, RB_CASE_MAX_SAMPLES, c->n_samples);
+        return 0;
+    }
     if (st != RB_OK) {
         rb_record_fail(c, cm, k, out->source, st, &rd);
         return 0;
     }
+    c->n_samples += out->series.n;
     if (cm->building_freq_hz > 0) {
         out->building_freq_hz = cm->building_freq_hz;
         out->building_damping = cm->building_damping;

@@ -9,10 +9,14 @@
  * depth, scalar size and file size are capped (case_internal.h). Syntax and
  * limit errors stop the walk; duplicate keys are reported and the walk goes
  * on. */
+#define _POSIX_C_SOURCE 200809L
 #include <errno.h>
+#include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <yaml.h>
 #include "case_internal.h"
 
@@ -92,6 +96,13 @@ static int rb_ywalk_next(rb_ywalk *w, yaml_event_t *ev)
 
 static rb_ynode *rb_ynode_new(rb_ywalk *w, rb_ynode_kind kind, yaml_mark_t m)
 {
+    if (++w->c->n_nodes > RB_CASE_MAX_NODES) {
+        char msg[160];
+        snprintf(msg, sizeof msg, "more than %d keys, values and lists in the "
+                 "case (the limit)", RB_CASE_MAX_NODES);
+        rb_ywalk_fatal(w, RB_ERR_LIMIT, (int)m.line + 1, (int)m.column + 1, msg);
+        return NULL;
+    }
     rb_ynode *n = calloc(1, sizeof *n);
     if (!n) {
         w->c->nomem = 1;
@@ -217,6 +228,15 @@ static int rb_ywalk_seq_items(rb_ywalk *w, rb_ynode *seq, int depth)
 /* Add key -> value to map, or report a duplicate (and drop the value). */
 static int rb_ywalk_add(rb_ywalk *w, rb_ynode *map, rb_ynode *key, rb_ynode *val)
 {
+    if (map->n == RB_CASE_MAX_KEYS) {
+        char msg[160];
+        snprintf(msg, sizeof msg, "more than %d keys in one mapping (the limit)",
+                 RB_CASE_MAX_KEYS);
+        rb_ywalk_fatal(w, RB_ERR_LIMIT, key->line, key->col, msg);
+        rb_ynode_free(key);
+        rb_ynode_free(val);
+        return 0;
+    }
     rb_yentry *old = rb_ymap_find(map, key->text);
     if (old) {
         rb_cctx_error(w->c, key, w->path, "duplicate key '%s' (first given at "
@@ -264,6 +284,14 @@ static int rb_ywalk_map_entries(rb_ywalk *w, rb_ynode *map, int depth)
         yaml_event_delete(&ev);
         if (!key)
             return 0;
+        /* An empty key ("? " or '""') has no dotted name to report
+         * anything against, and no key of the schema is empty. */
+        if (!key->text[0]) {
+            rb_ywalk_fatal(w, RB_ERR_PARSE, key->line, key->col, "a key must be "
+                           "a plain word, found an empty key");
+            rb_ynode_free(key);
+            return 0;
+        }
         snprintf(w->path + base, sizeof w->path - base, "%s%s",
                  base ? "." : "", key->text);
         rb_ynode *val = NULL;
@@ -357,18 +385,52 @@ static rb_ynode *rb_ywalk_stream(rb_ywalk *w)
     return root;
 }
 
-/* Read the whole file, refusing more than the size limit. */
+/* Open a base file named by `extends:`, refusing anything but a regular
+ * file: a case from elsewhere could name /dev/stdin, a terminal or a FIFO
+ * and stall the run. O_NONBLOCK keeps the open itself from waiting on a
+ * FIFO; it is cleared again before reading. NULL with errno, or with
+ * *not_regular set. */
+static FILE *rb_yaml_open_base(const char *file, int *not_regular)
+{
+    struct stat sb;
+    *not_regular = 0;
+    int fd = open(file, O_RDONLY | O_NONBLOCK);
+    if (fd < 0)
+        return NULL;
+    int flags = fcntl(fd, F_GETFL);
+    if (fstat(fd, &sb) != 0 || !S_ISREG(sb.st_mode)
+        || flags < 0 || fcntl(fd, F_SETFL, flags & ~O_NONBLOCK) != 0) {
+        *not_regular = 1;
+        close(fd);
+        return NULL;
+    }
+    FILE *f = fdopen(fd, "rb");
+    if (!f)
+        close(fd);
+    return f;
+}
+
+/* Read the whole file, refusing more than the size limit. The case file
+ * itself may be anything readable (`rockbolt check <(gen-case)`); bases
+ * must be regular files. */
 static rb_status rb_yaml_slurp(rb_cctx *c, const char *file, const rb_ynode *where,
                                const char *where_key, unsigned char **buf,
                                size_t *len)
 {
-    FILE *f = fopen(file, "rb");
+    int not_regular = 0;
+    errno = 0;
+    FILE *f = where ? rb_yaml_open_base(file, &not_regular) : fopen(file, "rb");
     const char *dfile = where ? where->file : file;
     int line = where ? where->line : 0, col = where ? where->col : 0;
     const char *key = where ? where_key : "case";
     if (!f) {
-        rb_cctx_error_at(c, RB_ERR_IO, dfile, line, col, key,
-                         "cannot open '%s': %s", file, strerror(errno));
+        if (not_regular)
+            rb_cctx_error_at(c, RB_ERR_IO, dfile, line, col, key, "cannot use "
+                             "'%s': expected a regular file (not a directory, "
+                             "device or pipe)", file);
+        else
+            rb_cctx_error_at(c, RB_ERR_IO, dfile, line, col, key,
+                             "cannot open '%s': %s", file, strerror(errno));
         return RB_ERR_IO;
     }
     *buf = malloc(RB_CASE_MAX_FILE_BYTES + 1);

@@ -6,11 +6,15 @@
  * capped, NUL bytes stop the read, and every number is checked against a
  * plain decimal grammar before strtod sees it (strtod alone would accept
  * hex, "nan" and "infinity"). */
+#define _POSIX_C_SOURCE 200809L
 #include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include "record_internal.h"
 
 /* Longest number token: 7-digit Fortran E fields are 15 wide; anything
@@ -37,10 +41,27 @@ rb_status rb_rec_reader_open(rb_rec_reader *r, const char *path, rb_diag *diag)
     memset(r, 0, sizeof *r);
     r->path = path;
     r->diag = diag;
+    /* Only regular files: a case from elsewhere could name /dev/stdin, a
+     * terminal or a FIFO and stall the run, and the format guess needs to
+     * rewind. O_NONBLOCK keeps the open from waiting on a FIFO; it is
+     * cleared before reading. */
     errno = 0;
-    r->fp = fopen(path, "rb");
-    if (!r->fp) {
+    int fd = open(path, O_RDONLY | O_NONBLOCK);
+    if (fd < 0) {
         const char *why = errno ? strerror(errno) : "unknown reason";
+        return rb_rec_fail_at(r, RB_ERR_IO, 0, 0, "cannot open the file: %s", why);
+    }
+    struct stat sb;
+    int flags = fcntl(fd, F_GETFL);
+    if (fstat(fd, &sb) != 0 || !S_ISREG(sb.st_mode)) {
+        close(fd);
+        return rb_rec_fail_at(r, RB_ERR_IO, 0, 0, "cannot use the file: expected a "
+                              "regular file (not a directory, device or pipe)");
+    }
+    if (flags < 0 || fcntl(fd, F_SETFL, flags & ~O_NONBLOCK) != 0
+        || !(r->fp = fdopen(fd, "rb"))) {
+        const char *why = errno ? strerror(errno) : "unknown reason";
+        close(fd);
         return rb_rec_fail_at(r, RB_ERR_IO, 0, 0, "cannot open the file: %s", why);
     }
     return RB_OK;

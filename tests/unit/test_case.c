@@ -250,7 +250,10 @@ static void test_error_catalogue(void)
 {
     static const char *const names[] = {"03-unknown-key", "13-gap-too-large",
         "16-duplicate-key", "19-alias", "20-deep-nesting", "21-long-scalar",
-        "23-missing-record", "31-two-documents", NULL};
+        "23-missing-record", "31-two-documents", "41-alias-bomb",
+        "42-deep-flow-nesting", "43-empty-key", "44-too-many-keys",
+        "45-record-huge-npts", "46-record-not-regular", "47-extends-not-regular",
+        NULL};
     for (size_t k = 0; names[k]; k++) {
         char path[128], expect[128], want[1024] = "", got[1200];
         rb_case c;
@@ -302,6 +305,150 @@ static void test_file_size_limit(void)
     rb_diag_list_free(&l);
 }
 
+/* Scratch files for the limit tests. */
+static char scratch[64];
+
+static const char *scratch_file(const char *name, const char *text)
+{
+    static char path[128];
+    snprintf(path, sizeof path, "%s/%s", scratch, name);
+    FILE *fp = fopen(path, "w");
+    CHECK(fp != NULL);
+    if (fp) {
+        fputs(text, fp);
+        fclose(fp);
+    }
+    return path;
+}
+
+#define LIMIT_BASE "extends: " RB_SOURCE_DIR "/cases/base/reference-cabinet.yaml\n"
+#define LIMIT_HARMONIC "motion: {type: harmonic, amplitude: 0.6 A*, frequency: 4 Hz, " \
+    "duration: 2.5 s}\n"
+
+/* A case of n_items one-character values under key. */
+static char *long_list(const char *key, size_t n_items)
+{
+    size_t cap = 256 + 2 * n_items;
+    char *text = malloc(cap);
+    if (!text)
+        return NULL;
+    size_t n = (size_t)snprintf(text, cap, LIMIT_BASE LIMIT_HARMONIC "%s: [", key);
+    for (size_t i = 0; i < n_items; i++) {
+        text[n++] = '1';
+        text[n++] = ',';
+    }
+    memcpy(text + n - 1, "]\n", 3);
+    return text;
+}
+
+/* Node count: a list of 100 000 values is refused with RB_ERR_LIMIT
+ * naming the limit; one of 99 000 is only an unknown key. */
+static void test_node_limit(void)
+{
+    rb_case c;
+    rb_diag_list l;
+    char *text = long_list("huge", 100000);
+    CHECK(text != NULL);
+    if (!text)
+        return;
+    CHECK(load(scratch_file("nodes.yaml", text), &c, &l) == RB_ERR_LIMIT);
+    CHECK(l.n == 1 && strstr(l.items[0].msg, "more than 100000 keys, values and "
+                             "lists in the case (the limit)"));
+    CHECK(l.n == 1 && l.items[0].line == 3 && strncmp(l.items[0].key, "huge[", 5) == 0);
+    rb_diag_list_free(&l);
+    free(text);
+    text = long_list("huge", 99000);
+    CHECK(text != NULL);
+    if (!text)
+        return;
+    CHECK(load(scratch_file("nodes.yaml", text), &c, &l) == RB_ERR_INVALID);
+    CHECK(l.n == 1 && strstr(l.items[0].msg, "unknown key 'huge'"));
+    rb_diag_list_free(&l);
+    free(text);
+}
+
+/* Diagnostics: 300 errors give the first 200 in reading order and one
+ * line that counts the rest. */
+static void test_diag_limit(void)
+{
+    rb_case c;
+    rb_diag_list l;
+    char text[12000];
+    size_t n = (size_t)snprintf(text, sizeof text, LIMIT_BASE LIMIT_HARMONIC
+                                "equipment:\n");
+    for (int i = 0; i < 300; i++)
+        n += (size_t)snprintf(text + n, sizeof text - n, "  bogus%d: 1\n", i);
+    CHECK(load(scratch_file("diags.yaml", text), &c, &l) == RB_ERR_INVALID);
+    CHECK(l.n == 201);
+    if (l.n == 201) {
+        CHECK(strcmp(l.items[0].key, "equipment.bogus0") == 0);
+        CHECK(strcmp(l.items[199].key, "equipment.bogus199") == 0);
+        CHECK(strstr(l.items[200].msg, "too many errors: 100 more not shown (at "
+                     "most 200 are listed)") != NULL);
+        CHECK(strcmp(l.items[200].key, "equipment.bogus200") == 0);
+        CHECK(l.items[200].line == 4 + 200);   /* bogus0 is on line 4 */
+    }
+    rb_diag_list_free(&l);
+}
+
+/* Samples: the records of one case share a budget of 10 000 000. A
+ * header that claims 9 999 999 points fits one record but not the budget
+ * left after a 2-point record, and is refused at the header (so this test
+ * reads three values, not ten million). */
+static void test_sample_budget(void)
+{
+    rb_case c;
+    rb_diag_list l;
+    scratch_file("two.at2", "x\ny\nUNITS OF G\nNPTS= 2, DT= .01 SEC\n.1 .2\n");
+    scratch_file("claims.at2", "x\ny\nUNITS OF G\nNPTS= 9999999, DT= .01 SEC\n.1\n");
+    const char *p = scratch_file("budget.yaml", LIMIT_BASE "motions:\n"
+        "  - {type: record, file: two.at2, peak: 0.1 A*}\n"
+        "  - {type: record, file: claims.at2, peak: 0.1 A*}\n");
+    CHECK(load(p, &c, &l) == RB_ERR_LIMIT);
+    CHECK(l.n == 1 && strstr(l.items[0].msg, "may hold 10000000 samples in all (the "
+                             "limit), and the motions before this one hold 2"));
+    CHECK(l.n == 1 && strcmp(l.items[0].key, "motions[2].file") == 0
+          && l.items[0].line == 4);
+    rb_diag_list_free(&l);
+    /* Alone, the same record is within the budget and fails only because
+     * it holds 1 value, not the 9 999 999 it claims. */
+    p = scratch_file("alone.yaml", LIMIT_BASE "motions:\n"
+        "  - {type: record, file: claims.at2, peak: 0.1 A*}\n");
+    CHECK(load(p, &c, &l) == RB_ERR_IO);
+    CHECK(l.n == 1 && strstr(l.items[0].msg, "found the end of the file after 1 values"));
+    rb_diag_list_free(&l);
+}
+
+/* A base that is a directory is refused as not a regular file. */
+static void test_base_not_regular(void)
+{
+    rb_case c;
+    rb_diag_list l;
+    const char *p = scratch_file("dir-base.yaml", "extends: .\n" LIMIT_HARMONIC);
+    CHECK(load(p, &c, &l) == RB_ERR_IO);
+    CHECK(l.n == 1 && strstr(l.items[0].msg, "expected a regular file"));
+    CHECK(l.n == 1 && l.items[0].line == 1 && l.items[0].col == 10);
+    rb_diag_list_free(&l);
+}
+
+static void test_limits(void)
+{
+    snprintf(scratch, sizeof scratch, "/tmp/rb-case-limits-XXXXXX");
+    CHECK(mkdtemp(scratch) != NULL);
+    test_node_limit();
+    test_diag_limit();
+    test_sample_budget();
+    test_base_not_regular();
+    static const char *const names[] = {"nodes.yaml", "diags.yaml", "two.at2",
+        "claims.at2", "budget.yaml", "alone.yaml", "dir-base.yaml"};
+    for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
+        char path[128];
+        snprintf(path, sizeof path, "%s/%s", scratch, names[i]);
+        remove(path);
+    }
+    rmdir(scratch);
+}
+
 int main(void)
 {
     test_reference_harmonic();
@@ -312,5 +459,6 @@ int main(void)
     test_all_errors();
     test_error_catalogue();
     test_file_size_limit();
+    test_limits();
     TEST_MAIN_END();
 }

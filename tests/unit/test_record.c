@@ -398,7 +398,8 @@ static void test_files_and_options(void)
     char missing[600];
     snprintf(missing, sizeof missing, "%s/no-such-file.at2", tmp_dir);
     EXPECT_FAIL(missing, &o, RB_ERR_IO, 0, 0, "cannot open the file");
-    EXPECT_FAIL(tmp_dir, &o, RB_ERR_IO, 1, 0, "read error");
+    EXPECT_FAIL(tmp_dir, &o, RB_ERR_IO, 0, 0, "expected a regular file");
+    EXPECT_FAIL("/dev/null", &o, RB_ERR_IO, 0, 0, "expected a regular file");
     EXPECT_FAIL(put("empty.txt", ""), &o, RB_ERR_PARSE, 1, 1, "empty file");
     EXPECT_FAIL(put("blank.txt", "\n  \n"), &o, RB_ERR_PARSE, 2, 3, "found no data");
     EXPECT_FAIL(put("words.txt", "hello world\n"), &o, RB_ERR_PARSE, 1, 1,
