@@ -216,18 +216,22 @@ double rb_dyn_uplift_guard(const rb_sys *S, double t, const double *y, int side)
     return side < 0 ? g[1] : g[0];
 }
 
-/* The guard is affine in (x'', U, U') with the same constant part Q0 on
- * both sides, and the mirror negates the rest: g(-) = 2 Q0 - g(+). */
+/* The guard is affine in (x'', U, U'): a constant part Q0 common to both
+ * sides plus a part the mirror negates. Computing that part once and
+ * adding it with either sign keeps the two sides exact mirrors of each
+ * other, to the last bit, as evaluating each side separately did. */
 void rb_dyn_uplift_guards(const rb_sys *S, double t, const double *y, double *g)
 {
     const rb_derived *d = &S->d;
-    rb_loads L;
+    rb_loads L, L0;
     double x = floor_accel(S, t, y);
     loads(S, x, y[RB_Y_U], y[RB_Y_UD], 0, 0, &L);
-    double q0 = L.Qth - x * L.in_th;
-    g[0] = S->model->rigid ? L.Qth
-           : L.Qth - d->Fstar * (L.QU - d->Cstar * y[RB_Y_UD]) / d->Mstar;
-    g[1] = 2 * q0 - g[0];
+    loads(S, 0, 0, 0, 0, 0, &L0);
+    double lin = x * L.in_th;
+    if (!S->model->rigid)
+        lin -= d->Fstar * (L.QU - d->Cstar * y[RB_Y_UD]) / d->Mstar;
+    g[0] = L0.Qth + lin;
+    g[1] = L0.Qth - lin;
 }
 
 double rb_dyn_kinetic(const rb_sys *S, const rb_disc *D, const double *y)
