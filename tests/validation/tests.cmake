@@ -1,0 +1,15 @@
+# Validation against the thesis (label "validation"): rb_validate runs the
+# cases of cases/thesis/ and compares them with the thesis values of
+# cases/thesis/expected.csv. From the source root,
+#   ./build/rb_validate --write docs/validation.md
+# regenerates the published report; the ctest writes its copy into the
+# build tree and fails when a row that must agree leaves its tolerance.
+file(GLOB RB_VALIDATE_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/tests/validation/*.c)
+add_executable(rb_validate ${RB_VALIDATE_SOURCES})
+rb_target_defaults(rb_validate)
+target_link_libraries(rb_validate PRIVATE rb_io)
+add_test(NAME validation
+         COMMAND rb_validate --root ${PROJECT_SOURCE_DIR}
+                 --write ${CMAKE_CURRENT_BINARY_DIR}/validation.md)
+set_tests_properties(validation PROPERTIES LABELS validation
+    WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} TIMEOUT 900)
