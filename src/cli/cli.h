@@ -35,6 +35,8 @@ typedef struct {
     const char *init_path;    /* init: the file to create */
     const char *sweep_csv_path; /* design: --sweep-csv FILE, or NULL */
     int threads;              /* design: -j N; 0: every processor */
+    const char *svg_path;     /* --svg FILE: the figures, or NULL */
+    const char *html_path;    /* --html FILE: report and figures, or NULL */
 } rb_cli_opts;
 
 /* Parse argv into o. Returns RB_EXIT_PASS, or RB_EXIT_USAGE after printing
@@ -48,9 +50,10 @@ rb_exit rb_cli_check_run(const rb_cli_opts *o);
  * runs rb_design_case and prints a failure. */
 rb_exit rb_cli_design_step(const rb_cli_opts *o, const rb_case *c, rb_case_design *d);
 
-/* The file name of the i-th of n sweep CSVs: the --sweep-csv name itself
- * when n is 1, else with "-<i+1>" before its extension. NULL on overflow. */
-const char *rb_cli_sweep_csv_name(const char *base, size_t i, size_t n, char *buf,
+/* The file name of the i-th of n files asked for under one name (sweep
+ * CSVs, figures): the name itself when n is 1, else with "-<i+1>" before
+ * its extension. NULL on overflow. */
+const char *rb_cli_numbered_name(const char *base, size_t i, size_t n, char *buf,
                                   size_t size);
 rb_exit rb_cli_init_run(const rb_cli_opts *o);
 

@@ -103,6 +103,10 @@ static rb_exit check_option(int argc, char **argv, int *i, rb_cli_opts *o)
         return take_value(argc, argv, i, "--text", val, &o->text_path);
     if (opt_is(arg, "--history", &val))
         return take_value(argc, argv, i, "--history", val, &o->history_path);
+    if (opt_is(arg, "--svg", &val))
+        return take_value(argc, argv, i, "--svg", val, &o->svg_path);
+    if (opt_is(arg, "--html", &val))
+        return take_value(argc, argv, i, "--html", val, &o->html_path);
     if (strcmp(arg, "--quiet") == 0 || strcmp(arg, "-q") == 0) {
         o->quiet = 1;
         return RB_EXIT_PASS;
@@ -115,13 +119,13 @@ static rb_exit check_option(int argc, char **argv, int *i, rb_cli_opts *o)
 /* Two outputs, or an output and the case, must not be the same file. */
 static rb_exit check_distinct(const rb_cli_opts *o)
 {
-    const char *p[5] = { o->json_path, o->text_path, o->history_path,
-                         o->sweep_csv_path, o->case_path };
-    static const char *const what[5] = { "--json", "--text", "--history",
-                                         "--sweep-csv", "the case" };
+    const char *p[7] = { o->json_path, o->text_path, o->history_path,
+                         o->sweep_csv_path, o->svg_path, o->html_path, o->case_path };
+    static const char *const what[7] = { "--json", "--text", "--history",
+                                         "--sweep-csv", "--svg", "--html", "the case" };
     int a, b;
-    for (a = 0; a < 4; a++)
-        for (b = a + 1; b < 5; b++)
+    for (a = 0; a < 6; a++)
+        for (b = a + 1; b < 7; b++)
             if (p[a] && p[b] && strcmp(p[a], p[b]) == 0) {
                 rb_cli_error(p[a], what[a], "same file as %s", what[b]);
                 return RB_EXIT_USAGE;

@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "cli.h"
+#include "rockbolt/plot.h"
 
 #define RB_HISTORY_DT_DEFAULT_S 0.01
 
@@ -22,6 +23,10 @@ typedef struct {
     const char *tmpl_origin;
     char *json, *text;       /* rendered reports, owned */
     rb_case_design design;   /* design only; owned */
+    char **svgs;             /* figures: each motion's history, then each
+                                sweep; n_svgs owned strings */
+    size_t n_svgs;
+    char *html;              /* owned */
 } check_run;
 
 static void run_free(check_run *r)
@@ -36,18 +41,22 @@ static void run_free(check_run *r)
     free(r->json);
     free(r->text);
     rb_case_design_free(&r->design);
+    for (i = 0; i < r->n_svgs; i++)
+        free(r->svgs[i]);
+    free(r->svgs);
+    free(r->html);
     rb_case_free(&r->c);
 }
 
 /* Every output's directory must exist and be writable before we start. */
 static rb_exit check_output_paths(const rb_cli_opts *o)
 {
-    const char *paths[4] = { o->json_path, o->text_path, o->history_path,
-                             o->sweep_csv_path };
-    static const char *const opts[4] = { "--json", "--text", "--history",
-                                         "--sweep-csv" };
+    const char *paths[6] = { o->json_path, o->text_path, o->history_path,
+                             o->sweep_csv_path, o->svg_path, o->html_path };
+    static const char *const opts[6] = { "--json", "--text", "--history",
+                                         "--sweep-csv", "--svg", "--html" };
     int i;
-    for (i = 0; i < 4; i++) {
+    for (i = 0; i < 6; i++) {
         rb_diag d;
         rb_diag_clear(&d);
         if (paths[i] && rb_outfile_check(paths[i], &d) != RB_OK) {
@@ -95,7 +104,8 @@ static rb_exit prepare(const rb_cli_opts *o, check_run *r)
         rb_cli_error(NULL, NULL, "out of memory");
         return RB_EXIT_INTERNAL;
     }
-    if (!o->text_path && o->quiet)
+    /* the HTML page carries the text report */
+    if (!o->text_path && !o->html_path && o->quiet)
         return RB_EXIT_PASS;
     st = rb_template_load("report.txt", &r->tmpl, &r->tmpl_origin, &d);
     if (st != RB_OK) {
@@ -110,7 +120,7 @@ static rb_exit solve_all(const rb_cli_opts *o, check_run *r)
 {
     rb_solve_opts so = r->c.solve;
     size_t i;
-    if (r->c.write_history || o->history_path) {
+    if (r->c.write_history || o->history_path || o->svg_path || o->html_path) {
         if (!(so.history_dt_s > 0))
             so.history_dt_s = RB_HISTORY_DT_DEFAULT_S;
     }
@@ -165,7 +175,7 @@ static rb_exit render_reports(const rb_cli_opts *o, check_run *r)
     return RB_EXIT_PASS;
 }
 
-typedef enum { OUT_JSON, OUT_TEXT, OUT_HISTORY, OUT_SWEEP } out_kind;
+typedef enum { OUT_JSON, OUT_TEXT, OUT_HISTORY, OUT_SWEEP, OUT_SVG, OUT_HTML } out_kind;
 
 /* One output file of the run; sweeps are numbered frequency sweeps first,
  * then each motion's amplitude sweeps, in case order. */
@@ -174,6 +184,7 @@ typedef struct {
     const char *path;
     char name[4096];         /* path storage for derived sweep names */
     const rb_sweep *sweep;
+    const char *data;        /* SVG and HTML: the rendered text */
 } out_file;
 
 static size_t count_sweeps(const rb_case_design *d)
@@ -198,12 +209,53 @@ static const rb_sweep *sweep_at(const rb_case_design *d, size_t k)
     return NULL;
 }
 
+/* The figures (--svg, --html): every motion's time history, then every
+ * sweep, so the numbering of --svg files follows the report's order. */
+static rb_exit render_figures(const rb_cli_opts *o, check_run *r)
+{
+    size_t n_sw = count_sweeps(&r->design), n = r->c.n_motions + n_sw, i;
+    rb_status st = RB_OK;
+    rb_diag d;
+    char title[256];
+    if (!o->svg_path && !o->html_path)
+        return RB_EXIT_PASS;
+    if (!(r->svgs = calloc(n ? n : 1, sizeof *r->svgs))) {
+        rb_cli_error(NULL, NULL, "out of memory");
+        return RB_EXIT_INTERNAL;
+    }
+    rb_diag_clear(&d);
+    for (i = 0; i < n && st == RB_OK; i++, r->n_svgs++) {
+        if (i < r->c.n_motions) {
+            st = rb_plot_history_svg(&r->rep, i, &r->svgs[i], &d);
+            continue;
+        }
+        const rb_sweep *sw = sweep_at(&r->design, i - r->c.n_motions);
+        snprintf(title, sizeof title, "%.150s: %s sweep", r->c.name ? r->c.name : "case",
+                 sw->kind == RB_SWEEP_FREQUENCY ? "frequency" : "amplitude");
+        st = rb_plot_sweep_svg(sw, title, &r->svgs[i], &d);
+    }
+    if (st == RB_OK && o->html_path) {
+        snprintf(title, sizeof title, "rockbolt %s: %.150s, %s",
+                 o->command == RB_CMD_DESIGN ? "design" : "check",
+                 r->c.name ? r->c.name : "case", r->rep.pass ? "PASS" : "FAIL");
+        st = rb_plot_html_page(title, r->text, (const char *const *)r->svgs, r->n_svgs,
+                               &r->html, &d);
+    }
+    if (st != RB_OK) {
+        rb_cli_error(NULL, d.key[0] ? d.key : NULL, "cannot draw the figures: %s%s%s",
+                     rb_status_str(st), d.msg[0] ? ": " : "", d.msg);
+        return RB_EXIT_INTERNAL;
+    }
+    return RB_EXIT_PASS;
+}
+
 /* The list of outputs asked for; *n_out set. NULL (after printing) if the
  * list cannot be made. */
 static out_file *list_outputs(const rb_cli_opts *o, const check_run *r, size_t *n_out)
 {
     size_t n_sw = o->sweep_csv_path ? count_sweeps(&r->design) : 0, n = 0, k;
-    out_file *f = calloc(3 + n_sw, sizeof *f);
+    size_t n_fig = o->svg_path ? r->n_svgs : 0;
+    out_file *f = calloc(4 + n_sw + n_fig, sizeof *f);
     if (!f) {
         rb_cli_error(NULL, NULL, "out of memory");
         return NULL;
@@ -217,10 +269,23 @@ static out_file *list_outputs(const rb_cli_opts *o, const check_run *r, size_t *
     for (k = 0; k < n_sw; k++, n++) {
         f[n].kind = OUT_SWEEP;
         f[n].sweep = sweep_at(&r->design, k);
-        f[n].path = rb_cli_sweep_csv_name(o->sweep_csv_path, k, n_sw, f[n].name,
+        f[n].path = rb_cli_numbered_name(o->sweep_csv_path, k, n_sw, f[n].name,
                                           sizeof f[n].name);
         if (!f[n].path) {
             rb_cli_error(o->sweep_csv_path, "--sweep-csv", "file name too long");
+            free(f);
+            return NULL;
+        }
+    }
+    if (o->html_path)
+        f[n].kind = OUT_HTML, f[n].data = r->html, f[n++].path = o->html_path;
+    for (k = 0; k < n_fig; k++, n++) {
+        f[n].kind = OUT_SVG;
+        f[n].data = r->svgs[k];
+        f[n].path = rb_cli_numbered_name(o->svg_path, k, n_fig, f[n].name,
+                                         sizeof f[n].name);
+        if (!f[n].path) {
+            rb_cli_error(o->svg_path, "--svg", "file name too long");
             free(f);
             return NULL;
         }
@@ -231,7 +296,8 @@ static out_file *list_outputs(const rb_cli_opts *o, const check_run *r, size_t *
 
 static rb_status fill_output(const out_file *of, FILE *fp, const check_run *r, rb_diag *d)
 {
-    const char *s = of->kind == OUT_JSON ? r->json : r->text;
+    const char *s = of->kind == OUT_JSON ? r->json : of->kind == OUT_TEXT ? r->text
+                                                                       : of->data;
     if (of->kind == OUT_HISTORY)
         return rb_history_write_csv(fp, &r->rep, d);
     if (of->kind == OUT_SWEEP)
@@ -300,6 +366,8 @@ rb_exit rb_cli_check_run(const rb_cli_opts *o)
     }
     if (e == RB_EXIT_PASS)
         e = render_reports(o, &r);
+    if (e == RB_EXIT_PASS)
+        e = render_figures(o, &r);
     if (e == RB_EXIT_PASS)
         e = write_outputs(o, &r);
     if (e == RB_EXIT_PASS && !o->quiet) {

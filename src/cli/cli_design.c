@@ -16,7 +16,7 @@ rb_exit rb_cli_design_step(const rb_cli_opts *o, const rb_case *c, rb_case_desig
     return st == RB_ERR_INVALID ? RB_EXIT_USAGE : RB_EXIT_INTERNAL;
 }
 
-const char *rb_cli_sweep_csv_name(const char *base, size_t i, size_t n, char *buf,
+const char *rb_cli_numbered_name(const char *base, size_t i, size_t n, char *buf,
                                   size_t size)
 {
     const char *slash = strrchr(base, '/');

@@ -7,7 +7,7 @@ void rb_cli_help_print(void)
 {
     fputs(
 "usage: rockbolt check CASE.yaml [--json FILE] [--text FILE] [--history FILE]\n"
-"                      [--quiet]\n"
+"                      [--svg FILE] [--html FILE] [--quiet]\n"
 "       rockbolt design CASE.yaml [check's options] [-j N] [--sweep-csv FILE]\n"
 "       rockbolt init [FILE]\n"
 "       rockbolt --help | --version\n"
@@ -33,6 +33,10 @@ void rb_cli_help_print(void)
 "                    gets only the verdict line\n"
 "  --history FILE    write the time histories as CSV (one row per output\n"
 "                    interval of the case, default 0.01 s)\n"
+"  --svg FILE        draw the stacked time-history figure of each motion\n"
+"                    (thesis Figs. 5.13-6.18) and, for design, each sweep;\n"
+"                    several figures go to FILE-1, FILE-2, ... in that order\n"
+"  --html FILE       one self-contained page: the text report and the figures\n"
 "  -q, --quiet       print nothing on standard output\n"
 "\n"
 "options of design (and all of check's):\n"

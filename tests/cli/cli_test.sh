@@ -387,8 +387,26 @@ test_suite() {
     echo "suite: ok (governing motion $bi)"
 }
 
+# --svg and --html: one figure per motion, then one per sweep; the page
+# holds the text report and every figure. (XML well-formedness and the
+# browser render are the plot tests' business.)
+test_figures() {
+    run check "$HARMONIC" --svg "$D/h.svg" --quiet
+    [ "$rc" -eq 0 ] || [ "$rc" -eq 1 ] || fail "exit code $rc"
+    [ "$(grep -o '<path' "$D/h.svg" | wc -l)" -eq 9 ] || fail "9 series in h.svg"
+    run design "$DESIGN" --svg "$D/f.svg" --html "$D/p.html" --text "$D/p.txt"
+    [ "$rc" -eq 0 ] || [ "$rc" -eq 1 ] || fail "exit code $rc"
+    for f in f-1.svg f-2.svg f-3.svg p.html; do [ -s "$D/$f" ] || fail "$f missing"; done
+    [ -e "$D/f-4.svg" ] && fail "one history and two sweeps make three figures"
+    [ "$(grep -o '<svg' "$D/p.html" | wc -l)" -eq 3 ] || fail "three figures in the page"
+    grep -q "design factor, no yield" "$D/p.html" || fail "text report not in the page"
+    run check "$HARMONIC" --svg "$D/same" --html "$D/same"; expect_rc 2 "--svg and --html on one file"
+    no_temp_files "$D"
+    echo "figures: ok"
+}
+
 case "$T" in
-    help|usage|harmonic|consistency|stdout|elcentro|unwritable|preserved|history|init|template|solver_error|free_standing|design|design_threads|suite)
+    help|usage|harmonic|consistency|stdout|elcentro|unwritable|preserved|history|init|template|solver_error|free_standing|design|design_threads|suite|figures)
         "test_$T" ;;
     *) echo "unknown test $T"; exit 1 ;;
 esac
