@@ -94,6 +94,12 @@ typedef struct {
     rb_case_motion *motions;  /* owned array of n_motions (>= 1) */
     size_t n_motions;
     int write_history;        /* analysis.history: true */
+    /* Every file the load read: the case file, its bases, then the records
+     * of the motions, each once, as resolved (the paths diagnostics use).
+     * Owned. A caller about to write output files compares them with
+     * these, so that no report ever overwrites an input. */
+    char **input_files;
+    size_t n_input_files;
 } rb_case;
 
 /* One diagnostic per problem; a load reports all it finds. */

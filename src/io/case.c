@@ -133,7 +133,42 @@ void rb_case_free(rb_case *c)
         rb_series_free(&c->motions[i].series);
     }
     free(c->motions);
+    for (size_t i = 0; c->input_files && i < c->n_input_files; i++)
+        free(c->input_files[i]);
+    free(c->input_files);
     memset(c, 0, sizeof *c);
+}
+
+/* Append a copy of path to cs->input_files unless it is there already. */
+static int rb_case_add_input(rb_case *cs, const char *path)
+{
+    for (size_t i = 0; i < cs->n_input_files; i++)
+        if (strcmp(cs->input_files[i], path) == 0)
+            return 1;
+    size_t len = strlen(path) + 1;
+    char *copy = malloc(len);
+    if (!copy)
+        return 0;
+    memcpy(copy, path, len);
+    cs->input_files[cs->n_input_files++] = copy;
+    return 1;
+}
+
+/* The YAML files the loader read (c->files, in reading order) and the
+ * record files of the motions. */
+static int rb_case_list_inputs(const rb_cctx *c, rb_case *cs)
+{
+    cs->input_files = calloc(c->n_files + cs->n_motions + 1, sizeof *cs->input_files);
+    if (!cs->input_files)
+        return 0;
+    for (size_t i = 0; i < c->n_files; i++)
+        if (!rb_case_add_input(cs, c->files[i]))
+            return 0;
+    for (size_t i = 0; i < cs->n_motions; i++)
+        if (cs->motions[i].motion.kind == RB_MOTION_SAMPLED && cs->motions[i].source
+            && !rb_case_add_input(cs, cs->motions[i].source))
+            return 0;
+    return 1;
 }
 
 static void rb_cctx_free(rb_cctx *c)
@@ -232,6 +267,8 @@ rb_status rb_case_load(const char *path, rb_case *out, rb_diag_list *diags)
     rb_status st = c.nomem ? RB_ERR_NOMEM : c.status;
     if (st == RB_OK && c.n_errors > 0)
         st = RB_ERR_INVALID;
+    if (st == RB_OK && !rb_case_list_inputs(&c, out))
+        st = RB_ERR_NOMEM;
     rb_cctx_free(&c);
     if (st != RB_OK)
         rb_case_free(out);

@@ -94,6 +94,9 @@ static void check_loaded(const rb_case *c, const rb_diag_list *l)
         rb_fuzz_fail("a case that loads has diagnostics", l->items[0].msg);
     if (c->n_motions < 1 || !c->motions || !c->name || !c->path)
         rb_fuzz_fail("a case that loads has no motion or no name", NULL);
+    if (c->n_input_files < 1 || strcmp(c->input_files[0], c->path) != 0)
+        rb_fuzz_fail("a case that loads does not list itself as its first input",
+                     NULL);
     for (size_t i = 0; i < c->n_motions; i++) {
         const rb_case_motion *m = &c->motions[i];
         if (!(m->motion.duration_s > 0.0) || !isfinite(m->motion.duration_s))

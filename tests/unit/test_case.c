@@ -115,6 +115,13 @@ static void test_reference_records(void)
     check_reference_model(&c.model, 1e-12);
     check_record(&c, 4000, 39.99);
     CHECK(c.motions[0].name && strcmp(c.motions[0].name, "elcentro_1940_ns.at2") == 0);
+    /* Every file read, each once: the case, its base, its record. */
+    CHECK(c.n_input_files == 3);
+    if (c.n_input_files == 3) {
+        CHECK(strcmp(c.input_files[0], "cases/reference-elcentro.yaml") == 0);
+        CHECK(strcmp(c.input_files[1], "cases/base/reference-cabinet.yaml") == 0);
+        CHECK(strcmp(c.input_files[2], "cases/records/elcentro_1940_ns.at2") == 0);
+    }
     rb_case_free(&c);
     rb_diag_list_free(&l);
     CHECK(load("cases/reference-taft.yaml", &c, &l) == RB_OK);
