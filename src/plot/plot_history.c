@@ -9,7 +9,9 @@
 #define FIG_W 1000.0
 #define LEFT 100.0
 #define RIGHT 32.0
-#define TOP 96.0
+#define TITLE_H 72.0    /* title, verdict and levels */
+#define MARK_ROW 13.0   /* one row of marker labels */
+#define MAX_MARKERS 5
 #define PANEL_H 135.0
 #define PANEL_GAP 14.0
 #define N_PANELS 6
@@ -129,13 +131,14 @@ static void build_specs(const rb_report *rep, const rb_result *res,
     }
 }
 
-static void layout_panel(rb_panel *p, int k, const panel_spec *ps, const rb_history *h)
+static void layout_panel(rb_panel *p, int k, double top, const panel_spec *ps,
+                         const rb_history *h)
 {
     double lo = ps->must_lo, hi = ps->must_hi, a, b;
     int i;
     p->x0 = LEFT;
     p->w = FIG_W - LEFT - RIGHT;
-    p->y0 = TOP + k * (PANEL_H + PANEL_GAP);
+    p->y0 = top + k * (PANEL_H + PANEL_GAP);
     p->h = PANEL_H;
     rb_axis_nice(&p->xa, h->t[0], h->t[h->n - 1], 10, 0);
     for (i = 0; i < ps->n; i++) {
@@ -212,22 +215,38 @@ typedef struct {
     const char *kind;     /* class: yield, break, overturn */
     const char *label;
     const char *colour;
+    double x;             /* in the figure */
+    int row;              /* label row above the panels, 0 nearest */
+    int right;            /* label to the right of the line (else left) */
 } marker;
 
-static int collect_markers(const rb_result *res, marker m[5])
+static int collect_markers(const rb_result *res, marker m[MAX_MARKERS])
 {
     static const char *const yl[2] = { "yield L", "yield R" };
     static const char *const bl[2] = { "break L", "break R" };
     int n = 0, row, i, j;
+    memset(m, 0, MAX_MARKERS * sizeof *m);
     for (row = 0; row < 2; row++) {
-        if (res->yielded[row] && isfinite(res->first_yield_s[row]))
-            m[n++] = (marker){ res->first_yield_s[row], "yield", yl[row], "#c98a00" };
-        if (res->broken[row] && isfinite(res->break_s[row]))
-            m[n++] = (marker){ res->break_s[row], "break", bl[row], "#b00000" };
+        if (res->yielded[row] && isfinite(res->first_yield_s[row])) {
+            m[n].t = res->first_yield_s[row];
+            m[n].kind = "yield";
+            m[n].label = yl[row];
+            m[n++].colour = "#c98a00";
+        }
+        if (res->broken[row] && isfinite(res->break_s[row])) {
+            m[n].t = res->break_s[row];
+            m[n].kind = "break";
+            m[n].label = bl[row];
+            m[n++].colour = "#b00000";
+        }
     }
-    if (res->overturned && isfinite(res->overturn_s))
-        m[n++] = (marker){ res->overturn_s, "overturn", "overturn", "#000000" };
-    for (i = 1; i < n; i++)          /* by time, for staggering the labels */
+    if (res->overturned && isfinite(res->overturn_s)) {
+        m[n].t = res->overturn_s;
+        m[n].kind = "overturn";
+        m[n].label = "overturn";
+        m[n++].colour = "#000000";
+    }
+    for (i = 1; i < n; i++)          /* by time, for placing the labels */
         for (j = i; j > 0 && m[j].t < m[j - 1].t; j--) {
             marker t = m[j];
             m[j] = m[j - 1];
@@ -236,31 +255,60 @@ static int collect_markers(const rb_result *res, marker m[5])
     return n;
 }
 
-static void draw_markers(rb_sbuf *b, const rb_panel *top, double bottom,
-                         const rb_result *res)
+/* Labels are "yield R 2.545 s" beside their line; events close in time
+ * (yield, break and overturn within a few tenths of a second) get rows of
+ * their own instead of overprinting. Returns the number of rows used. */
+static int place_markers(marker *m, int n, const rb_panel *p)
 {
-    marker m[5];
-    double last_x[2] = { -1e9, -1e9 };
-    int n = collect_markers(res, m), i;
+    double row_end[MAX_MARKERS];
+    int i, r, rows = 0;
+    for (r = 0; r < MAX_MARKERS; r++)
+        row_end[r] = -1e9;
     for (i = 0; i < n; i++) {
-        double x = rb_panel_x(top, m[i].t);
-        int row = x - last_x[0] >= 62 ? 0 : x - last_x[1] >= 62 ? 1 : i % 2;
+        char lab[64];
+        double w;
+        m[i].x = rb_panel_x(p, m[i].t);
+        snprintf(lab, sizeof lab, "%s %.3f s", m[i].label, m[i].t);
+        w = 6.3 * (double)strlen(lab);
+        m[i].right = m[i].x + 3 + w <= FIG_W - 2;
+        for (r = 0; r < MAX_MARKERS - 1; r++)
+            if (row_end[r] + 8 <= (m[i].right ? m[i].x + 3 : m[i].x - 3 - w))
+                break;
+        m[i].row = r;
+        row_end[r] = m[i].right ? m[i].x + 3 + w : m[i].x - 3;
+        if (r + 1 > rows)
+            rows = r + 1;
+    }
+    return rows;
+}
+
+/* Lines first, then the labels with a white halo, so that a line never
+ * runs through the label of an earlier event. */
+static void draw_markers(rb_sbuf *b, const marker *m, int n, const rb_panel *top,
+                         double bottom)
+{
+    int i;
+    for (i = 0; i < n; i++) {
         if (m[i].t < top->xa.lo || m[i].t > top->xa.hi)
             continue;
-        last_x[row] = x;
-        rb_sbuf_printf(b, "<g class=\"marker %s\">\n<line x1=\"%.1f\" y1=\"%.1f\" "
+        rb_sbuf_printf(b, "<line class=\"marker %s\" x1=\"%.1f\" y1=\"%.1f\" "
                        "x2=\"%.1f\" y2=\"%.1f\" stroke=\"%s\" stroke-width=\"1.2\" "
-                       "stroke-dasharray=\"6 3\"/>\n", m[i].kind, x, top->y0 - 4 - 13 * row,
-                       x, bottom, m[i].colour);
-        {
-            char lab[64];
-            snprintf(lab, sizeof lab, "%s %.3f s", m[i].label, m[i].t);
-            rb_sbuf_printf(b, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"11\" "
-                           "text-anchor=\"middle\" fill=\"%s\">", x,
-                           top->y0 - 7 - 13 * row, m[i].colour);
-            rb_sbuf_escape(b, lab);
-            rb_sbuf_puts(b, "</text>\n</g>\n");
-        }
+                       "stroke-dasharray=\"6 3\"/>\n", m[i].kind, m[i].x,
+                       top->y0 - 14 - MARK_ROW * m[i].row, m[i].x, bottom, m[i].colour);
+    }
+    for (i = 0; i < n; i++) {
+        char lab[64];
+        if (m[i].t < top->xa.lo || m[i].t > top->xa.hi)
+            continue;
+        snprintf(lab, sizeof lab, "%s %.3f s", m[i].label, m[i].t);
+        rb_sbuf_printf(b, "<text class=\"marker-label\" x=\"%.1f\" y=\"%.1f\" "
+                       "font-size=\"11\" text-anchor=\"%s\" fill=\"%s\" "
+                       "stroke=\"#ffffff\" stroke-width=\"3\" paint-order=\"stroke\">",
+                       m[i].right ? m[i].x + 3 : m[i].x - 3,
+                       top->y0 - 5 - MARK_ROW * m[i].row, m[i].right ? "start" : "end",
+                       m[i].colour);
+        rb_sbuf_escape(b, lab);
+        rb_sbuf_puts(b, "</text>\n");
     }
 }
 
@@ -321,9 +369,10 @@ rb_status rb_plot_history_svg(const rb_report *rep, size_t motion_index,
     const rb_history *h;
     panel_spec ps[N_PANELS];
     rb_panel p[N_PANELS];
+    marker marks[MAX_MARKERS];
     rb_sbuf b = {0};
-    double bottom, height;
-    int k, i;
+    double bottom, height, top;
+    int k, i, n_marks, rows;
     rb_status st = check_motion(rep, motion_index, diag);
     *out = NULL;
     if (st != RB_OK)
@@ -331,8 +380,13 @@ rb_status rb_plot_history_svg(const rb_report *rep, size_t motion_index,
     rm = &rep->motions[motion_index];
     h = rm->result->history;
     build_specs(rep, rm->result, ps);
+    /* the time axis first: marker labels decide how high the panels start */
+    layout_panel(&p[0], 0, 0, &ps[0], h);
+    n_marks = collect_markers(rm->result, marks);
+    rows = place_markers(marks, n_marks, &p[0]);
+    top = TITLE_H + MARK_ROW * (rows > 1 ? rows : 1) + 12;
     for (k = 0; k < N_PANELS; k++)
-        layout_panel(&p[k], k, &ps[k], h);
+        layout_panel(&p[k], k, top, &ps[k], h);
     bottom = p[N_PANELS - 1].y0 + PANEL_H;
     height = bottom + 80;
 
@@ -354,7 +408,7 @@ rb_status rb_plot_history_svg(const rb_report *rep, size_t motion_index,
         if (ps[k].n > 1)
             rb_panel_legend(&b, &p[k], names, colours, ps[k].n);
     }
-    draw_markers(&b, &p[0], bottom, rm->result);
+    draw_markers(&b, marks, n_marks, &p[0], bottom);
     draw_stage_legend(&b, bottom + 50);
     rb_svg_close(&b);
     return rb_sbuf_finish(&b, out, diag);

@@ -21,11 +21,13 @@ static int save(const char *dir, const char *name, const char *text)
     FILE *fp;
     snprintf(path, sizeof path, "%s/%s", dir, name);
     fp = fopen(path, "w");
-    if (!fp || fputs(text, fp) < 0 || fclose(fp) != 0) {
-        fprintf(stderr, "plot_sample: cannot write %s\n", path);
-        return 1;
+    if (fp) {
+        int bad = fputs(text, fp) < 0;
+        if (fclose(fp) == 0 && !bad)
+            return 0;
     }
-    return 0;
+    fprintf(stderr, "plot_sample: cannot write %s\n", path);
+    return 1;
 }
 
 static int fail(const char *what, rb_status st, const rb_diag *d)
@@ -144,7 +146,11 @@ int main(int argc, char **argv)
     svgs[n_svgs++] = svg_f;
     svgs[n_svgs++] = svg_a;
     svg_f = svg_a = NULL;
-    st = rb_plot_html_page(rep.reason, text, (const char *const *)svgs, n_svgs, &html, &d);
+    {
+        char title[256];
+        snprintf(title, sizeof title, "%s: %.200s", rep.pass ? "PASS" : "FAIL", c.name);
+        st = rb_plot_html_page(title, text, (const char *const *)svgs, n_svgs, &html, &d);
+    }
     if (st != RB_OK) {
         fail("html page", st, &d);
         goto out;
