@@ -40,29 +40,65 @@ static const char *verdict_word(vd_verdict v)
     return w[v];
 }
 
+/* Draw the figures into the directory "validation" next to the report and
+ * fill svgs[i] with the path of figure i relative to the report (NULL when
+ * not drawn). Returns 0 if the directory cannot be made. */
+static int draw_figures(const char *report, const char *root, char **svgs)
+{
+    char dir[1024];
+    const char *slash = strrchr(report, '/');
+    int len = slash ? (int)(slash - report) : 0;
+    snprintf(dir, sizeof dir, "%.*s%svalidation", len, report, slash ? "/" : "");
+    if (!vd_figure_dir(dir))
+        return 0;
+    for (size_t i = 0; vd_figures[i].kase; i++) {
+        char path[1200], rel[300];
+        /* the figure is named after its case, without ".yaml" */
+        size_t n = strlen(vd_figures[i].kase) - strlen(".yaml");
+        snprintf(rel, sizeof rel, "validation/%.*s.svg", (int)n, vd_figures[i].kase);
+        snprintf(path, sizeof path, "%s/%.*s.svg", dir, (int)n, vd_figures[i].kase);
+        svgs[i] = NULL;
+        if (vd_figure_write(root, vd_figures[i].kase, path)) {
+            size_t m = strlen(rel) + 1;
+            if ((svgs[i] = malloc(m)))
+                memcpy(svgs[i], rel, m);
+        }
+    }
+    return 1;
+}
+
 static int write_report(const char *path, const vd_table *t, const vd_outcome *o,
                         const char *root)
 {
     char notes[1024];
     snprintf(notes, sizeof notes, "%s/tests/validation/notes.md", root);
-    vd_report_opts opts = {VD_COMMAND, notes, NULL, NULL};
+    size_t n_fig = 0;
+    while (vd_figures[n_fig].kase)
+        n_fig++;
+    char **svgs = calloc(n_fig + 1, sizeof *svgs);
+    if (!svgs || !draw_figures(path, root, svgs)) {
+        free(svgs);
+        return 0;
+    }
+    vd_report_opts opts = {VD_COMMAND, notes, (const char *const *)svgs};
     rb_outfile f;
     rb_diag d;
     rb_diag_clear(&d);
+    int ok = 0;
     if (rb_outfile_open(&f, path, 0, &d) != RB_OK) {
         fprintf(stderr, "%s: %s\n", path, d.msg);
-        return 0;
-    }
-    if (!vd_report_write(f.fp, t, o, &opts)) {
+    } else if (!vd_report_write(f.fp, t, o, &opts)) {
         rb_outfile_abort(&f);
         fprintf(stderr, "%s: could not write the report\n", path);
-        return 0;
-    }
-    if (rb_outfile_commit(&f, &d) != RB_OK) {
+    } else if (rb_outfile_commit(&f, &d) != RB_OK) {
         fprintf(stderr, "%s: %s\n", path, d.msg);
-        return 0;
+    } else {
+        ok = 1;
     }
-    return 1;
+    for (size_t i = 0; i < n_fig; i++)
+        free(svgs[i]);
+    free(svgs);
+    return ok;
 }
 
 int main(int argc, char **argv)

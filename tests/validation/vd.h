@@ -85,19 +85,30 @@ long vd_ctx_runs(const vd_ctx *c);
 
 /* ---- Figures ----------------------------------------------------------- */
 
-/* Write the time-history figure of case kase (motion 1) to svg_path and
- * return 1, or return 0 when figures cannot be drawn (no plot module) or
- * the case fails; why goes to stderr. */
-int vd_figure(vd_ctx *c, const char *kase, const char *svg_path);
+/* A case whose time history the thesis shows as a figure. */
+typedef struct {
+    const char *kase;     /* case file inside cases/thesis/ */
+    const char *figure;   /* the thesis's figure number(s) */
+} vd_figure_spec;
+
+/* The figure cases, ended by a {NULL, NULL} entry. */
+extern const vd_figure_spec vd_figures[];
+
+/* Make directory dir if it does not exist; 0 (reason on stderr) on failure. */
+int vd_figure_dir(const char *dir);
+
+/* Solve motion 1 of case kase with a time history and write its figure to
+ * svg_path. Returns 0 (reason on stderr) if the case or the run fails. */
+int vd_figure_write(const char *root, const char *kase, const char *svg_path);
 
 /* ---- Report ------------------------------------------------------------- */
 
 typedef struct {
     const char *command;     /* the command that regenerates the file */
     const char *notes_path;  /* hand-written notes appended verbatim */
-    const char *const *figures;     /* figure cases (NULL-terminated) ... */
-    const char *const *figure_svgs; /* ... and their SVG paths relative to
-                                       the report, or NULL when not drawn */
+    const char *const *figure_svgs; /* per vd_figures entry, its SVG path
+                                       relative to the report, or NULL when
+                                       not drawn; NULL: no figures at all */
 } vd_report_opts;
 
 /* Write the Markdown report of every row to fp. Returns 0 on a write or

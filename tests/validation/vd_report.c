@@ -68,29 +68,25 @@ static void count(const vd_table *t, const vd_outcome *o, int k[5])
         k[o[i].verdict]++;
 }
 
-/* Figures of the cases of section sec, once each, under its table. */
+/* Figures of the cases of section sec, each under the first section whose
+ * rows use its case. */
 static int section_figures(FILE *fp, const vd_table *t, const char *sec,
                            const vd_report_opts *opts)
 {
-    if (!opts->figures)
+    if (!opts->figure_svgs)
         return 1;
-    for (size_t f = 0; opts->figures[f]; f++) {
+    for (size_t f = 0; vd_figures[f].kase; f++) {
         if (!opts->figure_svgs[f])
             continue;
-        int used = 0;
-        for (size_t i = 0; i < t->n && !used; i++)
-            used = strcmp(t->rows[i].section, sec) == 0
-                   && strcmp(t->rows[i].kase, opts->figures[f]) == 0;
-        /* a figure belongs to the first section that uses its case */
-        for (size_t i = 0; i < t->n && used; i++) {
-            if (strcmp(t->rows[i].kase, opts->figures[f]) != 0)
-                continue;
-            if (strcmp(t->rows[i].section, sec) != 0)
-                used = 0;
-            break;
-        }
-        if (used && fprintf(fp, "\n![%s](%s)\n", opts->figures[f],
-                            opts->figure_svgs[f]) < 0)
+        const char *first = NULL;
+        for (size_t i = 0; i < t->n && !first; i++)
+            if (strcmp(t->rows[i].kase, vd_figures[f].kase) == 0)
+                first = t->rows[i].section;
+        if (first && strcmp(first, sec) == 0
+            && fprintf(fp, "\n![rockbolt's %s: %s](%s)\n\n*rockbolt's version of the "
+                       "thesis's %s: `%s`.*\n", vd_figures[f].figure, vd_figures[f].kase,
+                       opts->figure_svgs[f], vd_figures[f].figure,
+                       vd_figures[f].kase) < 0)
             return 0;
     }
     return 1;
