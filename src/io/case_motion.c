@@ -271,11 +271,17 @@ void rb_case_read_motions(rb_cctx *c, rb_ynode *root)
     (which ? e2 : e1)->used = 1;
     size_t n = 1;
     if (which) {
-        if (v->kind != RB_YNODE_SEQ || v->n == 0 || v->n > RB_CASE_MAX_MOTIONS) {
+        if (v->kind == RB_YNODE_SEQ && v->n > RB_CASE_MAX_MOTIONS) {
+            rb_cctx_error_at(c, RB_ERR_LIMIT, v->file, v->line, v->col, "motions",
+                             "expected a list of 1 to %d motions, found %zu (the "
+                             "limit is %d)", RB_CASE_MAX_MOTIONS, v->n,
+                             RB_CASE_MAX_MOTIONS);
+            return;
+        }
+        if (v->kind != RB_YNODE_SEQ || v->n == 0) {
             rb_cctx_error(c, v, "motions", "expected a list of 1 to %d motions, "
                           "found %s", RB_CASE_MAX_MOTIONS, v->kind == RB_YNODE_SEQ
-                          ? (v->n ? "too many" : "an empty list")
-                          : rb_ynode_kind_str(v));
+                          ? "an empty list" : rb_ynode_kind_str(v));
             return;
         }
         n = v->n;

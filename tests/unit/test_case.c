@@ -426,6 +426,38 @@ static void test_sample_budget(void)
     rb_diag_list_free(&l);
 }
 
+/* Motions: 1000 load, 1001 are refused with RB_ERR_LIMIT. */
+static void test_motion_limit(void)
+{
+    static const char one[] = "  - {type: harmonic, amplitude: 1 g, frequency: 1 Hz, "
+                              "duration: 1 s}\n";
+    size_t cap = 256 + 1001 * sizeof one;
+    char *text = malloc(cap);
+    CHECK(text != NULL);
+    if (!text)
+        return;
+    for (int n = 1000; n <= 1001; n++) {
+        rb_case c;
+        rb_diag_list l;
+        size_t len = (size_t)snprintf(text, cap, LIMIT_BASE "motions:\n");
+        for (int i = 0; i < n; i++) {
+            memcpy(text + len, one, sizeof one);
+            len += sizeof one - 1;
+        }
+        rb_status st = load(scratch_file("motions.yaml", text), &c, &l);
+        if (n == 1000) {
+            CHECK(st == RB_OK && c.n_motions == 1000);
+        } else {
+            CHECK(st == RB_ERR_LIMIT);
+            CHECK(l.n == 1 && strstr(l.items[0].msg, "expected a list of 1 to 1000 "
+                                     "motions, found 1001 (the limit is 1000)"));
+        }
+        rb_case_free(&c);
+        rb_diag_list_free(&l);
+    }
+    free(text);
+}
+
 /* A base that is a directory is refused as not a regular file. */
 static void test_base_not_regular(void)
 {
@@ -446,7 +478,8 @@ static void test_limits(void)
     test_diag_limit();
     test_sample_budget();
     test_base_not_regular();
-    static const char *const names[] = {"nodes.yaml", "diags.yaml", "two.at2",
+    test_motion_limit();
+    static const char *const names[] = {"motions.yaml", "nodes.yaml", "diags.yaml", "two.at2",
         "claims.at2", "budget.yaml", "alone.yaml", "dir-base.yaml"};
     for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
         char path[128];
