@@ -209,29 +209,31 @@ void rb_dyn_rhs(const rb_sys *S, const rb_disc *D, double t, const double *y,
         *aux = a;
 }
 
+/* Written with the same operations as the stage-4 bolt force at
+ * theta = 0 (solve_still), so that the two agree in sign to the last bit:
+ * an uplift into a zero gap is never met by a bolt force of the other sign,
+ * which would bounce the state between stages 1 and 4 for ever. */
 double rb_dyn_uplift_guard(const rb_sys *S, double t, const double *y, int side)
 {
-    double g[2];
-    rb_dyn_uplift_guards(S, t, y, g);
-    return side < 0 ? g[1] : g[0];
+    const rb_derived *d = &S->d;
+    rb_disc D = {0};
+    rb_loads L;
+    double m[4];
+    D.side = side;
+    D.stage = RB_STAGE_FIXED;
+    mirror(&D, y, m);
+    double x = (side < 0 ? -1.0 : 1.0) * floor_accel(S, t, y);
+    loads(S, x, m[0], m[1], 0, 0, &L);
+    if (S->model->rigid)
+        return L.Qth;
+    double udd = (L.QU - d->Cstar * m[1]) / d->Mstar;
+    return L.Qth - d->Fstar * udd;
 }
 
-/* The guard is affine in (x'', U, U'): a constant part Q0 common to both
- * sides plus a part the mirror negates. Computing that part once and
- * adding it with either sign keeps the two sides exact mirrors of each
- * other, to the last bit, as evaluating each side separately did. */
 void rb_dyn_uplift_guards(const rb_sys *S, double t, const double *y, double *g)
 {
-    const rb_derived *d = &S->d;
-    rb_loads L, L0;
-    double x = floor_accel(S, t, y);
-    loads(S, x, y[RB_Y_U], y[RB_Y_UD], 0, 0, &L);
-    loads(S, 0, 0, 0, 0, 0, &L0);
-    double lin = x * L.in_th;
-    if (!S->model->rigid)
-        lin -= d->Fstar * (L.QU - d->Cstar * y[RB_Y_UD]) / d->Mstar;
-    g[0] = L0.Qth + lin;
-    g[1] = L0.Qth - lin;
+    g[0] = rb_dyn_uplift_guard(S, t, y, 1);
+    g[1] = rb_dyn_uplift_guard(S, t, y, -1);
 }
 
 double rb_dyn_kinetic(const rb_sys *S, const rb_disc *D, const double *y)
