@@ -57,6 +57,11 @@ const char *rb_cli_numbered_name(const char *base, size_t i, size_t n, char *buf
                                   size_t size);
 rb_exit rb_cli_init_run(const rb_cli_opts *o);
 
+/* "rockbolt batch ARGS" and "rockbolt merge ARGS": argv holds the
+ * arguments after the command word. Exit codes as in docs/batch.md. */
+rb_exit rb_cli_batch_main(int argc, char **argv);
+rb_exit rb_cli_merge_main(int argc, char **argv);
+
 /* --help on stdout; --version on stdout. */
 void rb_cli_help_print(void);
 void rb_cli_version_print(void);

@@ -1,10 +1,16 @@
 /* rockbolt: entry point. Parses the command line and hands over to the
  * command; nothing else happens here. */
+#include <string.h>
 #include "cli.h"
 
 int main(int argc, char **argv)
 {
     rb_cli_opts o;
+    /* batch and merge parse their own options (cli_batch.c, cli_merge.c) */
+    if (argc > 1 && strcmp(argv[1], "batch") == 0)
+        return (int)rb_cli_batch_main(argc - 2, argv + 2);
+    if (argc > 1 && strcmp(argv[1], "merge") == 0)
+        return (int)rb_cli_merge_main(argc - 2, argv + 2);
     rb_exit e = rb_cli_args_parse(argc, argv, &o);
     if (e != RB_EXIT_PASS)
         return (int)e;

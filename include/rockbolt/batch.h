@@ -1,0 +1,171 @@
+/* Batch review: many cases, one summary (io layer).
+ *
+ * A work list is built from case files, directories (their *.yaml files,
+ * sorted), glob patterns and equipment lists (CSV files whose rows override
+ * fields of a base case, one row per tag). rb_batch_run loads every item,
+ * solves every case x motion combination on a pool of threads, judges each
+ * run against the case's criteria and fills a summary: one entry per item,
+ * with one run per motion. The summary depends only on the inputs: not on
+ * the number of threads, nor on how the list was split into shards (see
+ * rb_batch_merge). Renderers turn a summary into text, CSV, JSON and JUnit
+ * XML; the JSON can be read back, which is how shards are merged. Nothing
+ * here prints: progress goes to a callback. docs/batch.md has the formats. */
+#ifndef ROCKBOLT_BATCH_H
+#define ROCKBOLT_BATCH_H
+
+#include <stddef.h>
+#include "rockbolt/status.h"
+#include "rockbolt/case_overrides.h"
+
+/* Bumped when a field of the JSON summary is renamed, removed or changes
+ * meaning. */
+#define RB_BATCH_FORMAT_VERSION 1
+
+/* ---- Work list ----------------------------------------------------------- */
+
+typedef struct {
+    char *source;         /* owned: the case file, or the equipment list */
+    int line;             /* equipment lists: line of the row; else 0 */
+    char *tag;            /* owned: the row's tag; NULL for case files */
+    char *base;           /* owned: rows: the base case, as resolved */
+    rb_case_override *ov; /* owned, with owned key and value strings */
+    size_t n_ov;
+    int bad;              /* 1: the item cannot be run; error says why */
+    rb_diag error;
+} rb_batch_item;
+
+typedef struct {
+    rb_batch_item *items; /* owned, in work order */
+    size_t n, cap;
+} rb_batch_list;
+
+/* Add what arg names, in this order of checks: a directory (its *.yaml
+ * files, sorted by name; not recursive), a pattern with *, ? or [ (glob,
+ * sorted), a file ending in .csv (an equipment list, rows in file order),
+ * else a case file. default_base (may be NULL) is the base case for lists
+ * without a base column, relative to the working directory. Names that
+ * match nothing and lists that cannot be read become bad items, so the
+ * batch still runs and reports them. Returns RB_ERR_NOMEM only. */
+rb_status rb_batch_list_add(rb_batch_list *l, const char *arg, const char *default_base);
+
+void rb_batch_list_free(rb_batch_list *l);
+
+/* Parse an equipment list into l (called by rb_batch_list_add). */
+rb_status rb_batch_csv_read(rb_batch_list *l, const char *path, const char *default_base);
+
+/* ---- Summary --------------------------------------------------------------- */
+
+typedef enum {
+    RB_BATCH_PASS = 0,    /* every motion meets the criteria */
+    RB_BATCH_FAIL,        /* a motion fails them */
+    RB_BATCH_UNREADABLE,  /* the case could not be read (bad input) */
+    RB_BATCH_ERROR        /* a solver run or a report failed (internal) */
+} rb_batch_verdict;
+
+/* One motion of a case, solved and judged. */
+typedef struct {
+    char *motion;         /* owned: the motion's name */
+    int pass;
+    double usage;         /* larger toughness usage of the two bolt rows */
+    double shear_over_w;  /* elastic frame shear / W (the criteria's) */
+    double force_over_fy; /* larger bolt row force / Fy */
+    double theta_over_alpha;
+    /* design (when asked for); has_* 0 when not run or not defined */
+    int has_factor;
+    double design_factor; /* A* / largest passing level */
+    int factor_bound;     /* 1: no failing level up to the scan's end */
+    int has_gap;
+    double gap_ratio;     /* recommended */
+} rb_batch_result;
+
+typedef struct {
+    size_t index;         /* position in the whole work list */
+    char *source;         /* owned */
+    int line;
+    char *tag;            /* owned: row tag or case name (file stem if
+                             unreadable) */
+    rb_batch_verdict verdict;
+    char *reason;         /* owned: one line */
+    rb_diag error;        /* the first error (UNREADABLE, ERROR) */
+    size_t n_errors;      /* how many the load reported */
+    rb_batch_result *runs;   /* owned, one per motion (none when unreadable) */
+    size_t n_runs;
+} rb_batch_case;
+
+typedef struct {
+    int design;           /* design factor and gap were asked for */
+    size_t total;         /* items in the whole work list */
+    size_t shard, n_shards; /* 1-based shard; 0/0 for the whole list */
+    rb_batch_case *cases; /* owned, by index */
+    size_t n_cases;
+} rb_batch_summary;
+
+void rb_batch_summary_free(rb_batch_summary *s);
+
+/* The governing motion of a case: the failing motion with the largest
+ * usage if any fails, else the motion with the largest usage; ties go to
+ * the larger force / Fy, then the earlier motion. 0 when there are none. */
+size_t rb_batch_governing(const rb_batch_case *c);
+
+/* Counts over a summary. */
+typedef struct {
+    size_t cases, passed, failed, unreadable, errors, runs;
+} rb_batch_counts;
+
+void rb_batch_count(const rb_batch_summary *s, rb_batch_counts *out);
+
+/* ---- Running ---------------------------------------------------------- */
+
+typedef struct {
+    size_t cases_done, cases_total;   /* of this shard */
+    size_t runs_done;
+    size_t failed, unreadable;        /* so far */
+} rb_batch_progress;
+
+typedef struct {
+    int n_threads;            /* <= 0: one per online processor */
+    int design;               /* also the design factor and recommended gap */
+    const char *reports_dir;  /* NULL: no per-case reports; else one JSON
+                                 and one text report per case */
+    const char *report_template; /* text of report.txt; needed with reports */
+    size_t shard, n_shards;   /* 1-based shard of n; 0/0: all */
+    /* Called from worker threads, one call at a time, when a run or a
+     * case is done. May be NULL. */
+    void (*progress)(void *ctx, const rb_batch_progress *p);
+    void *progress_ctx;
+} rb_batch_opts;
+
+void rb_batch_opts_init(rb_batch_opts *o);
+
+/* The items of shard k of n: those whose index i has i % n == k - 1. */
+int rb_batch_in_shard(size_t index, size_t shard, size_t n_shards);
+
+/* Run the list (or its shard) into out (owned by the caller, free with
+ * rb_batch_summary_free, also after an error). Cases that cannot be read
+ * or solved are verdicts, not errors: the call fails only for
+ * RB_ERR_NOMEM or bad options (RB_ERR_INVALID, diag says which). */
+rb_status rb_batch_run(const rb_batch_list *l, const rb_batch_opts *o,
+                       rb_batch_summary *out, rb_diag *diag);
+
+/* ---- Output ------------------------------------------------------------- */
+
+/* Each renderer returns a NUL-terminated string the caller frees, or NULL
+ * when memory runs out. */
+char *rb_batch_render_text(const rb_batch_summary *s);
+char *rb_batch_render_csv(const rb_batch_summary *s);
+char *rb_batch_render_json(const rb_batch_summary *s);
+char *rb_batch_render_junit(const rb_batch_summary *s);
+
+/* Read a JSON summary written by rb_batch_render_json. RB_ERR_PARSE with
+ * the reason in diag->msg (diag->key names the field) when it is not one. */
+rb_status rb_batch_summary_parse(const char *text, rb_batch_summary *out,
+                                 rb_diag *diag);
+
+/* Merge the summaries of the shards of one work list into out, which then
+ * renders byte for byte as a single run's. Every shard must come from the
+ * same list (same total and design flag) and together they must hold each
+ * index once. RB_ERR_INVALID with the reason in diag otherwise. */
+rb_status rb_batch_merge(const rb_batch_summary *shards, size_t n,
+                         rb_batch_summary *out, rb_diag *diag);
+
+#endif

@@ -1,0 +1,35 @@
+/* A case made of a base case file and a few overriding values (io layer).
+ *
+ * Equipment lists give one row per cabinet: a base case plus the values
+ * that differ (mass, height, bolt size, gap, motion, ...). Each value is
+ * written as in a case file ("454 kg", "12.7 mm", "0.4 A*") under its
+ * dotted case key ("equipment.mass"), and the case is loaded exactly as a
+ * case file that `extends:` the base and gives those keys would be: the
+ * same merge rules, checks and units. Diagnostics about an override point
+ * at the place the value came from (origin:line:col, e.g. the CSV file and
+ * row), with the dotted key; diagnostics about the base point into it. */
+#ifndef ROCKBOLT_CASE_OVERRIDES_H
+#define ROCKBOLT_CASE_OVERRIDES_H
+
+#include <stddef.h>
+#include "rockbolt/case.h"
+
+typedef struct {
+    const char *key;   /* dotted case key: "equipment.mass", "gap_ratio",
+                          "motion.file"; at most 4 levels */
+    const char *value; /* value text as in a case file; a path value (keys
+                          ending in "file") is relative to the directory of
+                          origin, like a record named in a case file */
+    int line, col;     /* where the value was given (1-based), for diags */
+} rb_case_override;
+
+/* Load base_path with the overrides applied. origin names the file the
+ * overrides came from (diagnostics, relative paths); name (may be NULL)
+ * becomes the case's name; out->path is set to origin. Returns as
+ * rb_case_load, plus RB_ERR_INVALID with a diag at the override when a key
+ * is malformed. On error *out is left empty. */
+rb_status rb_case_load_overrides(const char *base_path, const char *origin,
+                                 const char *name, const rb_case_override *ov,
+                                 size_t n, rb_case *out, rb_diag_list *diags);
+
+#endif

@@ -1,0 +1,253 @@
+/* One case of a batch: load it, judge its runs, write its reports.
+ *
+ * Loading and finishing are separate because the runs of a case go to the
+ * thread pool one by one: the case is loaded first, its motions solved in
+ * any order on any thread, and the last run to finish concludes the case.
+ * Everything a case keeps in the summary is copied out of the rb_case, so
+ * the case can be freed at once. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "batch_engine.h"
+#include "rockbolt/report.h"
+
+/* The case name from a path: file name without directory and extension. */
+static char *stem_of(const char *path)
+{
+    const char *b = strrchr(path, '/');
+    b = b ? b + 1 : path;
+    char *s = rb_batch_strdup(b);
+    char *dot = s ? strrchr(s, '.') : NULL;
+    if (dot && dot != s)
+        *dot = '\0';
+    return s;
+}
+
+static void set_error(rb_batch_case *bc, const rb_diag *d, const char *source)
+{
+    bc->error = *d;
+    if (!bc->error.file[0])
+        snprintf(bc->error.file, sizeof bc->error.file, "%s", source);
+}
+
+void rb_batch_case_load(rb_batch_slot *s, const rb_batch_item *it, rb_batch_case *bc)
+{
+    rb_diag_list diags = {0};
+    rb_status st;
+    if (it->bad) {
+        bc->verdict = RB_BATCH_UNREADABLE;
+        set_error(bc, &it->error, it->source);
+        bc->n_errors = 1;
+        return;
+    }
+    if (it->tag)
+        st = rb_case_load_overrides(it->base, it->source, it->tag, it->ov, it->n_ov,
+                                    &s->c, &diags);
+    else
+        st = rb_case_load(it->source, &s->c, &diags);
+    if (st != RB_OK) {
+        rb_diag d;
+        rb_diag_clear(&d);
+        if (diags.n)
+            d = diags.items[0];
+        else
+            snprintf(d.msg, sizeof d.msg, "cannot load the case: %s", rb_status_str(st));
+        if (!d.key[0])
+            snprintf(d.key, sizeof d.key, "case");
+        bc->verdict = st == RB_ERR_NOMEM ? RB_BATCH_ERROR : RB_BATCH_UNREADABLE;
+        set_error(bc, &d, it->source);
+        bc->n_errors = diags.n ? diags.n : 1;
+        rb_diag_list_free(&diags);
+        return;
+    }
+    rb_diag_list_free(&diags);
+    if (!it->tag) {
+        free(bc->tag);
+        bc->tag = rb_batch_strdup(s->c.name ? s->c.name : it->source);
+    }
+    size_t n = s->c.n_motions;
+    s->results = calloc(n, sizeof *s->results);
+    s->rms = calloc(n, sizeof *s->rms);
+    s->run_status = calloc(n, sizeof *s->run_status);
+    s->run_diag = calloc(n, sizeof *s->run_diag);
+    bc->runs = calloc(n, sizeof *bc->runs);
+    if (!bc->tag || !s->results || !s->rms || !s->run_status || !s->run_diag || !bc->runs) {
+        rb_diag d;
+        rb_diag_clear(&d);
+        snprintf(d.key, sizeof d.key, "case");
+        snprintf(d.msg, sizeof d.msg, "out of memory");
+        set_error(bc, &d, it->source);
+        bc->verdict = RB_BATCH_ERROR;
+        return;
+    }
+    bc->n_runs = n;
+    s->loaded = 1;
+    s->remaining = n;
+}
+
+static double ratio(double a, double b)
+{
+    return b > 0 ? a / b : 0.0;
+}
+
+void rb_batch_case_solve(rb_batch_slot *s, rb_batch_case *bc, size_t m, int design)
+{
+    const rb_case_motion *cm = &s->c.motions[m];
+    rb_result *r = &s->results[m];
+    rb_batch_result *run = &bc->runs[m];
+    rb_solve_opts so = s->c.solve;
+    rb_diag *d = &s->run_diag[m];
+    so.history_dt_s = 0;   /* summaries and reports of a batch carry no history */
+    rb_diag_clear(d);
+    s->run_status[m] = rb_solve_run(&s->c.model, &cm->motion, &so, r, d);
+    run->motion = rb_batch_strdup(cm->name ? cm->name : "?");
+    if (!run->motion && s->run_status[m] == RB_OK)
+        s->run_status[m] = RB_ERR_NOMEM;
+    if (s->run_status[m] != RB_OK)
+        return;
+    rb_report_motion *rm = &s->rms[m];
+    rm->motion = cm;
+    rm->result = r;
+    rm->pass = rb_criteria_judge(&s->c.criteria, r, rm->reason, sizeof rm->reason);
+    run->pass = rm->pass;
+    run->usage = fmax(r->usage[0], r->usage[1]);
+    run->shear_over_w = ratio(r->max_shear_elastic_n, r->weight_n);
+    run->force_over_fy = ratio(fmax(r->max_bolt_force_n[0], r->max_bolt_force_n[1]),
+                               r->fy_row_n);
+    run->theta_over_alpha = r->max_theta_over_alpha;
+    if (!design)
+        return;
+    rb_design_factor_result f;
+    rb_status st = rb_design_factor(&s->c.model, &cm->motion, &so, &s->c.criteria,
+                                    &s->c.design, 1, &f, d);
+    if (st == RB_OK && f.level_mps2 > 0 && isfinite(f.factor)) {
+        run->has_factor = 1;
+        run->design_factor = f.factor;
+        run->factor_bound = f.no_failure;
+    } else if (st != RB_OK) {
+        s->run_status[m] = st;
+        return;
+    }
+    if (s->c.model.bolt_model == RB_BOLT_NONE)
+        return;
+    rb_gap_result g;
+    memset(&g, 0, sizeof g);
+    st = rb_gap_recommend(&s->c.model, &cm->motion, &so, &s->c.criteria,
+                          &s->c.design, 1, &g, d);
+    if (st == RB_OK && g.found) {
+        run->has_gap = 1;
+        run->gap_ratio = g.gap_ratio;
+    }
+    rb_gap_result_free(&g);
+    if (st != RB_OK)
+        s->run_status[m] = st;
+}
+
+/* Report file names: the work index keeps them unique and in work order
+ * whatever the tags, and the same in every shard. */
+static void report_stem(const rb_batch_case *bc, size_t total, char *buf, size_t n)
+{
+    int width = 1;
+    for (size_t t = total > 0 ? total - 1 : 0; t >= 10; t /= 10)
+        width++;
+    int k = snprintf(buf, n, "%0*zu-", width, bc->index);
+    for (const char *p = bc->tag; *p && k + 1 < (int)n && k < 120; p++, k++) {
+        int ok = (*p >= 'A' && *p <= 'Z') || (*p >= 'a' && *p <= 'z')
+              || (*p >= '0' && *p <= '9') || *p == '-' || *p == '_' || *p == '.';
+        buf[k] = ok ? *p : '_';
+    }
+    buf[k] = '\0';
+}
+
+static rb_status write_reports(rb_batch_slot *s, const rb_batch_case *bc,
+                               const rb_batch_opts *o, size_t total,
+                               const rb_report *rep, rb_diag *d)
+{
+    char stem[200], path[4600];
+    char *json = NULL, *text = NULL;
+    rb_status st = rb_report_json_render(rep, &json, d);
+    if (st == RB_OK)
+        st = rb_report_text_render(rep, o->report_template, &text, d);
+    report_stem(bc, total, stem, sizeof stem);
+    if (st == RB_OK) {
+        snprintf(path, sizeof path, "%s/%s.json", o->reports_dir, stem);
+        st = rb_outfile_write_all(path, json, strlen(json), 0, d);
+    }
+    if (st == RB_OK) {
+        snprintf(path, sizeof path, "%s/%s.txt", o->reports_dir, stem);
+        st = rb_outfile_write_all(path, text, strlen(text), 0, d);
+    }
+    free(json);
+    free(text);
+    (void)s;
+    return st;
+}
+
+void rb_batch_case_finish(rb_batch_slot *s, rb_batch_case *bc, const rb_batch_opts *o,
+                          size_t total)
+{
+    if (!s->loaded)
+        goto done;
+    for (size_t m = 0; m < bc->n_runs; m++) {
+        if (s->run_status[m] == RB_OK)
+            continue;
+        rb_diag d;
+        rb_diag_clear(&d);
+        snprintf(d.file, sizeof d.file, "%s", bc->source);
+        snprintf(d.key, sizeof d.key, "motion '%.100s'",
+                 s->c.motions[m].name ? s->c.motions[m].name : "?");
+        snprintf(d.msg, sizeof d.msg, "%s%s%.400s", rb_status_str(s->run_status[m]),
+                 s->run_diag[m].msg[0] ? ": " : "", s->run_diag[m].msg);
+        bc->verdict = RB_BATCH_ERROR;
+        bc->error = d;
+        bc->n_errors = 1;
+        goto done;
+    }
+    rb_report rep;
+    rb_diag d;
+    memset(&rep, 0, sizeof rep);
+    rb_diag_clear(&d);
+    rep.kase = &s->c;
+    rep.motions = s->rms;
+    rep.n_motions = bc->n_runs;
+    rb_report_conclude(&rep);
+    bc->verdict = rep.pass ? RB_BATCH_PASS : RB_BATCH_FAIL;
+    bc->reason = rb_batch_strdup(rep.reason);
+    if (o->reports_dir) {
+        rb_model_derive(&s->c.model, &rep.derived, NULL);
+        if (write_reports(s, bc, o, total, &rep, &d) != RB_OK) {
+            if (!d.key[0])
+                snprintf(d.key, sizeof d.key, "--reports");
+            bc->verdict = RB_BATCH_ERROR;
+            bc->error = d;
+            bc->n_errors = 1;
+        }
+    }
+done:
+    if (!bc->reason) {
+        char buf[700];
+        snprintf(buf, sizeof buf, "%s: %s", bc->verdict == RB_BATCH_UNREADABLE
+                 ? "cannot read the case" : "error", bc->error.msg);
+        bc->reason = rb_batch_strdup(buf);
+    }
+    rb_batch_slot_free(s);
+}
+
+void rb_batch_slot_free(rb_batch_slot *s)
+{
+    if (s->results)
+        for (size_t m = 0; m < s->c.n_motions; m++)
+            rb_result_free(&s->results[m]);
+    free(s->results);
+    free(s->rms);
+    free(s->run_status);
+    free(s->run_diag);
+    rb_case_free(&s->c);
+    memset(s, 0, sizeof *s);
+}
+
+char *rb_batch_default_tag(const rb_batch_item *it)
+{
+    return it->tag ? rb_batch_strdup(it->tag) : stem_of(it->source);
+}

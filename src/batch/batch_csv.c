@@ -1,0 +1,493 @@
+/* Equipment lists: a CSV file, one row per cabinet, whose columns override
+ * fields of a base case (docs/batch.md lists the columns).
+ *
+ * Fields are separated by commas and may be double-quoted ("" for a quote
+ * inside); spaces around unquoted fields are dropped; blank lines and lines
+ * starting with '#' are skipped; the first other line is the header. An
+ * empty cell keeps the base's value. Every column must be known, so that a
+ * misspelt header cannot silently leave a field at the base's value. Each
+ * value keeps its line and column, and errors in it are reported there. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "batch_internal.h"
+
+#define RB_CSV_MAX_BYTES (64u * 1024u * 1024u)
+#define RB_CSV_MAX_FIELDS 64
+
+typedef enum { COL_TAG, COL_BASE, COL_KEY, COL_MOTION } col_kind;
+
+typedef struct {
+    const char *name;
+    col_kind kind;
+    const char *key;   /* COL_KEY: the case key */
+} col_def;
+
+static const col_def rb_csv_cols[] = {
+    {"tag", COL_TAG, NULL},
+    {"base", COL_BASE, NULL},
+    {"description", COL_KEY, "description"},
+    {"mass", COL_KEY, "equipment.mass"},
+    {"height", COL_KEY, "equipment.height"},
+    {"cm_height", COL_KEY, "equipment.cm_height"},
+    {"base_width", COL_KEY, "equipment.base_width"},
+    {"frequency", COL_KEY, "equipment.frequency"},
+    {"damping", COL_KEY, "equipment.damping"},
+    {"restitution", COL_KEY, "equipment.restitution"},
+    {"bolt_model", COL_KEY, "anchorage.model"},
+    {"bolts_per_row", COL_KEY, "anchorage.bolts_per_row"},
+    {"diameter", COL_KEY, "anchorage.diameter"},
+    {"area", COL_KEY, "anchorage.area"},
+    {"yield_stress", COL_KEY, "anchorage.yield_stress"},
+    {"toughness", COL_KEY, "anchorage.toughness"},
+    {"deformable_length", COL_KEY, "anchorage.deformable_length"},
+    {"edge_distance", COL_KEY, "anchorage.edge_distance"},
+    {"lever_arm", COL_KEY, "anchorage.lever_arm"},
+    {"gap", COL_KEY, "gap"},
+    {"gap_ratio", COL_KEY, "gap_ratio"},
+    {"motion", COL_MOTION, NULL},
+    {"peak", COL_KEY, "motion.peak"},
+    {"amplitude", COL_KEY, "motion.amplitude"},
+    {"building_frequency", COL_KEY, "motion.building.frequency"},
+    {"building_damping", COL_KEY, "motion.building.damping"},
+    {"criterion", COL_KEY, "criteria.kind"},
+    {"usage_limit", COL_KEY, "criteria.usage_limit"},
+};
+#define RB_CSV_NCOLS (sizeof rb_csv_cols / sizeof rb_csv_cols[0])
+
+/* Records shipped in cases/records, by the name a list may use. */
+typedef struct {
+    const char *name, *file, *format, *dt, *units;
+} shipped_motion;
+
+static const shipped_motion rb_shipped[] = {
+    {"elcentro", "elcentro_1940_ns.at2", "at2", NULL, NULL},
+    {"taft", "taft_1952_s69e.txt", "one-column", "0.01 s", "g"},
+};
+
+typedef struct {
+    char *text;    /* owned */
+    int col;       /* 1-based byte column of the field's start */
+} csv_field;
+
+typedef struct {
+    csv_field f[RB_CSV_MAX_FIELDS];
+    size_t n;
+} csv_row;
+
+static void row_clear(csv_row *r)
+{
+    for (size_t i = 0; i < r->n; i++)
+        free(r->f[i].text);
+    r->n = 0;
+}
+
+/* Split one line (without its newline) into fields; returns 0 with msg set
+ * on a malformed line, -1 on NOMEM. */
+static int split_line(const char *s, size_t len, csv_row *r, char *msg, size_t msz,
+                      int *bad_col)
+{
+    size_t i = 0;
+    r->n = 0;
+    for (;;) {
+        while (i < len && (s[i] == ' ' || s[i] == '\t'))
+            i++;
+        if (r->n == RB_CSV_MAX_FIELDS) {
+            snprintf(msg, msz, "more than %d fields", RB_CSV_MAX_FIELDS);
+            *bad_col = (int)i + 1;
+            return 0;
+        }
+        csv_field *f = &r->f[r->n];
+        f->col = (int)i + 1;
+        char *out = malloc(len - i + 1);
+        size_t o = 0;
+        if (!out)
+            return -1;
+        if (i < len && s[i] == '"') {
+            i++;
+            for (;;) {
+                if (i >= len) {
+                    free(out);
+                    snprintf(msg, msz, "unterminated quoted field (a field "
+                             "cannot span lines)");
+                    *bad_col = f->col;
+                    return 0;
+                }
+                if (s[i] == '"' && i + 1 < len && s[i + 1] == '"') {
+                    out[o++] = '"';
+                    i += 2;
+                } else if (s[i] == '"') {
+                    i++;
+                    break;
+                } else {
+                    out[o++] = s[i++];
+                }
+            }
+            while (i < len && (s[i] == ' ' || s[i] == '\t'))
+                i++;
+            if (i < len && s[i] != ',') {
+                free(out);
+                snprintf(msg, msz, "text after a quoted field");
+                *bad_col = (int)i + 1;
+                return 0;
+            }
+        } else {
+            while (i < len && s[i] != ',')
+                out[o++] = s[i++];
+            while (o > 0 && (out[o - 1] == ' ' || out[o - 1] == '\t'))
+                o--;
+        }
+        out[o] = '\0';
+        f->text = out;
+        r->n++;
+        if (i >= len)
+            return 1;
+        i++;   /* the comma */
+    }
+}
+
+typedef struct {
+    const char *path;
+    char *dir;            /* the list's directory with '/', or "" */
+    const char *default_base;
+    int cols[RB_CSV_MAX_FIELDS];  /* index into rb_csv_cols */
+    size_t n_cols;
+    int tag_col, base_col;
+    char **tags;          /* seen so far, for duplicates */
+    int *tag_lines;
+    size_t n_tags;
+} csv_ctx;
+
+static rb_status add_ov(rb_batch_item *it, const char *key, const char *value,
+                        int line, int col)
+{
+    rb_case_override *p = realloc(it->ov, (it->n_ov + 1) * sizeof *p);
+    if (!p)
+        return RB_ERR_NOMEM;
+    it->ov = p;
+    rb_case_override *o = &it->ov[it->n_ov];
+    o->key = rb_batch_strdup(key);
+    o->value = rb_batch_strdup(value);
+    o->line = line;
+    o->col = col;
+    if (!o->key || !o->value) {
+        free((char *)o->key);
+        free((char *)o->value);
+        return RB_ERR_NOMEM;
+    }
+    it->n_ov++;
+    return RB_OK;
+}
+
+/* The motion column: a record file (relative to the list) or the name of a
+ * shipped record. Returns RB_ERR_INVALID after marking the item bad. */
+static rb_status add_motion(rb_batch_item *it, const char *v, int line, int col)
+{
+    rb_status st = RB_OK;
+    if (strchr(v, '/') || strchr(v, '.')) {
+        st = add_ov(it, "motion.type", "record", line, col);
+        if (st == RB_OK)
+            st = add_ov(it, "motion.file", v, line, col);
+    } else {
+        size_t n = sizeof rb_shipped / sizeof rb_shipped[0], k;
+        for (k = 0; k < n && strcmp(rb_shipped[k].name, v) != 0; k++)
+            ;
+        if (k == n) {
+            char msg[300];
+            snprintf(msg, sizeof msg, "unknown motion '%.100s' (give a record "
+                     "file, or one of: elcentro, taft)", v);
+            rb_batch_item_bad(it, line, col, "motion", msg);
+            return RB_ERR_INVALID;
+        }
+        char file[4096];
+        snprintf(file, sizeof file, "%s/cases/records/%s", RB_SOURCE_DIR,
+                 rb_shipped[k].file);
+        st = add_ov(it, "motion.type", "record", line, col);
+        if (st == RB_OK)
+            st = add_ov(it, "motion.file", file, line, col);
+        if (st == RB_OK)
+            st = add_ov(it, "motion.format", rb_shipped[k].format, line, col);
+        if (st == RB_OK && rb_shipped[k].dt)
+            st = add_ov(it, "motion.dt", rb_shipped[k].dt, line, col);
+        if (st == RB_OK && rb_shipped[k].units)
+            st = add_ov(it, "motion.units", rb_shipped[k].units, line, col);
+    }
+    if (st == RB_OK)
+        st = add_ov(it, "motion.name", v, line, col);
+    return st;
+}
+
+static int find_col(const char *name)
+{
+    for (size_t k = 0; k < RB_CSV_NCOLS; k++)
+        if (strcmp(rb_csv_cols[k].name, name) == 0)
+            return (int)k;
+    return -1;
+}
+
+/* Check the header; on a problem the whole list becomes one bad item. */
+static rb_status read_header(csv_ctx *cx, rb_batch_list *l, const csv_row *r, int line)
+{
+    char msg[512];
+    cx->tag_col = cx->base_col = -1;
+    for (size_t i = 0; i < r->n; i++) {
+        int k = find_col(r->f[i].text);
+        const char *bad = NULL;
+        if (k < 0)
+            bad = "unknown column";
+        for (size_t j = 0; j < i && !bad; j++)
+            if (cx->cols[j] == k)
+                bad = "duplicate column";
+        if (bad) {
+            rb_batch_item *it = rb_batch_list_push(l, cx->path);
+            if (!it)
+                return RB_ERR_NOMEM;
+            snprintf(msg, sizeof msg, "%s '%.60s' (the columns are tag, base, "
+                     "description, mass, height, cm_height, base_width, frequency, "
+                     "damping, restitution, bolt_model, bolts_per_row, diameter, "
+                     "area, yield_stress, toughness, deformable_length, "
+                     "edge_distance, lever_arm, gap, gap_ratio, motion, peak, "
+                     "amplitude, building_frequency, building_damping, criterion, "
+                     "usage_limit)", bad, r->f[i].text);
+            rb_batch_item_bad(it, line, r->f[i].col, "header", msg);
+            return RB_ERR_INVALID;
+        }
+        cx->cols[i] = k;
+        if (rb_csv_cols[k].kind == COL_TAG)
+            cx->tag_col = (int)i;
+        if (rb_csv_cols[k].kind == COL_BASE)
+            cx->base_col = (int)i;
+    }
+    cx->n_cols = r->n;
+    const char *missing = cx->tag_col < 0 ? "no 'tag' column"
+        : (cx->base_col < 0 && !cx->default_base)
+          ? "no 'base' column and no --base case" : NULL;
+    if (missing) {
+        rb_batch_item *it = rb_batch_list_push(l, cx->path);
+        if (!it)
+            return RB_ERR_NOMEM;
+        rb_batch_item_bad(it, line, 1, "header", missing);
+        return RB_ERR_INVALID;
+    }
+    return RB_OK;
+}
+
+static char *join(const char *a, const char *b)
+{
+    char *p = malloc(strlen(a) + strlen(b) + 1);
+    if (p) {
+        strcpy(p, a);
+        strcat(p, b);
+    }
+    return p;
+}
+
+/* 0 if tag is new, else the line it was first given at; -1 on NOMEM. */
+static int tag_seen(csv_ctx *cx, const char *tag, int line)
+{
+    for (size_t i = 0; i < cx->n_tags; i++)
+        if (strcmp(cx->tags[i], tag) == 0)
+            return cx->tag_lines[i];
+    char **t = realloc(cx->tags, (cx->n_tags + 1) * sizeof *t);
+    if (!t)
+        return -1;
+    cx->tags = t;
+    int *ln = realloc(cx->tag_lines, (cx->n_tags + 1) * sizeof *ln);
+    if (!ln)
+        return -1;
+    cx->tag_lines = ln;
+    if (!(cx->tags[cx->n_tags] = rb_batch_strdup(tag)))
+        return -1;
+    cx->tag_lines[cx->n_tags++] = line;
+    return 0;
+}
+
+static rb_status read_row(csv_ctx *cx, rb_batch_list *l, const csv_row *r, int line)
+{
+    char msg[300];
+    rb_batch_item *it = rb_batch_list_push(l, cx->path);
+    if (!it)
+        return RB_ERR_NOMEM;
+    it->line = line;
+    const char *tag = (size_t)cx->tag_col < r->n ? r->f[cx->tag_col].text : "";
+    snprintf(msg, sizeof msg, "line %d", line);
+    if (!(it->tag = rb_batch_strdup(tag[0] ? tag : msg)))
+        return RB_ERR_NOMEM;
+    if (r->n != cx->n_cols) {
+        snprintf(msg, sizeof msg, "the row has %zu fields; the header has %zu",
+                 r->n, cx->n_cols);
+        rb_batch_item_bad(it, line, 1, "row", msg);
+        return RB_OK;
+    }
+    if (!tag[0]) {
+        rb_batch_item_bad(it, line, r->f[cx->tag_col].col, "tag", "the tag is empty");
+        return RB_OK;
+    }
+    int first = tag_seen(cx, tag, line);
+    if (first < 0)
+        return RB_ERR_NOMEM;
+    if (first > 0) {
+        snprintf(msg, sizeof msg, "duplicate tag '%.100s' (first given at line %d)",
+                 tag, first);
+        rb_batch_item_bad(it, line, r->f[cx->tag_col].col, "tag", msg);
+        return RB_OK;
+    }
+    const char *base = cx->base_col >= 0 ? r->f[cx->base_col].text : "";
+    if (base[0])
+        it->base = base[0] == '/' ? rb_batch_strdup(base) : join(cx->dir, base);
+    else if (cx->default_base)
+        it->base = rb_batch_strdup(cx->default_base);
+    else {
+        rb_batch_item_bad(it, line, r->f[cx->base_col].col, "base",
+                          "no base case: the cell is empty and no --base was given");
+        return RB_OK;
+    }
+    if (!it->base)
+        return RB_ERR_NOMEM;
+    for (size_t i = 0; i < r->n; i++) {
+        const col_def *c = &rb_csv_cols[cx->cols[i]];
+        const char *v = r->f[i].text;
+        rb_status st = RB_OK;
+        if (!v[0] || c->kind == COL_TAG || c->kind == COL_BASE)
+            continue;
+        if (c->kind == COL_MOTION)
+            st = add_motion(it, v, line, r->f[i].col);
+        else
+            st = add_ov(it, c->key, v, line, r->f[i].col);
+        if (st == RB_ERR_INVALID)
+            return RB_OK;
+        if (st != RB_OK)
+            return st;
+    }
+    return RB_OK;
+}
+
+static char *slurp(const char *path, size_t *len, char *msg, size_t msz)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        snprintf(msg, msz, "cannot open the list");
+        return NULL;
+    }
+    char *buf = malloc(RB_CSV_MAX_BYTES + 1);
+    if (!buf) {
+        fclose(f);
+        snprintf(msg, msz, "out of memory");
+        return NULL;
+    }
+    *len = fread(buf, 1, RB_CSV_MAX_BYTES + 1, f);
+    int err = ferror(f);
+    fclose(f);
+    if (err || *len > RB_CSV_MAX_BYTES) {
+        free(buf);
+        snprintf(msg, msz, err ? "cannot read the list"
+                               : "the list is larger than 64 MiB");
+        return NULL;
+    }
+    buf[*len] = '\0';
+    if (memchr(buf, '\0', *len)) {
+        free(buf);
+        snprintf(msg, msz, "the list holds NUL bytes: not a text file");
+        return NULL;
+    }
+    return buf;
+}
+
+static rb_status read_lines(csv_ctx *cx, rb_batch_list *l, const char *buf, size_t len,
+                            size_t n_before)
+{
+    csv_row r;
+    char msg[200];
+    int line = 0, have_header = 0;
+    size_t pos = 0;
+    rb_status st = RB_OK;
+    memset(&r, 0, sizeof r);
+    if (len >= 3 && memcmp(buf, "\xEF\xBB\xBF", 3) == 0)
+        pos = 3;   /* a byte-order mark, as spreadsheets write */
+    while (pos < len && st == RB_OK) {
+        const char *s = buf + pos;
+        const char *nl = memchr(s, '\n', len - pos);
+        size_t n = nl ? (size_t)(nl - s) : len - pos;
+        pos += n + (nl != NULL);
+        line++;
+        if (n > 0 && s[n - 1] == '\r')
+            n--;
+        size_t k = 0;
+        while (k < n && (s[k] == ' ' || s[k] == '\t'))
+            k++;
+        if (k == n || s[k] == '#')
+            continue;
+        int bad_col = 1;
+        int ok = split_line(s, n, &r, msg, sizeof msg, &bad_col);
+        if (ok < 0) {
+            st = RB_ERR_NOMEM;
+        } else if (!ok || !have_header) {
+            if (!ok) {
+                rb_batch_item *it = rb_batch_list_push(l, cx->path);
+                if (!it)
+                    st = RB_ERR_NOMEM;
+                else {
+                    it->line = line;
+                    rb_batch_item_bad(it, line, bad_col, have_header ? "row" : "header",
+                                      msg);
+                }
+                if (!have_header) {
+                    row_clear(&r);
+                    return st;
+                }
+            } else {
+                st = read_header(cx, l, &r, line);
+                have_header = 1;
+                if (st == RB_ERR_INVALID) {
+                    row_clear(&r);
+                    return RB_OK;
+                }
+            }
+        } else {
+            st = read_row(cx, l, &r, line);
+        }
+        row_clear(&r);
+    }
+    if (st == RB_OK && l->n == n_before) {
+        rb_batch_item *it = rb_batch_list_push(l, cx->path);
+        if (!it)
+            return RB_ERR_NOMEM;
+        rb_batch_item_bad(it, line ? line : 1, 1, "header",
+                          have_header ? "the list has no rows" : "the list is empty");
+    }
+    return st;
+}
+
+rb_status rb_batch_csv_read(rb_batch_list *l, const char *path, const char *default_base)
+{
+    csv_ctx cx;
+    char msg[200];
+    size_t len = 0, n_before = l->n;
+    memset(&cx, 0, sizeof cx);
+    cx.path = path;
+    cx.default_base = default_base;
+    const char *slash = strrchr(path, '/');
+    size_t dl = slash ? (size_t)(slash - path + 1) : 0;
+    if (!(cx.dir = malloc(dl + 1)))
+        return RB_ERR_NOMEM;
+    memcpy(cx.dir, path, dl);
+    cx.dir[dl] = '\0';
+    char *buf = slurp(path, &len, msg, sizeof msg);
+    rb_status st = RB_OK;
+    if (!buf) {
+        rb_batch_item *it = rb_batch_list_push(l, path);
+        if (!it)
+            st = RB_ERR_NOMEM;
+        else
+            rb_batch_item_bad(it, 0, 0, "list", msg);
+    } else {
+        st = read_lines(&cx, l, buf, len, n_before);
+    }
+    for (size_t i = 0; i < cx.n_tags; i++)
+        free(cx.tags[i]);
+    free(cx.tags);
+    free(cx.tag_lines);
+    free(cx.dir);
+    free(buf);
+    return st;
+}

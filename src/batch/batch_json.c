@@ -1,0 +1,309 @@
+/* The JSON summary of a batch, and reading it back.
+ *
+ * The reader keeps exactly what the writer needs (the derived parts,
+ * counts, governing motion, mean and maximum, are recomputed), and cJSON
+ * prints every double so that it reads back to the same double. So a
+ * summary read back and written again is the same text: that is what makes
+ * merged shards byte-identical to a single run. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <cjson/cJSON.h>
+#include "batch_summary.h"
+
+static int add_num(cJSON *o, const char *k, double v)
+{
+    return cJSON_AddNumberToObject(o, k, v) != NULL;
+}
+
+static int add_stat(cJSON *parent, const char *name, const rb_batch_stat *st,
+                    int design, int is_max)
+{
+    cJSON *o = cJSON_AddObjectToObject(parent, name);
+    int ok = o && add_num(o, "usage", st->usage)
+        && add_num(o, "shear_over_w", st->shear_over_w)
+        && add_num(o, "force_over_fy", st->force_over_fy)
+        && add_num(o, "theta_over_alpha", st->theta_over_alpha);
+    if (ok && design) {
+        const char *fk = is_max ? "min_design_factor" : "design_factor";
+        ok = (st->has_factor ? add_num(o, fk, st->design_factor)
+                             : cJSON_AddNullToObject(o, fk) != NULL)
+            && (st->has_gap ? add_num(o, "gap_ratio", st->gap_ratio)
+                            : cJSON_AddNullToObject(o, "gap_ratio") != NULL);
+    }
+    return ok;
+}
+
+static int add_run(cJSON *arr, const rb_batch_result *r, int design)
+{
+    cJSON *o = cJSON_CreateObject();
+    if (!o || !cJSON_AddItemToArray(arr, o))
+        return cJSON_Delete(o), 0;
+    int ok = cJSON_AddStringToObject(o, "motion", r->motion) != NULL
+        && cJSON_AddStringToObject(o, "verdict", r->pass ? "pass" : "fail") != NULL
+        && add_num(o, "usage", r->usage)
+        && add_num(o, "shear_over_w", r->shear_over_w)
+        && add_num(o, "force_over_fy", r->force_over_fy)
+        && add_num(o, "theta_over_alpha", r->theta_over_alpha);
+    if (ok && design) {
+        ok = (r->has_factor ? add_num(o, "design_factor", r->design_factor)
+                            : cJSON_AddNullToObject(o, "design_factor") != NULL)
+            && cJSON_AddBoolToObject(o, "design_factor_bound", r->factor_bound) != NULL
+            && (r->has_gap ? add_num(o, "gap_ratio", r->gap_ratio)
+                           : cJSON_AddNullToObject(o, "gap_ratio") != NULL);
+    }
+    return ok;
+}
+
+static int add_error(cJSON *o, const rb_batch_case *c)
+{
+    if (c->verdict == RB_BATCH_PASS || c->verdict == RB_BATCH_FAIL)
+        return cJSON_AddNullToObject(o, "error") != NULL;
+    cJSON *e = cJSON_AddObjectToObject(o, "error");
+    return e && cJSON_AddStringToObject(e, "file", c->error.file)
+        && add_num(e, "line", c->error.line) && add_num(e, "col", c->error.col)
+        && cJSON_AddStringToObject(e, "key", c->error.key)
+        && cJSON_AddStringToObject(e, "message", c->error.msg)
+        && add_num(e, "count", (double)c->n_errors);
+}
+
+static int add_case(cJSON *arr, const rb_batch_case *c, int design)
+{
+    cJSON *o = cJSON_CreateObject();
+    if (!o || !cJSON_AddItemToArray(arr, o))
+        return cJSON_Delete(o), 0;
+    int solved = c->verdict == RB_BATCH_PASS || c->verdict == RB_BATCH_FAIL;
+    int ok = add_num(o, "index", (double)c->index)
+        && cJSON_AddStringToObject(o, "source", c->source)
+        && add_num(o, "line", c->line)
+        && cJSON_AddStringToObject(o, "tag", c->tag)
+        && cJSON_AddStringToObject(o, "verdict", rb_batch_verdict_str(c->verdict))
+        && cJSON_AddStringToObject(o, "reason", c->reason ? c->reason : "")
+        && add_error(o, c);
+    if (!ok)
+        return 0;
+    if (!solved)
+        return cJSON_AddNullToObject(o, "governing_motion") != NULL;
+    if (!cJSON_AddStringToObject(o, "governing_motion",
+                                 c->runs[rb_batch_governing(c)].motion))
+        return 0;
+    cJSON *runs = cJSON_AddArrayToObject(o, "runs");
+    for (size_t m = 0; ok && runs && m < c->n_runs; m++)
+        ok = add_run(runs, &c->runs[m], design);
+    rb_batch_stat mean, max;
+    rb_batch_stats(c, &mean, &max);
+    return ok && runs && add_stat(o, "mean", &mean, design, 0)
+        && add_stat(o, "max", &max, design, 1);
+}
+
+char *rb_batch_render_json(const rb_batch_summary *s)
+{
+    rb_batch_counts n;
+    char shard[64];
+    rb_batch_count(s, &n);
+    cJSON *root = cJSON_CreateObject(), *counts, *cases;
+    int ok = root && cJSON_AddStringToObject(root, "format", "rockbolt-batch")
+        && add_num(root, "format_version", RB_BATCH_FORMAT_VERSION)
+        && cJSON_AddBoolToObject(root, "design", s->design)
+        && add_num(root, "total", (double)s->total);
+    if (ok && s->n_shards > 0) {
+        snprintf(shard, sizeof shard, "%zu/%zu", s->shard, s->n_shards);
+        ok = cJSON_AddStringToObject(root, "shard", shard) != NULL;
+    }
+    ok = ok && (counts = cJSON_AddObjectToObject(root, "counts")) != NULL
+        && add_num(counts, "cases", (double)n.cases)
+        && add_num(counts, "passed", (double)n.passed)
+        && add_num(counts, "failed", (double)n.failed)
+        && add_num(counts, "unreadable", (double)n.unreadable)
+        && add_num(counts, "errors", (double)n.errors)
+        && add_num(counts, "runs", (double)n.runs)
+        && (cases = cJSON_AddArrayToObject(root, "cases")) != NULL;
+    for (size_t i = 0; ok && i < s->n_cases; i++)
+        ok = add_case(cases, &s->cases[i], s->design);
+    char *text = ok ? cJSON_Print(root) : NULL, *out = NULL;
+    cJSON_Delete(root);
+    if (text) {
+        size_t len = strlen(text);
+        out = malloc(len + 2);
+        if (out) {
+            memcpy(out, text, len);
+            memcpy(out + len, "\n", 2);
+        }
+        cJSON_free(text);
+    }
+    return out;
+}
+
+/* ---- Reading --------------------------------------------------------------- */
+
+typedef struct {
+    rb_diag *diag;
+    int bad;
+} rd_ctx;
+
+static void rd_fail(rd_ctx *r, const char *key, const char *msg)
+{
+    if (r->bad++)
+        return;
+    if (r->diag) {
+        snprintf(r->diag->key, sizeof r->diag->key, "%s", key);
+        snprintf(r->diag->msg, sizeof r->diag->msg, "%s", msg);
+    }
+}
+
+static double rd_num(rd_ctx *r, const cJSON *o, const char *k)
+{
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(o, k);
+    if (!cJSON_IsNumber(v)) {
+        rd_fail(r, k, "expected a number");
+        return 0;
+    }
+    return v->valuedouble;
+}
+
+/* A number or null; has = 0 for null. */
+static double rd_opt(rd_ctx *r, const cJSON *o, const char *k, int *has)
+{
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(o, k);
+    *has = cJSON_IsNumber(v);
+    if (!*has && !cJSON_IsNull(v))
+        rd_fail(r, k, "expected a number or null");
+    return *has ? v->valuedouble : 0;
+}
+
+static size_t rd_size(rd_ctx *r, const cJSON *o, const char *k)
+{
+    double v = rd_num(r, o, k);
+    if (!(v >= 0 && v < 9e15) || v != floor(v)) {
+        rd_fail(r, k, "expected a whole number >= 0");
+        return 0;
+    }
+    return (size_t)v;
+}
+
+static char *rd_str(rd_ctx *r, const cJSON *o, const char *k)
+{
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(o, k);
+    if (!cJSON_IsString(v)) {
+        rd_fail(r, k, "expected a string");
+        return NULL;
+    }
+    char *s = rb_batch_strdup(v->valuestring);
+    if (!s)
+        rd_fail(r, k, "out of memory");
+    return s;
+}
+
+static void rd_copy(rd_ctx *r, const cJSON *o, const char *k, char *dst, size_t n)
+{
+    char *s = rd_str(r, o, k);
+    snprintf(dst, n, "%s", s ? s : "");
+    free(s);
+}
+
+static void rd_run(rd_ctx *r, const cJSON *o, rb_batch_result *run, int design)
+{
+    char *v;
+    run->motion = rd_str(r, o, "motion");
+    v = rd_str(r, o, "verdict");
+    run->pass = v && strcmp(v, "pass") == 0;
+    if (v && !run->pass && strcmp(v, "fail") != 0)
+        rd_fail(r, "verdict", "expected pass or fail");
+    free(v);
+    run->usage = rd_num(r, o, "usage");
+    run->shear_over_w = rd_num(r, o, "shear_over_w");
+    run->force_over_fy = rd_num(r, o, "force_over_fy");
+    run->theta_over_alpha = rd_num(r, o, "theta_over_alpha");
+    if (!design)
+        return;
+    run->design_factor = rd_opt(r, o, "design_factor", &run->has_factor);
+    run->factor_bound = cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(o,
+                                                 "design_factor_bound"));
+    run->gap_ratio = rd_opt(r, o, "gap_ratio", &run->has_gap);
+}
+
+static void rd_case(rd_ctx *r, const cJSON *o, rb_batch_case *c, int design)
+{
+    char *v;
+    c->index = rd_size(r, o, "index");
+    c->source = rd_str(r, o, "source");
+    c->line = (int)rd_num(r, o, "line");
+    c->tag = rd_str(r, o, "tag");
+    c->reason = rd_str(r, o, "reason");
+    v = rd_str(r, o, "verdict");
+    if (v && !rb_batch_verdict_parse(v, &c->verdict))
+        rd_fail(r, "verdict", "expected pass, fail, unreadable or error");
+    free(v);
+    if (r->bad)
+        return;
+    if (c->verdict != RB_BATCH_PASS && c->verdict != RB_BATCH_FAIL) {
+        const cJSON *e = cJSON_GetObjectItemCaseSensitive(o, "error");
+        if (!cJSON_IsObject(e)) {
+            rd_fail(r, "error", "expected an object");
+            return;
+        }
+        rd_copy(r, e, "file", c->error.file, sizeof c->error.file);
+        c->error.line = (int)rd_num(r, e, "line");
+        c->error.col = (int)rd_num(r, e, "col");
+        rd_copy(r, e, "key", c->error.key, sizeof c->error.key);
+        rd_copy(r, e, "message", c->error.msg, sizeof c->error.msg);
+        c->n_errors = rd_size(r, e, "count");
+        return;
+    }
+    const cJSON *runs = cJSON_GetObjectItemCaseSensitive(o, "runs"), *it;
+    int n = cJSON_GetArraySize(runs);
+    if (!cJSON_IsArray(runs) || n < 1) {
+        rd_fail(r, "runs", "expected a list of runs");
+        return;
+    }
+    if (!(c->runs = calloc((size_t)n, sizeof *c->runs))) {
+        rd_fail(r, "runs", "out of memory");
+        return;
+    }
+    c->n_runs = (size_t)n;
+    size_t m = 0;
+    cJSON_ArrayForEach(it, runs)
+        rd_run(r, it, &c->runs[m++], design);
+}
+
+rb_status rb_batch_summary_parse(const char *text, rb_batch_summary *out, rb_diag *diag)
+{
+    rd_ctx r = {diag, 0};
+    memset(out, 0, sizeof *out);
+    cJSON *root = cJSON_Parse(text);
+    if (!root) {
+        rd_fail(&r, "summary", "not JSON");
+        return RB_ERR_PARSE;
+    }
+    const cJSON *fmt = cJSON_GetObjectItemCaseSensitive(root, "format");
+    if (!cJSON_IsString(fmt) || strcmp(fmt->valuestring, "rockbolt-batch") != 0)
+        rd_fail(&r, "format", "not a rockbolt batch summary");
+    else if (rd_num(&r, root, "format_version") != RB_BATCH_FORMAT_VERSION)
+        rd_fail(&r, "format_version", "written by another version of the format");
+    out->design = cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(root, "design"));
+    out->total = rd_size(&r, root, "total");
+    const cJSON *sh = cJSON_GetObjectItemCaseSensitive(root, "shard");
+    if (cJSON_IsString(sh) && sscanf(sh->valuestring, "%zu/%zu", &out->shard,
+                                     &out->n_shards) != 2)
+        rd_fail(&r, "shard", "expected i/n");
+    const cJSON *cases = cJSON_GetObjectItemCaseSensitive(root, "cases"), *it;
+    if (!r.bad && !cJSON_IsArray(cases))
+        rd_fail(&r, "cases", "expected a list");
+    int n = r.bad ? 0 : cJSON_GetArraySize(cases);
+    if (n > 0 && !(out->cases = calloc((size_t)n, sizeof *out->cases)))
+        rd_fail(&r, "cases", "out of memory");
+    if (!r.bad) {
+        cJSON_ArrayForEach(it, cases) {
+            if (r.bad)
+                break;
+            rd_case(&r, it, &out->cases[out->n_cases++], out->design);
+        }
+    }
+    cJSON_Delete(root);
+    if (r.bad) {
+        rb_batch_summary_free(out);
+        return RB_ERR_PARSE;
+    }
+    return RB_OK;
+}

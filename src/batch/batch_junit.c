@@ -1,0 +1,91 @@
+/* The summary as JUnit XML, so that CI systems show each case as a test:
+ * a case that fails its criteria is a <failure>, one that cannot be read
+ * or solved an <error>. No timings: the file is as deterministic as the
+ * other summaries. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "batch_summary.h"
+
+/* Text for XML content and attributes. Control characters other than tab
+ * and newline are not allowed in XML 1.0 and are replaced. */
+static void xml_text(rb_bbuf *b, const char *s)
+{
+    for (const unsigned char *p = (const unsigned char *)s; *p; p++) {
+        switch (*p) {
+        case '&': rb_bbuf_str(b, "&amp;"); break;
+        case '<': rb_bbuf_str(b, "&lt;"); break;
+        case '>': rb_bbuf_str(b, "&gt;"); break;
+        case '"': rb_bbuf_str(b, "&quot;"); break;
+        case '\'': rb_bbuf_str(b, "&apos;"); break;
+        case '\n': rb_bbuf_str(b, "&#10;"); break;
+        case '\t': rb_bbuf_str(b, "&#9;"); break;
+        default:
+            if (*p < 0x20 || *p == 0x7f)
+                rb_bbuf_str(b, "?");
+            else
+                rb_bbuf_put(b, (const char *)p, 1);
+        }
+    }
+}
+
+static void junit_case(rb_bbuf *b, const rb_batch_case *c)
+{
+    rb_bbuf_str(b, "    <testcase classname=\"");
+    xml_text(b, c->source);
+    rb_bbuf_str(b, "\" name=\"");
+    xml_text(b, c->tag);
+    if (c->line > 0)
+        rb_bbuf_printf(b, " (line %d)", c->line);
+    rb_bbuf_str(b, "\"");
+    if (c->verdict == RB_BATCH_PASS) {
+        rb_bbuf_str(b, "/>\n");
+        return;
+    }
+    rb_bbuf_str(b, ">\n");
+    if (c->verdict == RB_BATCH_FAIL) {
+        rb_bbuf_str(b, "      <failure type=\"criteria\" message=\"");
+        xml_text(b, c->reason ? c->reason : "");
+        rb_bbuf_str(b, "\">");
+        for (size_t m = 0; m < c->n_runs; m++) {
+            const rb_batch_result *r = &c->runs[m];
+            char line[400];
+            snprintf(line, sizeof line, "%s: %s, usage %.3f, V/W %.3f, F/Fy %.3f, "
+                     "theta/alpha %.3f\n", r->motion, r->pass ? "pass" : "FAIL",
+                     r->usage, r->shear_over_w, r->force_over_fy, r->theta_over_alpha);
+            xml_text(b, line);
+        }
+        rb_bbuf_str(b, "</failure>\n");
+    } else {
+        const rb_diag *e = &c->error;
+        char msg[1400];
+        if (e->line > 0)
+            snprintf(msg, sizeof msg, "%s:%d:%d: error: %s: %s", e->file, e->line,
+                     e->col, e->key, e->msg);
+        else
+            snprintf(msg, sizeof msg, "%s: error: %s: %s", e->file, e->key, e->msg);
+        rb_bbuf_printf(b, "      <error type=\"%s\" message=\"",
+                       c->verdict == RB_BATCH_UNREADABLE ? "unreadable" : "error");
+        xml_text(b, msg);
+        rb_bbuf_printf(b, "\">%zu error%s reported</error>\n", c->n_errors,
+                       c->n_errors == 1 ? "" : "s");
+    }
+    rb_bbuf_str(b, "    </testcase>\n");
+}
+
+char *rb_batch_render_junit(const rb_batch_summary *s)
+{
+    rb_bbuf b = {0};
+    rb_batch_counts n;
+    rb_batch_count(s, &n);
+    size_t errors = n.unreadable + n.errors;
+    rb_bbuf_str(&b, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
+    rb_bbuf_printf(&b, "<testsuites name=\"rockbolt batch\" tests=\"%zu\" failures=\"%zu\""
+                   " errors=\"%zu\">\n", n.cases, n.failed, errors);
+    rb_bbuf_printf(&b, "  <testsuite name=\"rockbolt\" tests=\"%zu\" failures=\"%zu\" "
+                   "errors=\"%zu\" skipped=\"0\">\n", n.cases, n.failed, errors);
+    for (size_t i = 0; i < s->n_cases; i++)
+        junit_case(&b, &s->cases[i]);
+    rb_bbuf_str(&b, "  </testsuite>\n</testsuites>\n");
+    return rb_bbuf_take(&b);
+}

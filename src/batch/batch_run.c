@@ -1,0 +1,183 @@
+/* rb_batch_run: the work list through the thread pool, a chunk at a time.
+ *
+ * Each chunk of cases is loaded in parallel, then all its case x motion
+ * runs go to the pool, so a case with many motions spreads over the
+ * threads as well as many cases do. The last run of a case concludes it
+ * and frees it, so memory is bounded by the chunk, not the list. Every
+ * result goes to its own slot, so the summary does not depend on which
+ * thread ran what. */
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "batch_engine.h"
+
+#define RB_BATCH_CHUNK 256
+
+typedef struct {
+    size_t slot, motion;
+} run_ref;
+
+typedef struct {
+    const rb_batch_list *l;
+    const rb_batch_opts *o;
+    rb_batch_summary *out;
+    const size_t *sel;       /* work index of each summary case */
+    size_t first;            /* first summary case of the chunk */
+    rb_batch_slot *slots;    /* RB_BATCH_CHUNK */
+    run_ref *runs;
+    pthread_mutex_t lock;
+    rb_batch_progress prog;
+} run_ctx;
+
+void rb_batch_opts_init(rb_batch_opts *o)
+{
+    memset(o, 0, sizeof *o);
+}
+
+int rb_batch_in_shard(size_t index, size_t shard, size_t n_shards)
+{
+    return n_shards == 0 || index % n_shards == shard - 1;
+}
+
+/* Count a finished run or case and tell the caller. */
+static void progress(run_ctx *cx, const rb_batch_case *done_case, int run_done)
+{
+    pthread_mutex_lock(&cx->lock);
+    cx->prog.runs_done += (size_t)run_done;
+    if (done_case) {
+        cx->prog.cases_done++;
+        cx->prog.failed += done_case->verdict == RB_BATCH_FAIL;
+        cx->prog.unreadable += done_case->verdict == RB_BATCH_UNREADABLE
+                               || done_case->verdict == RB_BATCH_ERROR;
+    }
+    if (cx->o->progress)
+        cx->o->progress(cx->o->progress_ctx, &cx->prog);
+    pthread_mutex_unlock(&cx->lock);
+}
+
+static void load_job(void *arg, size_t i)
+{
+    run_ctx *cx = arg;
+    rb_batch_case *bc = &cx->out->cases[cx->first + i];
+    rb_batch_slot *s = &cx->slots[i];
+    rb_batch_case_load(s, &cx->l->items[bc->index], bc);
+    if (!s->loaded || s->remaining == 0) {
+        rb_batch_case_finish(s, bc, cx->o, cx->out->total);
+        progress(cx, bc, 0);
+    }
+}
+
+static void run_job(void *arg, size_t k)
+{
+    run_ctx *cx = arg;
+    const run_ref *r = &cx->runs[k];
+    rb_batch_case *bc = &cx->out->cases[cx->first + r->slot];
+    rb_batch_slot *s = &cx->slots[r->slot];
+    rb_batch_case_solve(s, bc, r->motion, cx->o->design);
+    pthread_mutex_lock(&cx->lock);
+    int last = --s->remaining == 0;
+    pthread_mutex_unlock(&cx->lock);
+    if (last)
+        rb_batch_case_finish(s, bc, cx->o, cx->out->total);
+    progress(cx, last ? bc : NULL, 1);
+}
+
+static rb_status run_chunk(run_ctx *cx, size_t n)
+{
+    size_t n_runs = 0;
+    rb_status st = rb_batch_parallel(n, cx->o->n_threads, load_job, cx);
+    if (st != RB_OK)
+        return st;
+    for (size_t i = 0; i < n; i++)
+        if (cx->slots[i].loaded)
+            n_runs += cx->slots[i].remaining;
+    run_ref *runs = malloc((n_runs ? n_runs : 1) * sizeof *runs);
+    if (!runs)
+        return RB_ERR_NOMEM;
+    n_runs = 0;
+    for (size_t i = 0; i < n; i++)
+        for (size_t m = 0; cx->slots[i].loaded && m < cx->slots[i].remaining; m++)
+            runs[n_runs].slot = i, runs[n_runs++].motion = m;
+    cx->runs = runs;
+    st = rb_batch_parallel(n_runs, cx->o->n_threads, run_job, cx);
+    free(runs);
+    cx->runs = NULL;
+    return st;
+}
+
+static rb_status check_opts(const rb_batch_opts *o, rb_diag *diag)
+{
+    const char *bad = NULL;
+    if ((o->n_shards == 0) != (o->shard == 0) || o->shard > o->n_shards)
+        bad = "the shard must be i/n with 1 <= i <= n";
+    else if (o->reports_dir && !o->report_template)
+        bad = "reports need the report template";
+    if (!bad)
+        return RB_OK;
+    if (diag)
+        snprintf(diag->msg, sizeof diag->msg, "%s", bad);
+    return RB_ERR_INVALID;
+}
+
+/* The summary's cases (this shard's items), with what the list knows. */
+static rb_status select_cases(const rb_batch_list *l, const rb_batch_opts *o,
+                              rb_batch_summary *out)
+{
+    size_t n = 0;
+    for (size_t i = 0; i < l->n; i++)
+        n += (size_t)rb_batch_in_shard(i, o->shard, o->n_shards);
+    out->cases = calloc(n ? n : 1, sizeof *out->cases);
+    if (!out->cases)
+        return RB_ERR_NOMEM;
+    for (size_t i = 0; i < l->n; i++) {
+        if (!rb_batch_in_shard(i, o->shard, o->n_shards))
+            continue;
+        rb_batch_case *bc = &out->cases[out->n_cases++];
+        bc->index = i;
+        bc->line = l->items[i].line;
+        bc->source = rb_batch_strdup(l->items[i].source);
+        bc->tag = rb_batch_default_tag(&l->items[i]);
+        if (!bc->source || !bc->tag)
+            return RB_ERR_NOMEM;
+    }
+    return RB_OK;
+}
+
+rb_status rb_batch_run(const rb_batch_list *l, const rb_batch_opts *o,
+                       rb_batch_summary *out, rb_diag *diag)
+{
+    run_ctx cx;
+    memset(out, 0, sizeof *out);
+    rb_status st = check_opts(o, diag);
+    if (st != RB_OK)
+        return st;
+    out->design = o->design;
+    out->total = l->n;
+    out->shard = o->shard;
+    out->n_shards = o->n_shards;
+    if ((st = select_cases(l, o, out)) != RB_OK)
+        return st;
+    memset(&cx, 0, sizeof cx);
+    cx.l = l;
+    cx.o = o;
+    cx.out = out;
+    cx.prog.cases_total = out->n_cases;
+    cx.slots = calloc(RB_BATCH_CHUNK, sizeof *cx.slots);
+    if (!cx.slots || pthread_mutex_init(&cx.lock, NULL) != 0) {
+        free(cx.slots);
+        return RB_ERR_NOMEM;
+    }
+    for (size_t first = 0; first < out->n_cases && st == RB_OK; first += RB_BATCH_CHUNK) {
+        size_t n = out->n_cases - first;
+        if (n > RB_BATCH_CHUNK)
+            n = RB_BATCH_CHUNK;
+        cx.first = first;
+        st = run_chunk(&cx, n);
+        for (size_t i = 0; i < n; i++)
+            rb_batch_slot_free(&cx.slots[i]);
+    }
+    pthread_mutex_destroy(&cx.lock);
+    free(cx.slots);
+    return st;
+}

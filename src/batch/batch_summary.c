@@ -1,0 +1,129 @@
+/* The batch summary: freeing, the governing motion, counts, and the
+ * mean and maximum over a case's motions that every renderer shows. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "batch_summary.h"
+
+void rb_batch_summary_free(rb_batch_summary *s)
+{
+    if (!s)
+        return;
+    for (size_t i = 0; s->cases && i < s->n_cases; i++) {
+        rb_batch_case *c = &s->cases[i];
+        free(c->source);
+        free(c->tag);
+        free(c->reason);
+        for (size_t m = 0; c->runs && m < c->n_runs; m++)
+            free(c->runs[m].motion);
+        free(c->runs);
+    }
+    free(s->cases);
+    memset(s, 0, sizeof *s);
+}
+
+/* 1 if run a governs over run b (see batch.h). */
+static int governs(const rb_batch_result *a, const rb_batch_result *b)
+{
+    if (a->pass != b->pass)
+        return !a->pass;
+    if (a->usage != b->usage)
+        return a->usage > b->usage;
+    return a->force_over_fy > b->force_over_fy;
+}
+
+size_t rb_batch_governing(const rb_batch_case *c)
+{
+    size_t g = 0;
+    for (size_t m = 1; m < c->n_runs; m++)
+        if (governs(&c->runs[m], &c->runs[g]))
+            g = m;
+    return g;
+}
+
+/* Runs count only for cases that were solved and judged. */
+static int has_results(const rb_batch_case *c)
+{
+    return (c->verdict == RB_BATCH_PASS || c->verdict == RB_BATCH_FAIL) && c->n_runs > 0;
+}
+
+void rb_batch_count(const rb_batch_summary *s, rb_batch_counts *out)
+{
+    memset(out, 0, sizeof *out);
+    for (size_t i = 0; i < s->n_cases; i++) {
+        const rb_batch_case *c = &s->cases[i];
+        out->cases++;
+        out->passed += c->verdict == RB_BATCH_PASS;
+        out->failed += c->verdict == RB_BATCH_FAIL;
+        out->unreadable += c->verdict == RB_BATCH_UNREADABLE;
+        out->errors += c->verdict == RB_BATCH_ERROR;
+        if (has_results(c))
+            out->runs += c->n_runs;
+    }
+}
+
+const char *rb_batch_verdict_str(rb_batch_verdict v)
+{
+    switch (v) {
+    case RB_BATCH_PASS: return "pass";
+    case RB_BATCH_FAIL: return "fail";
+    case RB_BATCH_UNREADABLE: return "unreadable";
+    case RB_BATCH_ERROR: return "error";
+    }
+    return "error";
+}
+
+int rb_batch_verdict_parse(const char *s, rb_batch_verdict *v)
+{
+    static const rb_batch_verdict all[] = {RB_BATCH_PASS, RB_BATCH_FAIL,
+                                           RB_BATCH_UNREADABLE, RB_BATCH_ERROR};
+    for (size_t k = 0; k < 4; k++) {
+        if (strcmp(s, rb_batch_verdict_str(all[k])) == 0) {
+            *v = all[k];
+            return 1;
+        }
+    }
+    return 0;
+}
+
+void rb_batch_stats(const rb_batch_case *c, rb_batch_stat *mean, rb_batch_stat *max)
+{
+    memset(mean, 0, sizeof *mean);
+    memset(max, 0, sizeof *max);
+    size_t n_factor = 0, n_gap = 0;
+    if (!has_results(c))
+        return;
+    for (size_t m = 0; m < c->n_runs; m++) {
+        const rb_batch_result *r = &c->runs[m];
+        mean->usage += r->usage;
+        mean->shear_over_w += r->shear_over_w;
+        mean->force_over_fy += r->force_over_fy;
+        mean->theta_over_alpha += r->theta_over_alpha;
+        max->usage = fmax(max->usage, r->usage);
+        max->shear_over_w = fmax(max->shear_over_w, r->shear_over_w);
+        max->force_over_fy = fmax(max->force_over_fy, r->force_over_fy);
+        max->theta_over_alpha = fmax(max->theta_over_alpha, r->theta_over_alpha);
+        if (r->has_factor) {
+            mean->design_factor += r->design_factor;
+            max->design_factor = n_factor ? fmin(max->design_factor, r->design_factor)
+                                          : r->design_factor;
+            n_factor++;
+        }
+        if (r->has_gap) {
+            mean->gap_ratio += r->gap_ratio;
+            max->gap_ratio = n_gap ? fmax(max->gap_ratio, r->gap_ratio) : r->gap_ratio;
+            n_gap++;
+        }
+    }
+    double n = (double)c->n_runs;
+    mean->usage /= n;
+    mean->shear_over_w /= n;
+    mean->force_over_fy /= n;
+    mean->theta_over_alpha /= n;
+    mean->has_factor = max->has_factor = n_factor == c->n_runs;
+    mean->has_gap = max->has_gap = n_gap == c->n_runs;
+    if (n_factor)
+        mean->design_factor /= (double)n_factor;
+    if (n_gap)
+        mean->gap_ratio /= (double)n_gap;
+}

@@ -1,0 +1,22 @@
+/* Helpers the summary renderers and the reader share. */
+#ifndef RB_BATCH_SUMMARY_H
+#define RB_BATCH_SUMMARY_H
+
+#include "batch_internal.h"
+
+const char *rb_batch_verdict_str(rb_batch_verdict v);
+int rb_batch_verdict_parse(const char *s, rb_batch_verdict *v);
+
+/* Mean or maximum of each result over a case's runs; for the design
+ * factor, whose smallest value governs, the "maximum" holds the minimum.
+ * The design values are there (has_*) only when every run has one. */
+typedef struct {
+    double usage, shear_over_w, force_over_fy, theta_over_alpha;
+    int has_factor, has_gap;
+    double design_factor, gap_ratio;
+} rb_batch_stat;
+
+/* Zero when the case has no results (unreadable, error). */
+void rb_batch_stats(const rb_batch_case *c, rb_batch_stat *mean, rb_batch_stat *max);
+
+#endif

@@ -1,0 +1,42 @@
+/* What cli_batch*.c and cli_merge.c share. */
+#ifndef RB_CLI_BATCH_H
+#define RB_CLI_BATCH_H
+
+#include "cli.h"
+#include "rockbolt/batch.h"
+
+typedef struct {
+    const char **inputs;      /* owned array; strings point into argv */
+    size_t n_inputs;
+    const char *json_path, *csv_path, *junit_path;
+    const char *reports_dir;  /* batch only */
+    const char *base;         /* batch: --base CASE */
+    int design;               /* batch: --design */
+    int threads;              /* batch: -j N; 0: every processor */
+    size_t shard, n_shards;   /* batch: --shard I/N; 0/0: all */
+    int quiet, help;
+} rb_batch_cli;
+
+rb_exit rb_cli_batch_parse(int argc, char **argv, int is_merge, rb_batch_cli *o);
+void rb_cli_batch_cli_free(rb_batch_cli *o);
+
+/* Check the summary outputs' directories (before any work). */
+rb_exit rb_cli_batch_check_outputs(const rb_batch_cli *o);
+
+/* Write the summary outputs asked for, all or none; print the table
+ * unless quiet; return the exit code the summary calls for. */
+rb_exit rb_cli_batch_finish(const rb_batch_cli *o, const rb_batch_summary *s);
+
+/* The progress line on stderr (cli_batch_progress.c). */
+typedef struct {
+    int enabled;              /* stderr is a terminal and not --quiet */
+    double start_s, last_s;
+    int shown;                /* a line is on the screen */
+} rb_cli_progress;
+
+void rb_cli_progress_start(rb_cli_progress *p, int quiet);
+void rb_cli_progress_update(void *ctx, const rb_batch_progress *bp);
+/* Clear the line; with a summary of the wall time when enabled. */
+void rb_cli_progress_end(rb_cli_progress *p, size_t cases);
+
+#endif

@@ -1,0 +1,105 @@
+/* "rockbolt merge SHARD.json...": the JSON summaries of the shards of one
+ * batch into one summary, byte-identical to a single run's, with the same
+ * outputs, table and exit code. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "cli_batch.h"
+
+#define RB_MERGE_MAX_BYTES (1024u * 1024u * 1024u)
+
+static char *slurp(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return NULL;
+    size_t cap = 1 << 16, len = 0;
+    char *buf = malloc(cap);
+    while (buf) {
+        size_t n = fread(buf + len, 1, cap - len - 1, f);
+        len += n;
+        if (len + 1 < cap)
+            break;
+        if (cap >= RB_MERGE_MAX_BYTES) {
+            free(buf);
+            buf = NULL;
+            break;
+        }
+        char *p = realloc(buf, cap * 2);
+        if (!p) {
+            free(buf);
+            buf = NULL;
+        } else {
+            buf = p;
+            cap *= 2;
+        }
+    }
+    int err = ferror(f);
+    fclose(f);
+    if (buf && err) {
+        free(buf);
+        return NULL;
+    }
+    if (buf)
+        buf[len] = '\0';
+    return buf;
+}
+
+static rb_exit read_shards(const rb_batch_cli *o, rb_batch_summary *sh)
+{
+    for (size_t i = 0; i < o->n_inputs; i++) {
+        rb_diag d;
+        rb_diag_clear(&d);
+        char *text = slurp(o->inputs[i]);
+        if (!text) {
+            rb_cli_error(o->inputs[i], NULL, "cannot read the summary");
+            return RB_EXIT_USAGE;
+        }
+        rb_status st = rb_batch_summary_parse(text, &sh[i], &d);
+        free(text);
+        if (st != RB_OK) {
+            snprintf(d.file, sizeof d.file, "%s", o->inputs[i]);
+            rb_cli_diag_print(&d);
+            return st == RB_ERR_NOMEM ? RB_EXIT_INTERNAL : RB_EXIT_USAGE;
+        }
+    }
+    return RB_EXIT_PASS;
+}
+
+rb_exit rb_cli_merge_main(int argc, char **argv)
+{
+    rb_batch_cli o;
+    rb_batch_summary *sh = NULL, merged;
+    memset(&merged, 0, sizeof merged);
+    rb_exit e = rb_cli_batch_parse(argc, argv, 1, &o);
+    if (e == RB_EXIT_PASS && o.help) {
+        rb_cli_help_print();
+        rb_cli_batch_cli_free(&o);
+        return RB_EXIT_PASS;
+    }
+    if (e == RB_EXIT_PASS)
+        e = rb_cli_batch_check_outputs(&o);
+    if (e == RB_EXIT_PASS && !(sh = calloc(o.n_inputs, sizeof *sh))) {
+        rb_cli_error(NULL, NULL, "out of memory");
+        e = RB_EXIT_INTERNAL;
+    }
+    if (e == RB_EXIT_PASS)
+        e = read_shards(&o, sh);
+    if (e == RB_EXIT_PASS) {
+        rb_diag d;
+        rb_diag_clear(&d);
+        rb_status st = rb_batch_merge(sh, o.n_inputs, &merged, &d);
+        if (st != RB_OK) {
+            rb_cli_diag_print(&d);
+            e = st == RB_ERR_NOMEM ? RB_EXIT_INTERNAL : RB_EXIT_USAGE;
+        }
+    }
+    if (e == RB_EXIT_PASS)
+        e = rb_cli_batch_finish(&o, &merged);
+    for (size_t i = 0; sh && i < o.n_inputs; i++)
+        rb_batch_summary_free(&sh[i]);
+    free(sh);
+    rb_batch_summary_free(&merged);
+    rb_cli_batch_cli_free(&o);
+    return e;
+}

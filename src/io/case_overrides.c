@@ -1,0 +1,413 @@
+/* rb_case_load_overrides: a base case plus overriding values.
+ *
+ * The loader reads case files by path and resolves `extends:` and record
+ * files relative to the file that names them. So the overrides are written
+ * as a small case file that extends the base (both by absolute path, since
+ * the file lives in the temporary directory) and loaded through
+ * rb_case_load, which keeps every merge rule and check in one place. The
+ * file is removed at once. Diagnostics are then mapped back: positions in
+ * the generated file become the origin's line and column of the value, and
+ * the working-directory prefix the absolute paths brought in is removed, so
+ * that paths read as they would in a normal load. When the loader gains an
+ * entry point that takes text, only this file changes. */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include "rockbolt/case_overrides.h"
+
+#define RB_OV_MAX_DEPTH 4
+#define RB_OV_COMP_MAX 64
+
+typedef struct {
+    char *buf;
+    size_t len, cap;
+    int nomem;
+} rb_sbuf;
+
+static void sb_put(rb_sbuf *s, const char *p, size_t n)
+{
+    if (s->nomem)
+        return;
+    if (s->len + n + 1 > s->cap) {
+        size_t cap = s->cap ? s->cap : 256;
+        while (cap < s->len + n + 1)
+            cap *= 2;
+        char *q = realloc(s->buf, cap);
+        if (!q) {
+            s->nomem = 1;
+            return;
+        }
+        s->buf = q;
+        s->cap = cap;
+    }
+    memcpy(s->buf + s->len, p, n);
+    s->len += n;
+    s->buf[s->len] = '\0';
+}
+
+static void sb_str(rb_sbuf *s, const char *p)
+{
+    sb_put(s, p, strlen(p));
+}
+
+/* A double-quoted YAML scalar: no value can change the document's shape. */
+static void sb_quoted(rb_sbuf *s, const char *v)
+{
+    sb_put(s, "\"", 1);
+    for (const unsigned char *p = (const unsigned char *)v; *p; p++) {
+        char esc[8];
+        if (*p == '"' || *p == '\\') {
+            esc[0] = '\\';
+            esc[1] = (char)*p;
+            sb_put(s, esc, 2);
+        } else if (*p < 0x20 || *p == 0x7f) {
+            snprintf(esc, sizeof esc, "\\x%02x", *p);
+            sb_str(s, esc);
+        } else {
+            sb_put(s, (const char *)p, 1);
+        }
+    }
+    sb_put(s, "\"", 1);
+}
+
+/* Component d of a dotted key into out; 0 when there is none. */
+static int key_comp(const char *key, int d, char *out)
+{
+    const char *p = key;
+    for (int i = 0; i < d; i++) {
+        p = strchr(p, '.');
+        if (!p)
+            return 0;
+        p++;
+    }
+    size_t n = strcspn(p, ".");
+    if (n >= RB_OV_COMP_MAX)
+        n = RB_OV_COMP_MAX - 1;
+    memcpy(out, p, n);
+    out[n] = '\0';
+    return 1;
+}
+
+static int key_depth(const char *key)
+{
+    int d = 1;
+    for (const char *p = key; *p; p++)
+        d += *p == '.';
+    return d;
+}
+
+/* Keys are lower-case words joined by dots, so they cannot smuggle YAML. */
+static int key_ok(const char *key)
+{
+    if (!key[0] || key_depth(key) > RB_OV_MAX_DEPTH)
+        return 0;
+    for (const char *p = key; *p; p++) {
+        int word = (*p >= 'a' && *p <= 'z') || (*p >= '0' && *p <= '9') || *p == '_';
+        if (!word && !(*p == '.' && p != key && p[1] && p[1] != '.'))
+            return 0;
+    }
+    return 1;
+}
+
+/* 1 if key starts with the first d components of prefix. */
+static int same_prefix(const char *key, const char *prefix, int d)
+{
+    char a[RB_OV_COMP_MAX], b[RB_OV_COMP_MAX];
+    for (int i = 0; i < d; i++) {
+        if (!key_comp(key, i, a) || !key_comp(prefix, i, b) || strcmp(a, b) != 0)
+            return 0;
+    }
+    return 1;
+}
+
+typedef struct {
+    rb_sbuf sb;
+    int line;          /* lines written so far */
+    int *line_ov;      /* generated line (1-based) -> override index */
+    size_t line_cap;
+    const rb_case_override *ov;
+    size_t n;
+    const char *origin_dir; /* absolute, with a trailing '/' */
+} rb_ovgen;
+
+static void gen_line_end(rb_ovgen *g, int ov_index)
+{
+    sb_put(&g->sb, "\n", 1);
+    g->line++;
+    if ((size_t)g->line >= g->line_cap) {
+        size_t cap = g->line_cap ? 2 * g->line_cap : 32;
+        int *p = realloc(g->line_ov, cap * sizeof *p);
+        if (!p) {
+            g->sb.nomem = 1;
+            return;
+        }
+        g->line_ov = p;
+        g->line_cap = cap;
+    }
+    g->line_ov[g->line] = ov_index;
+}
+
+static int is_path_key(const char *key)
+{
+    size_t n = strlen(key);
+    return n >= 4 && strcmp(key + n - 4, "file") == 0;
+}
+
+/* Emit the mapping under the first d components of overrides[first].key,
+ * taking, in input order, every override with that prefix. */
+static void gen_map(rb_ovgen *g, size_t first, int d, char *done)
+{
+    char comp[RB_OV_COMP_MAX];
+    for (size_t i = first; i < g->n; i++) {
+        const char *key = g->ov[i].key;
+        if (done[i] || !same_prefix(key, g->ov[first].key, d))
+            continue;
+        key_comp(key, d, comp);
+        for (int k = 0; k < d; k++)
+            sb_str(&g->sb, "  ");
+        sb_str(&g->sb, comp);
+        sb_str(&g->sb, ":");
+        if (key_depth(key) == d + 1) {
+            const char *v = g->ov[i].value;
+            sb_str(&g->sb, " ");
+            if (is_path_key(key) && v[0] && v[0] != '/') {
+                char *abs = malloc(strlen(g->origin_dir) + strlen(v) + 1);
+                if (!abs) {
+                    g->sb.nomem = 1;
+                    return;
+                }
+                strcpy(abs, g->origin_dir);
+                strcat(abs, v);
+                sb_quoted(&g->sb, abs);
+                free(abs);
+            } else {
+                sb_quoted(&g->sb, v);
+            }
+            done[i] = 1;
+            gen_line_end(g, (int)i);
+            continue;
+        }
+        /* a leaf and a mapping of the same name come out as a duplicate
+         * key, which the loader reports at the second */
+        gen_line_end(g, (int)i);
+        gen_map(g, i, d + 1, done);
+    }
+}
+
+/* "/cwd/" (with the slash), or NULL. */
+static char *cwd_prefix(void)
+{
+    size_t cap = 256;
+    for (;;) {
+        char *b = malloc(cap + 1);
+        if (!b)
+            return NULL;
+        if (getcwd(b, cap)) {
+            size_t n = strlen(b);
+            if (n == 0 || b[n - 1] != '/')
+                strcat(b, "/");
+            return b;
+        }
+        free(b);
+        if (errno != ERANGE || cap > 65536)
+            return NULL;
+        cap *= 2;
+    }
+}
+
+/* prefix + path, unless path is absolute. */
+static char *absolute(const char *prefix, const char *path, size_t path_len)
+{
+    size_t pl = path[0] == '/' ? 0 : strlen(prefix);
+    char *p = malloc(pl + path_len + 1);
+    if (!p)
+        return NULL;
+    memcpy(p, prefix, pl);
+    memcpy(p + pl, path, path_len);
+    p[pl + path_len] = '\0';
+    return p;
+}
+
+static void strip_prefix(char *s, const char *prefix)
+{
+    size_t n = strlen(prefix);
+    if (s && strncmp(s, prefix, n) == 0)
+        memmove(s, s + n, strlen(s + n) + 1);
+}
+
+static char *dup_str(const char *s)
+{
+    size_t n = strlen(s) + 1;
+    char *p = malloc(n);
+    if (p)
+        memcpy(p, s, n);
+    return p;
+}
+
+static rb_status push_diag(rb_diag_list *l, const char *file, int line, int col,
+                           const char *key, const char *msg)
+{
+    if (l->n == l->cap) {
+        size_t cap = l->cap ? 2 * l->cap : 8;
+        rb_diag *p = realloc(l->items, cap * sizeof *p);
+        if (!p)
+            return RB_ERR_NOMEM;
+        l->items = p;
+        l->cap = cap;
+    }
+    rb_diag *d = &l->items[l->n++];
+    memset(d, 0, sizeof *d);
+    snprintf(d->file, sizeof d->file, "%s", file);
+    d->line = line;
+    d->col = col;
+    snprintf(d->key, sizeof d->key, "%s", key);
+    snprintf(d->msg, sizeof d->msg, "%s", msg);
+    return RB_ERR_INVALID;
+}
+
+/* Write text to a new temporary file; its name goes to path. */
+static rb_status write_temp(const char *text, size_t len, char *path, size_t size)
+{
+    const char *dir = getenv("TMPDIR");
+    if (!dir || !dir[0])
+        dir = "/tmp";
+    if ((size_t)snprintf(path, size, "%s/rockbolt-row-XXXXXX", dir) >= size)
+        return RB_ERR_IO;
+    int fd = mkstemp(path);
+    if (fd < 0)
+        return RB_ERR_IO;
+    size_t off = 0;
+    while (off < len) {
+        ssize_t w = write(fd, text + off, len - off);
+        if (w < 0 && errno == EINTR)
+            continue;
+        if (w <= 0) {
+            close(fd);
+            unlink(path);
+            return RB_ERR_IO;
+        }
+        off += (size_t)w;
+    }
+    if (close(fd) != 0) {
+        unlink(path);
+        return RB_ERR_IO;
+    }
+    return RB_OK;
+}
+
+/* Point diagnostics of the generated file at the overrides' origin. */
+static void map_diags(rb_diag_list *l, size_t first, const char *tmp,
+                      const rb_ovgen *g, const char *origin, int row_line,
+                      const char *cwd)
+{
+    for (size_t i = first; i < l->n; i++) {
+        rb_diag *d = &l->items[i];
+        if (strcmp(d->file, tmp) == 0) {
+            int k = d->line >= 1 && d->line <= g->line ? g->line_ov[d->line] : -1;
+            snprintf(d->file, sizeof d->file, "%s", origin);
+            d->line = k >= 0 ? g->ov[k].line : row_line;
+            d->col = k >= 0 ? g->ov[k].col : 1;
+        } else {
+            strip_prefix(d->file, cwd);
+        }
+        char *p;
+        while ((p = strstr(d->msg, tmp)) != NULL) {
+            /* messages quoting the generated file name: name the origin */
+            char rest[sizeof d->msg];
+            snprintf(rest, sizeof rest, "%s", p + strlen(tmp));
+            snprintf(p, sizeof d->msg - (size_t)(p - d->msg), "%s%s", origin, rest);
+        }
+    }
+}
+
+static rb_status generate(rb_ovgen *g, const char *base_abs, const char *name,
+                          char *done)
+{
+    sb_str(&g->sb, "extends: ");
+    sb_quoted(&g->sb, base_abs);
+    gen_line_end(g, -1);
+    if (name) {
+        sb_str(&g->sb, "name: ");
+        sb_quoted(&g->sb, name);
+        gen_line_end(g, -1);
+    }
+    for (size_t i = 0; i < g->n && !g->sb.nomem; i++)
+        if (!done[i])
+            gen_map(g, i, 0, done);
+    return g->sb.nomem ? RB_ERR_NOMEM : RB_OK;
+}
+
+rb_status rb_case_load_overrides(const char *base_path, const char *origin,
+                                 const char *name, const rb_case_override *ov,
+                                 size_t n, rb_case *out, rb_diag_list *diags)
+{
+    rb_ovgen g;
+    char tmp[600];
+    rb_status st = RB_OK;
+    int row_line = n ? ov[0].line : 0;
+    memset(out, 0, sizeof *out);
+    memset(&g, 0, sizeof g);
+    for (size_t i = 0; i < n; i++) {
+        if (!key_ok(ov[i].key) || !strcmp(ov[i].key, "extends")
+            || !strcmp(ov[i].key, "name")) {
+            char msg[200];
+            snprintf(msg, sizeof msg, "'%.100s' cannot be overridden (expected a "
+                     "dotted case key such as 'equipment.mass')", ov[i].key);
+            st = push_diag(diags, origin, ov[i].line, ov[i].col, ov[i].key, msg);
+        }
+    }
+    if (st != RB_OK)
+        return st;
+    char *cwd = cwd_prefix();
+    const char *slash = strrchr(origin, '/');
+    char *odir = cwd ? absolute(cwd, origin, slash ? (size_t)(slash - origin + 1) : 0)
+                     : NULL;
+    char *base_abs = cwd ? absolute(cwd, base_path, strlen(base_path)) : NULL;
+    char *done = calloc(n ? n : 1, 1);
+    if (!cwd || !odir || !base_abs || !done) {
+        st = cwd ? RB_ERR_NOMEM : RB_ERR_IO;
+        if (st == RB_ERR_IO)
+            push_diag(diags, origin, row_line, 1, "base",
+                      "cannot find the working directory");
+        goto done;
+    }
+    g.ov = ov;
+    g.n = n;
+    g.origin_dir = odir;
+    st = generate(&g, base_abs, name, done);
+    if (st == RB_OK && write_temp(g.sb.buf, g.sb.len, tmp, sizeof tmp) != RB_OK) {
+        char msg[700];
+        snprintf(msg, sizeof msg, "cannot write a temporary file in %s: %s",
+                 getenv("TMPDIR") ? getenv("TMPDIR") : "/tmp", strerror(errno));
+        st = push_diag(diags, origin, row_line, 1, "case", msg);
+        st = RB_ERR_IO;
+    }
+    if (st != RB_OK)
+        goto done;
+    size_t first = diags->n;
+    st = rb_case_load(tmp, out, diags);
+    unlink(tmp);
+    map_diags(diags, first, tmp, &g, origin, row_line, cwd);
+    if (st == RB_OK) {
+        char *p = dup_str(origin);
+        if (!p) {
+            rb_case_free(out);
+            st = RB_ERR_NOMEM;
+            goto done;
+        }
+        free(out->path);
+        out->path = p;
+        for (size_t i = 0; i < out->n_motions; i++)
+            strip_prefix(out->motions[i].source, cwd);
+    }
+done:
+    free(g.sb.buf);
+    free(g.line_ov);
+    free(done);
+    free(base_abs);
+    free(odir);
+    free(cwd);
+    return st;
+}
