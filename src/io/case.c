@@ -50,6 +50,13 @@ static void rb_cctx_status(rb_cctx *c, rb_status st)
 
 static void rb_cctx_vadd(rb_cctx *c, rb_status st, const char *file, int line,
                          int col, const char *key, const char *fmt, va_list ap)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 7, 0)))
+#endif
+    ;
+
+static void rb_cctx_vadd(rb_cctx *c, rb_status st, const char *file, int line,
+                         int col, const char *key, const char *fmt, va_list ap)
 {
     c->n_errors++;
     rb_cctx_status(c, st);
