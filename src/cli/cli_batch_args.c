@@ -111,8 +111,10 @@ rb_exit rb_cli_batch_parse(int argc, char **argv, int is_merge, rb_batch_cli *o)
             e = take(argc, argv, &i, "--shard", v, &sv);
             if (e == RB_EXIT_PASS)
                 e = parse_shard(sv, o);
-        } else if (!is_merge && (strcmp(a, "-j") == 0 || opt_is(a, "--threads", &v))) {
+        } else if (!is_merge && (strncmp(a, "-j", 2) == 0 || opt_is(a, "--threads", &v))) {
             long n;
+            if (a[1] == 'j' && a[2])
+                v = a + 2;   /* -j4 */
             e = take(argc, argv, &i, "-j", v, &jv);
             if (e == RB_EXIT_PASS && !whole(jv, 1, 1024, &n)) {
                 rb_cli_error(NULL, "-j", "expected a whole number of threads from 1 "
