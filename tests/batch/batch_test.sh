@@ -1,0 +1,184 @@
+#!/bin/sh
+# batch_test.sh TEST ROCKBOLT SCRATCH: one end-to-end test of the batch
+# commands, run from the source tree. Fixtures: tests/batch/cases (a
+# passing, a failing, a three-motion suite and an unreadable case) and
+# tests/batch/list.csv (rows that pass, fail, or cannot be read).
+set -u
+t=$1
+rb=$2
+s=$3
+rm -rf "$s"
+mkdir -p "$s"
+fail() { echo "FAIL: $*" >&2; exit 1; }
+inputs="tests/batch/cases tests/batch/list.csv"
+
+# run EXPECTED_RC ARGS...: rockbolt with stdout/stderr kept in $s
+run() {
+    want=$1
+    shift
+    "$rb" "$@" >"$s/out" 2>"$s/err"
+    rc=$?
+    [ "$rc" -eq "$want" ] || { cat "$s/err" >&2; fail "rockbolt $* exited $rc, expected $want"; }
+}
+
+has() { grep -q -- "$2" "$1" || fail "$1 lacks '$2'"; }
+lacks() { ! grep -q -- "$2" "$1" || fail "$1 has '$2'"; }
+
+check_junit() {
+    if command -v python3 >/dev/null 2>&1; then
+        python3 - "$1" <<'PY' || fail "JUnit XML is not well formed or wrong"
+import sys, xml.etree.ElementTree as ET
+root = ET.parse(sys.argv[1]).getroot()
+assert root.tag == "testsuites", root.tag
+cases = root.findall("./testsuite/testcase")
+assert len(cases) == int(root.get("tests")), "tests count"
+fails = sum(1 for c in cases if c.find("failure") is not None)
+errs = sum(1 for c in cases if c.find("error") is not None)
+assert fails == int(root.get("failures")), "failures count"
+assert errs == int(root.get("errors")), "errors count"
+PY
+    else
+        echo "python3 not found: JUnit well-formedness not checked"
+    fi
+}
+
+case $t in
+outputs)
+    run 2 batch $inputs -j 2 --json "$s/b.json" --csv "$s/b.csv" --junit "$s/b.xml"
+    # the table: every case, verdicts, the suite's mean and max
+    has "$s/out" "a-pass .*pass"
+    has "$s/out" "b-fail .*FAIL"
+    has "$s/out" "\*strong .*FAIL"
+    has "$s/out" "(mean)"
+    has "$s/out" "(max) .*FAIL"
+    has "$s/out" "P-104 .*UNREADABLE tests/batch/list.csv:6:26: equipment.mass: unknown unit 'kgs'"
+    has "$s/out" "10 cases: 2 passed, 4 failed, 4 unreadable, 0 errors; 8 runs"
+    # the diagnostics, compiler style
+    has "$s/err" "^tests/batch/cases/d-broken.yaml:5:9: error: equipment.mass: missing unit"
+    has "$s/err" "^tests/batch/list.csv:7:29: error: gap_ratio: the gap"
+    has "$s/err" "^tests/batch/list.csv:8:1: error: row: the row has 4 fields"
+    # no progress line when stderr is not a terminal
+    lacks "$s/err" "cases, "
+    # CSV: header, one row per case and motion, errors last column
+    [ "$(head -1 "$s/b.csv")" = "index,source,line,tag,motion,governing,verdict,case_verdict,usage,shear_over_w,force_over_fy,theta_over_alpha,error" ] \
+        || fail "CSV header"
+    [ "$(wc -l <"$s/b.csv")" -eq 13 ] || fail "CSV rows: $(wc -l <"$s/b.csv")"
+    has "$s/b.csv" '^2,tests/batch/cases/c-suite.yaml,0,c-suite,strong,1,fail,fail,1,'
+    has "$s/b.csv" '^2,tests/batch/cases/c-suite.yaml,0,c-suite,weak,0,pass,fail,'
+    has "$s/b.csv" '^6,tests/batch/list.csv,5,"P-103, spare",motion,1,fail,fail,'
+    has "$s/b.csv" '^7,tests/batch/list.csv,6,P-104,,0,unreadable,unreadable,,,,"tests/batch/list.csv:6:26: '
+    # JSON: counts, governing motion, mean and max of the suite
+    has "$s/b.json" '"format":	"rockbolt-batch"'
+    has "$s/b.json" '"unreadable":	4'
+    has "$s/b.json" '"governing_motion":	"strong"'
+    lacks "$s/b.json" '"shard"'
+    if command -v python3 >/dev/null 2>&1; then
+        python3 - "$s/b.json" <<'PY' || fail "JSON summary content"
+import json, sys
+d = json.load(open(sys.argv[1]))
+c = [x for x in d["cases"] if x["tag"] == "c-suite"][0]
+u = [r["usage"] for r in c["runs"]]
+assert abs(c["mean"]["usage"] - sum(u) / len(u)) < 1e-12
+assert c["max"]["usage"] == max(u)
+assert c["verdict"] == "fail" and c["governing_motion"] == "strong"
+e = [x for x in d["cases"] if x["tag"] == "P-104"][0]
+assert e["error"]["line"] == 6 and e["error"]["col"] == 26
+assert e["error"]["key"] == "equipment.mass"
+assert [x["index"] for x in d["cases"]] == list(range(10))
+PY
+    fi
+    check_junit "$s/b.xml"
+    has "$s/b.xml" '<testcase classname="tests/batch/cases/b-fail.yaml" name="b-fail">'
+    has "$s/b.xml" '<error type="unreadable" message="tests/batch/list.csv:6:26: error: equipment.mass'
+    lacks "$s/b.xml" 'time='
+    ;;
+determinism)
+    run 2 batch $inputs -j 1 --json "$s/1.json" --csv "$s/1.csv" --junit "$s/1.xml" -q
+    run 2 batch $inputs -j 2 --json "$s/2.json" --csv "$s/2.csv" --junit "$s/2.xml" -q
+    for f in json csv xml; do
+        cmp "$s/1.$f" "$s/2.$f" || fail "-j 1 and -j 2 differ in the $f summary"
+    done
+    [ ! -s "$s/out" ] || fail "--quiet printed on stdout"
+    ;;
+shards)
+    run 2 batch $inputs --json "$s/all.json" --csv "$s/all.csv" --junit "$s/all.xml" -q
+    for i in 1 2 3; do
+        # a shard's exit code is its own cases' verdict
+        "$rb" batch $inputs --shard $i/3 -j 2 -q --json "$s/s$i.json" 2>/dev/null
+    done
+    has "$s/s2.json" '"shard":	"2/3"'
+    run 2 merge "$s/s3.json" "$s/s1.json" "$s/s2.json" -q \
+        --json "$s/m.json" --csv "$s/m.csv" --junit "$s/m.xml"
+    for f in json csv xml; do
+        cmp "$s/all.$f" "$s/m.$f" || fail "merged shards differ from one run ($f)"
+    done
+    # contiguous shard sets only: a missing or repeated shard is refused
+    run 2 merge "$s/s1.json" "$s/s2.json" --json "$s/bad.json"
+    has "$s/err" "a shard is missing"
+    [ ! -e "$s/bad.json" ] || fail "merge wrote an output after an error"
+    run 2 merge "$s/s1.json" "$s/s1.json" "$s/s2.json" "$s/s3.json"
+    has "$s/err" "in more than one summary"
+    ;;
+errors)
+    # exit codes: 0 all pass, 1 a failure, 2 an unreadable case wins over 1
+    run 0 batch tests/batch/cases/a-pass.yaml -q
+    run 1 batch tests/batch/cases/a-pass.yaml tests/batch/cases/b-fail.yaml -q
+    run 2 batch tests/batch/cases/b-fail.yaml tests/batch/cases/d-broken.yaml -q
+    # unknown columns are errors at the header, naming the column
+    printf 'tag,base,masss\nX,../base/harmonic.yaml,1 kg\n' >"$s/bad-col.csv"
+    run 2 batch "$s/bad-col.csv" --base tests/batch/base/harmonic.yaml
+    has "$s/err" "bad-col.csv:1:10: error: header: unknown column 'masss'"
+    # a list without a base column takes --base; an empty cell keeps the base
+    printf 'tag,mass,gap_ratio\nQ-1,500 kg,\nQ-1,400 kg,0.01\n' >"$s/nobase.csv"
+    run 2 batch "$s/nobase.csv" --base tests/batch/base/harmonic.yaml --json "$s/n.json"
+    has "$s/err" "nobase.csv:3:1: error: tag: duplicate tag 'Q-1' (first given at line 2)"
+    has "$s/n.json" '"tag":	"Q-1"'
+    # a glob that matches nothing and a missing file are unreadable cases
+    run 2 batch "tests/batch/nothing-*.yaml" tests/batch/cases/a-pass.yaml -q
+    has "$s/err" "nothing-\*.yaml: error: case: no file matches the pattern"
+    # an unknown shipped motion name
+    printf 'tag,base,motion\nM-1,%s/tests/batch/base/harmonic.yaml,kobe\n' "$PWD" >"$s/motion.csv"
+    run 2 batch "$s/motion.csv"
+    has "$s/err" "motion.csv:2:.*: error: motion: unknown motion 'kobe'"
+    ;;
+usage)
+    run 2 batch
+    has "$s/err" "batch needs case files"
+    run 2 batch tests/batch/cases --shard 4/3
+    has "$s/err" "--shard: expected I/N"
+    run 2 batch tests/batch/cases -j 0
+    run 2 batch tests/batch/cases --frobnicate
+    # output paths are checked before any work: nothing is written
+    run 2 batch tests/batch/cases --json "$s/nodir/x.json" --csv "$s/x.csv"
+    has "$s/err" "--json"
+    [ ! -e "$s/x.csv" ] || fail "an output was written after a usage error"
+    run 2 batch tests/batch/cases --base "$s/none.yaml"
+    run 2 merge
+    printf 'not json' >"$s/junk.json"
+    run 2 merge "$s/junk.json"
+    has "$s/err" "junk.json: error: summary: not JSON"
+    ;;
+reports)
+    run 2 batch $inputs -q --reports "$s/rep"
+    [ -f "$s/rep/0-a-pass.json" ] && [ -f "$s/rep/0-a-pass.txt" ] || { ls "$s/rep" >&2; fail "report names"; }
+    [ -f "$s/rep/5-P-102.json" ] || fail "row report"
+    [ -f "$s/rep/6-P-103__spare.txt" ] || fail "sanitised tag"
+    [ ! -e "$s/rep/3-d-broken.json" ] || fail "a report for an unreadable case"
+    [ "$(ls "$s/rep" | wc -l)" -eq 12 ] || fail "report count $(ls "$s/rep" | wc -l)"
+    has "$s/rep/1-b-fail.txt" "FAIL"
+    ;;
+design)
+    run 1 batch tests/batch/cases/a-pass.yaml tests/batch/cases/c-suite.yaml --design \
+        -q --json "$s/d.json" --csv "$s/d.csv"
+    has "$s/d.csv" "design_factor,design_factor_bound,gap_ratio,error"
+    has "$s/d.json" '"min_design_factor":'
+    has "$s/d.json" '"gap_ratio":	0.0325'
+    run 1 batch tests/batch/cases/a-pass.yaml tests/batch/cases/c-suite.yaml --design \
+        -q -j 1 --json "$s/d1.json"
+    cmp "$s/d.json" "$s/d1.json" || fail "design summaries depend on -j"
+    ;;
+*)
+    fail "unknown test $t"
+    ;;
+esac
+exit 0
