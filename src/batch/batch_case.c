@@ -160,7 +160,7 @@ static void report_stem(const rb_batch_case *bc, size_t total, char *buf, size_t
     buf[k] = '\0';
 }
 
-static rb_status write_reports(rb_batch_slot *s, const rb_batch_case *bc,
+static rb_status write_reports(const rb_batch_case *bc,
                                const rb_batch_opts *o, size_t total,
                                const rb_report *rep, rb_diag *d)
 {
@@ -180,7 +180,6 @@ static rb_status write_reports(rb_batch_slot *s, const rb_batch_case *bc,
     }
     free(json);
     free(text);
-    (void)s;
     return st;
 }
 
@@ -195,6 +194,7 @@ void rb_batch_case_finish(rb_batch_slot *s, rb_batch_case *bc, const rb_batch_op
         rb_diag d;
         rb_diag_clear(&d);
         snprintf(d.file, sizeof d.file, "%s", bc->source);
+        d.line = bc->line;   /* the row of a list; 0 for a case file */
         snprintf(d.key, sizeof d.key, "motion '%.100s'",
                  s->c.motions[m].name ? s->c.motions[m].name : "?");
         snprintf(d.msg, sizeof d.msg, "%s%s%.400s", rb_status_str(s->run_status[m]),
@@ -216,7 +216,7 @@ void rb_batch_case_finish(rb_batch_slot *s, rb_batch_case *bc, const rb_batch_op
     bc->reason = rb_batch_strdup(rep.reason);
     if (o->reports_dir) {
         rb_model_derive(&s->c.model, &rep.derived, NULL);
-        if (write_reports(s, bc, o, total, &rep, &d) != RB_OK) {
+        if (write_reports(bc, o, total, &rep, &d) != RB_OK) {
             if (!d.key[0])
                 snprintf(d.key, sizeof d.key, "--reports");
             bc->verdict = RB_BATCH_ERROR;
