@@ -84,7 +84,9 @@ static int rb_cosmos_field(const rb_rec_reader *r, const rb_cosmos_fmt *f, size_
         return rb_rec_token_next(r->line, pos, 0, tok);
     if (!rb_rec_token_field(r, *pos, f->width, tok))
         return 0;
-    *pos += f->width;
+    /* The last field of a line may be cut short: never step past its end,
+     * where the search for more text below would read beyond the line. */
+    *pos = *pos + f->width < r->len ? *pos + f->width : r->len;
     if (tok->len > 0)
         return 1;
     rb_rec_token later;

@@ -240,6 +240,10 @@ static void test_at2_errors(void)
 #undef AT2
 }
 
+/* Appended to the first integer-header line by cosmos4 (blanks that cut
+ * the last field short). */
+static const char *cosmos_int_tail = "";
+
 /* A COSMOS V2 file with 2-line integer and real headers; the data block
  * line and values are given. dt is in real-header entry 62 (ms). */
 static const char *cosmos4(const char *units_code, const char *dt_ms, const char *dt_s,
@@ -248,9 +252,9 @@ static const char *cosmos4(const char *units_code, const char *dt_ms, const char
     static char buf[8192];
     char ints[512], reals[2048];
     snprintf(ints, sizeof ints, "  20 Integer-header values follow on  2 lines, Format= (10I8)\n"
-             "       2       1%8s     120       1    -999    -999    -999    -999    -999\n"
-             "    -999    -999    -999    -999    -999    -999    -999    -999    -999    -999\n",
-             units_code);
+             "       2       1%8s     120       1    -999    -999    -999    -999%s\n"
+             "    -999    -999    -999    -999    -999    -999    -999    -999    -999    -999"
+             "    -999\n", units_code, cosmos_int_tail);
     size_t n = (size_t)snprintf(reals, sizeof reals,
                                 "  65 Real-header values follow on 13 lines, Format= (5F15.6)\n");
     for (int i = 1; i <= 65; i++) {
@@ -325,6 +329,15 @@ static void test_cosmos(void)
     o.max_points = 2;
     EXPECT_FAIL(cosmos("4", "10.0", blk), &o, RB_ERR_LIMIT, 34, 8, "point limit of 2");
     o.max_points = 0;
+    /* A header line that ends in a field of blanks cut short (found by
+     * the fuzzer: the search for text after that blank field read past
+     * the end of the line). The blanks are no value: line 1 holds 9, line
+     * 2 holds 11, and the 20 values stand. */
+    cosmos_int_tail = "   ";
+    if (read_ok(cosmos("4", "10.0", blk), &o, &s) == 3)
+        CHECK_REL(s.dt_s, 0.01, 1e-15);
+    rb_series_free(&s);
+    cosmos_int_tail = "";
     EXPECT_FAIL(put("x.v2", "Corrected acceleration  no format marker\n"), &o,
                 RB_ERR_PARSE, 1, 1, "expected a COSMOS header line");
 }
