@@ -18,11 +18,17 @@ static const int guard_dir[G_COUNT] = {
     [G_BREAK] = 1, [G_SWITCH] = 0,
 };
 
+/* A guard nudged off its boundary (rb_guard_nudge) that reads exactly 0
+ * again has not moved at all: the state is still where the last transition
+ * put it (theta one rounding step inside the contact angle right after a
+ * release, say). Reading that as a crossing would map the state back and
+ * forth between two stages without time advancing: a rounding-level
+ * chatter of release and bolt impact that only the work bound stopped. */
 int rb_guard_crossed(int guard, double a, double b)
 {
     switch (guard_dir[guard]) {
-    case 1: return a < 0 && b >= 0;
-    case -1: return a > 0 && b <= 0;
+    case 1: return a < 0 && (b > 0 || (b == 0 && a != -DBL_MIN));
+    case -1: return a > 0 && (b < 0 || (b == 0 && a != DBL_MIN));
     default: return (a < 0 && b >= 0) || (a > 0 && b <= 0);
     }
 }
