@@ -45,6 +45,17 @@ void rb_guard_nudge(double *g)
             g[k] = guard_dir[k] > 0 ? -DBL_MIN : DBL_MIN;
 }
 
+/* The floor is taken to be met a hair below theta = 0. Right after an
+ * uplift at the very threshold (uplift moment and restoring moment equal
+ * to rounding) theta'' is ~1e-12 and the step's values of theta are
+ * rounding noise of either sign; reading -1e-30 rad as a return to the
+ * floor sent the plate to rest, whence it lifted again at once, without
+ * time advancing. The hair is a thousandth of the rest amplitude: a fall
+ * through it gains less than the rest criterion's energy, so it cannot
+ * feed a bounce that never comes to rest, and it moves a real impact by
+ * about 1e-3 rest_theta / theta'. */
+#define RB_FLOOR_SLACK 1e-3
+
 static int row_intact(const rb_solver *sv, int side)
 {
     return sv->sys.has_bolts && !sv->disc.broken[rb_row_of_side(side)];
@@ -98,7 +109,7 @@ double rb_guard_one(const rb_solver *sv, int guard, double t, const double *y)
     switch (guard) {
     case G_UP_POS: return rb_dyn_uplift_guard(S, t, y, 1);
     case G_UP_NEG: return rb_dyn_uplift_guard(S, t, y, -1);
-    case G_FLOOR: return th;
+    case G_FLOOR: return th + RB_FLOOR_SLACK * sv->rest_theta;
     case G_CONTACT: return rb_dyn_chord(S, th) - D->gap[rb_row_of_side(D->side)];
     case G_OVERTURN: return th - S->d.alpha;
     case G_UNLOAD: return D->side * y[RB_Y_THD];
