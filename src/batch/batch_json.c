@@ -1,10 +1,13 @@
 /* The JSON summary of a batch, and reading it back.
  *
  * The reader keeps exactly what the writer needs (the derived parts,
- * counts, governing motion, mean and maximum, are recomputed), and cJSON
- * prints every double so that it reads back to the same double. So a
- * summary read back and written again is the same text: that is what makes
- * merged shards byte-identical to a single run. */
+ * counts, governing motion, mean and maximum, are recomputed), and every
+ * double is printed in the fewest digits that read back to the same double.
+ * So a summary read back and written again is the same text: that is what
+ * makes merged shards byte-identical to a single run. cJSON's own printer
+ * cannot be used for this: it keeps 15 digits whenever they come back
+ * within a relative DBL_EPSILON, which can be an ulp off, and a mean
+ * recomputed from such values then differs in its last digits. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -14,7 +17,18 @@
 
 static int add_num(cJSON *o, const char *k, double v)
 {
-    return cJSON_AddNumberToObject(o, k, v) != NULL;
+    char buf[32];
+    int prec;
+    if (!isfinite(v))
+        return cJSON_AddNullToObject(o, k) != NULL;
+    for (prec = 15; prec < 17; prec++) {
+        snprintf(buf, sizeof buf, "%.*g", prec, v);
+        if (strtod(buf, NULL) == v)
+            break;
+    }
+    if (prec == 17)
+        snprintf(buf, sizeof buf, "%.17g", v);
+    return cJSON_AddRawToObject(o, k, buf) != NULL;
 }
 
 static int add_stat(cJSON *parent, const char *name, const rb_batch_stat *st,
