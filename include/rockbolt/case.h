@@ -122,6 +122,12 @@ void rb_diag_list_free(rb_diag_list *l);
  * docs/case-format.md. */
 rb_status rb_case_load(const char *path, rb_case *out, rb_diag_list *diags);
 
+/* rb_case_load, taking records from cache (may be NULL) and putting there
+ * those it had to read: for many cases that share records. */
+struct rb_record_cache;
+rb_status rb_case_load_cached(const char *path, struct rb_record_cache *cache,
+                              rb_case *out, rb_diag_list *diags);
+
 /* Free what a case owns; accepts NULL. */
 void rb_case_free(rb_case *c);
 

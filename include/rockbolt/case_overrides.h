@@ -27,9 +27,12 @@ typedef struct {
  * overrides came from (diagnostics, relative paths); name (may be NULL)
  * becomes the case's name; out->path is set to origin. Returns as
  * rb_case_load, plus RB_ERR_INVALID with a diag at the override when a key
- * is malformed. On error *out is left empty. */
+ * is malformed. On error *out is left empty. Records come from cache (may
+ * be NULL), as with rb_case_load_cached. */
+struct rb_record_cache;
 rb_status rb_case_load_overrides(const char *base_path, const char *origin,
                                  const char *name, const rb_case_override *ov,
-                                 size_t n, rb_case *out, rb_diag_list *diags);
+                                 size_t n, struct rb_record_cache *cache,
+                                 rb_case *out, rb_diag_list *diags);
 
 #endif

@@ -43,9 +43,9 @@ void rb_batch_case_load(rb_batch_slot *s, const rb_batch_item *it, rb_batch_case
     }
     if (it->tag)
         st = rb_case_load_overrides(it->base, it->source, it->tag, it->ov, it->n_ov,
-                                    &s->c, &diags);
+                                    s->cache, &s->c, &diags);
     else
-        st = rb_case_load(it->source, &s->c, &diags);
+        st = rb_case_load_cached(it->source, s->cache, &s->c, &diags);
     if (st != RB_OK) {
         rb_diag d;
         rb_diag_clear(&d);

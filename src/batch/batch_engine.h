@@ -7,6 +7,7 @@
 #include "rockbolt/criteria.h"
 #include "rockbolt/design.h"
 #include "rockbolt/report.h"
+#include "rockbolt/record_cache.h"
 
 /* A case while it is being run; freed as soon as it is concluded. */
 typedef struct {
@@ -17,6 +18,7 @@ typedef struct {
     rb_status *run_status;
     rb_diag *run_diag;
     size_t remaining;        /* runs not yet done */
+    rb_record_cache *cache;  /* borrowed: the run's record cache */
 } rb_batch_slot;
 
 /* Load the item into s (verdict and error in bc if it cannot be). */

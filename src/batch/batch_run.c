@@ -26,6 +26,7 @@ typedef struct {
     size_t first;            /* first summary case of the chunk */
     rb_batch_slot *slots;    /* RB_BATCH_CHUNK */
     run_ref *runs;
+    rb_record_cache *cache;  /* owned: records shared by the cases */
     pthread_mutex_t lock;
     rb_batch_progress prog;
 } run_ctx;
@@ -61,6 +62,7 @@ static void load_job(void *arg, size_t i)
     run_ctx *cx = arg;
     rb_batch_case *bc = &cx->out->cases[cx->first + i];
     rb_batch_slot *s = &cx->slots[i];
+    s->cache = cx->cache;
     rb_batch_case_load(s, &cx->l->items[bc->index], bc);
     if (!s->loaded || s->remaining == 0) {
         rb_batch_case_finish(s, bc, cx->o, cx->out->total);
@@ -164,8 +166,11 @@ rb_status rb_batch_run(const rb_batch_list *l, const rb_batch_opts *o,
     cx.out = out;
     cx.prog.cases_total = out->n_cases;
     cx.slots = calloc(RB_BATCH_CHUNK, sizeof *cx.slots);
-    if (!cx.slots || pthread_mutex_init(&cx.lock, NULL) != 0) {
+    /* an equipment list reads the same few records for every row */
+    cx.cache = rb_record_cache_new(0);
+    if (!cx.slots || !cx.cache || pthread_mutex_init(&cx.lock, NULL) != 0) {
         free(cx.slots);
+        rb_record_cache_free(cx.cache);
         return RB_ERR_NOMEM;
     }
     for (size_t first = 0; first < out->n_cases && st == RB_OK; first += RB_BATCH_CHUNK) {
@@ -179,5 +184,6 @@ rb_status rb_batch_run(const rb_batch_list *l, const rb_batch_opts *o,
     }
     pthread_mutex_destroy(&cx.lock);
     free(cx.slots);
+    rb_record_cache_free(cx.cache);
     return st;
 }

@@ -242,10 +242,17 @@ static void rb_cctx_sort(const rb_cctx *c, size_t first)
 
 rb_status rb_case_load(const char *path, rb_case *out, rb_diag_list *diags)
 {
+    return rb_case_load_cached(path, NULL, out, diags);
+}
+
+rb_status rb_case_load_cached(const char *path, rb_record_cache *cache, rb_case *out,
+                              rb_diag_list *diags)
+{
     rb_cctx c;
     rb_ynode *root = NULL;
     memset(&c, 0, sizeof c);
     c.diags = diags;
+    c.cache = cache;
     size_t first = diags->n;
     c.first_diag = first;
     if (!rb_case_defaults(out, path)) {

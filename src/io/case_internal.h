@@ -15,6 +15,7 @@
 #include <stddef.h>
 #include "rockbolt/case.h"
 #include "rockbolt/record.h"
+#include "rockbolt/record_cache.h"
 #include "rockbolt/units.h"
 
 #define RB_CASE_MAX_FILE_BYTES (4u * 1024u * 1024u) /* 4 MiB per file */
@@ -108,6 +109,7 @@ typedef struct {
     size_t n_dropped;           /* errors past RB_CASE_MAX_DIAGS, not kept */
     rb_diag dropped;            /* the first of them */
     size_t n_samples;           /* record samples held, RB_CASE_MAX_SAMPLES */
+    rb_record_cache *cache;     /* borrowed; NULL: read every record */
 } rb_cctx;
 
 /* --- case.c: diagnostics ------------------------------------------------ */

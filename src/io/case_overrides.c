@@ -341,7 +341,7 @@ static rb_status generate(rb_ovgen *g, const char *base_abs, const char *name,
 
 rb_status rb_case_load_overrides(const char *base_path, const char *origin,
                                  const char *name, const rb_case_override *ov,
-                                 size_t n, rb_case *out, rb_diag_list *diags)
+                                 size_t n, struct rb_record_cache *cache, rb_case *out, rb_diag_list *diags)
 {
     rb_ovgen g;
     char tmp[600];
@@ -387,7 +387,7 @@ rb_status rb_case_load_overrides(const char *base_path, const char *origin,
     if (st != RB_OK)
         goto done;
     size_t first = diags->n;
-    st = rb_case_load(tmp, out, diags);
+    st = rb_case_load_cached(tmp, cache, out, diags);
     unlink(tmp);
     map_diags(diags, first, tmp, &g, origin, row_line, cwd);
     if (st == RB_OK) {

@@ -145,8 +145,15 @@ static int rb_load_record(rb_cctx *c, const rb_cmotion *cm, rb_case_motion *out,
     int shared = budget < RB_CASE_MAX_SAMPLES;
     if (ro.max_points == 0 || ro.max_points > budget)
         ro.max_points = budget;
-    rb_status st = budget ? rb_record_read(out->source, &ro, &out->series, &rd)
-                          : RB_ERR_LIMIT;
+    /* a cached series is already filtered by the same building */
+    int cached = rb_record_cache_get(c->cache, out->source, &cm->ropts,
+                                     cm->building_freq_hz, cm->building_damping,
+                                     &out->series);
+    rb_status st;
+    if (cached)
+        st = out->series.n <= budget ? RB_OK : RB_ERR_LIMIT;
+    else
+        st = budget ? rb_record_read(out->source, &ro, &out->series, &rd) : RB_ERR_LIMIT;
     if (st == RB_ERR_LIMIT && shared) {
         rb_series_free(&out->series);
         rb_cctx_error_at(c, RB_ERR_LIMIT, cm->file_node->file, cm->file_node->line,
@@ -164,8 +171,8 @@ static int rb_load_record(rb_cctx *c, const rb_cmotion *cm, rb_case_motion *out,
     if (cm->building_freq_hz > 0) {
         out->building_freq_hz = cm->building_freq_hz;
         out->building_damping = cm->building_damping;
-        st = rb_series_building_filter(&out->series, cm->building_freq_hz,
-                                       cm->building_damping);
+        st = cached ? RB_OK : rb_series_building_filter(&out->series, cm->building_freq_hz,
+                                                        cm->building_damping);
         if (st != RB_OK) {
             rb_case_keypath(k, cm->key, "building");
             rb_cctx_error(c, cm->map, k, "the building filter failed (%s)",
@@ -173,6 +180,9 @@ static int rb_load_record(rb_cctx *c, const rb_cmotion *cm, rb_case_motion *out,
             return 0;
         }
     }
+    if (!cached)
+        rb_record_cache_put(c->cache, out->source, &cm->ropts, cm->building_freq_hz,
+                            cm->building_damping, &out->series);
     if (cm->has_window) {
         double len = out->series.t0_s + (double)(out->series.n - 1) * out->series.dt_s;
         st = cm->window[0] < len ? rb_series_window(&out->series, cm->window[0],
