@@ -9,6 +9,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include "cli.h"
 #include "rockbolt/plot.h"
 
@@ -85,6 +86,37 @@ static rb_exit load_case(const rb_cli_opts *o, check_run *r)
     if (st == RB_OK)
         return RB_EXIT_PASS;
     return st == RB_ERR_NOMEM ? RB_EXIT_INTERNAL : RB_EXIT_USAGE;
+}
+
+/* Is output the same file as input? By device and inode when both exist
+ * (two spellings of one path, links), else by the path text. */
+static int same_file(const char *output, const char *input)
+{
+    struct stat a, b;
+    if (stat(output, &a) == 0 && stat(input, &b) == 0)
+        return a.st_dev == b.st_dev && a.st_ino == b.st_ino;
+    return strcmp(output, input) == 0;
+}
+
+/* No output may replace a file the case was read from: its bases and
+ * records are named only inside the case, so the command line check of
+ * the case path alone does not see them. Sweep and figure files get
+ * numbered names, so their base names are what is compared. */
+static rb_exit check_outputs_not_inputs(const rb_cli_opts *o, const rb_case *c)
+{
+    const char *paths[6] = { o->json_path, o->text_path, o->history_path,
+                             o->sweep_csv_path, o->svg_path, o->html_path };
+    static const char *const opts[6] = { "--json", "--text", "--history",
+                                         "--sweep-csv", "--svg", "--html" };
+    size_t i, k;
+    for (i = 0; i < 6; i++)
+        for (k = 0; paths[i] && k < c->n_input_files; k++)
+            if (same_file(paths[i], c->input_files[k])) {
+                rb_cli_error(paths[i], opts[i], "is an input of the case (%s); "
+                             "refusing to overwrite it", c->input_files[k]);
+                return RB_EXIT_USAGE;
+            }
+    return RB_EXIT_PASS;
 }
 
 /* The derived constants, and the template if a text report is wanted. */
@@ -356,6 +388,8 @@ rb_exit rb_cli_check_run(const rb_cli_opts *o)
     e = check_output_paths(o);
     if (e == RB_EXIT_PASS)
         e = load_case(o, &r);
+    if (e == RB_EXIT_PASS)
+        e = check_outputs_not_inputs(o, &r.c);
     if (e == RB_EXIT_PASS)
         e = prepare(o, &r);
     if (e == RB_EXIT_PASS)

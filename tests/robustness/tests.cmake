@@ -10,7 +10,3 @@ foreach(t ${RB_ROBUSTNESS_TESTS})
   set_tests_properties(robustness_${t} PROPERTIES LABELS robustness
       WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} SKIP_RETURN_CODE 77 TIMEOUT 120)
 endforeach()
-# The CLI compares outputs with the case file only; a base or a record
-# named as an output is overwritten today. Enable once it compares them
-# with every input the case read.
-set_tests_properties(robustness_over_inputs PROPERTIES DISABLED TRUE)
