@@ -187,9 +187,9 @@ static void rb_read_code(rb_cctx *c, rb_ynode *m, rb_case *cs)
     rb_cv_number(c, m, "design.code", "ta", 0, RB_DIM_TIME, 0, 0, 100, 1,
                  &in->ta_s);
     rb_code_factor(c, m, "omega0p", 0, &in->omega0p);
-    rb_cv_number(c, m, "design.code", "futa", 1, RB_DIM_STRESS, 0, 0, NAN, 0,
+    rb_cv_number(c, m, "design.code", "futa", 1, RB_DIM_STRESS, 0, 0, (double)NAN, 0,
                  &in->futa_pa);
-    rb_cv_number(c, m, "design.code", "ase", 0, RB_DIM_AREA, 0, 0, NAN, 0,
+    rb_cv_number(c, m, "design.code", "ase", 0, RB_DIM_AREA, 0, 0, (double)NAN, 0,
                  &in->ase_m2);
     rb_cv_unknown_keys(c, m, "design.code", rb_code_keys);
 }
