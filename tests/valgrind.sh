@@ -1,6 +1,8 @@
 #!/bin/bash
-# Runs every unit test and the CLI on each shipped case under valgrind's
-# memcheck: any invalid access, uninitialised read or leak fails the run.
+# Runs every unit test, the CLI on each shipped case (check, and design on
+# the design case) and the fuzz harnesses on their seeds and reproducers
+# under valgrind's memcheck: any invalid access, uninitialised read or leak
+# fails the run.
 # Usage: tests/valgrind.sh BUILD_DIR   (from the repository root)
 set -euo pipefail
 build=${1:?usage: tests/valgrind.sh BUILD_DIR}
@@ -26,5 +28,14 @@ for c in cases/*.yaml; do
     run "check $c" "$build/rockbolt" check "$c" --json "$out/r.json" --text "$out/r.txt"
 done
 run "bad input" "$build/rockbolt" check tests/errors/03-unknown-key.yaml
+run "design" "$build/rockbolt" design cases/reference-design.yaml -j 2 \
+    --json "$out/d.json" --html "$out/d.html" --sweep-csv "$out/s.csv"
+for h in case at2 cosmos columns; do
+    [ -x "$build/fuzz_replay_$h" ] || continue
+    run "fuzz seeds $h" "$build/fuzz_replay_$h" tests/fuzz/seeds/$h
+    for r in tests/fuzz/regressions/$h/*; do
+        [ -f "$r" ] && run "fuzz regression $h/$(basename "$r")" "$build/fuzz_replay_$h" "$r"
+    done
+done
 echo "valgrind: $pass passed, $fail failed"
 [ "$fail" -eq 0 ]
