@@ -1,13 +1,12 @@
 /* Small helpers of the batch code: strings, a growing buffer, and the
  * thread pool (the same shape as the design searches': a shared counter
  * hands out jobs, each job writes only its own slot). */
-#include <pthread.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 #include "batch_internal.h"
+#include "../design/design_internal.h"
 
 char *rb_batch_strdup(const char *s)
 {
@@ -86,53 +85,25 @@ char *rb_bbuf_take(rb_bbuf *b)
 
 int rb_batch_threads_default(void)
 {
-    long n = sysconf(_SC_NPROCESSORS_ONLN);
-    return n >= 1 ? (n > 1024 ? 1024 : (int)n) : 1;
+    return rb_design_threads_default();
 }
 
+/* The design searches' pool runs the batch too: one work queue, the
+ * caller's thread working, the same fallback when threads cannot start. */
 typedef struct {
-    pthread_mutex_t lock;
-    size_t next, n;
     rb_batch_job job;
     void *ctx;
-} rb_bpool;
+} batch_job_ref;
 
-static void *bpool_worker(void *arg)
+static rb_status run_batch_job(void *ctx, size_t i)
 {
-    rb_bpool *p = arg;
-    for (;;) {
-        pthread_mutex_lock(&p->lock);
-        size_t i = p->next < p->n ? p->next++ : p->n;
-        pthread_mutex_unlock(&p->lock);
-        if (i >= p->n)
-            return NULL;
-        p->job(p->ctx, i);
-    }
+    const batch_job_ref *ref = ctx;
+    ref->job(ref->ctx, i);
+    return RB_OK;
 }
 
 rb_status rb_batch_parallel(size_t n, int n_threads, rb_batch_job job, void *ctx)
 {
-    rb_bpool p = {.next = 0, .n = n, .job = job, .ctx = ctx};
-    size_t nt = (size_t)(n_threads > 0 ? n_threads : rb_batch_threads_default());
-    if (nt > n)
-        nt = n;
-    if (nt <= 1) {
-        for (size_t i = 0; i < n; i++)
-            job(ctx, i);
-        return RB_OK;
-    }
-    pthread_t *tid = malloc(nt * sizeof *tid);
-    if (!tid || pthread_mutex_init(&p.lock, NULL) != 0) {
-        free(tid);
-        return RB_ERR_NOMEM;
-    }
-    size_t started = 0;
-    while (started < nt - 1 && pthread_create(&tid[started], NULL, bpool_worker, &p) == 0)
-        started++;
-    bpool_worker(&p);
-    for (size_t k = 0; k < started; k++)
-        pthread_join(tid[k], NULL);
-    pthread_mutex_destroy(&p.lock);
-    free(tid);
-    return RB_OK;
+    batch_job_ref ref = { job, ctx };
+    return rb_design_parallel(n, n_threads, run_batch_job, &ref, NULL);
 }
