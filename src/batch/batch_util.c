@@ -1,6 +1,6 @@
 /* Small helpers of the batch code: strings, a growing buffer, and the
- * thread pool (the same shape as the design searches': a shared counter
- * hands out jobs, each job writes only its own slot). */
+ * thread pool (the design searches' pool, which hands out jobs by a
+ * shared counter; each job writes only its own slot). */
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
