@@ -41,19 +41,18 @@ static int add_num(cJSON *o, const char *key, double v)
                         : cJSON_AddNullToObject(o, key)) != NULL;
 }
 
+/* Per-row values as {"left": .., "right": ..}, as in the check report. */
 static int add_pair(cJSON *o, const char *key, double left, double right)
 {
-    cJSON *a = cJSON_AddArrayToObject(o, key);
-    cJSON *l = cJSON_CreateNumber(left), *r = cJSON_CreateNumber(right);
-    int ok = a && l && r;
-    if (ok) {
-        cJSON_AddItemToArray(a, l);
-        cJSON_AddItemToArray(a, r);
-    } else {
-        cJSON_Delete(l);
-        cJSON_Delete(r);
-    }
-    return ok;
+    cJSON *p = cJSON_AddObjectToObject(o, key);
+    return p && add_num(p, "left", left) && add_num(p, "right", right);
+}
+
+static int add_pair_bool(cJSON *o, const char *key, int left, int right)
+{
+    cJSON *p = cJSON_AddObjectToObject(o, key);
+    return p && cJSON_AddBoolToObject(p, "left", left != 0)
+           && cJSON_AddBoolToObject(p, "right", right != 0);
 }
 
 static cJSON *point_json(const rb_sweep *s, const rb_sweep_point *p)
@@ -67,8 +66,8 @@ static cJSON *point_json(const rb_sweep *s, const rb_sweep_point *p)
                          p->max_force_over_fy[1])
              && add_num(o, "max_theta_over_alpha", p->max_theta_over_alpha)
              && add_pair(o, "usage", p->usage[0], p->usage[1])
-             && add_pair(o, "yielded", p->yielded[0], p->yielded[1])
-             && add_pair(o, "broken", p->broken[0], p->broken[1])
+             && add_pair_bool(o, "yielded", p->yielded[0], p->yielded[1])
+             && add_pair_bool(o, "broken", p->broken[0], p->broken[1])
              && cJSON_AddBoolToObject(o, "overturned", p->overturned)
              && (p->meets < 0 ? cJSON_AddNullToObject(o, "meets")
                               : cJSON_AddBoolToObject(o, "meets", p->meets))
