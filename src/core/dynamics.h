@@ -30,6 +30,9 @@ typedef struct {
     int side;             /* +1: about the left edge, right row loaded; -1 mirror */
     double theta_hold;    /* mirrored angle held in stage 4 (rigid bolts) */
     double gap[2];        /* total gap g_t of each row */
+    double contact[2];    /* contact angle of each row: chord(contact) = gap,
+                             kept with the gap so that stage 2 watches an
+                             angle instead of a chord (no sine per check) */
     double absorbed[2];   /* plastic work of each row */
     int broken[2];
     double chord_entry;   /* stage 5: chord and absorbed energy on entry */

@@ -146,6 +146,7 @@ static rb_status setup(rb_solver *sv, const rb_model *model, const rb_motion *mo
     S->h = model->cm_height_m;
     S->M = model->mass_kg;
     sv->disc.gap[0] = sv->disc.gap[1] = model->gap_m;
+    sv->disc.contact[0] = sv->disc.contact[1] = rb_dyn_contact_angle(S, model->gap_m);
     sv->disc.stage = RB_STAGE_FIXED;
     fill_constants(sv, motion);
     if (!isfinite(out->peak_floor_mps2)) {

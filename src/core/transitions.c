@@ -110,7 +110,7 @@ double rb_guard_one(const rb_solver *sv, int guard, double t, const double *y)
     case G_UP_POS: return rb_dyn_uplift_guard(S, t, y, 1);
     case G_UP_NEG: return rb_dyn_uplift_guard(S, t, y, -1);
     case G_FLOOR: return th + RB_FLOOR_SLACK * sv->rest_theta;
-    case G_CONTACT: return rb_dyn_chord(S, th) - D->gap[rb_row_of_side(D->side)];
+    case G_CONTACT: return th - D->contact[rb_row_of_side(D->side)];
     case G_OVERTURN: return th - S->d.alpha;
     case G_UNLOAD: return D->side * y[RB_Y_THD];
     case G_SWITCH: return y[RB_Y_THD];
@@ -224,7 +224,7 @@ static void bolt_impact(rb_solver *sv)
     if (S->elastic_bolts)
         return;
     double ke = rb_dyn_kinetic(S, D, sv->y);
-    double th0 = rb_dyn_contact_angle(S, D->gap[row]);
+    double th0 = D->contact[row];
     if (!S->model->rigid)
         sv->y[RB_Y_UD] += M_PI * S->h / 2 * sv->y[RB_Y_THD];
     sv->y[RB_Y_TH] = D->side * th0;
@@ -273,8 +273,11 @@ static void stop_yield(rb_solver *sv)
     D->absorbed[row] = rb_absorbed_now(sv, row);
     sv->y[RB_Y_THD] = 0;
     D->gap[row] = rb_dyn_chord(S, th);
-    if (S->elastic_bolts)
+    D->contact[row] = th;
+    if (S->elastic_bolts) {
         D->gap[row] -= S->d.fy_row_n / S->d.k_row_npm;
+        D->contact[row] = rb_dyn_contact_angle(S, D->gap[row]);
+    }
     D->theta_hold = th;
     D->stage = RB_STAGE_HELD;
 }
