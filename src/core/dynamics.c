@@ -126,7 +126,8 @@ static double bolt_moment(const rb_sys *S, const rb_disc *D, double th, double *
         double ext = rb_dyn_chord(S, th) - D->gap[rb_row_of_side(D->side)];
         *force = ext > 0 ? S->d.k_row_npm * ext : 0;
     }
-    return *force * rb_dyn_lever(S, th);
+    /* slack rows (all of stage 2) need no lever arm and its cosine */
+    return *force != 0 ? *force * rb_dyn_lever(S, th) : 0;
 }
 
 static void solve_rocking(const rb_sys *S, const rb_disc *D, double x, const double *m,
