@@ -104,14 +104,10 @@ rb_exit rb_cli_batch_main(int argc, char **argv)
     rb_batch_list l = {0};
     rb_batch_summary s;
     memset(&s, 0, sizeof s);
-    rb_exit e = rb_cli_batch_parse(argc, argv, 0, &o);
-    if (e == RB_EXIT_PASS && o.help) {
-        rb_cli_help_print();
-        rb_cli_batch_cli_free(&o);
+    int done;
+    rb_exit e = rb_cli_batch_begin(argc, argv, 0, &o, &done);
+    if (done)
         return RB_EXIT_PASS;
-    }
-    if (e == RB_EXIT_PASS)
-        e = rb_cli_batch_check_outputs(&o);
     if (e == RB_EXIT_PASS && o.base)
         e = check_base(o.base);
     if (e == RB_EXIT_PASS && o.reports_dir)

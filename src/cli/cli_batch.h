@@ -23,6 +23,11 @@ void rb_cli_batch_cli_free(rb_batch_cli *o);
 /* Check the summary outputs' directories (before any work). */
 rb_exit rb_cli_batch_check_outputs(const rb_batch_cli *o);
 
+/* What batch and merge both do first: parse, answer --help (then *done is
+ * set and o already freed), check the output paths. */
+rb_exit rb_cli_batch_begin(int argc, char **argv, int is_merge, rb_batch_cli *o,
+                           int *done);
+
 /* Write the summary outputs asked for, all or none; print the table
  * unless quiet; return the exit code the summary calls for. */
 rb_exit rb_cli_batch_finish(const rb_batch_cli *o, const rb_batch_summary *s);

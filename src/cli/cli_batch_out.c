@@ -6,6 +6,20 @@
 #include <string.h>
 #include "cli_batch.h"
 
+rb_exit rb_cli_batch_begin(int argc, char **argv, int is_merge, rb_batch_cli *o,
+                           int *done)
+{
+    rb_exit e = rb_cli_batch_parse(argc, argv, is_merge, o);
+    *done = 0;
+    if (e == RB_EXIT_PASS && o->help) {
+        rb_cli_help_print();
+        rb_cli_batch_cli_free(o);
+        *done = 1;
+        return RB_EXIT_PASS;
+    }
+    return e == RB_EXIT_PASS ? rb_cli_batch_check_outputs(o) : e;
+}
+
 rb_exit rb_cli_batch_check_outputs(const rb_batch_cli *o)
 {
     const char *paths[3] = {o->json_path, o->csv_path, o->junit_path};

@@ -71,14 +71,10 @@ rb_exit rb_cli_merge_main(int argc, char **argv)
     rb_batch_cli o;
     rb_batch_summary *sh = NULL, merged;
     memset(&merged, 0, sizeof merged);
-    rb_exit e = rb_cli_batch_parse(argc, argv, 1, &o);
-    if (e == RB_EXIT_PASS && o.help) {
-        rb_cli_help_print();
-        rb_cli_batch_cli_free(&o);
+    int done;
+    rb_exit e = rb_cli_batch_begin(argc, argv, 1, &o, &done);
+    if (done)
         return RB_EXIT_PASS;
-    }
-    if (e == RB_EXIT_PASS)
-        e = rb_cli_batch_check_outputs(&o);
     if (e == RB_EXIT_PASS && !(sh = calloc(o.n_inputs, sizeof *sh))) {
         rb_cli_error(NULL, NULL, "out of memory");
         e = RB_EXIT_INTERNAL;
