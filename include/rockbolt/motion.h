@@ -76,6 +76,12 @@ double rb_motion_accel(const rb_motion *m, double t, double theta_dot);
  * never steps across one. */
 double rb_motion_next_break(const rb_motion *m, double t);
 
+/* Taylor coefficients of x''(t0 + tau), valid for tau from 0 up to the
+ * next break: coef[k] for k = 0..n (n >= 1). Returns the degree of the
+ * polynomial (the last nonzero coefficient can be below it), n for the
+ * sines, or -1 for RB_MOTION_CRITICAL, whose sign follows the response. */
+int rb_motion_taylor(const rb_motion *m, double t0, int n, double *coef);
+
 /* Largest |x''| the motion can reach (the peak floor acceleration 'a').
  * Non-finite samples are left out: the solver stops where it meets one. */
 double rb_motion_peak(const rb_motion *m);

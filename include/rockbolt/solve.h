@@ -22,9 +22,18 @@ typedef enum {
     RB_STAGE_YIELD = 5    /* 5: bolt row yielding at Fy */
 } rb_stage;
 
+/* How the continuous stages are integrated (docs/solver.md). */
+typedef enum {
+    RB_INTEGRATOR_AUTO = 0,  /* Taylor series where it applies (stages 1, 2 and
+                                4 of the large and small formulations with
+                                rigid bolts), Dormand-Prince elsewhere */
+    RB_INTEGRATOR_RK45       /* Dormand-Prince 5(4) throughout */
+} rb_integrator;
+
 typedef struct {
     rb_formulation formulation;
-    double rtol;             /* integrator relative tolerance (default 1e-8) */
+    rb_integrator integrator;
+    double rtol;             /* integrator relative tolerance (default 1e-7) */
     double event_tol;        /* transitions to this fraction of the normalising
                                 quantity (default 1e-3, sec. 5.7), tightened
                                 internally to 1e-9 in time */

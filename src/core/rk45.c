@@ -27,6 +27,8 @@ double rb_rk_step_try(const rb_sys *S, const rb_disc *D, double t0, const double
     int i;
     st->t0 = t0;
     st->h = h;
+    st->t1 = t0 + h;
+    st->is_taylor = 0;
     memcpy(st->y0, y0, sizeof st->y0);
     memcpy(k[0], f0, sizeof k[0]);
     for (i = 0; i < RB_NY; i++) yt[i] = y0[i] + h * A21 * k[0][i];
@@ -79,6 +81,10 @@ void rb_rk_dense_init(rb_rk_step *st)
 
 void rb_rk_dense_eval(const rb_rk_step *st, double t, double *y)
 {
+    if (st->is_taylor) {
+        rb_taylor_all(&st->ts, t - st->t0, y);
+        return;
+    }
     double s = st->h != 0 ? (t - st->t0) / st->h : 0, s1 = 1 - s;
     for (int i = 0; i < RB_NY; i++)
         y[i] = st->cont[0][i] + s * (st->cont[1][i] + s1 * (st->cont[2][i]
@@ -87,6 +93,10 @@ void rb_rk_dense_eval(const rb_rk_step *st, double t, double *y)
 
 void rb_rk_dense_state(const rb_rk_step *st, double t, double *y)
 {
+    if (st->is_taylor) {
+        rb_taylor_state(&st->ts, t - st->t0, y);
+        return;
+    }
     double s = st->h != 0 ? (t - st->t0) / st->h : 0, s1 = 1 - s;
     for (int i = RB_Y_U; i <= RB_Y_THD; i++)
         y[i] = st->cont[0][i] + s * (st->cont[1][i] + s1 * (st->cont[2][i]
@@ -95,6 +105,8 @@ void rb_rk_dense_state(const rb_rk_step *st, double t, double *y)
 
 double rb_rk_dense_one(const rb_rk_step *st, double t, int i)
 {
+    if (st->is_taylor)
+        return rb_taylor_one(&st->ts, t - st->t0, i);
     double s = st->h != 0 ? (t - st->t0) / st->h : 0, s1 = 1 - s;
     return st->cont[0][i] + s * (st->cont[1][i] + s1 * (st->cont[2][i]
            + s * (st->cont[3][i] + s1 * st->cont[4][i])));

@@ -9,13 +9,23 @@
 #define RB_RK45_H
 
 #include "dynamics.h"
+#include "taylor.h"
+
+/* Most check points of one step (guards, peaks). */
+#define RB_SUB_MAX 16
 
 typedef struct {
     double t0, h;
+    double t1;              /* end: t0 + h, or the break it lands on exactly */
     double y0[RB_NY], y1[RB_NY];
     double k[7][RB_NY];     /* stage derivatives; k[6] = f(t0 + h, y1) */
     double cont[5][RB_NY];  /* dense-output coefficients */
     rb_aux aux1;            /* what the evaluation of k[6] yields besides it */
+    int n_sub;              /* check points of the step (guards, peaks) */
+    int is_taylor;          /* a Taylor step: the dense output is ts */
+    rb_taylor ts;
+    /* a Taylor step's series at its check points, what tracking reads */
+    double vcheck[RB_SUB_MAX][RB_TS_CHECK];
 } rb_rk_step;
 
 /* Take a step of size h from (t0, y0) whose derivative f0 is known. Writes

@@ -51,6 +51,8 @@ static rb_status fail(rb_solver *sv, rb_diag *diag, rb_status st, const char *wh
  * are refused up front, naming the limit. */
 static rb_status check_opts(const rb_solve_opts *o, rb_diag *diag)
 {
+    OPT_REQUIRE(o->integrator == RB_INTEGRATOR_AUTO || o->integrator == RB_INTEGRATOR_RK45,
+                "integrator", "must be auto or rk45 (got %d)", (int)o->integrator);
     OPT_REQUIRE(isfinite(o->rtol) && o->rtol >= RB_RTOL_MIN && o->rtol <= RB_RTOL_MAX,
                 "rtol", "must be between 1e-13 (what double precision can meet) and 0.01 "
                 "(got %g)", o->rtol);
@@ -82,6 +84,19 @@ static double highest_frequency(const rb_solver *sv)
         f = fmax(f, 1 / m->pulse_s);
     if (S->elastic_bolts)
         f = fmax(f, sqrt(S->d.k_row_npm * S->l * S->l / S->d.Io) / (2 * M_PI));
+    return f;
+}
+
+/* The highest frequency of the response: the model's and the excitation's,
+ * and the frame mode coupled with the rotation in stage 2, whose effective
+ * mass (M* I_o - F*^2) / I_o is below M*. */
+static double fastest_mode(const rb_solver *sv)
+{
+    const rb_derived *d = &sv->sys.d;
+    double f = highest_frequency(sv);
+    if (!sv->sys.model->rigid)
+        f = fmax(f, sqrt(d->Kstar * d->Io / (d->Mstar * d->Io - d->Fstar * d->Fstar))
+                    / (2 * M_PI));
     return f;
 }
 
@@ -161,6 +176,7 @@ static rb_status setup(rb_solver *sv, const rb_model *model, const rb_motion *mo
     sv->h_max = sv->opts.max_step_s > 0 ? sv->opts.max_step_s
                                         : 0.1 / highest_frequency(sv);
     sv->h = fmin(sv->h_max, 1e-3);
+    sv->check_spacing = 1 / (8 * fastest_mode(sv));
     double th0 = S->has_bolts ? rb_dyn_contact_angle(S, model->gap_m) : HUGE_VAL;
     sv->rest_theta = sv->opts.rest_fraction * fmin(S->d.alpha, th0 > 0 ? th0 : S->d.alpha);
     if (sv->opts.theta_init_rad != 0) {
@@ -185,13 +201,16 @@ static double locate(rb_solver *sv, const rb_rk_step *st, int guard, double a, d
                      double ga, double gb)
 {
     double y[RB_NY] = {0};
-    int last = 0;
+    int last = 0, hugged = 1;
     for (int i = 0; i < 200 && b - a > 1e-13 * (1 + fabs(b)); i++) {
         double m = (a * gb - b * ga) / (gb - ga);
-        /* fall back to bisection when the secant hugs an end (a guard
-         * nudged off zero at a has a near-zero ga) */
-        if (!(m > a + 1e-3 * (b - a) && m < b - 1e-3 * (b - a)))
+        /* fall back to bisection when the secant hugs an end twice in a
+         * row (a guard nudged off zero at a has a near-zero ga); a single
+         * hug is superlinear convergence, which bisection would slow */
+        int hug = !(m > a + 1e-3 * (b - a) && m < b - 1e-3 * (b - a));
+        if (!(m > a && m < b) || (hug && hugged))
             m = 0.5 * (a + b);
+        hugged = hug;
         rb_rk_dense_state(st, m, y);
         double gm = rb_guard_one(sv, guard, m, y);
         if (rb_guard_crossed(guard, ga, gm) || gm == 0) {
@@ -210,7 +229,7 @@ static double locate(rb_solver *sv, const rb_rk_step *st, int guard, double a, d
 }
 
 /* Earliest guard crossing inside the accepted step, or -1. ys[j] is the
- * state at the end of check interval j of RB_SUB (ys[RB_SUB - 1] = y1). */
+ * state at the end of check interval j of n_sub (ys[n_sub - 1] = y1). */
 static int find_event(rb_solver *sv, const rb_rk_step *st, const double *g0,
                       double (*ys)[RB_NY], double *t_event)
 {
@@ -218,9 +237,10 @@ static int find_event(rb_solver *sv, const rb_rk_step *st, const double *g0,
     double ga[G_COUNT], gb[G_COUNT];
     memcpy(ga, g0, sizeof ga);
     rb_guard_nudge(ga);
-    for (int j = 1; j <= RB_SUB; j++) {
-        double ta = st->t0 + st->h * (j - 1) / RB_SUB;
-        double tb = j == RB_SUB ? st->t0 + st->h : st->t0 + st->h * j / RB_SUB;
+    int n = st->n_sub;
+    for (int j = 1; j <= n; j++) {
+        double ta = st->t0 + st->h * (j - 1) / n;
+        double tb = j == n ? st->t1 : st->t0 + st->h * j / n;
         rb_guard_eval(sv, tb, ys[j - 1], gb);
         int best = -1;
         double tbest = HUGE_VAL;
@@ -309,15 +329,22 @@ static rb_status restart(rb_solver *sv, double *g, rb_diag *diag)
 
 static rb_status advance(rb_solver *sv, rb_rk_step *st, double *g, rb_diag *diag)
 {
-    double t_event, tb = st->t0 + st->h;
+    double t_event, tb = st->t1;
     /* the check points serve the guards and the peaks alike */
-    double ys[RB_SUB][RB_NY];
-    for (int j = 1; j < RB_SUB; j++)
-        rb_rk_dense_state(st, st->t0 + st->h * j / RB_SUB, ys[j - 1]);
-    memcpy(ys[RB_SUB - 1], st->y1, sizeof ys[0]);
+    double ys[RB_SUB_MAX][RB_NY];
+    int n = st->n_sub;
+    for (int j = 1; j < n; j++) {
+        if (st->is_taylor) {
+            /* guards read the state, tracking the rest */
+            rb_taylor_check(&st->ts, st->h * j / n, st->vcheck[j - 1]);
+            memcpy(ys[j - 1], st->vcheck[j - 1], 4 * sizeof ys[0][0]);
+        } else
+            rb_rk_dense_state(st, st->t0 + st->h * j / n, ys[j - 1]);
+    }
+    memcpy(ys[n - 1], st->y1, sizeof ys[0]);
     /* the step end and its derivative (the next step's first stage) */
     if (!state_finite(st->y1) || !state_finite(st->k[6]))
-        return nonfinite(sv, diag, st->t0 + st->h, st->y1);
+        return nonfinite(sv, diag, st->t1, st->y1);
     int ev = find_event(sv, st, g, ys, &t_event);
     if (ev >= 0)
         tb = t_event;
@@ -339,6 +366,33 @@ static rb_status advance(rb_solver *sv, rb_rk_step *st, double *g, rb_diag *diag
     return restart(sv, g, diag);
 }
 
+/* A Taylor step towards the next break or the end, which it lands on
+ * exactly when within reach (a sum of steps would stop a rounding error
+ * short of it, and leave a step too small to take); 0 when its series is
+ * not finite. */
+static int taylor_step(rb_solver *sv, rb_rk_step *st, double target)
+{
+    double h_want = target - sv->t;
+    int landing = h_want <= 1.001 * sv->h_max;
+    if (!landing)
+        h_want = sv->h_max;
+    double h = rb_taylor_step(&sv->sys, &sv->disc, sv->t, sv->y, h_want, sv->atol,
+                              sv->opts.rtol, &st->ts);
+    if (!(h > 0))
+        return 0;
+    st->is_taylor = 1;
+    st->t0 = sv->t;
+    st->h = h;
+    st->t1 = landing && h == h_want ? target : sv->t + h;
+    memcpy(st->y0, sv->y, sizeof st->y0);
+    rb_taylor_end(&sv->sys, &sv->disc, &st->ts, h, st->y1, st->k[6], &st->aux1);
+    int n = (int)ceil(h / sv->check_spacing);
+    st->n_sub = n < RB_SUB ? RB_SUB : n > RB_SUB_MAX ? RB_SUB_MAX : n;
+    sv->res->steps++;
+    sv->res->stage_steps[sv->disc.stage]++;
+    return 1;
+}
+
 static rb_status run(rb_solver *sv, rb_diag *diag)
 {
     rb_rk_step st;
@@ -357,8 +411,18 @@ static rb_status run(rb_solver *sv, rb_diag *diag)
             return nonfinite_trial ? nonfinite_ahead(sv, diag, h)
                    : fail(sv, diag, RB_ERR_STEP_TOO_SMALL, "step size underflow: the "
                           "tolerance cannot be met");
+        if (sv->opts.integrator == RB_INTEGRATOR_AUTO
+            && rb_taylor_applies(&sv->sys, &sv->disc)) {
+            if (taylor_step(sv, &st, fmin(brk, sv->t_end))) {
+                s = advance(sv, &st, g, diag);
+                continue;
+            }
+            /* a series that is not finite: the Runge-Kutta step below
+             * meets the same values and says where they come from */
+        }
         double err = rb_rk_step_try(&sv->sys, &sv->disc, sv->t, sv->y, sv->f, h,
                                     sv->atol, sv->opts.rtol, &st);
+        st.n_sub = RB_SUB;
         sv->res->rhs_evals += 6;
         nonfinite_trial = err == HUGE_VAL;
         double fac = err > 0 ? 0.9 * pow(err, -0.2) : 5;

@@ -35,6 +35,7 @@ typedef struct {
     double t, y[RB_NY], f[RB_NY];
     double atol[RB_NY];
     double h, h_max, t_end;
+    double check_spacing;       /* largest spacing of a Taylor step's checks */
     double e_impact;
     double rest_theta;          /* rocking amplitude that counts as at rest */
     double window_start;        /* work bound: events since window_start */
@@ -57,7 +58,9 @@ void rb_transition(rb_solver *sv, int guard);
 int rb_transition_immediate(rb_solver *sv);
 double rb_absorbed_now(const rb_solver *sv, int row);
 
-/* Guards and peaks are checked at RB_SUB equally spaced points of a step. */
+/* Guards and peaks are checked at n_sub equally spaced points of a step:
+ * RB_SUB for a Runge-Kutta step, more for a long Taylor step so that the
+ * points stay as close as the Runge-Kutta steps' ends were. */
 #define RB_SUB 4
 
 /* track.c */
@@ -65,7 +68,7 @@ void rb_track_point(rb_solver *sv, double t, const double *y);
 /* The same with the evaluation at (t, y) already done. */
 void rb_track_aux(rb_solver *sv, const double *y, const rb_aux *a);
 /* Peaks inside [ta, tb] of a step; ys, when not NULL, holds the state at
- * the RB_SUB check points of the whole step (tb = its end). */
+ * the n_sub check points of the whole step (tb = its end). */
 void rb_track_interval(rb_solver *sv, const rb_rk_step *st, double ta, double tb,
                        const double (*ys)[RB_NY]);
 rb_status rb_history_sample(rb_solver *sv, const rb_rk_step *st, double ta, double tb);

@@ -45,11 +45,14 @@ void rb_track_point(rb_solver *sv, double t, const double *y)
 static double dense_root(const rb_rk_step *st, int c, double a, double b, double fa,
                          double fb)
 {
-    int last = 0;
+    int last = 0, hugged = 0;
     for (int i = 0; i < 100 && b - a > 1e-14 * (1 + fabs(b)); i++) {
         double m = (a * fb - b * fa) / (fb - fa);
-        if (!(m > a + 1e-3 * (b - a) && m < b - 1e-3 * (b - a)))
+        /* bisect only on a second hug in a row (see locate in solve.c) */
+        int hug = !(m > a + 1e-3 * (b - a) && m < b - 1e-3 * (b - a));
+        if (!(m > a && m < b) || (hug && hugged))
             m = 0.5 * (a + b);
+        hugged = hug;
         double fm = rb_rk_dense_one(st, m, c);
         if (fm == 0)
             return m;
@@ -72,9 +75,10 @@ void rb_track_interval(rb_solver *sv, const rb_rk_step *st, double ta, double tb
                        const double (*ys)[RB_NY])
 {
     double prev[RB_NY] = {0}, cur[RB_NY] = {0}, y[RB_NY] = {0};
+    int n = st->n_sub;
     rb_rk_dense_state(st, ta, prev);
-    for (int j = 1; j <= RB_SUB; j++) {
-        double t0 = ta + (tb - ta) * (j - 1) / RB_SUB, t1 = ta + (tb - ta) * j / RB_SUB;
+    for (int j = 1; j <= n; j++) {
+        double t0 = ta + (tb - ta) * (j - 1) / n, t1 = ta + (tb - ta) * j / n;
         if (ys)
             memcpy(cur, ys[j - 1], sizeof cur);
         else
@@ -87,7 +91,18 @@ void rb_track_interval(rb_solver *sv, const rb_rk_step *st, double ta, double tb
                 note_displacements(sv, y);
             }
         }
-        if (j < RB_SUB && sv->disc.stage == RB_STAGE_HELD)
+        if (j < n && st->is_taylor) {
+            /* a long step: forces and reactions at every check point, read
+             * from the series */
+            rb_aux a;
+            double v[RB_TS_CHECK];
+            if (ys)
+                memcpy(v, st->vcheck[j - 1], sizeof v);
+            else
+                rb_taylor_check(&st->ts, t1 - st->t0, v);
+            rb_taylor_aux(&sv->sys, &sv->disc, &st->ts, v, &a);
+            rb_track_aux(sv, cur, &a);
+        } else if (j < n && sv->disc.stage == RB_STAGE_HELD)
             rb_track_point(sv, t1, cur);
         memcpy(prev, cur, sizeof prev);
     }

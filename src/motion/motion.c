@@ -109,3 +109,77 @@ double rb_motion_peak(const rb_motion *m)
     }
     return 0.0;
 }
+
+/* sin(w (t0 + tau)) = sum_k w^k / k! sin(w t0 + k pi / 2) tau^k */
+static void sine_series(double w, double t0, double amp, int n, double *coef)
+{
+    double s = sin(w * t0), c = cos(w * t0), p = amp;
+    const double cycle[4] = {s, c, -s, -c};
+    for (int k = 0; k <= n; k++) {
+        coef[k] = p * cycle[k & 3];
+        p *= w / (k + 1);
+    }
+}
+
+/* Multiply the series by (e0 + e1 tau), in place, keeping n terms. */
+static void times_linear(double e0, double e1, int n, double *coef)
+{
+    for (int k = n; k >= 0; k--)
+        coef[k] = e0 * coef[k] + (k > 0 ? e1 * coef[k - 1] : 0.0);
+}
+
+static int sampled_series(const rb_motion *m, double t0, double *coef)
+{
+    const rb_series *s = m->series;
+    coef[0] = coef[1] = 0.0;
+    if (!s || s->n < 2)
+        return 0;
+    double x = (t0 - s->t0_s) / s->dt_s;
+    /* the interval that starts at or just before t0, as rb_motion_next_break
+     * reads it: a step from a sample time belongs to the interval after it */
+    double k = floor(x + 1e-9);
+    if (k < 0 || k > (double)(s->n - 2))
+        return 0;
+    size_t i = (size_t)k;
+    double a0 = s->accel_mps2[i], a1 = s->accel_mps2[i + 1];
+    double slope = (a1 - a0) / s->dt_s;
+    coef[0] = m->scale * (a0 + slope * (t0 - (s->t0_s + k * s->dt_s)));
+    coef[1] = m->scale * slope;
+    return 1;
+}
+
+int rb_motion_taylor(const rb_motion *m, double t0, int n, double *coef)
+{
+    int deg = 0;
+    for (int k = 0; k <= n; k++)
+        coef[k] = 0.0;
+    switch (m->kind) {
+    case RB_MOTION_HARMONIC:
+        sine_series(2 * M_PI * m->freq_hz, t0, m->amplitude_mps2, n, coef);
+        if (m->ramp_s > 0 && t0 < m->ramp_s)
+            times_linear(t0 / m->ramp_s, 1 / m->ramp_s, n, coef);
+        deg = n;
+        break;
+    case RB_MOTION_PULSE: {
+        double t1 = m->pulse_s, a = m->amplitude_mps2;
+        if (t0 < 0 || t0 >= t1)
+            break;
+        switch (m->pulse) {
+        case RB_PULSE_RECT: coef[0] = a; break;
+        case RB_PULSE_TRI_DEC: coef[0] = a * (1 - t0 / t1); coef[1] = -a / t1; deg = 1; break;
+        case RB_PULSE_TRI_INC: coef[0] = a * t0 / t1; coef[1] = a / t1; deg = 1; break;
+        case RB_PULSE_HALF_SINE: sine_series(M_PI / t1, t0, a, n, coef); deg = n; break;
+        }
+        break;
+    }
+    case RB_MOTION_SAMPLED:
+        deg = n >= 1 ? sampled_series(m, t0, coef) : 0;
+        break;
+    case RB_MOTION_CRITICAL:
+        return -1;
+    }
+    if (m->polarity < 0)
+        for (int k = 0; k <= deg; k++)
+            coef[k] = -coef[k];
+    return deg;
+}

@@ -464,8 +464,11 @@ static void amplitude_sweep_block(void)
     rb_criteria_init(&c);
     rb_sweep_opts_init(&o, RB_SWEEP_AMPLITUDE);
     double kt = eq_2_17(7.0) * dv.g * dv.alpha / dv.a_uplift_mps2;
-    o.from = kt - 0.02;
-    o.to = kt + 0.02;
+    /* no point on the threshold itself: there the block reaches alpha
+     * asymptotically, and whether it goes over is integration noise (the
+     * two integrators at rtol 1e-10 stop 2e-5 alpha apart) */
+    o.from = kt - 0.025;
+    o.to = kt + 0.015;
     o.n_points = 5;
     if (rb_sweep_amplitude(&m, &mo, &so, &c, &o, 0, &s, NULL) != RB_OK) {
         CHECK(!"amplitude sweep");
@@ -475,6 +478,8 @@ static void amplitude_sweep_block(void)
         const rb_sweep_point *p = &s.points[i];
         CHECK(p->status == RB_OK);
         CHECK_NEAR(p->level_astar, p->x, 1e-12);
+        printf("block sweep %.5f A*: status %d, overturned %d, meets %d\n", p->x, p->status,
+               p->overturned, p->meets);
         CHECK(p->overturned == (i > 2) && p->meets == (i <= 2));
     }
     writers(&s);

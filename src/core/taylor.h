@@ -1,0 +1,68 @@
+/* Internal: one step of the Taylor-series integrator, for the stages whose
+ * equations are polynomial in U, U', theta' and in cos theta, sin theta
+ * (stages 1, 2 and 4 with rigid bolts, large and small formulations).
+ *
+ * The floor acceleration between two breaks is a polynomial (a sampled
+ * record is linear between samples) or a sine, so the solution over a step
+ * is an entire function of time whose Taylor coefficients follow from the
+ * equations by the usual recurrences (cos and sin of theta by
+ * s' = c theta', c' = -s theta'). The order adapts to the step: a step runs
+ * to the next sample, and the series is carried until its last two terms
+ * are within the tolerance there. The coupled 13 Hz mode of stage 2 that
+ * held Dormand-Prince to 35 steps a period then costs one step per sample
+ * interval. The polynomial is also the dense output: guards, peaks and
+ * history read it at any instant of the step. */
+#ifndef RB_TAYLOR_H
+#define RB_TAYLOR_H
+#include "dynamics.h"
+
+#define RB_TAYLOR_MAX 32
+
+/* Series kept per power of tau, all components side by side, so that one
+ * Horner pass evaluates all of them at once (and vectorizes). The first
+ * RB_TS_CHECK are what guards and peak tracking read at a check point. */
+enum {
+    RB_TS_U, RB_TS_UD, RB_TS_TH, RB_TS_THD, /* physical state, as RB_Y_* */
+    RB_TS_X,           /* physical floor acceleration */
+    RB_TS_COS,         /* cos and sin of the mirrored angle */
+    RB_TS_SIN,
+    RB_TS_UDD,         /* physical U'' and theta'' */
+    RB_TS_THDD,
+    RB_TS_CHECK,
+    RB_TS_WDAMP = RB_TS_CHECK, RB_TS_WIN, RB_TS_WCPL,
+    RB_TS_N
+};
+
+typedef struct {
+    int order;                                /* highest power kept */
+    double p[RB_TAYLOR_MAX + 2][RB_TS_N];     /* p[k][component] */
+    double lever_hold;                        /* stage 4: lever arm at theta_hold */
+    int rocking;                              /* theta moves (stage 2) */
+} rb_taylor;
+
+/* Whether the current stage is integrated by Taylor series. */
+int rb_taylor_applies(const rb_sys *S, const rb_disc *D);
+
+/* A step from (t0, y0) towards t0 + h_want (which must not pass a break of
+ * the excitation). Returns the step taken, h_want or less when the order
+ * bound is met first, or 0 when the series is not finite. */
+double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double *y0,
+                      double h_want, const double *atol, double rtol, rb_taylor *ts);
+
+/* Component c (RB_Y_*) of the state tau after t0; the four mechanical
+ * components; the whole state; the first RB_TS_CHECK series. */
+double rb_taylor_one(const rb_taylor *ts, double tau, int c);
+void rb_taylor_state(const rb_taylor *ts, double tau, double *y);
+void rb_taylor_all(const rb_taylor *ts, double tau, double *y);
+void rb_taylor_check(const rb_taylor *ts, double tau, double *v);
+
+/* What rb_dyn_rhs would give as aux, from the values v of the first
+ * RB_TS_CHECK series at one instant (no trigonometry). */
+void rb_taylor_aux(const rb_sys *S, const rb_disc *D, const rb_taylor *ts, const double *v,
+                   rb_aux *a);
+
+/* The end of the step: state, derivative and aux, as rb_dyn_rhs gives them. */
+void rb_taylor_end(const rb_sys *S, const rb_disc *D, const rb_taylor *ts, double h,
+                   double *y1, double *f1, rb_aux *a);
+
+#endif
