@@ -323,6 +323,7 @@ static rb_status restart(rb_solver *sv, double *g, rb_diag *diag)
     if (!state_finite(sv->y) || !state_finite(sv->f))
         return nonfinite(sv, diag, sv->t, sv->y);
     rb_guard_eval(sv, sv->t, sv->y, g);
+    rb_track_reset(sv);
     rb_track_point(sv, sv->t, sv->y);
     return RB_OK;
 }
@@ -357,7 +358,7 @@ static rb_status advance(rb_solver *sv, rb_rk_step *st, double *g, rb_diag *diag
         memcpy(sv->y, st->y1, sizeof sv->y);
         memcpy(sv->f, st->k[6], sizeof sv->f);
         rb_guard_eval(sv, sv->t, sv->y, g);
-        rb_track_aux(sv, sv->y, &st->aux1);
+        rb_track_aux(sv, sv->t, sv->y, &st->aux1);
         return RB_OK;
     }
     rb_rk_dense_eval(st, tb, sv->y);

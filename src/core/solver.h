@@ -27,6 +27,13 @@ enum {
     G_COUNT
 };
 
+/* The last three samples of a tracked quantity, for the vertex of the
+ * parabola through a sampled peak. */
+typedef struct {
+    double t[3], v[3];
+    int n;
+} rb_peak_window;
+
 typedef struct {
     rb_sys sys;
     rb_disc disc;
@@ -41,6 +48,9 @@ typedef struct {
     double window_start;        /* work bound: events since window_start */
     long window_events;
     long hist_k;                /* next history row is at hist_k * dt */
+    /* sampled peaks of |shear|, friction demand and bolt force, reset at
+     * every transition (a peak is only interpolated where it is smooth) */
+    rb_peak_window win_shear, win_friction, win_bolt;
     int done;
 } rb_solver;
 
@@ -66,7 +76,9 @@ double rb_absorbed_now(const rb_solver *sv, int row);
 /* track.c */
 void rb_track_point(rb_solver *sv, double t, const double *y);
 /* The same with the evaluation at (t, y) already done. */
-void rb_track_aux(rb_solver *sv, const double *y, const rb_aux *a);
+void rb_track_aux(rb_solver *sv, double t, const double *y, const rb_aux *a);
+/* A transition: the sampled quantities start afresh. */
+void rb_track_reset(rb_solver *sv);
 /* Peaks inside [ta, tb] of a step; ys, when not NULL, holds the state at
  * the n_sub check points of the whole step (tb = its end). */
 void rb_track_interval(rb_solver *sv, const rb_rk_step *st, double ta, double tb,

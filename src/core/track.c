@@ -16,7 +16,44 @@ static void note_displacements(rb_solver *sv, const double *y)
     r->max_theta_rad = fmax(r->max_theta_rad, fabs(y[RB_Y_TH]));
 }
 
-void rb_track_aux(rb_solver *sv, const double *y, const rb_aux *a)
+/* Shift (t, v) into the window and return the larger of v and, when the
+ * middle sample is a local maximum, the vertex of the parabola through the
+ * three: the samples are check points of a step (a few per period of the
+ * fastest mode), and the vertex takes the peak between them to third order
+ * in their spacing instead of first. */
+static double peak_push(rb_peak_window *w, double t, double v)
+{
+    if (w->n == 3) {
+        w->t[0] = w->t[1]; w->v[0] = w->v[1];
+        w->t[1] = w->t[2]; w->v[1] = w->v[2];
+        w->n = 2;
+    }
+    w->t[w->n] = t;
+    w->v[w->n] = v;
+    w->n++;
+    if (w->n < 3 || !(w->v[1] >= w->v[0] && w->v[1] >= w->v[2]))
+        return v;
+    double h0 = w->t[1] - w->t[0], h1 = w->t[2] - w->t[1];
+    if (!(h0 > 0 && h1 > 0))
+        return v;
+    double d0 = (w->v[1] - w->v[0]) / h0, d1 = (w->v[2] - w->v[1]) / h1;
+    double curv = (d1 - d0) / (h0 + h1); /* half the second derivative */
+    if (!(curv < 0))
+        return fmax(v, w->v[1]);
+    /* slope at t1 from the parabola, then the vertex */
+    double slope = d0 + curv * h0;
+    double dt = -slope / (2 * curv);
+    if (!(dt >= -h0 && dt <= h1))
+        return fmax(v, w->v[1]);
+    return fmax(v, w->v[1] + slope * dt + curv * dt * dt);
+}
+
+void rb_track_reset(rb_solver *sv)
+{
+    sv->win_shear.n = sv->win_friction.n = sv->win_bolt.n = 0;
+}
+
+void rb_track_aux(rb_solver *sv, double t, const double *y, const rb_aux *a)
 {
     const rb_sys *S = &sv->sys;
     rb_result *r = sv->res;
@@ -24,19 +61,23 @@ void rb_track_aux(rb_solver *sv, const double *y, const rb_aux *a)
     note_displacements(sv, y);
     if (sv->disc.side != 0 && a->bolt_force > 0) {
         int row = rb_row_of_side(sv->disc.side);
-        r->max_bolt_force_n[row] = fmax(r->max_bolt_force_n[row], a->bolt_force);
+        r->max_bolt_force_n[row] = fmax(r->max_bolt_force_n[row],
+                                        peak_push(&sv->win_bolt, t, a->bolt_force));
     }
     rb_dyn_reactions(S, &sv->disc, y, a, &H, &V);
-    r->max_shear_total_n = fmax(r->max_shear_total_n, fabs(H));
+    r->max_shear_total_n = fmax(r->max_shear_total_n, peak_push(&sv->win_shear, t, fabs(H)));
     if (V > 0)
-        r->max_friction_demand = fmax(r->max_friction_demand, fabs(H) / V);
+        r->max_friction_demand = fmax(r->max_friction_demand,
+                                      peak_push(&sv->win_friction, t, fabs(H) / V));
+    else
+        sv->win_friction.n = 0;
 }
 
 void rb_track_point(rb_solver *sv, double t, const double *y)
 {
     rb_aux a;
     rb_dyn_rhs(&sv->sys, &sv->disc, t, y, NULL, &a);
-    rb_track_aux(sv, y, &a);
+    rb_track_aux(sv, t, y, &a);
 }
 
 /* Root of component c of the dense output in [a, b], where it changes sign
@@ -101,7 +142,7 @@ void rb_track_interval(rb_solver *sv, const rb_rk_step *st, double ta, double tb
             else
                 rb_taylor_check(&st->ts, t1 - st->t0, v);
             rb_taylor_aux(&sv->sys, &sv->disc, &st->ts, v, &a);
-            rb_track_aux(sv, cur, &a);
+            rb_track_aux(sv, t1, cur, &a);
         } else if (j < n && sv->disc.stage == RB_STAGE_HELD)
             rb_track_point(sv, t1, cur);
         memcpy(prev, cur, sizeof prev);
