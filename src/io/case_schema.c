@@ -27,7 +27,7 @@ static const char *const rb_anchorage_keys[] = {
 static const char *const rb_criteria_keys[] = {
     "kind", "usage_limit", "max_shear_over_w", "max_rotation_over_alpha", NULL};
 static const char *const rb_analysis_keys[] = {
-    "formulation", "tolerance", "output_interval", "history",
+    "formulation", "integrator", "tolerance", "output_interval", "history",
     "stretch_past_failure", NULL};
 
 /* Which of two alternative keys the map gives: 0 for a, 1 for b, -1 when
@@ -242,12 +242,17 @@ static void rb_read_analysis(rb_cctx *c, rb_ynode *an, rb_case *cs)
     static const char *const forms[] = {"large", "small", "consistent", NULL};
     static const rb_formulation fk[] = {RB_FORM_LARGE, RB_FORM_SMALL,
                                         RB_FORM_CONSISTENT};
+    static const char *const integs[] = {"auto", "rk45", NULL};
+    static const rb_integrator ik[] = {RB_INTEGRATOR_AUTO, RB_INTEGRATOR_RK45};
     const char *p = "analysis";
     int i, b;
     double dt = 0.01;
     rb_ynode *v = rb_cv_get(c, an, p, "formulation", 0, "");
     if (v && rb_cv_enum(c, v, "analysis.formulation", forms, &i))
         cs->solve.formulation = fk[i];
+    v = rb_cv_get(c, an, p, "integrator", 0, "");
+    if (v && rb_cv_enum(c, v, "analysis.integrator", integs, &i))
+        cs->solve.integrator = ik[i];
     rb_cv_number(c, an, p, "tolerance", 0, RB_DIM_RATIO, 0, 0, 0.01, 1,
                  &cs->solve.rtol);
     rb_cv_number(c, an, p, "output_interval", 0, RB_DIM_TIME, 0, 0, NAN, 0, &dt);

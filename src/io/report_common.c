@@ -105,6 +105,15 @@ const char *rb_report_formulation_str(rb_formulation form)
     return "unknown";
 }
 
+const char *rb_report_integrator_str(rb_integrator integ)
+{
+    switch (integ) {
+    case RB_INTEGRATOR_AUTO: return "auto";
+    case RB_INTEGRATOR_RK45: return "rk45";
+    }
+    return "unknown";
+}
+
 const char *rb_report_criterion_str(rb_criterion_kind kind)
 {
     switch (kind) {

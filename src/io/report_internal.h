@@ -29,6 +29,7 @@ const char *rb_report_motion_kind_str(rb_motion_kind kind);
 const char *rb_report_pulse_str(rb_pulse_shape shape);
 const char *rb_report_bolt_model_str(rb_bolt_model model);
 const char *rb_report_formulation_str(rb_formulation form);
+const char *rb_report_integrator_str(rb_integrator integ);
 const char *rb_report_criterion_str(rb_criterion_kind kind);
 const char *rb_report_side_str(int side); /* RB_LEFT, RB_RIGHT */
 

@@ -77,6 +77,7 @@ static void add_settings(rb_jctx *cx, cJSON *root, const rb_case *c)
     cJSON *o = rb_j_obj(cx, root, "solver");
     cx->where = "solver";
     rb_j_str(cx, o, "formulation", rb_report_formulation_str(s->formulation));
+    rb_j_str(cx, o, "integrator", rb_report_integrator_str(s->integrator));
     rb_j_num(cx, o, "rtol", s->rtol);
     rb_j_num(cx, o, "event_tol", s->event_tol);
     rb_j_opt(cx, o, "max_step_s", s->max_step_s > 0, s->max_step_s);

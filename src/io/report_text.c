@@ -27,6 +27,7 @@ static void case_vars(rb_tvars *t, const rb_report *r)
     rb_tv_str(t, "criterion", rb_report_criterion_str(r->kase->criteria.kind));
     rb_tv_num(t, "usage_limit", r->kase->criteria.usage_limit);
     rb_tv_str(t, "formulation", rb_report_formulation_str(r->kase->solve.formulation));
+    rb_tv_str(t, "integrator", rb_report_integrator_str(r->kase->solve.integrator));
     rb_tv_int(t, "n_motions", (long)r->n_motions);
     rb_tv_int(t, "n_failed", (long)failed);
     rb_tv_num(t, "mass_kg", m->mass_kg);

@@ -114,6 +114,7 @@ static void test_reference_records(void)
     CHECK(load("cases/reference-elcentro.yaml", &c, &l) == RB_OK);
     check_reference_model(&c.model, 1e-12);
     check_record(&c, 4000, 39.99);
+    CHECK(c.solve.integrator == RB_INTEGRATOR_AUTO); /* the default */
     CHECK(c.motions[0].name && strcmp(c.motions[0].name, "elcentro_1940_ns.at2") == 0);
     /* Every file read, each once: the case, its base, its record. */
     CHECK(c.n_input_files == 3);
@@ -182,6 +183,7 @@ static void test_extends_merge(void)
     CHECK(c.criteria.kind == RB_CRIT_NO_YIELD);
     CHECK_REL(c.criteria.max_shear_over_w, 2.0, 1e-15);
     CHECK(c.solve.formulation == RB_FORM_SMALL);
+    CHECK(c.solve.integrator == RB_INTEGRATOR_RK45);
     CHECK_REL(c.solve.rtol, 1e-6, 1e-15);
     CHECK(c.write_history == 1);
     CHECK_REL(c.solve.history_dt_s, 0.005, 1e-15);

@@ -89,6 +89,7 @@ static void test_json(void)
     CHECK(cJSON_GetNumberValue(at(root, "format_version", NULL, NULL)) == 1);
     CHECK(cJSON_IsTrue(at(root, "verdict", "pass", NULL)));
     CHECK_REL(cJSON_GetNumberValue(at(root, "derived", "a_star_g", NULL)), 11.7, 0.01);
+    CHECK(strcmp(cJSON_GetStringValue(at(root, "solver", "integrator", NULL)), "auto") == 0);
     m0 = cJSON_GetArrayItem(cJSON_GetObjectItemCaseSensitive(root, "motions"), 0);
     v = at(m0, "result", "bolts", "first_yield_s");
     CHECK(cJSON_IsNull(cJSON_GetObjectItemCaseSensitive(v, "left")));
