@@ -200,7 +200,33 @@ static rb_status setup(rb_solver *sv, const rb_model *model, const rb_motion *mo
 static double locate(rb_solver *sv, const rb_rk_step *st, int guard, double a, double b,
                      double ga, double gb)
 {
-    double y[RB_NY] = {0};
+    double y[RB_NY] = {0}, level;
+    if (st->is_taylor && rb_guard_angle(sv, guard, &level)) {
+        /* Newton on the angle's series lands on the root to rounding;
+         * the time returned must read as crossed, so step over it if the
+         * root itself rounds to the near side */
+        double tol = 1e-13 * (1 + fabs(b));
+        double x = st->t0 + rb_taylor_angle_root(&st->ts, a - st->t0, b - st->t0, level,
+                                                 0.125 * tol);
+        for (int k = 0; k < 8 && x < b; k++) {
+            rb_rk_dense_state(st, x, y);
+            double gx = rb_guard_one(sv, guard, x, y);
+            /* rb_guard_crossed, not gx == 0: a root at a nudged start (the
+             * contact angle right after a release) is not a crossing */
+            if (rb_guard_crossed(guard, ga, gx))
+                return x;
+            if (!(x > a)) /* an end that does not read as crossed */
+                break;
+            /* a guard reading exactly 0 here has not left its nudged
+             * start; ga keeps the start's side */
+            a = x;
+            if (gx != 0)
+                ga = gx;
+            x = fmin(b, x + 0.125 * tol * (1 << k));
+        }
+        if (x >= b)
+            return b;
+    }
     int last = 0, hugged = 1;
     for (int i = 0; i < 200 && b - a > 1e-13 * (1 + fabs(b)); i++) {
         double m = (a * gb - b * ga) / (gb - ga);

@@ -60,6 +60,9 @@ void rb_guard_eval(const rb_solver *sv, double t, const double *y, double *g);
 /* One guard; what locating its root needs. */
 double rb_guard_one(const rb_solver *sv, int guard, double t, const double *y);
 int rb_guard_crossed(int guard, double before, double after);
+/* Whether a guard is the mirrored angle passing a level, and the level of
+ * the physical angle where it does: such a root is found on theta alone. */
+int rb_guard_angle(const rb_solver *sv, int guard, double *level);
 void rb_guard_nudge(double *g);
 /* Apply the transition of 'guard' at the current (t, y). */
 void rb_transition(rb_solver *sv, int guard);

@@ -61,6 +61,17 @@ void rb_taylor_check(const rb_taylor *ts, double tau, double *v);
 void rb_taylor_aux(const rb_sys *S, const rb_disc *D, const rb_taylor *ts, const double *v,
                    rb_aux *a);
 
+/* Root in [a, b] (tau) of U' (c = RB_Y_UD) or theta' (RB_Y_THD), which
+ * change sign from fa to fb there: Newton's method on the series and its
+ * derivative, kept inside the bracket, to tol in tau. */
+double rb_taylor_rate_root(const rb_taylor *ts, int c, double a, double b, double fa,
+                           double fb, double tol);
+
+/* Where theta (physical) passes level in [a, b] (tau): Newton's method on
+ * theta and theta', kept inside the bracket, to tol in tau. */
+double rb_taylor_angle_root(const rb_taylor *ts, double a, double b, double level,
+                            double tol);
+
 /* The end of the step: state, derivative and aux, as rb_dyn_rhs gives them. */
 void rb_taylor_end(const rb_sys *S, const rb_disc *D, const rb_taylor *ts, double h,
                    double *y1, double *f1, rb_aux *a);

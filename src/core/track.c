@@ -86,6 +86,9 @@ void rb_track_point(rb_solver *sv, double t, const double *y)
 static double dense_root(const rb_rk_step *st, int c, double a, double b, double fa,
                          double fb)
 {
+    if (st->is_taylor)
+        return st->t0 + rb_taylor_rate_root(&st->ts, c, a - st->t0, b - st->t0, fa, fb,
+                                            1e-14 * (1 + fabs(b)));
     int last = 0, hugged = 0;
     for (int i = 0; i < 100 && b - a > 1e-14 * (1 + fabs(b)); i++) {
         double m = (a * fb - b * fa) / (fb - fa);

@@ -130,6 +130,20 @@ double rb_guard_one(const rb_solver *sv, int guard, double t, const double *y)
     }
 }
 
+int rb_guard_angle(const rb_solver *sv, int guard, double *level)
+{
+    const rb_disc *D = &sv->disc;
+    double th;
+    switch (guard) {
+    case G_FLOOR: th = -RB_FLOOR_SLACK * sv->rest_theta; break;
+    case G_CONTACT: th = D->contact[rb_row_of_side(D->side)]; break;
+    case G_OVERTURN: th = sv->sys.d.alpha; break;
+    default: return 0;
+    }
+    *level = D->side * th;
+    return 1;
+}
+
 void rb_guard_eval(const rb_solver *sv, double t, const double *y, double *g)
 {
     unsigned mask = rb_guard_mask(sv);
