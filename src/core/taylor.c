@@ -117,14 +117,22 @@ static void work_series(const consts *K, const series *s, int rocking, int n,
     for (int k = 0; k <= n; k++)
         F[k] = K->Ns * (K->g * (K->small ? s->T[k] : s->S[k])
                         - (rocking ? K->b * s->Q[k] : 0));
-    int fd = rocking ? n : 0;
     for (int k = 0; k < n; k++) {
-        double vv = 0, vc = 0, vf = 0;
-        for (int j = 0; j <= k; j++) {
+        double vv = 0, vc, vf;
+        /* U'^2 is symmetric: half the products */
+        for (int j = 0; 2 * j < k; j++)
             vv += s->V[j] * s->V[k - j];
-            vc += s->V[j] * s->C[k - j];
-            if (k - j <= fd)
+        vv = 2 * vv + (k % 2 == 0 ? s->V[k / 2] * s->V[k / 2] : 0);
+        if (rocking) {
+            vc = vf = 0;
+            for (int j = 0; j <= k; j++) {
+                vc += s->V[j] * s->C[k - j];
                 vf += s->V[j] * F[k - j];
+            }
+        } else {
+            /* the still stages' angle and its factors are constants */
+            vc = s->V[k] * s->C[0];
+            vf = s->V[k] * F[0];
         }
         /* input power per unit floor acceleration: N* cos U' + M (h cos +
          * b sin) theta'; the second is the derivative of M (h sin - b cos) */
