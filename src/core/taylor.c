@@ -114,7 +114,7 @@ static void work_series(const consts *K, const series *s, int rocking, int n,
     double F[NT], G[NT];
     /* coupling factor N* (g sin - b theta'^2), per unit U'; the still
      * stages' is a constant */
-    for (int k = 0; k <= n; k++)
+    for (int k = 0; k < n; k++)
         F[k] = K->Ns * (K->g * (K->small ? s->T[k] : s->S[k])
                         - (rocking ? K->b * s->Q[k] : 0));
     for (int k = 0; k < n; k++) {
