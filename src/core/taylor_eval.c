@@ -1,0 +1,220 @@
+/* Reading a Taylor step: its series at any instant of the step (the dense
+ * output), what rb_dyn_rhs would give there, and roots of the rates and of
+ * the angle by Newton's method on a series and its derivative series. */
+#include <math.h>
+#include "taylor.h"
+
+/* Horner on components [0, m) side by side: independent chains in local
+ * accumulators (an output that might alias the series would force a reload
+ * per term), which the compiler keeps in vector registers. */
+#define HORNER(ts, tau, m, out) do { \
+        const double (*p_)[RB_TS_N] = (const double (*)[RB_TS_N])(ts)->p; \
+        double v_[m]; \
+        int n_ = (ts)->order; \
+        for (int i_ = 0; i_ < (m); i_++) v_[i_] = p_[n_][i_]; \
+        for (int k_ = n_ - 1; k_ >= 0; k_--) \
+            for (int i_ = 0; i_ < (m); i_++) \
+                v_[i_] = v_[i_] * (tau) + p_[k_][i_]; \
+        for (int i_ = 0; i_ < (m); i_++) (out)[i_] = v_[i_]; \
+    } while (0)
+
+static const int state_series[RB_NY] = {
+    RB_TS_U, RB_TS_UD, RB_TS_TH, RB_TS_THD, RB_TS_WDAMP, RB_TS_WIN, RB_TS_WCPL,
+};
+
+double rb_taylor_one(const rb_taylor *ts, double tau, int c)
+{
+    int i = state_series[c];
+    double v = ts->p[ts->order][i];
+    for (int k = ts->order - 1; k >= 0; k--)
+        v = v * tau + ts->p[k][i];
+    return v;
+}
+
+/* The still stages' angle, its rate and their trigonometry are constant,
+ * and only four series need the Horner pass. */
+void rb_taylor_state(const rb_taylor *ts, double tau, double *y)
+{
+    const double (*p)[RB_TS_N] = (const double (*)[RB_TS_N])ts->p;
+    int n = ts->order;
+    double u = p[n][RB_TS_U], ud = p[n][RB_TS_UD], th = p[n][RB_TS_TH],
+           thd = p[n][RB_TS_THD];
+    for (int k = n - 1; k >= 0; k--) {
+        u = u * tau + p[k][RB_TS_U];
+        ud = ud * tau + p[k][RB_TS_UD];
+        th = th * tau + p[k][RB_TS_TH];
+        thd = thd * tau + p[k][RB_TS_THD];
+    }
+    y[RB_Y_U] = u;
+    y[RB_Y_UD] = ud;
+    y[RB_Y_TH] = th;
+    y[RB_Y_THD] = thd;
+}
+
+void rb_taylor_check(const rb_taylor *ts, double tau, double *v)
+{
+    const double (*p)[RB_TS_N] = (const double (*)[RB_TS_N])ts->p;
+    int n = ts->order;
+    double u = p[n][RB_TS_U], ud = p[n][RB_TS_UD], x = p[n][RB_TS_X],
+           udd = p[n][RB_TS_UDD];
+    if (!ts->rocking) {
+        for (int k = n - 1; k >= 0; k--) {
+            u = u * tau + p[k][RB_TS_U];
+            ud = ud * tau + p[k][RB_TS_UD];
+            x = x * tau + p[k][RB_TS_X];
+            udd = udd * tau + p[k][RB_TS_UDD];
+        }
+        v[RB_TS_TH] = p[0][RB_TS_TH];
+        v[RB_TS_THD] = p[0][RB_TS_THD];
+        v[RB_TS_COS] = p[0][RB_TS_COS];
+        v[RB_TS_SIN] = p[0][RB_TS_SIN];
+        v[RB_TS_THDD] = 0;
+    } else {
+        double th = p[n][RB_TS_TH], thd = p[n][RB_TS_THD], c = p[n][RB_TS_COS],
+               sn = p[n][RB_TS_SIN], thdd = p[n][RB_TS_THDD];
+        for (int k = n - 1; k >= 0; k--) {
+            const double *q = p[k];
+            u = u * tau + q[RB_TS_U];
+            ud = ud * tau + q[RB_TS_UD];
+            th = th * tau + q[RB_TS_TH];
+            thd = thd * tau + q[RB_TS_THD];
+            x = x * tau + q[RB_TS_X];
+            c = c * tau + q[RB_TS_COS];
+            sn = sn * tau + q[RB_TS_SIN];
+            udd = udd * tau + q[RB_TS_UDD];
+            thdd = thdd * tau + q[RB_TS_THDD];
+        }
+        v[RB_TS_TH] = th;
+        v[RB_TS_THD] = thd;
+        v[RB_TS_COS] = c;
+        v[RB_TS_SIN] = sn;
+        v[RB_TS_THDD] = thdd;
+    }
+    v[RB_TS_U] = u;
+    v[RB_TS_UD] = ud;
+    v[RB_TS_X] = x;
+    v[RB_TS_UDD] = udd;
+}
+
+void rb_taylor_all(const rb_taylor *ts, double tau, double *y)
+{
+    double v[RB_TS_N];
+    HORNER(ts, tau, RB_TS_N, v);
+    for (int i = 0; i < RB_NY; i++)
+        y[i] = v[state_series[i]];
+}
+
+void rb_taylor_aux(const rb_sys *S, const rb_disc *D, const rb_taylor *ts, const double *v,
+                   rb_aux *a)
+{
+    const rb_derived *d = &S->d;
+    double sgn = D->side < 0 ? -1.0 : 1.0;
+    int rocking = D->stage == RB_STAGE_UPLIFT;
+    a->x = v[RB_TS_X];
+    a->udd = sgn * v[RB_TS_UDD];
+    a->thdd = sgn * v[RB_TS_THDD];
+    a->cos_th = v[RB_TS_COS];
+    a->sin_th = v[RB_TS_SIN];
+    double th = rocking ? sgn * v[RB_TS_TH] : D->stage == RB_STAGE_HELD ? D->theta_hold : 0;
+    double ud = sgn * v[RB_TS_UD], xm = sgn * a->x;
+    double thd = rocking ? sgn * v[RB_TS_THD] : 0;
+    double c = a->cos_th, sn = a->sin_th;
+    int small = S->form == RB_FORM_SMALL;
+    double in_U = small ? d->Nstar : d->Nstar * c;
+    double in_th = small ? S->M * d->R : S->M * (S->h * c + S->b * sn);
+    a->p_input = xm * (in_U * ud + in_th * thd);
+    a->p_coupling = d->Nstar * (d->g * (small ? th : sn) - S->b * thd * thd) * ud;
+    a->bolt_force = 0;
+    if (D->stage == RB_STAGE_HELD) {
+        double Qth = small ? xm * in_th - d->W * d->R * (d->alpha - th)
+                           : xm * in_th - d->W * (S->b * c - S->h * sn);
+        a->bolt_force = (Qth - d->Fstar * a->udd) / ts->lever_hold;
+    }
+}
+
+void rb_taylor_end(const rb_sys *S, const rb_disc *D, const rb_taylor *ts, double h,
+                   double *y1, double *f1, rb_aux *a)
+{
+    double v[RB_TS_N];
+    HORNER(ts, h, RB_TS_N, v);
+    for (int i = 0; i < RB_NY; i++)
+        y1[i] = v[state_series[i]];
+    rb_taylor_aux(S, D, ts, v, a);
+    int rocking = D->stage == RB_STAGE_UPLIFT;
+    f1[RB_Y_U] = v[RB_TS_UD];
+    f1[RB_Y_UD] = v[RB_TS_UDD];
+    f1[RB_Y_TH] = rocking ? v[RB_TS_THD] : 0;
+    f1[RB_Y_THD] = v[RB_TS_THDD];
+    f1[RB_Y_WDAMP] = S->d.Cstar * v[RB_TS_UD] * v[RB_TS_UD];
+    f1[RB_Y_WIN] = a->p_input;
+    f1[RB_Y_WCPL] = a->p_coupling;
+}
+
+double rb_taylor_rate_root(const rb_taylor *ts, int c, double a, double b, double fa,
+                           double fb, double tol)
+{
+    const double (*p)[RB_TS_N] = (const double (*)[RB_TS_N])ts->p;
+    int i = c == RB_Y_UD ? RB_TS_UD : RB_TS_THD;
+    int di = c == RB_Y_UD ? RB_TS_UDD : RB_TS_THDD;
+    int n = ts->order;
+    double x = (a * fb - b * fa) / (fb - fa);
+    if (!(x > a && x < b))
+        x = 0.5 * (a + b);
+    /* orient the bracket by an end that is not exactly on the root */
+    int b_positive = fb != 0 ? fb > 0 : !(fa > 0);
+    for (int it = 0; it < 60; it++) {
+        double f = p[n][i], df = p[n][di];
+        for (int k = n - 1; k >= 0; k--) {
+            f = f * x + p[k][i];
+            df = df * x + p[k][di];
+        }
+        if (f == 0)
+            return x;
+        if ((f > 0) == b_positive)
+            b = x;
+        else
+            a = x;
+        double next = x - f / df;
+        if (!(next > a && next < b))
+            next = 0.5 * (a + b);
+        /* quadratic convergence: a step this small lands within the
+         * tolerance of the root */
+        int done = fabs(next - x) <= tol || b - a <= tol;
+        x = next;
+        if (done)
+            break;
+    }
+    return x;
+}
+
+double rb_taylor_angle_root(const rb_taylor *ts, double a, double b, double level,
+                            double tol)
+{
+    const double (*p)[RB_TS_N] = (const double (*)[RB_TS_N])ts->p;
+    int n = ts->order;
+    /* the far end is strictly across (the near one can sit on the level) */
+    int b_positive = rb_taylor_one(ts, b, RB_Y_TH) - level > 0;
+    double x = 0.5 * (a + b);
+    for (int it = 0; it < 60; it++) {
+        double f = p[n][RB_TS_TH], df = p[n][RB_TS_THD];
+        for (int k = n - 1; k >= 0; k--) {
+            f = f * x + p[k][RB_TS_TH];
+            df = df * x + p[k][RB_TS_THD];
+        }
+        f -= level;
+        if (f == 0)
+            return x;
+        if ((f > 0) == b_positive)
+            b = x;
+        else
+            a = x;
+        double next = x - f / df;
+        if (!(next > a && next < b))
+            next = 0.5 * (a + b);
+        int done = fabs(next - x) <= tol || b - a <= tol;
+        x = next;
+        if (done)
+            break;
+    }
+    return x;
+}
