@@ -150,24 +150,22 @@ void rb_taylor_end(const rb_sys *S, const rb_disc *D, const rb_taylor *ts, doubl
     f1[RB_Y_WCPL] = a->p_coupling;
 }
 
-double rb_taylor_rate_root(const rb_taylor *ts, int c, double a, double b, double fa,
-                           double fb, double tol)
+/* Root of series i minus level in [a, b], starting from x, with di its
+ * derivative series: Newton's method kept inside the bracket, whose
+ * orientation (the sign beyond the root, at b) is given, since the near end
+ * can sit exactly on the level. */
+static double newton_root(const rb_taylor *ts, int i, int di, double level, double a,
+                          double b, double x, int b_positive, double tol)
 {
     const double (*p)[RB_TS_N] = (const double (*)[RB_TS_N])ts->p;
-    int i = c == RB_Y_UD ? RB_TS_UD : RB_TS_THD;
-    int di = c == RB_Y_UD ? RB_TS_UDD : RB_TS_THDD;
     int n = ts->order;
-    double x = (a * fb - b * fa) / (fb - fa);
-    if (!(x > a && x < b))
-        x = 0.5 * (a + b);
-    /* orient the bracket by an end that is not exactly on the root */
-    int b_positive = fb != 0 ? fb > 0 : !(fa > 0);
     for (int it = 0; it < 60; it++) {
         double f = p[n][i], df = p[n][di];
         for (int k = n - 1; k >= 0; k--) {
             f = f * x + p[k][i];
             df = df * x + p[k][di];
         }
+        f -= level;
         if (f == 0)
             return x;
         if ((f > 0) == b_positive)
@@ -187,34 +185,21 @@ double rb_taylor_rate_root(const rb_taylor *ts, int c, double a, double b, doubl
     return x;
 }
 
+double rb_taylor_rate_root(const rb_taylor *ts, int c, double a, double b, double fa,
+                           double fb, double tol)
+{
+    double x = (a * fb - b * fa) / (fb - fa);
+    if (!(x > a && x < b))
+        x = 0.5 * (a + b);
+    return newton_root(ts, c == RB_Y_UD ? RB_TS_UD : RB_TS_THD,
+                       c == RB_Y_UD ? RB_TS_UDD : RB_TS_THDD, 0, a, b, x,
+                       fb != 0 ? fb > 0 : !(fa > 0), tol);
+}
+
 double rb_taylor_angle_root(const rb_taylor *ts, double a, double b, double level,
                             double tol)
 {
-    const double (*p)[RB_TS_N] = (const double (*)[RB_TS_N])ts->p;
-    int n = ts->order;
-    /* the far end is strictly across (the near one can sit on the level) */
     int b_positive = rb_taylor_one(ts, b, RB_Y_TH) - level > 0;
-    double x = 0.5 * (a + b);
-    for (int it = 0; it < 60; it++) {
-        double f = p[n][RB_TS_TH], df = p[n][RB_TS_THD];
-        for (int k = n - 1; k >= 0; k--) {
-            f = f * x + p[k][RB_TS_TH];
-            df = df * x + p[k][RB_TS_THD];
-        }
-        f -= level;
-        if (f == 0)
-            return x;
-        if ((f > 0) == b_positive)
-            b = x;
-        else
-            a = x;
-        double next = x - f / df;
-        if (!(next > a && next < b))
-            next = 0.5 * (a + b);
-        int done = fabs(next - x) <= tol || b - a <= tol;
-        x = next;
-        if (done)
-            break;
-    }
-    return x;
+    return newton_root(ts, RB_TS_TH, RB_TS_THD, level, a, b, 0.5 * (a + b), b_positive,
+                       tol);
 }
