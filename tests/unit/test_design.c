@@ -12,22 +12,11 @@
 #include <unistd.h>
 #include <cjson/cJSON.h>
 #include "harness.h"
+#include "thesis_block.h"
 #include "rockbolt/design.h"
 #include "rockbolt/record.h"
 
 /* ---- Rigid block, triangular-decreasing pulse, p t1 = 7 ------------------ */
-
-static void block_model(rb_model *m)
-{
-    rb_model_init(m);
-    m->mass_kg = 100;
-    m->cm_height_m = 0.6;
-    m->half_width_m = 0.25;
-    m->rigid = 1;
-    m->bolt_model = RB_BOLT_NONE;
-    m->restitution = 0.778;
-    m->inertia_kgm2 = 4.0 / 3.0 * m->mass_kg * (0.6 * 0.6 + 0.25 * 0.25);
-}
 
 static void block_pulse(const rb_model *m, rb_motion *mo, rb_solve_opts *o)
 {
@@ -44,14 +33,6 @@ static void block_pulse(const rb_model *m, rb_motion *mo, rb_solve_opts *o)
     o->rtol = 1e-10;
 }
 
-/* eq. 2.17: normalised overturning amplitude K = a / (g alpha) */
-static double eq_2_17(double pt1)
-{
-    double c1 = 2 * sinh(pt1) / pt1 - 2;
-    double c2 = 2 * sinh(pt1) / pt1 + (2 - 2 * cosh(pt1)) / (pt1 * pt1) - 1;
-    return (c1 + sqrt(c1 * c1 + 4 * c2)) / (2 * c2);
-}
-
 static void factor_finds_overturn_threshold(void)
 {
     rb_model m;
@@ -61,7 +42,7 @@ static void factor_finds_overturn_threshold(void)
     rb_design_opts d;
     rb_design_factor_result f;
     rb_derived dv;
-    block_model(&m);
+    thesis_block_model(&m);
     block_pulse(&m, &mo, &o);
     rb_model_derive(&m, &dv, NULL);
     rb_criteria_init(&c); /* no break, no overturn: for a block, no overturn */
@@ -69,7 +50,7 @@ static void factor_finds_overturn_threshold(void)
     CHECK(rb_design_factor(&m, &mo, &o, &c, &d, 0, &f, NULL) == RB_OK);
     /* K in A*: a = K g alpha, A* = W b / (M h) for a block without bolts */
     double to_astar = dv.g * dv.alpha / dv.a_uplift_mps2;
-    double k = eq_2_17(7.0);
+    double k = thesis_eq_2_17(7.0);
     printf("block: level %.5f A*, fails at %.5f A* (eq. 2.17: %.5f A*), factor %.4f, "
            "%ld runs (%ld scan, %ld bisection, %ld speculative)\n", f.level_astar,
            f.fail_astar, k * to_astar, f.factor, f.runs, f.scan_runs, f.bisect_runs,
@@ -198,7 +179,7 @@ static void invalid_requests(void)
     CHECK(rb_gap_recommend(&m, &mo, NULL, &c, &d, 1, &g, &diag) == RB_ERR_INVALID);
     CHECK(g.points == NULL);
     rb_design_opts_defaults(&d);
-    block_model(&block);
+    thesis_block_model(&block);
     CHECK(rb_gap_recommend(&block, &mo, NULL, &c, &d, 1, &g, &diag) == RB_ERR_INVALID);
     mo.kind = RB_MOTION_SAMPLED;
     mo.series = &empty;
@@ -458,12 +439,12 @@ static void amplitude_sweep_block(void)
     rb_sweep_opts o;
     rb_sweep s;
     rb_derived dv;
-    block_model(&m);
+    thesis_block_model(&m);
     block_pulse(&m, &mo, &so);
     rb_model_derive(&m, &dv, NULL);
     rb_criteria_init(&c);
     rb_sweep_opts_init(&o, RB_SWEEP_AMPLITUDE);
-    double kt = eq_2_17(7.0) * dv.g * dv.alpha / dv.a_uplift_mps2;
+    double kt = thesis_eq_2_17(7.0) * dv.g * dv.alpha / dv.a_uplift_mps2;
     /* no point on the threshold itself: there the block reaches alpha
      * asymptotically, and whether it goes over is integration noise (the
      * two integrators at rtol 1e-10 stop 2e-5 alpha apart) */

@@ -11,6 +11,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include "harness.h"
+#include "thesis_block.h"
 #include "rockbolt/solve.h"
 
 /* |a - b| over the larger of the two, 0 when both are equal (or both 0) */
@@ -276,35 +277,13 @@ static void closed_forms(void)
 
 /* ---- The rigid block of Table 2.2 ---------------------------------------- */
 
-/* 2b = 0.5 m, 2h = 1.2 m, delta = 0.778, free-standing, as in
- * test_rigid_block and test_design */
-static void block_model(rb_model *m)
-{
-    rb_model_init(m);
-    m->mass_kg = 100;
-    m->cm_height_m = 0.6;
-    m->half_width_m = 0.25;
-    m->rigid = 1;
-    m->bolt_model = RB_BOLT_NONE;
-    m->restitution = 0.778;
-    m->inertia_kgm2 = 4.0 / 3.0 * m->mass_kg * (0.6 * 0.6 + 0.25 * 0.25);
-}
-
-/* eq. 2.17: normalised overturning amplitude K = a / (g alpha) */
-static double eq_2_17(double pt1)
-{
-    double c1 = 2 * sinh(pt1) / pt1 - 2;
-    double c2 = 2 * sinh(pt1) / pt1 + (2 - 2 * cosh(pt1)) / (pt1 * pt1) - 1;
-    return (c1 + sqrt(c1 * c1 + 4 * c2)) / (2 * c2);
-}
-
 static void rigid_block(void)
 {
     rb_model m;
     rb_derived d;
-    block_model(&m);
+    thesis_block_model(&m);
     rb_model_derive(&m, &d, NULL);
-    double p = sqrt(d.W * d.R / d.Io), k_crit = eq_2_17(7.0);
+    double p = sqrt(d.W * d.R / d.Io), k_crit = thesis_eq_2_17(7.0);
     /* K = 1.160 and 1.170, either side of eq. 2.17's 1.1665 for the
      * triangular-decreasing pulse with p t1 = 7 */
     static const double K[2] = {1.160, 1.170};
