@@ -168,7 +168,7 @@ double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double
     int rocking = D->stage == RB_STAGE_UPLIFT;
     load_consts(S, &K);
     s.xd = rb_motion_taylor(S->motion, t0, RB_TAYLOR_MAX + 1, s.X);
-    for (int k = 0; k <= RB_TAYLOR_MAX + 1; k++)
+    for (int k = 0; k <= s.xd; k++) /* the rest are zeros */
         s.X[k] *= sgn;
     s.U[0] = sgn * y0[RB_Y_U];
     s.V[0] = sgn * y0[RB_Y_UD];
