@@ -120,7 +120,10 @@ void rb_track_interval(rb_solver *sv, const rb_rk_step *st, double ta, double tb
 {
     double prev[RB_NY] = {0}, cur[RB_NY] = {0}, y[RB_NY] = {0};
     int n = st->n_sub;
-    rb_rk_dense_state(st, ta, prev);
+    if (ta == st->t0)
+        memcpy(prev, st->y0, sizeof prev);
+    else
+        rb_rk_dense_state(st, ta, prev);
     for (int j = 1; j <= n; j++) {
         double t0 = ta + (tb - ta) * (j - 1) / n, t1 = ta + (tb - ta) * j / n;
         if (ys)
@@ -129,8 +132,15 @@ void rb_track_interval(rb_solver *sv, const rb_rk_step *st, double ta, double tb
             rb_rk_dense_state(st, t1, cur);
         static const int rates[2] = {RB_Y_UD, RB_Y_THD};
         for (int k = 0; k < 2; k++) {
-            int c = rates[k];
-            if ((prev[c] < 0) != (cur[c] < 0)) {
+            int c = rates[k], pc = c == RB_Y_UD ? RB_Y_U : RB_Y_TH;
+            if ((prev[c] < 0) == (cur[c] < 0))
+                continue;
+            /* the root only matters for a new peak: over a check interval
+             * (an eighth of the fastest period) the rate is monotone about
+             * its zero, so the displacement there stays within this bound */
+            double bound = fmax(fabs(prev[pc]), fabs(cur[pc]))
+                           + (t1 - t0) * (fabs(prev[c]) + fabs(cur[c]));
+            if (bound > (c == RB_Y_UD ? sv->res->max_u_m : sv->res->max_theta_rad)) {
                 rb_rk_dense_state(st, dense_root(st, c, t0, t1, prev[c], cur[c]), y);
                 note_displacements(sv, y);
             }
