@@ -34,22 +34,30 @@ static void load_consts(const rb_sys *S, consts *k)
     k->small = S->form == RB_FORM_SMALL;
 }
 
-/* The mirrored series: U, V = U', T = theta, O = theta', the floor
- * acceleration X (polynomial of degree xd), C = cos theta, S = sin theta,
- * Q = theta'^2. */
+/* The mirrored series: U, V = U', T = theta, the floor acceleration X
+ * (polynomial of degree xd), Q = theta'^2, and cos theta, sin theta and
+ * theta' side by side (CSO[k] = {C, S, O, 0}): the three convolutions with
+ * theta' that each order needs are then one pass of independent lanes. */
+enum { LC, LS, LO, LANES };
 typedef struct {
-    double U[NT], V[NT], T[NT], O[NT], X[NT], C[NT], S[NT], Q[NT];
+    double U[NT], V[NT], T[NT], X[NT], Q[NT];
+    double CSO[NT][LANES + 1];
     int xd;
 } series;
 
-/* sum_j a[j] X[k - j]: X has nothing past degree xd (1 for a record) */
-static inline double times_x(const double *a, const series *s, int k)
+#define C_(s, k) ((s)->CSO[k][LC])
+#define S_(s, k) ((s)->CSO[k][LS])
+#define O_(s, k) ((s)->CSO[k][LO])
+
+/* sum_j a[j] X[k - j], a read with a stride of 'stride' doubles: X has
+ * nothing past degree xd (1 for a record) */
+static inline double times_x(const double *a, int stride, const series *s, int k)
 {
     if (s->xd <= 1)
-        return a[k] * s->X[0] + (k > 0 ? a[k - 1] * s->X[1] : 0);
+        return a[k * stride] * s->X[0] + (k > 0 ? a[(k - 1) * stride] * s->X[1] : 0);
     double sum = 0;
     for (int j = k > s->xd ? k - s->xd : 0; j <= k; j++)
-        sum += a[j] * s->X[k - j];
+        sum += a[j * stride] * s->X[k - j];
     return sum;
 }
 
@@ -58,32 +66,34 @@ static inline double times_x(const double *a, const series *s, int k)
  * to order k: one pass over theta' gives all three. */
 static void rocking_order(const consts *K, series *s, int k, double *udd, double *thdd)
 {
-    double q0 = 0, q1 = 0, sc = 0, ss = 0;
+    /* two sets of accumulators halve the chain of dependent additions */
+    double a0[LANES + 1] = {0}, a1[LANES + 1] = {0};
     int j = 0;
     for (; j + 1 <= k; j += 2) {
-        q0 += s->O[j] * s->O[k - j];
-        q1 += s->O[j + 1] * s->O[k - j - 1];
-        sc += s->O[j] * s->C[k - j] + s->O[j + 1] * s->C[k - j - 1];
-        ss += s->O[j] * s->S[k - j] + s->O[j + 1] * s->S[k - j - 1];
+        double o0 = O_(s, j), o1 = O_(s, j + 1);
+        const double *p0 = s->CSO[k - j], *p1 = s->CSO[k - j - 1];
+        for (int i = 0; i <= LANES; i++) {
+            a0[i] += o0 * p0[i];
+            a1[i] += o1 * p1[i];
+        }
     }
-    if (j == k) {
-        q0 += s->O[k] * s->O[0];
-        sc += s->O[k] * s->C[0];
-        ss += s->O[k] * s->S[0];
-    }
-    s->Q[k] = q0 + q1;
-    s->S[k + 1] = sc / (k + 1);
-    s->C[k + 1] = -ss / (k + 1);
+    if (j == k)
+        for (int i = 0; i <= LANES; i++)
+            a0[i] += O_(s, k) * s->CSO[0][i];
+    s->Q[k] = a0[LO] + a1[LO];
+    S_(s, k + 1) = (a0[LC] + a1[LC]) / (k + 1);
+    C_(s, k + 1) = -(a0[LS] + a1[LS]) / (k + 1);
     double RU, Rth;
     if (K->small) {
         RU = K->Ns * (s->X[k] + K->g * s->T[k]) - K->Ks * s->U[k] - K->Cs * s->V[k]
              - K->Ns * K->b * s->Q[k];
         Rth = K->M * K->R * s->X[k] + K->W * K->R * (s->T[k] - (k == 0 ? K->alpha : 0));
     } else {
-        double XC = times_x(s->C, s, k), XS = times_x(s->S, s, k);
-        RU = K->Ns * (XC + K->g * s->S[k]) - K->Ks * s->U[k] - K->Cs * s->V[k]
+        double XC = times_x(&s->CSO[0][LC], LANES + 1, s, k);
+        double XS = times_x(&s->CSO[0][LS], LANES + 1, s, k);
+        RU = K->Ns * (XC + K->g * S_(s, k)) - K->Ks * s->U[k] - K->Cs * s->V[k]
              - K->Ns * K->b * s->Q[k];
-        Rth = K->M * (K->h * XC + K->b * XS) - K->W * (K->b * s->C[k] - K->h * s->S[k]);
+        Rth = K->M * (K->h * XC + K->b * XS) - K->W * (K->b * C_(s, k) - K->h * S_(s, k));
     }
     if (K->rigid) {
         *udd = 0;
@@ -101,7 +111,7 @@ static double still_order(const consts *K, const series *s, int k)
     if (K->rigid)
         return 0;
     double QU = K->small ? K->Ns * (s->X[k] + (k == 0 ? K->g * s->T[0] : 0))
-                         : K->Ns * (s->X[k] * s->C[0] + (k == 0 ? K->g * s->S[0] : 0));
+                         : K->Ns * (s->X[k] * C_(s, 0) + (k == 0 ? K->g * S_(s, 0) : 0));
     return (QU - K->Ks * s->U[k] - K->Cs * s->V[k]) / K->Ms;
 }
 
@@ -111,40 +121,44 @@ static double still_order(const consts *K, const series *s, int k)
 static void work_series(const consts *K, const series *s, int rocking, int n,
                         double (*w)[3])
 {
-    double F[NT], G[NT];
-    /* coupling factor N* (g sin - b theta'^2), per unit U'; the still
-     * stages' is a constant */
-    for (int k = 0; k < n; k++)
-        F[k] = K->Ns * (K->g * (K->small ? s->T[k] : s->S[k])
-                        - (rocking ? K->b * s->Q[k] : 0));
+    /* U' side by side with what it multiplies: itself (damping), cos theta
+     * (input) and the coupling factor N* (g sin - b theta'^2) per unit U',
+     * so one pass of independent lanes forms the three products */
+    enum { WV, WC, WF, WL };
+    double P[NT][WL + 1], G[NT];
     for (int k = 0; k < n; k++) {
-        double vv = 0, vc, vf;
-        /* U'^2 is symmetric: half the products */
-        for (int j = 0; 2 * j < k; j++)
-            vv += s->V[j] * s->V[k - j];
-        vv = 2 * vv + (k % 2 == 0 ? s->V[k / 2] * s->V[k / 2] : 0);
+        P[k][WV] = s->V[k];
+        P[k][WC] = C_(s, k);
+        P[k][WF] = K->Ns * (K->g * (K->small ? s->T[k] : S_(s, k))
+                            - (rocking ? K->b * s->Q[k] : 0));
+        P[k][WL] = 0;
+    }
+    for (int k = 0; k < n; k++) {
+        double acc[WL + 1] = {0};
         if (rocking) {
-            vc = vf = 0;
-            for (int j = 0; j <= k; j++) {
-                vc += s->V[j] * s->C[k - j];
-                vf += s->V[j] * F[k - j];
-            }
+            for (int j = 0; j <= k; j++)
+                for (int i = 0; i <= WL; i++)
+                    acc[i] += s->V[j] * P[k - j][i];
         } else {
             /* the still stages' angle and its factors are constants */
-            vc = s->V[k] * s->C[0];
-            vf = s->V[k] * F[0];
+            double vv = 0;
+            for (int j = 0; j <= k; j++)
+                vv += s->V[j] * s->V[k - j];
+            acc[WV] = vv;
+            acc[WC] = s->V[k] * P[0][WC];
+            acc[WF] = s->V[k] * P[0][WF];
         }
         /* input power per unit floor acceleration: N* cos U' + M (h cos +
          * b sin) theta'; the second is the derivative of M (h sin - b cos) */
         if (K->small)
-            G[k] = K->Ns * s->V[k] + (rocking ? K->M * K->R * s->O[k] : 0);
+            G[k] = K->Ns * s->V[k] + (rocking ? K->M * K->R * O_(s, k) : 0);
         else
-            G[k] = K->Ns * (rocking ? vc : s->V[k] * s->C[0])
-                   + (rocking ? K->M * (k + 1) * (K->h * s->S[k + 1] - K->b * s->C[k + 1])
+            G[k] = K->Ns * acc[WC]
+                   + (rocking ? K->M * (k + 1) * (K->h * S_(s, k + 1) - K->b * C_(s, k + 1))
                               : 0);
-        w[k + 1][0] = K->Cs * vv / (k + 1);
-        w[k + 1][1] = times_x(G, s, k) / (k + 1);
-        w[k + 1][2] = vf / (k + 1);
+        w[k + 1][0] = K->Cs * acc[WV] / (k + 1);
+        w[k + 1][1] = times_x(G, 1, s, k) / (k + 1);
+        w[k + 1][2] = acc[WF] / (k + 1);
     }
 }
 
@@ -155,7 +169,7 @@ static inline double max2(double a, double b) { return a > b || a != a ? a : b; 
 static double scaled(const series *s, int k, double hk, const double *tol)
 {
     double e = max2(max2(fabs(s->U[k]) * tol[RB_Y_U], fabs(s->V[k]) * tol[RB_Y_UD]),
-                    max2(fabs(s->T[k]) * tol[RB_Y_TH], fabs(s->O[k]) * tol[RB_Y_THD]));
+                    max2(fabs(s->T[k]) * tol[RB_Y_TH], fabs(O_(s, k)) * tol[RB_Y_THD]));
     return e * hk;
 }
 
@@ -173,9 +187,10 @@ double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double
     s.U[0] = sgn * y0[RB_Y_U];
     s.V[0] = sgn * y0[RB_Y_UD];
     s.T[0] = rocking ? sgn * y0[RB_Y_TH] : D->stage == RB_STAGE_HELD ? D->theta_hold : 0;
-    s.O[0] = rocking ? sgn * y0[RB_Y_THD] : 0;
-    s.C[0] = s.T[0] == 0 ? 1 : cos(s.T[0]);
-    s.S[0] = s.T[0] == 0 ? 0 : sin(s.T[0]);
+    O_(&s, 0) = rocking ? sgn * y0[RB_Y_THD] : 0;
+    C_(&s, 0) = s.T[0] == 0 ? 1 : cos(s.T[0]);
+    S_(&s, 0) = s.T[0] == 0 ? 0 : sin(s.T[0]);
+    s.CSO[0][LANES] = 0;
     /* reciprocals: the test runs once per order */
     for (int i = RB_Y_U; i <= RB_Y_THD; i++)
         tol[i] = 1 / (atol[i] + rtol * fabs(y0[i]));
@@ -188,12 +203,13 @@ double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double
             rocking_order(&K, &s, k, &udd, &thdd);
         else {
             udd = still_order(&K, &s, k);
-            s.C[k + 1] = s.S[k + 1] = s.Q[k] = 0;
+            C_(&s, k + 1) = S_(&s, k + 1) = s.Q[k] = 0;
         }
         s.U[k + 1] = s.V[k] / (k + 1);
         s.V[k + 1] = udd / (k + 1);
-        s.T[k + 1] = rocking ? s.O[k] / (k + 1) : 0;
-        s.O[k + 1] = thdd / (k + 1);
+        s.T[k + 1] = rocking ? O_(&s, k) / (k + 1) : 0;
+        O_(&s, k + 1) = thdd / (k + 1);
+        s.CSO[k + 1][LANES] = 0;
         n = k + 1;
         hk *= h;
         double e = scaled(&s, n, hk, tol);
@@ -232,17 +248,17 @@ double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double
         for (int k = 0; k <= n; k++) {
             double *p = ts->p[k];
             p[RB_TS_TH] = sgn * s.T[k];
-            p[RB_TS_THD] = sgn * s.O[k];
-            p[RB_TS_COS] = s.C[k];
-            p[RB_TS_SIN] = s.S[k];
+            p[RB_TS_THD] = sgn * O_(&s, k);
+            p[RB_TS_COS] = C_(&s, k);
+            p[RB_TS_SIN] = S_(&s, k);
         }
         for (int k = 0; k < n; k++)
-            ts->p[k][RB_TS_THDD] = sgn * (k + 1) * s.O[k + 1];
+            ts->p[k][RB_TS_THDD] = sgn * (k + 1) * O_(&s, k + 1);
     } else {
         ts->p[0][RB_TS_TH] = y0[RB_Y_TH];
         ts->p[0][RB_TS_THD] = y0[RB_Y_THD];
-        ts->p[0][RB_TS_COS] = s.C[0];
-        ts->p[0][RB_TS_SIN] = s.S[0];
+        ts->p[0][RB_TS_COS] = C_(&s, 0);
+        ts->p[0][RB_TS_SIN] = S_(&s, 0);
     }
     ts->rocking = rocking;
     ts->order = n;
