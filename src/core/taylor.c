@@ -4,10 +4,17 @@
  * edge), with the same equations as rb_dyn_rhs, and the series are stored
  * in the physical frame, so that the mirror of a run is exact. */
 #include <math.h>
-#include <string.h>
 #include "taylor.h"
 
 enum { NT = RB_TAYLOR_MAX + 2 };
+
+/* 1 / k: a multiplication in the recurrences instead of a division, which
+ * costs several times as much and was the largest single item of a step */
+#define INV4(k) 1.0 / (k), 1.0 / ((k) + 1), 1.0 / ((k) + 2), 1.0 / ((k) + 3)
+static const double inv[NT + 2] = {
+    0, INV4(1), INV4(5), INV4(9), INV4(13), INV4(17), INV4(21), INV4(25), INV4(29),
+    1.0 / 33, 1.0 / 34, 1.0 / 35,
+};
 
 int rb_taylor_applies(const rb_sys *S, const rb_disc *D)
 {
@@ -19,7 +26,7 @@ int rb_taylor_applies(const rb_sys *S, const rb_disc *D)
 }
 
 typedef struct {
-    double Ns, Ks, Cs, Ms, Fs, Io, det, W, R, alpha, g, M, b, h;
+    double Ns, Ks, Cs, Ms, Fs, Io, inv_det, inv_Io, inv_Ms, W, R, alpha, g, M, b, h;
     int rigid, small;
 } consts;
 
@@ -29,7 +36,9 @@ static void load_consts(const rb_sys *S, consts *k)
     k->Ns = d->Nstar; k->Ks = d->Kstar; k->Cs = d->Cstar; k->Ms = d->Mstar;
     k->Fs = d->Fstar; k->Io = d->Io; k->W = d->W; k->R = d->R; k->alpha = d->alpha;
     k->g = d->g; k->M = S->M; k->b = S->b; k->h = S->h;
-    k->det = d->Mstar * d->Io - d->Fstar * d->Fstar;
+    k->inv_det = 1 / (d->Mstar * d->Io - d->Fstar * d->Fstar);
+    k->inv_Io = 1 / d->Io;
+    k->inv_Ms = 1 / d->Mstar;
     k->rigid = S->model->rigid;
     k->small = S->form == RB_FORM_SMALL;
 }
@@ -81,8 +90,8 @@ static void rocking_order(const consts *K, series *s, int k, double *udd, double
         for (int i = 0; i <= LANES; i++)
             a0[i] += O_(s, k) * s->CSO[0][i];
     s->Q[k] = a0[LO] + a1[LO];
-    S_(s, k + 1) = (a0[LC] + a1[LC]) / (k + 1);
-    C_(s, k + 1) = -(a0[LS] + a1[LS]) / (k + 1);
+    S_(s, k + 1) = (a0[LC] + a1[LC]) * inv[k + 1];
+    C_(s, k + 1) = -(a0[LS] + a1[LS]) * inv[k + 1];
     double RU, Rth;
     if (K->small) {
         RU = K->Ns * (s->X[k] + K->g * s->T[k]) - K->Ks * s->U[k] - K->Cs * s->V[k]
@@ -97,10 +106,10 @@ static void rocking_order(const consts *K, series *s, int k, double *udd, double
     }
     if (K->rigid) {
         *udd = 0;
-        *thdd = Rth / K->Io;
+        *thdd = Rth * K->inv_Io;
     } else {
-        *udd = (K->Io * RU - K->Fs * Rth) / K->det;
-        *thdd = (K->Ms * Rth - K->Fs * RU) / K->det;
+        *udd = (K->Io * RU - K->Fs * Rth) * K->inv_det;
+        *thdd = (K->Ms * Rth - K->Fs * RU) * K->inv_det;
     }
 }
 
@@ -112,7 +121,7 @@ static double still_order(const consts *K, const series *s, int k)
         return 0;
     double QU = K->small ? K->Ns * (s->X[k] + (k == 0 ? K->g * s->T[0] : 0))
                          : K->Ns * (s->X[k] * C_(s, 0) + (k == 0 ? K->g * S_(s, 0) : 0));
-    return (QU - K->Ks * s->U[k] - K->Cs * s->V[k]) / K->Ms;
+    return (QU - K->Ks * s->U[k] - K->Cs * s->V[k]) * K->inv_Ms;
 }
 
 /* The work integrals' series to order n: these do not feed back into the
@@ -156,9 +165,9 @@ static void work_series(const consts *K, const series *s, int rocking, int n,
             G[k] = K->Ns * acc[WC]
                    + (rocking ? K->M * (k + 1) * (K->h * S_(s, k + 1) - K->b * C_(s, k + 1))
                               : 0);
-        w[k + 1][0] = K->Cs * acc[WV] / (k + 1);
-        w[k + 1][1] = times_x(G, 1, s, k) / (k + 1);
-        w[k + 1][2] = acc[WF] / (k + 1);
+        w[k + 1][0] = K->Cs * acc[WV] * inv[k + 1];
+        w[k + 1][1] = times_x(G, 1, s, k) * inv[k + 1];
+        w[k + 1][2] = acc[WF] * inv[k + 1];
     }
 }
 
@@ -205,10 +214,10 @@ double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double
             udd = still_order(&K, &s, k);
             C_(&s, k + 1) = S_(&s, k + 1) = s.Q[k] = 0;
         }
-        s.U[k + 1] = s.V[k] / (k + 1);
-        s.V[k + 1] = udd / (k + 1);
-        s.T[k + 1] = rocking ? O_(&s, k) / (k + 1) : 0;
-        O_(&s, k + 1) = thdd / (k + 1);
+        s.U[k + 1] = s.V[k] * inv[k + 1];
+        s.V[k + 1] = udd * inv[k + 1];
+        s.T[k + 1] = rocking ? O_(&s, k) * inv[k + 1] : 0;
+        O_(&s, k + 1) = thdd * inv[k + 1];
         s.CSO[k + 1][LANES] = 0;
         n = k + 1;
         hk *= h;
@@ -230,35 +239,32 @@ double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double
     w[0][0] = y0[RB_Y_WDAMP];
     w[0][1] = y0[RB_Y_WIN];
     w[0][2] = y0[RB_Y_WCPL];
-    /* back to the physical frame; still stages keep theta as it was */
-    memset(ts->p, 0, (size_t)(n + 1) * sizeof ts->p[0]);
+    /* back to the physical frame, every component of every order written
+     * (the still stages keep theta as it was); the accelerations are the
+     * derivatives of the rates' series */
     for (int k = 0; k <= n; k++) {
         double *p = ts->p[k];
         p[RB_TS_U] = sgn * s.U[k];
         p[RB_TS_UD] = sgn * s.V[k];
         p[RB_TS_X] = sgn * s.X[k];
+        p[RB_TS_UDD] = k < n ? sgn * (k + 1) * s.V[k + 1] : 0;
         p[RB_TS_WDAMP] = w[k][0];
         p[RB_TS_WIN] = w[k][1];
         p[RB_TS_WCPL] = w[k][2];
-    }
-    /* the accelerations: derivatives of the rates' series */
-    for (int k = 0; k < n; k++)
-        ts->p[k][RB_TS_UDD] = sgn * (k + 1) * s.V[k + 1];
-    if (rocking) {
-        for (int k = 0; k <= n; k++) {
-            double *p = ts->p[k];
+        if (rocking) {
             p[RB_TS_TH] = sgn * s.T[k];
             p[RB_TS_THD] = sgn * O_(&s, k);
             p[RB_TS_COS] = C_(&s, k);
             p[RB_TS_SIN] = S_(&s, k);
-        }
-        for (int k = 0; k < n; k++)
-            ts->p[k][RB_TS_THDD] = sgn * (k + 1) * O_(&s, k + 1);
-    } else {
-        ts->p[0][RB_TS_TH] = y0[RB_Y_TH];
-        ts->p[0][RB_TS_THD] = y0[RB_Y_THD];
-        ts->p[0][RB_TS_COS] = C_(&s, 0);
-        ts->p[0][RB_TS_SIN] = S_(&s, 0);
+            p[RB_TS_THDD] = k < n ? sgn * (k + 1) * O_(&s, k + 1) : 0;
+        } else if (k == 0) {
+            p[RB_TS_TH] = y0[RB_Y_TH];
+            p[RB_TS_THD] = y0[RB_Y_THD];
+            p[RB_TS_COS] = C_(&s, 0);
+            p[RB_TS_SIN] = S_(&s, 0);
+            p[RB_TS_THDD] = 0;
+        } else
+            p[RB_TS_TH] = p[RB_TS_THD] = p[RB_TS_COS] = p[RB_TS_SIN] = p[RB_TS_THDD] = 0;
     }
     ts->rocking = rocking;
     ts->order = n;
