@@ -205,9 +205,10 @@ static double locate(rb_solver *sv, const rb_rk_step *st, int guard, double a, d
         /* Newton on the angle's series lands on the root to rounding;
          * the time returned must read as crossed, so step over it if the
          * root itself rounds to the near side */
-        double tol = 1e-13 * (1 + fabs(b));
+        double tol = 1e-13 * (1 + fabs(b)), side = sv->disc.side;
+        /* an angle guard is theta - level in the mirrored frame */
         double x = st->t0 + rb_taylor_angle_root(&st->ts, a - st->t0, b - st->t0, level,
-                                                 0.125 * tol);
+                                                 side * ga, side * gb, 0.125 * tol);
         for (int k = 0; k < 8 && x < b; k++) {
             rb_rk_dense_state(st, x, y);
             double gx = rb_guard_one(sv, guard, x, y);

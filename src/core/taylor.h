@@ -67,10 +67,11 @@ void rb_taylor_aux(const rb_sys *S, const rb_disc *D, const rb_taylor *ts, const
 double rb_taylor_rate_root(const rb_taylor *ts, int c, double a, double b, double fa,
                            double fb, double tol);
 
-/* Where theta (physical) passes level in [a, b] (tau): Newton's method on
- * theta and theta', kept inside the bracket, to tol in tau. */
+/* Where theta (physical) passes level in [a, b] (tau), theta - level
+ * being fa and fb at the ends (either may be nudged off zero): Newton's
+ * method on theta and theta', kept inside the bracket, to tol in tau. */
 double rb_taylor_angle_root(const rb_taylor *ts, double a, double b, double level,
-                            double tol);
+                            double fa, double fb, double tol);
 
 /* The end of the step: state, derivative and aux, as rb_dyn_rhs gives them. */
 void rb_taylor_end(const rb_sys *S, const rb_disc *D, const rb_taylor *ts, double h,

@@ -185,21 +185,26 @@ static double newton_root(const rb_taylor *ts, int i, int di, double level, doub
     return x;
 }
 
+/* The secant through the bracket's ends, or its middle when the secant
+ * hugs an end (a value nudged off zero there): Newton then starts within a
+ * few per cent of the root and converges in about three iterations. */
+static double start_in(double a, double b, double fa, double fb)
+{
+    double x = (a * fb - b * fa) / (fb - fa);
+    return x > a + 1e-3 * (b - a) && x < b - 1e-3 * (b - a) ? x : 0.5 * (a + b);
+}
+
 double rb_taylor_rate_root(const rb_taylor *ts, int c, double a, double b, double fa,
                            double fb, double tol)
 {
-    double x = (a * fb - b * fa) / (fb - fa);
-    if (!(x > a && x < b))
-        x = 0.5 * (a + b);
     return newton_root(ts, c == RB_Y_UD ? RB_TS_UD : RB_TS_THD,
-                       c == RB_Y_UD ? RB_TS_UDD : RB_TS_THDD, 0, a, b, x,
+                       c == RB_Y_UD ? RB_TS_UDD : RB_TS_THDD, 0, a, b, start_in(a, b, fa, fb),
                        fb != 0 ? fb > 0 : !(fa > 0), tol);
 }
 
 double rb_taylor_angle_root(const rb_taylor *ts, double a, double b, double level,
-                            double tol)
+                            double fa, double fb, double tol)
 {
-    int b_positive = rb_taylor_one(ts, b, RB_Y_TH) - level > 0;
-    return newton_root(ts, RB_TS_TH, RB_TS_THD, level, a, b, 0.5 * (a + b), b_positive,
-                       tol);
+    return newton_root(ts, RB_TS_TH, RB_TS_THD, level, a, b, start_in(a, b, fa, fb),
+                       fb != 0 ? fb > 0 : !(fa > 0), tol);
 }
