@@ -171,15 +171,15 @@ static void work_series(const consts *K, const series *s, int rocking, int n,
     }
 }
 
-/* a NaN wins, so that a non-finite series is caught */
-static inline double max2(double a, double b) { return a > b || a != a ? a : b; }
-
-/* Largest scaled size of the order-k coefficients over a step of hk = h^k. */
+/* Largest scaled size of the order-k coefficients over a step of hk = h^k.
+ * Plain comparisons make branch-free maxima, which drop a NaN; the product
+ * 0 * sum keeps a NaN or an infinity, so a non-finite series is caught. */
 static double scaled(const series *s, int k, double hk, const double *tol)
 {
-    double e = max2(max2(fabs(s->U[k]) * tol[RB_Y_U], fabs(s->V[k]) * tol[RB_Y_UD]),
-                    max2(fabs(s->T[k]) * tol[RB_Y_TH], fabs(O_(s, k)) * tol[RB_Y_THD]));
-    return e * hk;
+    double a = fabs(s->U[k]) * tol[RB_Y_U], b = fabs(s->V[k]) * tol[RB_Y_UD];
+    double c = fabs(s->T[k]) * tol[RB_Y_TH], d = fabs(O_(s, k)) * tol[RB_Y_THD];
+    double ab = a > b ? a : b, cd = c > d ? c : d;
+    return (ab > cd ? ab : cd) * hk + 0.0 * (a + b + c + d);
 }
 
 double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double *y0,
