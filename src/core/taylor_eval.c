@@ -150,15 +150,19 @@ void rb_taylor_end(const rb_sys *S, const rb_disc *D, const rb_taylor *ts, doubl
     f1[RB_Y_WCPL] = a->p_coupling;
 }
 
-/* Root of series i minus level in [a, b], starting from x, with di its
- * derivative series: Newton's method kept inside the bracket, whose
- * orientation (the sign beyond the root, at b) is given, since the near end
- * can sit exactly on the level. */
+/* Root of series i minus level in [a, b], where it is fa and fb, starting
+ * from x, with di its derivative series: Newton's method kept inside the
+ * bracket. Its orientation (the sign beyond the root, at b) comes from fb,
+ * or from fa when b is the root, since the near end can sit exactly on the
+ * level. Where Newton leaves the bracket (the rising side of a hop, whose
+ * derivative points away from the landing) the Illinois secant of the
+ * bracket's ends takes over; halving the bracket there took up to 40
+ * iterations. */
 static double newton_root(const rb_taylor *ts, int i, int di, double level, double a,
-                          double b, double x, int b_positive, double tol)
+                          double b, double fa, double fb, double x, double tol)
 {
     const double (*p)[RB_TS_N] = (const double (*)[RB_TS_N])ts->p;
-    int n = ts->order;
+    int n = ts->order, b_positive = fb != 0 ? fb > 0 : !(fa > 0), kept = 0;
     for (int it = 0; it < 60; it++) {
         double f = p[n][i], df = p[n][di];
         for (int k = n - 1; k >= 0; k--) {
@@ -168,13 +172,27 @@ static double newton_root(const rb_taylor *ts, int i, int di, double level, doub
         f -= level;
         if (f == 0)
             return x;
-        if ((f > 0) == b_positive)
+        /* kept: the end the last move left alone (-1 a, 1 b), whose value
+         * the Illinois rule halves when it is left alone twice */
+        if ((f > 0) == b_positive) {
             b = x;
-        else
+            fb = f;
+            if (kept == -1)
+                fa *= 0.5;
+            kept = -1;
+        } else {
             a = x;
+            fa = f;
+            if (kept == 1)
+                fb *= 0.5;
+            kept = 1;
+        }
         double next = x - f / df;
-        if (!(next > a && next < b))
-            next = 0.5 * (a + b);
+        if (!(next > a && next < b)) {
+            next = (a * fb - b * fa) / (fb - fa);
+            if (!(next > a && next < b))
+                next = 0.5 * (a + b);
+        }
         /* quadratic convergence: a step this small lands within the
          * tolerance of the root */
         int done = fabs(next - x) <= tol || b - a <= tol;
@@ -198,13 +216,13 @@ double rb_taylor_rate_root(const rb_taylor *ts, int c, double a, double b, doubl
                            double fb, double tol)
 {
     return newton_root(ts, c == RB_Y_UD ? RB_TS_UD : RB_TS_THD,
-                       c == RB_Y_UD ? RB_TS_UDD : RB_TS_THDD, 0, a, b, start_in(a, b, fa, fb),
-                       fb != 0 ? fb > 0 : !(fa > 0), tol);
+                       c == RB_Y_UD ? RB_TS_UDD : RB_TS_THDD, 0, a, b, fa, fb,
+                       start_in(a, b, fa, fb), tol);
 }
 
 double rb_taylor_angle_root(const rb_taylor *ts, double a, double b, double level,
                             double fa, double fb, double tol)
 {
-    return newton_root(ts, RB_TS_TH, RB_TS_THD, level, a, b, start_in(a, b, fa, fb),
-                       fb != 0 ? fb > 0 : !(fa > 0), tol);
+    return newton_root(ts, RB_TS_TH, RB_TS_THD, level, a, b, fa, fb, start_in(a, b, fa, fb),
+                       tol);
 }

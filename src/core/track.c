@@ -133,7 +133,9 @@ void rb_track_interval(rb_solver *sv, const rb_rk_step *st, double ta, double tb
         static const int rates[2] = {RB_Y_UD, RB_Y_THD};
         for (int k = 0; k < 2; k++) {
             int c = rates[k], pc = c == RB_Y_UD ? RB_Y_U : RB_Y_TH;
-            if ((prev[c] < 0) == (cur[c] < 0))
+            /* a rate that is zero at a check point (theta' at an uplift)
+             * has its extremum there, where the state was noted */
+            if ((prev[c] < 0) == (cur[c] < 0) || prev[c] == 0 || cur[c] == 0)
                 continue;
             /* the root only matters for a new peak: over a check interval
              * (an eighth of the fastest period) the rate is monotone about
