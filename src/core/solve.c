@@ -265,9 +265,10 @@ static int find_event(rb_solver *sv, const rb_rk_step *st, const double *g0,
     memcpy(ga, g0, sizeof ga);
     rb_guard_nudge(ga);
     int n = st->n_sub;
+    double dt = st->h / n;
     for (int j = 1; j <= n; j++) {
-        double ta = st->t0 + st->h * (j - 1) / n;
-        double tb = j == n ? st->t1 : st->t0 + st->h * j / n;
+        double ta = st->t0 + dt * (j - 1);
+        double tb = j == n ? st->t1 : st->t0 + dt * j;
         rb_guard_eval(sv, tb, ys[j - 1], gb);
         int best = -1;
         double tbest = HUGE_VAL;
@@ -361,13 +362,14 @@ static rb_status advance(rb_solver *sv, rb_rk_step *st, double *g, rb_diag *diag
     /* the check points serve the guards and the peaks alike */
     double ys[RB_SUB_MAX][RB_NY];
     int n = st->n_sub;
+    double dt = st->h / n;
     for (int j = 1; j < n; j++) {
         if (st->is_taylor) {
             /* guards read the state, tracking the rest */
-            rb_taylor_check(&st->ts, st->h * j / n, st->vcheck[j - 1]);
+            rb_taylor_check(&st->ts, dt * j, st->vcheck[j - 1]);
             memcpy(ys[j - 1], st->vcheck[j - 1], 4 * sizeof ys[0][0]);
         } else
-            rb_rk_dense_state(st, st->t0 + st->h * j / n, ys[j - 1]);
+            rb_rk_dense_state(st, st->t0 + dt * j, ys[j - 1]);
     }
     memcpy(ys[n - 1], st->y1, sizeof ys[0]);
     /* the step end and its derivative (the next step's first stage) */

@@ -124,8 +124,10 @@ void rb_track_interval(rb_solver *sv, const rb_rk_step *st, double ta, double tb
         memcpy(prev, st->y0, sizeof prev);
     else
         rb_rk_dense_state(st, ta, prev);
+    /* one division per step: they are slow enough to show in a profile */
+    double dt = (tb - ta) / n;
     for (int j = 1; j <= n; j++) {
-        double t0 = ta + (tb - ta) * (j - 1) / n, t1 = ta + (tb - ta) * j / n;
+        double t0 = ta + dt * (j - 1), t1 = j == n ? tb : ta + dt * j;
         if (ys)
             memcpy(cur, ys[j - 1], sizeof cur);
         else
