@@ -47,12 +47,12 @@ static int rb_read_harmonic(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
     m->kind = RB_MOTION_HARMONIC;
     cm->amplitude_node = rb_cmotion_accel(c, map, p, "amplitude", 1, &cm->amplitude);
     ok &= cm->amplitude_node != NULL;
-    ok &= rb_cv_number(c, map, p, "frequency", 1, RB_DIM_FREQUENCY, 0, 0, NAN, 0,
+    ok &= rb_cv_number(c, map, p, "frequency", 1, RB_DIM_FREQUENCY, 0, 0, (double)NAN, 0,
                        &m->freq_hz) != NULL;
-    ok &= rb_cv_number(c, map, p, "duration", 1, RB_DIM_TIME, 0, 0, NAN, 0,
+    ok &= rb_cv_number(c, map, p, "duration", 1, RB_DIM_TIME, 0, 0, (double)NAN, 0,
                        &m->duration_s) != NULL;
     if (rb_ymap_find(map, "ramp"))
-        ok &= rb_cv_number(c, map, p, "ramp", 0, RB_DIM_TIME, 0, 1, NAN, 0,
+        ok &= rb_cv_number(c, map, p, "ramp", 0, RB_DIM_TIME, 0, 1, (double)NAN, 0,
                            &m->ramp_s) != NULL;
     rb_cv_unknown_keys(c, map, p, rb_harmonic_keys);
     return ok;
@@ -78,9 +78,9 @@ static int rb_read_pulse(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
         ok = 0;
     cm->amplitude_node = rb_cmotion_accel(c, map, p, "amplitude", 1, &cm->amplitude);
     ok &= cm->amplitude_node != NULL;
-    ok &= rb_cv_number(c, map, p, "duration", 1, RB_DIM_TIME, 0, 0, NAN, 0,
+    ok &= rb_cv_number(c, map, p, "duration", 1, RB_DIM_TIME, 0, 0, (double)NAN, 0,
                        &m->pulse_s) != NULL;
-    ok &= rb_cv_number(c, map, p, "run_time", 1, RB_DIM_TIME, 0, 0, NAN, 0,
+    ok &= rb_cv_number(c, map, p, "run_time", 1, RB_DIM_TIME, 0, 0, (double)NAN, 0,
                        &m->duration_s) != NULL;
     rb_cv_unknown_keys(c, map, p, rb_pulse_keys);
     return ok;
@@ -119,7 +119,7 @@ static int rb_read_building(rb_cctx *c, rb_ynode *v, rb_cmotion *cm)
     rb_case_keypath(k, cm->key, "building");
     if (!rb_cv_map(c, v, k))
         return 0;
-    int ok = rb_cv_number(c, v, k, "frequency", 1, RB_DIM_FREQUENCY, 0, 0, NAN,
+    int ok = rb_cv_number(c, v, k, "frequency", 1, RB_DIM_FREQUENCY, 0, 0, (double)NAN,
                           0, &cm->building_freq_hz) != NULL;
     ok &= rb_cv_number(c, v, k, "damping", 1, RB_DIM_RATIO, 0, 1, 1, 0,
                        &cm->building_damping) != NULL;
@@ -182,7 +182,7 @@ static int rb_read_record(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
     if ((v = rb_cv_get(c, map, p, "units", 0, "")))
         ok &= rb_read_record_units(c, v, cm);
     if (rb_ymap_find(map, "dt"))
-        ok &= rb_cv_number(c, map, p, "dt", 0, RB_DIM_TIME, 0, 0, NAN, 0,
+        ok &= rb_cv_number(c, map, p, "dt", 0, RB_DIM_TIME, 0, 0, (double)NAN, 0,
                            &cm->ropts.dt_s) != NULL;
     if ((v = rb_cv_get(c, map, p, "building", 0, "")))
         ok &= rb_read_building(c, v, cm);
@@ -194,7 +194,7 @@ static int rb_read_record(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
         ok &= rb_read_window(c, v, cm);
     if (rb_ymap_find(map, "run_time")) {
         cm->has_duration = 1;
-        ok &= rb_cv_number(c, map, p, "run_time", 0, RB_DIM_TIME, 0, 0, NAN, 0,
+        ok &= rb_cv_number(c, map, p, "run_time", 0, RB_DIM_TIME, 0, 0, (double)NAN, 0,
                            &m->duration_s) != NULL;
     }
     rb_cv_unknown_keys(c, map, p, rb_record_keys);

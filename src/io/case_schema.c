@@ -87,22 +87,22 @@ static void rb_read_equipment(rb_cctx *c, rb_ynode *eq, rb_model *m)
 {
     const char *p = "equipment";
     double x;
-    rb_field(c, eq, p, "mass", "mass", 1, RB_DIM_MASS, 0, 0, NAN, 0, &m->mass_kg);
+    rb_field(c, eq, p, "mass", "mass", 1, RB_DIM_MASS, 0, 0, (double)NAN, 0, &m->mass_kg);
     int which = rb_one_of(c, eq, p, "height", "cm_height", 1,
                           "the total height, or the height of the centre of mass");
     if (which < 0)
         c->model_errors++;
     else if (rb_field(c, eq, p, which ? "cm_height" : "height", "cm_height", 1,
-                      RB_DIM_LENGTH, 0, 0, NAN, 0, &x))
+                      RB_DIM_LENGTH, 0, 0, (double)NAN, 0, &x))
         m->cm_height_m = which ? x : x / 2;
     if (rb_field(c, eq, p, "base_width", "half_width", 1, RB_DIM_LENGTH, 0, 0,
-                 NAN, 0, &x))
+                 (double)NAN, 0, &x))
         m->half_width_m = x / 2;
     rb_ynode *v = rb_cv_get(c, eq, p, "rigid", 0, "");
     if (v && !rb_cv_bool(c, v, "equipment.rigid", &m->rigid))
         c->model_errors++;
     rb_field(c, eq, p, "frequency", "frequency", !m->rigid, RB_DIM_FREQUENCY,
-             0, 0, NAN, 0, &m->freq_hz);
+             0, 0, (double)NAN, 0, &m->freq_hz);
     rb_field(c, eq, p, "damping", "damping", !m->rigid, RB_DIM_RATIO, 0, 1, 1,
              0, &m->damping);
     v = rb_cv_get(c, eq, p, "restitution", 0, "");
@@ -111,7 +111,7 @@ static void rb_read_equipment(rb_cctx *c, rb_ynode *eq, rb_model *m)
     else if (v)
         rb_field(c, eq, p, "restitution", "restitution", 0, RB_DIM_RATIO, 0, 0,
                  1, 1, &m->restitution);
-    rb_field(c, eq, p, "inertia", "inertia", 0, RB_DIM_INERTIA, 0, 0, NAN, 0,
+    rb_field(c, eq, p, "inertia", "inertia", 0, RB_DIM_INERTIA, 0, 0, (double)NAN, 0,
              &m->inertia_kgm2);
     rb_cv_unknown_keys(c, eq, p, rb_equipment_keys);
 }
@@ -130,7 +130,7 @@ static void rb_read_lever_arm(rb_cctx *c, rb_ynode *an, rb_model *m)
     }
     const char *key = which ? "edge_distance" : "lever_arm";
     const rb_ynode *v = rb_field(c, an, p, key, "lever_arm", 1, RB_DIM_LENGTH,
-                                 which ? 0 : NAN, 0, NAN, 0, &x);
+                                 which ? 0 : (double)NAN, 0, (double)NAN, 0, &x);
     if (!v)
         return;
     m->lever_arm_m = which ? width - x : x;
@@ -178,21 +178,21 @@ static void rb_read_anchorage(rb_cctx *c, rb_ynode *an, rb_model *m)
     int which = rb_one_of(c, an, p, "diameter", "area", 1,
                           "the bolt diameter, or its tensile area");
     if (which == 0 && rb_field(c, an, p, "diameter", "bolt_area", 1,
-                               RB_DIM_LENGTH, 0, 0, NAN, 0, &x))
+                               RB_DIM_LENGTH, 0, 0, (double)NAN, 0, &x))
         m->bolt_area_m2 = RB_PI * x * x / 4;
     else if (which == 1)
-        rb_field(c, an, p, "area", "bolt_area", 1, RB_DIM_AREA, 0, 0, NAN, 0,
+        rb_field(c, an, p, "area", "bolt_area", 1, RB_DIM_AREA, 0, 0, (double)NAN, 0,
                  &m->bolt_area_m2);
     else if (which < 0)
         c->model_errors++;
     rb_field(c, an, p, "yield_stress", "yield_stress", 1, RB_DIM_STRESS, 0, 0,
-             NAN, 0, &m->yield_stress_pa);
+             (double)NAN, 0, &m->yield_stress_pa);
     rb_field(c, an, p, "toughness", "toughness", 1, RB_DIM_ENERGY_DENSITY, 0,
-             0, NAN, 0, &m->toughness_jpm3);
+             0, (double)NAN, 0, &m->toughness_jpm3);
     rb_field(c, an, p, "deformable_length", "deformable_length", 1,
-             RB_DIM_LENGTH, 0, 0, NAN, 0, &m->deformable_length_m);
+             RB_DIM_LENGTH, 0, 0, (double)NAN, 0, &m->deformable_length_m);
     rb_field(c, an, p, "elastic_modulus", "elastic_modulus", 0, RB_DIM_STRESS,
-             0, 0, NAN, 0, &m->elastic_modulus_pa);
+             0, 0, (double)NAN, 0, &m->elastic_modulus_pa);
     rb_read_lever_arm(c, an, m);
     rb_cv_unknown_keys(c, an, p, rb_anchorage_keys);
 }
@@ -211,7 +211,7 @@ static void rb_read_gap(rb_cctx *c, rb_ynode *root, rb_model *m)
     if (which < 0) {
         c->model_errors++;
     } else if (which == 0) {
-        rb_field(c, root, "", "gap", "gap", 1, RB_DIM_LENGTH, 0, 1, NAN, 0,
+        rb_field(c, root, "", "gap", "gap", 1, RB_DIM_LENGTH, 0, 1, (double)NAN, 0,
                  &m->gap_m);
     } else if (rb_field(c, root, "", "gap_ratio", "gap", 1, RB_DIM_RATIO, 0, 1,
                         1, 0, &c->gap_ratio)) {
@@ -228,12 +228,12 @@ static void rb_read_criteria(rb_cctx *c, rb_ynode *cr, rb_criteria *k)
     rb_ynode *v = rb_cv_get(c, cr, p, "kind", 0, "");
     if (v && rb_cv_enum(c, v, "criteria.kind", kinds, &i))
         k->kind = i == 0 ? RB_CRIT_NO_YIELD : RB_CRIT_NO_BREAK;
-    rb_cv_number(c, cr, p, "usage_limit", 0, RB_DIM_RATIO, 0, 0, NAN, 0,
+    rb_cv_number(c, cr, p, "usage_limit", 0, RB_DIM_RATIO, 0, 0, (double)NAN, 0,
                  &k->usage_limit);
-    rb_cv_number(c, cr, p, "max_shear_over_w", 0, RB_DIM_RATIO, 0, 1, NAN, 0,
+    rb_cv_number(c, cr, p, "max_shear_over_w", 0, RB_DIM_RATIO, 0, 1, (double)NAN, 0,
                  &k->max_shear_over_w);
     rb_cv_number(c, cr, p, "max_rotation_over_alpha", 0, RB_DIM_RATIO, 0, 1,
-                 NAN, 0, &k->max_theta_over_alpha);
+                 (double)NAN, 0, &k->max_theta_over_alpha);
     rb_cv_unknown_keys(c, cr, p, rb_criteria_keys);
 }
 
@@ -255,7 +255,7 @@ static void rb_read_analysis(rb_cctx *c, rb_ynode *an, rb_case *cs)
         cs->solve.integrator = ik[i];
     rb_cv_number(c, an, p, "tolerance", 0, RB_DIM_RATIO, 0, 0, 0.01, 1,
                  &cs->solve.rtol);
-    rb_cv_number(c, an, p, "output_interval", 0, RB_DIM_TIME, 0, 0, NAN, 0, &dt);
+    rb_cv_number(c, an, p, "output_interval", 0, RB_DIM_TIME, 0, 0, (double)NAN, 0, &dt);
     v = rb_cv_get(c, an, p, "history", 0, "");
     if (v && rb_cv_bool(c, v, "analysis.history", &b)) {
         cs->write_history = b;

@@ -10,7 +10,7 @@
 double rb_report_ratio(double a, double b)
 {
     if (!isfinite(a) || !isfinite(b) || b <= 0)
-        return NAN;
+        return (double)NAN;
     return a / b;
 }
 

@@ -55,7 +55,7 @@ void rb_report_suite_compute(const rb_report *r, rb_report_suite *s)
     memset(s, 0, sizeof *s);
     for (k = 0; k < RB_SUITE_N; k++) {
         s->mean[k] = 0;
-        s->max[k] = NAN;
+        s->max[k] = (double)NAN;
     }
     for (i = 0; i < r->n_motions; i++) {
         double v[RB_SUITE_N], d;

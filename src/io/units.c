@@ -105,6 +105,9 @@ const char *rb_dim_units(rb_dim dim)
 
 /* A message in msg (if any), always RB_ERR_PARSE. */
 static rb_status rb_unit_fail(char *msg, size_t size, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+
+static rb_status rb_unit_fail(char *msg, size_t size, const char *fmt, ...)
 {
     if (msg && size) {
         va_list ap;
