@@ -75,6 +75,9 @@ typedef struct {
     double max_shear_elastic_n;   /* GA (pi/4h) U = N* omega^2 U (frame shear) */
     double max_shear_total_n;     /* horizontal floor reaction on the body */
     double max_friction_demand;   /* max |horizontal| / vertical floor reaction */
+    /* least vertical floor reaction: where it nears zero the friction demand
+     * has no bound, and the base is close to leaving the floor */
+    double min_vertical_reaction_n;
     double max_bolt_force_n[2];   /* [RB_LEFT], [RB_RIGHT] */
     /* per bolt row */
     double final_gap_m[2];

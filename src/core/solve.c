@@ -124,6 +124,7 @@ static void fill_constants(rb_solver *sv, const rb_motion *motion)
     r->a_star_mps2 = S->d.a_star_mps2;
     r->a_uplift_mps2 = S->d.a_uplift_mps2;
     r->peak_floor_mps2 = rb_motion_peak(motion);
+    r->min_vertical_reaction_n = HUGE_VAL; /* the first point sets it */
     r->u_static_m = S->model->rigid ? 0
                     : M_PI * M_PI * r->peak_floor_mps2 / (8 * S->d.omega * S->d.omega);
     r->alpha_rad = S->d.alpha;

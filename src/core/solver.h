@@ -50,7 +50,7 @@ typedef struct {
     long hist_k;                /* next history row is at hist_k * dt */
     /* sampled peaks of |shear|, friction demand and bolt force, reset at
      * every transition (a peak is only interpolated where it is smooth) */
-    rb_peak_window win_shear, win_friction, win_bolt;
+    rb_peak_window win_shear, win_friction, win_bolt, win_vertical;
     int done;
 } rb_solver;
 

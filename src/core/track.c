@@ -50,7 +50,7 @@ static double peak_push(rb_peak_window *w, double t, double v)
 
 void rb_track_reset(rb_solver *sv)
 {
-    sv->win_shear.n = sv->win_friction.n = sv->win_bolt.n = 0;
+    sv->win_shear.n = sv->win_friction.n = sv->win_bolt.n = sv->win_vertical.n = 0;
 }
 
 void rb_track_aux(rb_solver *sv, double t, const double *y, const rb_aux *a)
@@ -66,9 +66,18 @@ void rb_track_aux(rb_solver *sv, double t, const double *y, const rb_aux *a)
     }
     rb_dyn_reactions(S, &sv->disc, y, a, &H, &V);
     r->max_shear_total_n = fmax(r->max_shear_total_n, peak_push(&sv->win_shear, t, fabs(H)));
-    if (V > 0)
+    /* V is what floor and bolt give together; the floor presses on the
+     * plate with that plus the tension of a loaded bolt, which pulls the
+     * plate onto it, and friction works with the floor's share alone.
+     * Without the tension V crosses zero wherever a bolt takes up the
+     * uplift, and the ratio there had no bound. */
+    double floor_v = V + (a->bolt_force > 0 ? a->bolt_force : 0);
+    /* a least value is the peak of its negative */
+    r->min_vertical_reaction_n = fmin(r->min_vertical_reaction_n,
+                                      -peak_push(&sv->win_vertical, t, -floor_v));
+    if (floor_v > 0)
         r->max_friction_demand = fmax(r->max_friction_demand,
-                                      peak_push(&sv->win_friction, t, fabs(H) / V));
+                                      peak_push(&sv->win_friction, t, fabs(H) / floor_v));
     else
         sv->win_friction.n = 0;
 }

@@ -28,6 +28,7 @@ void rb_report_norms_compute(const rb_report *r, const rb_report_motion *m,
     n->shear_elastic_over_v0 = rb_report_ratio(res->max_shear_elastic_n, n->v0_n);
     n->shear_total_over_w = rb_report_ratio(res->max_shear_total_n, w);
     n->shear_total_over_v0 = rb_report_ratio(res->max_shear_total_n, n->v0_n);
+    n->min_vertical_over_w = rb_report_ratio(res->min_vertical_reaction_n, w);
     for (s = 0; s < 2; s++) {
         n->force_over_fy[s] = rb_report_ratio(res->max_bolt_force_n[s], res->fy_row_n);
         n->final_gap_ratio[s] = rb_report_ratio(res->final_gap_m[s], l);

@@ -14,6 +14,7 @@ typedef struct {
     double peak_over_a_star;     /* a / A* */
     double shear_elastic_over_w, shear_elastic_over_v0;
     double shear_total_over_w, shear_total_over_v0;
+    double min_vertical_over_w;  /* least vertical floor reaction / W */
     double force_over_fy[2];     /* max bolt force / Fy_row */
     double final_gap_ratio[2];   /* final gap / l */
 } rb_report_norms;

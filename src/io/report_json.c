@@ -161,6 +161,8 @@ static void add_peaks(rb_jctx *cx, cJSON *res_o, const rb_result *r,
     rb_j_norm(cx, o, "max_shear_total_over_w", n->shear_total_over_w);
     rb_j_norm(cx, o, "max_shear_total_over_v0", n->shear_total_over_v0);
     rb_j_num(cx, o, "max_friction_demand", r->max_friction_demand);
+    rb_j_num(cx, o, "min_vertical_reaction_n", r->min_vertical_reaction_n);
+    rb_j_norm(cx, o, "min_vertical_reaction_over_w", n->min_vertical_over_w);
     rb_j_pair(cx, o, "max_bolt_force_n", r->max_bolt_force_n);
     rb_j_pair_norm(cx, o, "max_bolt_force_over_fy", n->force_over_fy);
 }

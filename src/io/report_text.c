@@ -111,6 +111,7 @@ static void motion_head_vars(rb_tvars *t, const rb_report *r, size_t i,
     rb_tv_num(t, "shear_total_over_v0", n->shear_total_over_v0);
     rb_tv_num(t, "v0_kn", n->v0_n * 1e-3);
     rb_tv_num(t, "friction_demand", res->max_friction_demand);
+    rb_tv_num(t, "min_vertical_over_w", n->min_vertical_over_w);
 }
 
 /* Per-row values as name_left / name_right. */
