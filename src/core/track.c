@@ -68,9 +68,7 @@ void rb_track_aux(rb_solver *sv, double t, const double *y, const rb_aux *a)
     r->max_shear_total_n = fmax(r->max_shear_total_n, peak_push(&sv->win_shear, t, fabs(H)));
     /* V is what floor and bolt give together; the floor presses on the
      * plate with that plus the tension of a loaded bolt, which pulls the
-     * plate onto it, and friction works with the floor's share alone.
-     * Without the tension V crosses zero wherever a bolt takes up the
-     * uplift, and the ratio there had no bound. */
+     * plate onto it, and friction works with the floor's share alone. */
     double floor_v = V + (a->bolt_force > 0 ? a->bolt_force : 0);
     /* a least value is the peak of its negative */
     r->min_vertical_reaction_n = fmin(r->min_vertical_reaction_n,
