@@ -51,6 +51,11 @@ static void below_uplift_equals_sdof(void)
     CHECK_NEAR(worst / umax, 0, 1e-6);
     CHECK_REL(r.max_u_m, umax, 1e-6);
     CHECK(r.history && r.history->n == 801);
+    /* with theta = 0 the floor carries the weight and nothing more
+     * vertically (1e-12: rounding only), so the friction demand is the
+     * total shear over W, from the same samples and parabola vertices */
+    CHECK_REL(r.min_vertical_reaction_n, r.weight_n, 1e-12);
+    CHECK_REL(r.max_friction_demand, r.max_shear_total_n / r.weight_n, 1e-12);
     rb_result_free(&r);
 }
 
