@@ -13,6 +13,11 @@
 
 /* Largest scan grid accepted: a guard against a step of 1e-12. */
 #define RB_SCAN_MAX_POINTS 100000
+/* Most halvings of the bracket: one scan step halved 200 times is far
+ * below the spacing of doubles, so a resolution finer than doubles can
+ * resolve ends here (or sooner, where a midpoint equals an end) instead of
+ * looping for ever. The case loader refuses such resolutions up front. */
+#define RB_BISECT_MAX_HALVINGS 200
 
 typedef struct {
     const rb_design_ctx *ctx;
@@ -112,7 +117,11 @@ static rb_status scan(factor_search *s, const rb_design_opts *d, rb_diag *diag)
 static rb_status bisect(factor_search *s, double res, rb_diag *diag)
 {
     rb_design_factor_result *out = s->out;
-    while (s->hi - s->lo > res) {
+    long halvings = 0;
+    /* the bracket can be split while its midpoint lies strictly inside */
+#define RB_SPLITTABLE(lo, hi) ((hi) - (lo) > res && 0.5 * ((lo) + (hi)) > (lo) \
+                               && 0.5 * ((lo) + (hi)) < (hi))
+    while (RB_SPLITTABLE(s->lo, s->hi) && halvings < RB_BISECT_MAX_HALVINGS) {
         double lo_k[64], hi_k[64];
         size_t m = s->nt < 63 ? s->nt : 63, depth = 0;
         /* no deeper than the halvings still needed: deeper nodes are waste */
@@ -134,7 +143,8 @@ static rb_status bisect(factor_search *s, double res, rb_diag *diag)
         if (st != RB_OK)
             return st;
         size_t used = 0;
-        for (size_t k = 0; k < m && s->hi - s->lo > res; used++) {
+        for (size_t k = 0; k < m && RB_SPLITTABLE(s->lo, s->hi)
+                           && halvings < RB_BISECT_MAX_HALVINGS; used++, halvings++) {
             const rb_design_run *run = &s->runs[k];
             out->bisect_runs++;
             if ((st = check_run(run, s->levels[k], diag)) != RB_OK)
@@ -151,6 +161,7 @@ static rb_status bisect(factor_search *s, double res, rb_diag *diag)
         }
         out->runs_speculative += (long)(m - used);
     }
+#undef RB_SPLITTABLE
     return RB_OK;
 }
 

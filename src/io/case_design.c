@@ -205,6 +205,13 @@ void rb_case_read_design(rb_cctx *c, rb_ynode *d, rb_case *cs)
     rb_design_value(c, d, "design", "gap_ratio_min", 1, 0, &o->gap_ratio_min);
     rb_design_value(c, d, "design", "gap_ratio_max", 1, 0, &o->gap_ratio_max);
     rb_design_value(c, d, "design", "gap_ratio_step", 0, 0, &o->gap_ratio_step);
+    rb_yentry *re = rb_ymap_find(d, "resolution");
+    double finest = RB_DESIGN_MIN_RESOLUTION * (o->scan_end > 1 ? o->scan_end : 1);
+    if (re && o->resolution > 0 && o->resolution < finest)
+        rb_cctx_error(c, re->value, "design.resolution", "must be at least %g A* "
+                      "(1e-9 of the larger of 1 A* and scan_end): a finer bisection "
+                      "is below what double precision can tell apart (got '%s')",
+                      finest, re->value->text);
     if (o->scan_end < o->scan_start)
         rb_cctx_error(c, d, "design.scan_end", "must not be below scan_start "
                       "(%g < %g A*)", o->scan_end, o->scan_start);

@@ -37,6 +37,9 @@
 /* Samples in all the records of one case together: the reader's own cap
  * is per file, and 1000 motions may name the same large record. */
 #define RB_CASE_MAX_SAMPLES 10000000u
+/* design.resolution, relative to max(1 A*, scan_end): doubles near 1 are
+ * 2.2e-16 apart, so 1e-9 leaves the bisection seven digits to spare. */
+#define RB_DESIGN_MIN_RESOLUTION 1e-9
 
 typedef enum { RB_YNODE_SCALAR, RB_YNODE_MAP, RB_YNODE_SEQ } rb_ynode_kind;
 

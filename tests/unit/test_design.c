@@ -158,6 +158,35 @@ static void factor_finds_static_yield(void)
     }
 }
 
+/* A resolution finer than doubles can resolve (1e-18 A*: doubles near
+ * 0.04 are 6.9e-18 apart, so the bracket can never get that narrow) still
+ * ends: the bisection stops where
+ * a midpoint equals an end of the bracket, or after its bound on halvings.
+ * Before the bound this looped for ever; alarm() turns a hang into a
+ * failure. */
+static void factor_resolution_below_doubles_ends(void)
+{
+    rb_model m;
+    rb_motion mo;
+    rb_criteria c;
+    rb_design_opts d;
+    rb_design_factor_result f;
+    stiff_cabinet(&m, &mo, &c);
+    rb_design_opts_defaults(&d);
+    d.scan_start = 0.01;
+    d.scan_step = 0.01;
+    d.resolution = 1e-18;
+    alarm(60);
+    CHECK(rb_design_factor(&m, &mo, NULL, &c, &d, 2, &f, NULL) == RB_OK);
+    alarm(0);
+    printf("resolution 1e-18: level %.17g A*, fails at %.17g A*; %ld bisection runs\n",
+           f.level_astar, f.fail_astar, f.bisect_runs);
+    CHECK(!f.no_failure && f.level_astar < f.fail_astar);
+    /* one ulp apart (or the halving bound, 200): never more runs than that */
+    CHECK(f.bisect_runs <= 200);
+    CHECK(nextafter(f.level_astar, 1.0) == f.fail_astar);
+}
+
 static void invalid_requests(void)
 {
     rb_model m, block;
@@ -472,6 +501,7 @@ int main(void)
     factor_finds_overturn_threshold();
     factor_finds_uplift_level();
     factor_finds_static_yield();
+    factor_resolution_below_doubles_ends();
     invalid_requests();
     gap_search_known_rotation();
     elcentro_checks();
