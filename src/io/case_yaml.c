@@ -439,15 +439,18 @@ static rb_status rb_yaml_slurp(rb_cctx *c, const char *file, const rb_ynode *whe
         c->nomem = 1;
         return RB_ERR_NOMEM;
     }
+    errno = 0;
     *len = fread(*buf, 1, RB_CASE_MAX_FILE_BYTES + 1, f);
-    int err = ferror(f);
+    int err = ferror(f), eno = errno;
     fclose(f);
     if (err || *len > RB_CASE_MAX_FILE_BYTES) {
         free(*buf);
         *buf = NULL;
         if (err)
             rb_cctx_error_at(c, RB_ERR_IO, dfile, line, col, key,
-                             "cannot read '%s'", file);
+                             "cannot read '%s': %s", file,
+                             eno == EISDIR ? "it is a directory, not a case file"
+                             : strerror(eno ? eno : EIO));
         else
             rb_cctx_error_at(c, RB_ERR_LIMIT, dfile, line, col, key,
                              "'%s' is larger than the limit of 4 MiB for a "
