@@ -1,0 +1,178 @@
+/* Escaping of user text for every output (include/rockbolt/textsafe.h):
+ * one function for terminals and text files, one CSV field writer built on
+ * it. Everything that prints a name, tag, path or message from an input
+ * goes through these two. */
+#include <stdlib.h>
+#include <string.h>
+#include "rockbolt/textsafe.h"
+
+/* Length of a valid UTF-8 sequence at p (1 to 4), or 0 if invalid. */
+static size_t utf8_len(const unsigned char *p, unsigned *cp_out)
+{
+    unsigned cp;
+    size_t n;
+    if (p[0] < 0x80) {
+        *cp_out = p[0];
+        return 1;
+    }
+    if (p[0] >= 0xC2 && p[0] <= 0xDF) {
+        n = 2;
+        cp = p[0] & 0x1Fu;
+    } else if (p[0] >= 0xE0 && p[0] <= 0xEF) {
+        n = 3;
+        cp = p[0] & 0x0Fu;
+    } else if (p[0] >= 0xF0 && p[0] <= 0xF4) {
+        n = 4;
+        cp = p[0] & 0x07u;
+    } else {
+        return 0;
+    }
+    for (size_t i = 1; i < n; i++) {
+        if ((p[i] & 0xC0) != 0x80)   /* also stops at the NUL */
+            return 0;
+        cp = (cp << 6) | (p[i] & 0x3Fu);
+    }
+    if ((n == 3 && cp < 0x800) || (n == 4 && cp < 0x10000) || cp > 0x10FFFF
+        || (cp >= 0xD800 && cp <= 0xDFFF))
+        return 0;
+    *cp_out = cp;
+    return n;
+}
+
+/* The next character of s at *p: its shown form in rep (escaped or not)
+ * and its length there; advances *p. */
+static size_t next_char(const unsigned char **p, char rep[8])
+{
+    static const char hex[] = "0123456789abcdef";
+    const unsigned char *s = *p;
+    unsigned cp = 0;
+    size_t n = utf8_len(s, &cp);
+    if (n == 0) {                        /* not UTF-8: the byte in hex */
+        rep[0] = '\\';
+        rep[1] = 'x';
+        rep[2] = hex[s[0] >> 4];
+        rep[3] = hex[s[0] & 15];
+        *p = s + 1;
+        return 4;
+    }
+    *p = s + n;
+    if (cp == '\t' || cp == '\n' || cp == '\r') {
+        rep[0] = '\\';
+        rep[1] = cp == '\t' ? 't' : cp == '\n' ? 'n' : 'r';
+        return 2;
+    }
+    if (cp < 0x20 || cp == 0x7f) {
+        rep[0] = '\\';
+        rep[1] = 'x';
+        rep[2] = hex[cp >> 4];
+        rep[3] = hex[cp & 15];
+        return 4;
+    }
+    if (cp >= 0x80 && cp <= 0x9f) {      /* C1 controls, e.g. CSI 0x9b */
+        memcpy(rep, "\\u00", 4);
+        rep[4] = hex[cp >> 4];
+        rep[5] = hex[cp & 15];
+        return 6;
+    }
+    memcpy(rep, s, n);
+    return n;
+}
+
+size_t rb_text_escape_to(char *out, size_t size, const char *s)
+{
+    const unsigned char *p = (const unsigned char *)(s ? s : "");
+    size_t need = 0;
+    int full = size == 0;
+    char rep[8];
+    while (*p) {
+        size_t k = next_char(&p, rep);
+        if (!full && need + k < size)
+            memcpy(out + need, rep, k);
+        else if (!full) {
+            out[need] = '\0';
+            full = 1;
+        }
+        need += k;
+    }
+    if (!full)
+        out[need] = '\0';
+    return need;
+}
+
+const char *rb_text_escape_buf(const char *s, char *out, size_t size)
+{
+    rb_text_escape_to(out, size, s);
+    return out;
+}
+
+char *rb_text_escape(const char *s)
+{
+    size_t n = rb_text_escape_to(NULL, 0, s);
+    char *out = malloc(n + 1);
+    if (out)
+        rb_text_escape_to(out, n + 1, s);
+    return out;
+}
+
+int rb_text_needs_escape(const char *s)
+{
+    const unsigned char *p = (const unsigned char *)(s ? s : "");
+    char rep[8];
+    while (*p) {
+        const unsigned char *at = p;
+        size_t k = next_char(&p, rep);
+        if (k != (size_t)(p - at) || memcmp(rep, at, k) != 0)
+            return 1;
+    }
+    return 0;
+}
+
+/* Characters that make a spreadsheet read a cell as a formula (OWASP,
+ * "CSV injection"). */
+static int formula_start(char c)
+{
+    return c == '=' || c == '+' || c == '-' || c == '@' || c == '\t' || c == '\r';
+}
+
+char *rb_csv_field(const char *s, int always_quote)
+{
+    const char *raw = s ? s : "";
+    char *t = rb_text_escape(raw);
+    if (!t)
+        return NULL;
+    int guard = formula_start(raw[0]) || formula_start(t[0]);
+    int quote = always_quote || guard || strpbrk(t, ",\"") != NULL;
+    if (!quote)
+        return t;
+    size_t n = 0;
+    for (const char *p = t; *p; p++)
+        n += *p == '"' ? 2 : 1;
+    char *out = malloc(n + (size_t)guard + 3);
+    if (!out) {
+        free(t);
+        return NULL;
+    }
+    char *o = out;
+    *o++ = '"';
+    if (guard)
+        *o++ = '\'';
+    for (const char *p = t; *p; p++) {
+        if (*p == '"')
+            *o++ = '"';
+        *o++ = *p;
+    }
+    *o++ = '"';
+    *o = '\0';
+    free(t);
+    return out;
+}
+
+int rb_csv_field_write(FILE *fp, const char *s, int always_quote)
+{
+    char *f = rb_csv_field(s, always_quote);
+    if (!f)
+        return -1;
+    int bad = fputs(f, fp) == EOF;
+    free(f);
+    return bad ? -1 : 0;
+}

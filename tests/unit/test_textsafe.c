@@ -1,0 +1,76 @@
+/* The shared writers of user text (include/rockbolt/textsafe.h): control
+ * characters shown escaped, CSV fields guarded against formulas. */
+#include <stdlib.h>
+#include <string.h>
+#include "harness.h"
+#include "rockbolt/textsafe.h"
+
+static int esc_is(const char *in, const char *want)
+{
+    char *got = rb_text_escape(in);
+    int ok = got && strcmp(got, want) == 0;
+    if (!ok)
+        fprintf(stderr, "escape: got '%s', want '%s'\n", got ? got : "(null)", want);
+    free(got);
+    return ok;
+}
+
+static int csv_is(const char *in, const char *want)
+{
+    char *got = rb_csv_field(in, 0);
+    int ok = got && strcmp(got, want) == 0;
+    if (!ok)
+        fprintf(stderr, "csv: got '%s', want '%s'\n", got ? got : "(null)", want);
+    free(got);
+    return ok;
+}
+
+static void test_escape(void)
+{
+    CHECK(esc_is("plain name", "plain name"));
+    CHECK(esc_is("", ""));
+    CHECK(esc_is(NULL, ""));
+    /* the spoof of the issue: erase the line, draw PASS over FAIL */
+    CHECK(esc_is("x\x1b[2K\rPASS", "x\\x1b[2K\\rPASS"));
+    CHECK(esc_is("a\tb\nc", "a\\tb\\nc"));
+    CHECK(esc_is("\x01\x7f", "\\x01\\x7f"));
+    /* UTF-8 is kept, C1 controls (U+009B, CSI) and stray bytes are not */
+    CHECK(esc_is("P\xc3\xa9rez \xe2\x80\x94 ok", "P\xc3\xa9rez \xe2\x80\x94 ok"));
+    CHECK(esc_is("a\xc2\x9b" "2J", "a\\u009b2J"));
+    CHECK(esc_is("\x9b" "2J\xff", "\\x9b2J\\xff"));
+    CHECK(esc_is("back\\slash", "back\\slash"));
+    CHECK(rb_text_needs_escape("x\x1b") && !rb_text_needs_escape("plain \xc3\xa9"));
+    /* a fixed buffer never ends in half an escape */
+    char buf[6];
+    size_t n = rb_text_escape_to(buf, sizeof buf, "ab\x1b" "cd");
+    CHECK(n == 8 && strcmp(buf, "ab") == 0);
+    CHECK(strcmp(rb_text_escape_buf("abc", buf, sizeof buf), "abc") == 0);
+}
+
+static void test_csv(void)
+{
+    CHECK(csv_is("P-101", "P-101"));
+    CHECK(csv_is("P-103, spare", "\"P-103, spare\""));
+    CHECK(csv_is("say \"hi\"", "\"say \"\"hi\"\"\""));
+    /* formula starters get a quote inside a quoted field */
+    CHECK(csv_is("=HYPERLINK(\"http://x\",\"y\")", "\"'=HYPERLINK(\"\"http://x\"\",\"\"y\"\")\""));
+    CHECK(csv_is("+1+2", "\"'+1+2\""));
+    CHECK(csv_is("-1.5", "\"'-1.5\""));
+    CHECK(csv_is("@SUM(A1)", "\"'@SUM(A1)\""));
+    CHECK(csv_is("\t=1", "\"'\\t=1\""));
+    CHECK(csv_is("\r=1", "\"'\\r=1\""));
+    /* not at the start: harmless */
+    CHECK(csv_is("a=b", "a=b"));
+    /* control characters escaped, one row per line */
+    CHECK(csv_is("a\nb", "a\\nb"));
+    char *q = rb_csv_field("ok", 1);
+    CHECK(q && strcmp(q, "\"ok\"") == 0);
+    free(q);
+}
+
+int main(void)
+{
+    test_escape();
+    test_csv();
+    TEST_MAIN_END();
+}
