@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "batch_summary.h"
+#include "rockbolt/textsafe.h"
 
 static const char *upper_verdict(rb_batch_verdict v)
 {
@@ -38,20 +39,25 @@ static void text_case(rb_bbuf *b, const rb_batch_case *c, int design)
 {
     if (c->verdict != RB_BATCH_PASS && c->verdict != RB_BATCH_FAIL) {
         const rb_diag *e = &c->error;
-        rb_bbuf_printf(b, "%-24.24s %-18s %-10s ", c->tag, "-", upper_verdict(c->verdict));
-        rb_bbuf_printf(b, "%s", e->file);
+        char tag[128], file[1024], key[256], msg[1024];
+        rb_bbuf_printf(b, "%-24.24s %-18s %-10s ", rb_text_escape_buf(c->tag, tag, sizeof tag),
+                       "-", upper_verdict(c->verdict));
+        rb_bbuf_printf(b, "%s", rb_text_escape_buf(e->file, file, sizeof file));
         if (e->line > 0)
             rb_bbuf_printf(b, ":%d:%d", e->line, e->col);
-        rb_bbuf_printf(b, ": %s%s%s\n", e->key, e->key[0] ? ": " : "", e->msg);
+        rb_bbuf_printf(b, ": %s%s%s\n", rb_text_escape_buf(e->key, key, sizeof key),
+                       e->key[0] ? ": " : "", rb_text_escape_buf(e->msg, msg, sizeof msg));
         return;
     }
     size_t g = rb_batch_governing(c);
     for (size_t m = 0; m < c->n_runs; m++) {
         const rb_batch_result *r = &c->runs[m];
-        char motion[24];
+        char motion[24], name[24], tag[128];
+        rb_text_escape_buf(r->motion, name, sizeof name);
         snprintf(motion, sizeof motion, "%s%.17s", c->n_runs > 1 && m == g ? "*" : "",
-                 r->motion);
-        rb_bbuf_printf(b, "%-24.24s %-18s %-10s", m == 0 ? c->tag : "", motion,
+                 name);
+        rb_bbuf_printf(b, "%-24.24s %-18s %-10s",
+                       m == 0 ? rb_text_escape_buf(c->tag, tag, sizeof tag) : "", motion,
                        r->pass ? "pass" : "FAIL");
         text_nums(b, r->usage, r->shear_over_w, r->force_over_fy, r->theta_over_alpha,
                   design, r->has_factor, r->design_factor, r->factor_bound,
@@ -90,17 +96,16 @@ char *rb_batch_render_text(const rb_batch_summary *s)
     return rb_bbuf_take(&b);
 }
 
-/* A CSV field, quoted when it must be. */
+/* A CSV text field through the shared writer (escaped, formula-guarded). */
 static void csv_field(rb_bbuf *b, const char *s)
 {
-    if (!strpbrk(s, ",\"\n\r")) {
-        rb_bbuf_str(b, s);
+    char *f = rb_csv_field(s, 0);
+    if (!f) {
+        b->nomem = 1;
         return;
     }
-    rb_bbuf_str(b, "\"");
-    for (const char *p = s; *p; p++)
-        rb_bbuf_put(b, *p == '"' ? "\"\"" : p, *p == '"' ? 2 : 1);
-    rb_bbuf_str(b, "\"");
+    rb_bbuf_str(b, f);
+    free(f);
 }
 
 static void csv_head(rb_bbuf *b, const rb_batch_case *c, const char *motion,
@@ -129,7 +134,7 @@ char *rb_batch_render_csv(const rb_batch_summary *s)
             char err[1400];
             const rb_diag *e = &c->error;
             csv_head(&b, c, "", 0, rb_batch_verdict_str(c->verdict));
-            rb_bbuf_str(&b, s->design ? ",,,,,,," : ",,,,");
+            rb_bbuf_str(&b, s->design ? ",,,,,,,," : ",,,,,");
             if (e->line > 0)
                 snprintf(err, sizeof err, "%s:%d:%d: %s: %s", e->file, e->line, e->col,
                          e->key, e->msg);

@@ -7,6 +7,7 @@
 #include <string.h>
 #include <cjson/cJSON.h>
 #include "rockbolt/report.h"
+#include "rockbolt/textsafe.h"
 #include "design_internal.h"
 
 static const char *x_name(const rb_sweep *s)
@@ -24,12 +25,14 @@ rb_status rb_sweep_write_csv(const rb_sweep *s, FILE *fp)
         const rb_sweep_point *p = &s->points[i];
         /* %.10g keeps ten digits: more than any of these numbers carries */
         fprintf(fp, "%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,%.10g,"
-                "%d,%d,%d,%d,%d,%s,\"%s\"\n", p->x, p->freq_hz, p->peak_mps2,
+                "%d,%d,%d,%d,%d,%s,", p->x, p->freq_hz, p->peak_mps2,
                 p->level_astar, p->max_u_over_ustatic, p->max_force_over_fy[0],
                 p->max_force_over_fy[1], p->max_theta_over_alpha, p->usage[0],
                 p->usage[1], p->yielded[0], p->yielded[1], p->broken[0], p->broken[1],
-                p->overturned, p->meets < 0 ? "" : p->meets ? "1" : "0",
-                rb_status_str(p->status));
+                p->overturned, p->meets < 0 ? "" : p->meets ? "1" : "0");
+        if (rb_csv_field_write(fp, rb_status_str(p->status), 1) != 0)
+            return RB_ERR_IO;
+        fputc('\n', fp);
     }
     return ferror(fp) ? RB_ERR_IO : RB_OK;
 }

@@ -66,7 +66,7 @@ outputs)
     has "$s/b.csv" '^2,tests/batch/cases/c-suite.yaml,0,c-suite,strong,1,fail,fail,1,'
     has "$s/b.csv" '^2,tests/batch/cases/c-suite.yaml,0,c-suite,weak,0,pass,fail,'
     has "$s/b.csv" '^6,tests/batch/list.csv,5,"P-103, spare",motion,1,fail,fail,'
-    has "$s/b.csv" '^7,tests/batch/list.csv,6,P-104,,0,unreadable,unreadable,,,,"tests/batch/list.csv:6:26: '
+    has "$s/b.csv" '^7,tests/batch/list.csv,6,P-104,,0,unreadable,unreadable,,,,,"tests/batch/list.csv:6:26: '
     # JSON: counts, governing motion, mean and max of the suite
     has "$s/b.json" '"format":	"rockbolt-batch"'
     has "$s/b.json" '"unreadable":	4'
