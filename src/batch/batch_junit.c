@@ -6,10 +6,13 @@
 #include <stdlib.h>
 #include <string.h>
 #include "batch_summary.h"
+#include "rockbolt/textsafe.h"
 
-/* Text for XML content and attributes. Control characters other than tab
- * and newline are not allowed in XML 1.0 and are replaced. */
-static void xml_text(rb_bbuf *b, const char *s)
+/* Text for XML content and attributes: first the shared escaping of
+ * control characters (XML 1.0 allows none but tab and newline, and a
+ * reader should see them as \x1b, \r), then XML's own. Newlines that
+ * the summary itself puts between lines go through xml_raw. */
+static void xml_raw(rb_bbuf *b, const char *s)
 {
     for (const unsigned char *p = (const unsigned char *)s; *p; p++) {
         switch (*p) {
@@ -19,14 +22,24 @@ static void xml_text(rb_bbuf *b, const char *s)
         case '"': rb_bbuf_str(b, "&quot;"); break;
         case '\'': rb_bbuf_str(b, "&apos;"); break;
         case '\n': rb_bbuf_str(b, "&#10;"); break;
-        case '\t': rb_bbuf_str(b, "&#9;"); break;
         default:
             if (*p < 0x20 || *p == 0x7f)
-                rb_bbuf_str(b, "?");
+                rb_bbuf_str(b, "?");   /* unreachable after rb_text_escape */
             else
                 rb_bbuf_put(b, (const char *)p, 1);
         }
     }
+}
+
+static void xml_text(rb_bbuf *b, const char *s)
+{
+    char *t = rb_text_escape(s);
+    if (!t) {
+        b->nomem = 1;
+        return;
+    }
+    xml_raw(b, t);
+    free(t);
 }
 
 static void junit_case(rb_bbuf *b, const rb_batch_case *c)
@@ -50,10 +63,11 @@ static void junit_case(rb_bbuf *b, const rb_batch_case *c)
         for (size_t m = 0; m < c->n_runs; m++) {
             const rb_batch_result *r = &c->runs[m];
             char line[400];
-            snprintf(line, sizeof line, "%s: %s, usage %.3f, V/W %.3f, F/Fy %.3f, "
-                     "theta/alpha %.3f\n", r->motion, r->pass ? "pass" : "FAIL",
+            xml_text(b, r->motion);
+            snprintf(line, sizeof line, ": %s, usage %.3f, V/W %.3f, F/Fy %.3f, "
+                     "theta/alpha %.3f\n", r->pass ? "pass" : "FAIL",
                      r->usage, r->shear_over_w, r->force_over_fy, r->theta_over_alpha);
-            xml_text(b, line);
+            xml_raw(b, line);
         }
         rb_bbuf_str(b, "</failure>\n");
     } else {

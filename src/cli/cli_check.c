@@ -12,6 +12,7 @@
 #include <sys/stat.h>
 #include "cli.h"
 #include "rockbolt/plot.h"
+#include "rockbolt/textsafe.h"
 
 #define RB_HISTORY_DT_DEFAULT_S 0.01
 
@@ -405,10 +406,13 @@ rb_exit rb_cli_check_run(const rb_cli_opts *o)
     if (e == RB_EXIT_PASS)
         e = write_outputs(o, &r);
     if (e == RB_EXIT_PASS && !o->quiet) {
-        if (o->text_path)
-            printf("%s: %s\n", r.rep.pass ? "PASS" : "FAIL", r.rep.reason);
-        else
+        if (o->text_path) {
+            char reason[2048];
+            printf("%s: %s\n", r.rep.pass ? "PASS" : "FAIL",
+                   rb_text_escape_buf(r.rep.reason, reason, sizeof reason));
+        } else {
             fputs(r.text, stdout);
+        }
         if (fflush(stdout) != 0 || ferror(stdout)) {
             rb_cli_error(NULL, NULL, "cannot write the report to standard output");
             e = RB_EXIT_INTERNAL;

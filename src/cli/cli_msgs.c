@@ -4,19 +4,24 @@
 #include <stdarg.h>
 #include <stdio.h>
 #include "cli.h"
+#include "rockbolt/textsafe.h"
 
 void rb_cli_diag_print(const rb_diag *d)
 {
-    const char *file = d->file[0] ? d->file : "rockbolt";
+    /* file, key and message may hold text from an input: shown escaped */
+    char file[2048], key[512], msg[2048];
+    rb_text_escape_buf(d->file[0] ? d->file : "rockbolt", file, sizeof file);
+    rb_text_escape_buf(d->key, key, sizeof key);
+    rb_text_escape_buf(d->msg[0] ? d->msg : "unspecified error", msg, sizeof msg);
     if (d->line > 0 && d->col > 0)
         fprintf(stderr, "%s:%d:%d: error: ", file, d->line, d->col);
     else if (d->line > 0)
         fprintf(stderr, "%s:%d: error: ", file, d->line);
     else
         fprintf(stderr, "%s: error: ", file);
-    if (d->key[0])
-        fprintf(stderr, "%s: ", d->key);
-    fprintf(stderr, "%s\n", d->msg[0] ? d->msg : "unspecified error");
+    if (key[0])
+        fprintf(stderr, "%s: ", key);
+    fprintf(stderr, "%s\n", msg);
 }
 
 void rb_cli_error(const char *file, const char *key, const char *fmt, ...)

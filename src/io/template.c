@@ -14,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "rockbolt/report.h"
+#include "rockbolt/textsafe.h"
 
 #define TMPL_MAX_DEPTH 8   /* nested sections; the report needs two */
 #define TMPL_MAX_WIDTH 64
@@ -371,19 +372,35 @@ static int format_value(char *dst, size_t cap, const fspec *f, const rb_tvar *v)
     }
 }
 
+/* Strings (names, descriptions, reasons) can carry control characters
+ * from the case's YAML escapes: they are shown escaped, never sent. */
 static rb_status emit_var(strbuf *b, const tok *t, const rb_tscope *sc, rb_diag *diag)
 {
     const rb_tvar *v = find_var(sc, t->s, t->len);
+    rb_tvar esc;
+    char *shown = NULL;
     int n;
     if (!v)
         return fail(diag, t, "unknown name");
+    if (v->kind == RB_TVAL_STR && v->str && rb_text_needs_escape(v->str)) {
+        if (!(shown = rb_text_escape(v->str)))
+            return RB_ERR_NOMEM;
+        esc = *v;
+        esc.str = shown;
+        v = &esc;
+    }
     n = format_value(NULL, 0, &t->fmt, v);
-    if (n < 0)
+    if (n < 0) {
+        free(shown);
         return fail(diag, t, "format does not fit the kind of value");
-    if (!sb_reserve(b, (size_t)n))
+    }
+    if (!sb_reserve(b, (size_t)n)) {
+        free(shown);
         return RB_ERR_NOMEM;
+    }
     format_value(b->p + b->len, (size_t)n + 1, &t->fmt, v);
     b->len += (size_t)n;
+    free(shown);
     return RB_OK;
 }
 

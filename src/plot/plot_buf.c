@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "plot_internal.h"
+#include "rockbolt/textsafe.h"
 
 static int reserve(rb_sbuf *b, size_t more)
 {
@@ -129,7 +130,12 @@ void rb_sbuf_escape(rb_sbuf *b, const char *s)
         case '\t': case '\n': rb_sbuf_putn(b, (const char *)p, 1); p++; continue;
         default: break;
         }
-        if (*p < 0x20) {        /* not allowed in XML 1.0, even escaped */
+        if (*p < 0x20 || *p == 0x7f) {
+            /* not allowed in XML 1.0, even escaped: shown as the shared
+             * escaping of user text shows it (\x1b) */
+            char one[2] = {(char)*p, '\0'}, rep[8];
+            rb_text_escape_to(rep, sizeof rep, one);
+            rb_sbuf_puts(b, rep);
             p++;
             continue;
         }

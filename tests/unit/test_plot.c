@@ -309,7 +309,8 @@ static void test_html(void)
         return;
     CHECK(strncmp(html, "<!DOCTYPE html>\n<html xmlns=\"http://www.w3.org/1999/xhtml\"", 58) == 0);
     CHECK(strstr(html, "<title>a&lt;b&gt; &amp; &quot;c&quot;</title>") != NULL);
-    CHECK(strstr(html, "<pre class=\"report\">x &lt; y &amp;&amp; z\n\tw\xEF\xBF\xBD</pre>") != NULL);
+    /* a control character is shown as the shared escaping shows it */
+    CHECK(strstr(html, "<pre class=\"report\">x &lt; y &amp;&amp; z\n\tw\\x01\xEF\xBF\xBD</pre>") != NULL);
     CHECK(count(html, "<svg") == 2);
     CHECK(strstr(html, "<?xml") == NULL);
     /* nothing from outside the page */
