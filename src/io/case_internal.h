@@ -40,6 +40,27 @@
 /* design.resolution, relative to max(1 A*, scan_end): doubles near 1 are
  * 2.2e-16 apart, so 1e-9 leaves the bisection seven digits to spare. */
 #define RB_DESIGN_MIN_RESOLUTION 1e-9
+/* Ranges narrowed to what the solver takes (docs/robustness.md, "Limits
+ * of the model's inputs"): outside them runs overflowed, underflowed or
+ * chattered and stopped with exit 3, some only when a report was asked. */
+#define RB_CASE_MIN_FREQ_HZ 0.1          /* equipment.frequency */
+#define RB_CASE_MIN_BOLT_LENGTH_M 1e-3   /* anchorage.deformable_length */
+#define RB_CASE_MAX_BOLT_LENGTH_M 10.0
+#define RB_CASE_MIN_GAP_RATIO 1e-9       /* a gap is 0 or this much of l */
+#define RB_CASE_MIN_TOLERANCE 1e-13      /* what double precision can meet */
+#define RB_CASE_MIN_TIME_S 1e-3          /* durations, run times, ramps */
+#define RB_CASE_MIN_RECORD_PEAK 1e-6     /* m/s^2: a record scaled to `peak` */
+/* Work bounds, checked before anything is solved. One simulated hour is
+ * ten times the longest strong-motion records (a few minutes) and takes
+ * about half a second to solve; 1e5 s took 14 s and 1e9 s would take 40
+ * hours. */
+#define RB_CASE_MAX_RUN_S 3600.0         /* simulated time of one motion */
+#define RB_CASE_MIN_DT_S 1e-5            /* a record's sample interval */
+#define RB_CASE_MAX_DT_S 1.0
+/* History rows of all motions together, at the interval in effect (the
+ * case's output_interval, else 0.01 s): 10 million rows hold about 1 GB. */
+#define RB_CASE_MAX_HISTORY_ROWS 10000000.0
+#define RB_CASE_HISTORY_DT_DEFAULT_S 0.01
 
 typedef enum { RB_YNODE_SCALAR, RB_YNODE_MAP, RB_YNODE_SEQ } rb_ynode_kind;
 
@@ -113,6 +134,8 @@ typedef struct {
     rb_diag dropped;            /* the first of them */
     size_t n_samples;           /* record samples held, RB_CASE_MAX_SAMPLES */
     rb_record_cache *cache;     /* borrowed; NULL: read every record */
+    double history_dt_s;        /* output_interval, or the default */
+    const rb_ynode *history_dt_node; /* NULL: not given */
 } rb_cctx;
 
 /* --- case.c: diagnostics ------------------------------------------------ */
@@ -170,6 +193,11 @@ int rb_cv_enum(rb_cctx *c, const rb_ynode *v, const char *key,
 int rb_cv_string(rb_cctx *c, const rb_ynode *v, const char *key, char **out);
 /* A mapping value (error if it is not one). */
 int rb_cv_map(rb_cctx *c, const rb_ynode *v, const char *key);
+/* A time (given at node v under key) within the case's time limits:
+ * RB_CASE_MIN_TIME_S to RB_CASE_MAX_RUN_S, or also 0 when zero_ok. 1 if it
+ * is, 0 after an error. */
+int rb_cv_time_range(rb_cctx *c, const rb_ynode *v, const char *key, double t,
+                     int zero_ok);
 /* Quantity by key: get + convert + range check (lo < x, or lo <= x when
  * lo_incl; x < hi or x <= hi when hi_incl; NAN bounds are open). Returns
  * the node on success, NULL if missing or bad. */

@@ -19,6 +19,20 @@ static const char *const rb_record_keys[] = {
     "type", "name", "polarity", "file", "format", "units", "dt", "building",
     "peak", "window", "run_time", NULL};
 
+/* A time > 0 within the case's time limits (rb_cv_time_range); 1 if it is,
+ * also when it is absent and not required. */
+static int rb_cmotion_time(rb_cctx *c, rb_ynode *map, const char *path,
+                           const char *key, int required, int zero_ok, double *out)
+{
+    char k[RB_CASE_KEY_MAX];
+    const rb_ynode *v = rb_cv_number(c, map, path, key, required, RB_DIM_TIME, 0,
+                                     zero_ok, (double)NAN, 0, out);
+    if (!v)
+        return !required && !rb_ymap_find(map, key);
+    rb_case_keypath(k, path, key);
+    return rb_cv_time_range(c, v, k, *out, zero_ok);
+}
+
 /* A floor acceleration > 0, possibly in A*; returns the node or NULL. */
 static const rb_ynode *rb_cmotion_accel(rb_cctx *c, rb_ynode *map,
                                         const char *path, const char *key,
@@ -49,11 +63,8 @@ static int rb_read_harmonic(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
     ok &= cm->amplitude_node != NULL;
     ok &= rb_cv_number(c, map, p, "frequency", 1, RB_DIM_FREQUENCY, 0, 0, (double)NAN, 0,
                        &m->freq_hz) != NULL;
-    ok &= rb_cv_number(c, map, p, "duration", 1, RB_DIM_TIME, 0, 0, (double)NAN, 0,
-                       &m->duration_s) != NULL;
-    if (rb_ymap_find(map, "ramp"))
-        ok &= rb_cv_number(c, map, p, "ramp", 0, RB_DIM_TIME, 0, 1, (double)NAN, 0,
-                           &m->ramp_s) != NULL;
+    ok &= rb_cmotion_time(c, map, p, "duration", 1, 0, &m->duration_s);
+    ok &= rb_cmotion_time(c, map, p, "ramp", 0, 1, &m->ramp_s);
     rb_cv_unknown_keys(c, map, p, rb_harmonic_keys);
     return ok;
 }
@@ -78,10 +89,8 @@ static int rb_read_pulse(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
         ok = 0;
     cm->amplitude_node = rb_cmotion_accel(c, map, p, "amplitude", 1, &cm->amplitude);
     ok &= cm->amplitude_node != NULL;
-    ok &= rb_cv_number(c, map, p, "duration", 1, RB_DIM_TIME, 0, 0, (double)NAN, 0,
-                       &m->pulse_s) != NULL;
-    ok &= rb_cv_number(c, map, p, "run_time", 1, RB_DIM_TIME, 0, 0, (double)NAN, 0,
-                       &m->duration_s) != NULL;
+    ok &= rb_cmotion_time(c, map, p, "duration", 1, 0, &m->pulse_s);
+    ok &= rb_cmotion_time(c, map, p, "run_time", 1, 0, &m->duration_s);
     rb_cv_unknown_keys(c, map, p, rb_pulse_keys);
     return ok;
 }
@@ -181,9 +190,17 @@ static int rb_read_record(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
     }
     if ((v = rb_cv_get(c, map, p, "units", 0, "")))
         ok &= rb_read_record_units(c, v, cm);
-    if (rb_ymap_find(map, "dt"))
-        ok &= rb_cv_number(c, map, p, "dt", 0, RB_DIM_TIME, 0, 0, (double)NAN, 0,
-                           &cm->ropts.dt_s) != NULL;
+    if (rb_ymap_find(map, "dt")) {
+        const rb_ynode *dv = rb_cv_number(c, map, p, "dt", 0, RB_DIM_TIME, 0, 0,
+                                          (double)NAN, 0, &cm->ropts.dt_s);
+        rb_case_keypath(k, p, "dt");
+        if (dv && (cm->ropts.dt_s < RB_CASE_MIN_DT_S || cm->ropts.dt_s > RB_CASE_MAX_DT_S)) {
+            rb_cctx_error(c, dv, k, "must be between %g ms and %g s (got '%s')",
+                          RB_CASE_MIN_DT_S * 1e3, RB_CASE_MAX_DT_S, dv->text);
+            dv = NULL;
+        }
+        ok &= dv != NULL;
+    }
     if ((v = rb_cv_get(c, map, p, "building", 0, "")))
         ok &= rb_read_building(c, v, cm);
     if (rb_ymap_find(map, "peak")) {
@@ -194,8 +211,7 @@ static int rb_read_record(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
         ok &= rb_read_window(c, v, cm);
     if (rb_ymap_find(map, "run_time")) {
         cm->has_duration = 1;
-        ok &= rb_cv_number(c, map, p, "run_time", 0, RB_DIM_TIME, 0, 0, (double)NAN, 0,
-                           &m->duration_s) != NULL;
+        ok &= rb_cmotion_time(c, map, p, "run_time", 0, 0, &m->duration_s);
     }
     rb_cv_unknown_keys(c, map, p, rb_record_keys);
     return ok;

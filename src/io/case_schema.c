@@ -101,8 +101,14 @@ static void rb_read_equipment(rb_cctx *c, rb_ynode *eq, rb_model *m)
     rb_ynode *v = rb_cv_get(c, eq, p, "rigid", 0, "");
     if (v && !rb_cv_bool(c, v, "equipment.rigid", &m->rigid))
         c->model_errors++;
-    rb_field(c, eq, p, "frequency", "frequency", !m->rigid, RB_DIM_FREQUENCY,
-             0, 0, (double)NAN, 0, &m->freq_hz);
+    const rb_ynode *f = rb_field(c, eq, p, "frequency", "frequency", !m->rigid,
+                                 RB_DIM_FREQUENCY, 0, 0, (double)NAN, 0, &m->freq_hz);
+    if (f && m->freq_hz < RB_CASE_MIN_FREQ_HZ) {
+        rb_cctx_error(c, f, "equipment.frequency", "must be at least %g Hz (got "
+                      "'%s'): a frame that flexible has no static deflection "
+                      "the model can hold", RB_CASE_MIN_FREQ_HZ, f->text);
+        c->model_errors++;
+    }
     rb_field(c, eq, p, "damping", "damping", !m->rigid, RB_DIM_RATIO, 0, 1, 1,
              0, &m->damping);
     v = rb_cv_get(c, eq, p, "restitution", 0, "");
@@ -189,8 +195,16 @@ static void rb_read_anchorage(rb_cctx *c, rb_ynode *an, rb_model *m)
              (double)NAN, 0, &m->yield_stress_pa);
     rb_field(c, an, p, "toughness", "toughness", 1, RB_DIM_ENERGY_DENSITY, 0,
              0, (double)NAN, 0, &m->toughness_jpm3);
-    rb_field(c, an, p, "deformable_length", "deformable_length", 1,
-             RB_DIM_LENGTH, 0, 0, (double)NAN, 0, &m->deformable_length_m);
+    v = (rb_ynode *)rb_field(c, an, p, "deformable_length", "deformable_length", 1,
+                             RB_DIM_LENGTH, 0, 0, (double)NAN, 0,
+                             &m->deformable_length_m);
+    if (v && (m->deformable_length_m < RB_CASE_MIN_BOLT_LENGTH_M
+              || m->deformable_length_m > RB_CASE_MAX_BOLT_LENGTH_M)) {
+        rb_cctx_error(c, v, "anchorage.deformable_length", "must be between %g mm "
+                      "and %g m (got '%s')", RB_CASE_MIN_BOLT_LENGTH_M * 1e3,
+                      RB_CASE_MAX_BOLT_LENGTH_M, v->text);
+        c->model_errors++;
+    }
     rb_field(c, an, p, "elastic_modulus", "elastic_modulus", 0, RB_DIM_STRESS,
              0, 0, (double)NAN, 0, &m->elastic_modulus_pa);
     rb_read_lever_arm(c, an, m);
@@ -210,15 +224,27 @@ static void rb_read_gap(rb_cctx *c, rb_ynode *root, rb_model *m)
                           "or 'gap_ratio: 0.01'");
     if (which < 0) {
         c->model_errors++;
-    } else if (which == 0) {
-        rb_field(c, root, "", "gap", "gap", 1, RB_DIM_LENGTH, 0, 1, (double)NAN, 0,
-                 &m->gap_m);
-    } else if (rb_field(c, root, "", "gap_ratio", "gap", 1, RB_DIM_RATIO, 0, 1,
-                        1, 0, &c->gap_ratio)) {
+        return;
+    }
+    const rb_ynode *v;
+    if (which == 0) {
+        v = rb_field(c, root, "", "gap", "gap", 1, RB_DIM_LENGTH, 0, 1, (double)NAN, 0,
+                     &m->gap_m);
+    } else if ((v = rb_field(c, root, "", "gap_ratio", "gap", 1, RB_DIM_RATIO, 0, 1,
+                             1, 0, &c->gap_ratio))) {
         c->gap_is_ratio = 1;
         m->gap_m = c->gap_ratio * m->lever_arm_m;
     }
 }
+    /* a gap that is not zero but a rounding error of the lever arm makes
+     * the bolts chatter at every contact */
+    double l = m->lever_arm_m;
+    if (v && l > 0 && m->gap_m > 0 && m->gap_m < RB_CASE_MIN_GAP_RATIO * l) {
+        rb_cctx_error(c, v, which ? "gap_ratio" : "gap", "must be 0 or at least "
+                      "%g of the lever arm (%g mm here; got '%s')",
+                      RB_CASE_MIN_GAP_RATIO, RB_CASE_MIN_GAP_RATIO * l * 1e3, v->text);
+        c->model_errors++;
+    }
 
 static void rb_read_criteria(rb_cctx *c, rb_ynode *cr, rb_criteria *k)
 {
@@ -253,9 +279,14 @@ static void rb_read_analysis(rb_cctx *c, rb_ynode *an, rb_case *cs)
     v = rb_cv_get(c, an, p, "integrator", 0, "");
     if (v && rb_cv_enum(c, v, "analysis.integrator", integs, &i))
         cs->solve.integrator = ik[i];
-    rb_cv_number(c, an, p, "tolerance", 0, RB_DIM_RATIO, 0, 0, 0.01, 1,
-                 &cs->solve.rtol);
-    rb_cv_number(c, an, p, "output_interval", 0, RB_DIM_TIME, 0, 0, (double)NAN, 0, &dt);
+    rb_cv_number(c, an, p, "tolerance", 0, RB_DIM_RATIO, RB_CASE_MIN_TOLERANCE, 1,
+                 0.01, 1, &cs->solve.rtol);
+    /* checked against the motions' run times in case_validate.c, whether or
+     * not a history is recorded */
+    c->history_dt_node = rb_cv_number(c, an, p, "output_interval", 0, RB_DIM_TIME,
+                                      0, 0, (double)NAN, 0, &dt);
+    if (c->history_dt_node)
+        c->history_dt_s = dt;
     v = rb_cv_get(c, an, p, "history", 0, "");
     if (v && rb_cv_bool(c, v, "analysis.history", &b)) {
         cs->write_history = b;

@@ -168,6 +168,15 @@ static int rb_load_record(rb_cctx *c, const rb_cmotion *cm, rb_case_motion *out,
         return 0;
     }
     c->n_samples += out->series.n;
+    /* the file's own sample interval (AT2 DT=, COSMOS, two columns): an
+     * absurd one would make an endless run or an endless filter */
+    if (!(out->series.dt_s >= RB_CASE_MIN_DT_S && out->series.dt_s <= RB_CASE_MAX_DT_S)) {
+        rb_cctx_error_at(c, RB_ERR_LIMIT, cm->file_node->file, cm->file_node->line,
+                         cm->file_node->col, k, "record '%s' has a sample interval "
+                         "of %g s: expected %g ms to %g s", out->source,
+                         out->series.dt_s, RB_CASE_MIN_DT_S * 1e3, RB_CASE_MAX_DT_S);
+        return 0;
+    }
     if (cm->building_freq_hz > 0) {
         out->building_freq_hz = cm->building_freq_hz;
         out->building_damping = cm->building_damping;
@@ -188,6 +197,15 @@ static int rb_load_record(rb_cctx *c, const rb_cmotion *cm, rb_case_motion *out,
         st = cm->window[0] < len ? rb_series_window(&out->series, cm->window[0],
                                                     cm->window[1])
                                  : RB_ERR_INVALID;
+        if (st == RB_OK && out->series.n < 2) {
+            rb_case_keypath(k, cm->key, "window");
+            rb_cctx_error(c, cm->map, k, "the window [%g s, %g s] holds %zu sample%s "
+                          "of the record, whose samples are %g s apart: it needs "
+                          "at least two", cm->window[0], cm->window[1],
+                          out->series.n, out->series.n == 1 ? "" : "s",
+                          out->series.dt_s);
+            return 0;
+        }
         if (st != RB_OK) {
             rb_case_keypath(k, cm->key, "window");
             rb_cctx_error(c, cm->map, k, "the window [%g s, %g s] does not fit "
@@ -202,6 +220,13 @@ static int rb_load_record(rb_cctx *c, const rb_cmotion *cm, rb_case_motion *out,
             rb_case_keypath(k, cm->key, "peak");
             rb_cctx_error(c, cm->peak_node, k, "cannot scale the record to a "
                           "peak: its samples are all zero");
+            return 0;
+        }
+        if (p < RB_CASE_MIN_RECORD_PEAK) {
+            rb_case_keypath(k, cm->key, "peak");
+            rb_cctx_error(c, cm->peak_node, k, "cannot scale the record to a "
+                          "peak: its largest sample is %g m/s^2, below %g m/s^2 "
+                          "(noise, or the wrong units)", p, RB_CASE_MIN_RECORD_PEAK);
             return 0;
         }
         rb_series_scale(&out->series, peak_mps2 / p);
@@ -238,9 +263,29 @@ static int rb_build_motion(rb_cctx *c, const rb_cmotion *cm, rb_case_motion *out
     out->name = rb_strdup(c, cm->name ? cm->name : (base ? base + 1 : out->source));
     out->motion.series = &out->series;
     out->motion.scale = 1.0;
-    if (!cm->has_duration)
+    if (!cm->has_duration) {
         out->motion.duration_s = out->series.t0_s
                                  + (double)(out->series.n - 1) * out->series.dt_s;
+        /* the run lasts as long as the (windowed) record */
+        double t = out->motion.duration_s;
+        const rb_ynode *v = cm->file_node;
+        rb_case_keypath(desc, cm->key, cm->has_window ? "window" : "file");
+        if (t > RB_CASE_MAX_RUN_S) {
+            rb_cctx_error_at(c, RB_ERR_LIMIT, v->file, v->line, v->col, desc,
+                             "the run would last %g s, the length of the %srecord, "
+                             "over one simulated hour (%g s, the limit): give a "
+                             "shorter window or a run_time", t,
+                             cm->has_window ? "windowed " : "", RB_CASE_MAX_RUN_S);
+            return 0;
+        }
+        if (!(t >= RB_CASE_MIN_TIME_S)) {
+            rb_cctx_error_at(c, RB_ERR_INVALID, v->file, v->line, v->col, desc,
+                             "the run would last %g s, the length of the %srecord: "
+                             "it must last at least %g ms (give a run_time)", t,
+                             cm->has_window ? "windowed " : "", RB_CASE_MIN_TIME_S * 1e3);
+            return 0;
+        }
+    }
     return out->name != NULL;
 }
 
@@ -257,9 +302,26 @@ void rb_case_resolve(rb_cctx *c, rb_case *cs, const rb_ynode *root)
         return;
     }
     cs->n_motions = c->n_motions;
+    double rows = 0, dt = c->history_dt_s > 0 ? c->history_dt_s
+                                               : RB_CASE_HISTORY_DT_DEFAULT_S;
+    int over = 0;
     for (size_t i = 0; i < c->n_motions && !c->nomem; i++) {
         const rb_cmotion *cm = &c->motions[i];
-        if (cm->ok)
-            rb_build_motion(c, cm, &cs->motions[i], &d, have_model);
+        if (!cm->ok || !rb_build_motion(c, cm, &cs->motions[i], &d, have_model))
+            continue;
+        /* the history a run would record, asked for or not: whether a case
+         * is refused must not depend on the outputs requested */
+        rows += floor(cs->motions[i].motion.duration_s / dt) + 2;
+        if (rows > RB_CASE_MAX_HISTORY_ROWS && !over) {
+            over = 1;
+            const rb_ynode *v = c->history_dt_node ? c->history_dt_node : cm->map;
+            rb_cctx_error_at(c, RB_ERR_LIMIT, v->file, v->line, v->col,
+                             c->history_dt_node ? "analysis.output_interval" : cm->key,
+                             "the time history would hold over %.0f rows (the limit)"
+                             " at %g s intervals by %s, which lasts %g s: give a "
+                             "longer output_interval or shorter runs",
+                             RB_CASE_MAX_HISTORY_ROWS, dt, cm->key,
+                             cs->motions[i].motion.duration_s);
+        }
     }
 }

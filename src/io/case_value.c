@@ -95,6 +95,22 @@ const rb_ynode *rb_cv_number(rb_cctx *c, rb_ynode *map, const char *path,
     return v;
 }
 
+int rb_cv_time_range(rb_cctx *c, const rb_ynode *v, const char *key, double t,
+                     int zero_ok)
+{
+    if ((zero_ok && t == 0) || (t >= RB_CASE_MIN_TIME_S && t <= RB_CASE_MAX_RUN_S))
+        return 1;
+    if (t > RB_CASE_MAX_RUN_S)
+        rb_cctx_error_at(c, RB_ERR_LIMIT, v->file, v->line, v->col, key,
+                         "must be at most %g s, one simulated hour (the limit; "
+                         "got '%s')", RB_CASE_MAX_RUN_S, v->text);
+    else
+        rb_cctx_error(c, v, key, "must be %sat least %g ms (got '%s'): shorter "
+                      "times are below what the solver can step through",
+                      zero_ok ? "0 or " : "", RB_CASE_MIN_TIME_S * 1e3, v->text);
+    return 0;
+}
+
 int rb_cv_bool(rb_cctx *c, const rb_ynode *v, const char *key, int *out)
 {
     static const char *const yes[] = {"true", "True", "TRUE"};

@@ -13,6 +13,10 @@
  * file. */
 #define RB_REC_LINE_MAX 65536
 #define RB_REC_DEFAULT_MAX_POINTS 10000000u
+/* Bytes in one record file: 10 million samples in the widest common
+ * layout (E15.7 with a blank, 16 bytes each) take 160 MB; past 256 MiB a
+ * file is refused before reading (1 GiB of blank lines was read for 45 s). */
+#define RB_REC_MAX_BYTES (256ull * 1024 * 1024)
 
 #if defined(__GNUC__)
 #define RB_REC_PRINTF(fmt, args) __attribute__((format(printf, fmt, args)))
@@ -28,6 +32,7 @@ typedef struct {
     size_t len;
     size_t cap;
     long lineno;     /* 1-based number of the current line; 0 before any */
+    unsigned long long nread; /* bytes read since the start, for the limit */
 } rb_rec_reader;
 
 /* Open path for reading; RB_ERR_IO (with diag) if it cannot be opened. */

@@ -58,6 +58,12 @@ rb_status rb_rec_reader_open(rb_rec_reader *r, const char *path, rb_diag *diag)
         return rb_rec_fail_at(r, RB_ERR_IO, 0, 0, "cannot use the file: expected a "
                               "regular file (not a directory, device or pipe)");
     }
+    if ((unsigned long long)sb.st_size > RB_REC_MAX_BYTES) {
+        close(fd);
+        return rb_rec_fail_at(r, RB_ERR_LIMIT, 0, 0, "the file holds %lld bytes, "
+                              "over the %llu MiB a record may hold (the limit)",
+                              (long long)sb.st_size, RB_REC_MAX_BYTES >> 20);
+    }
     if (flags < 0 || fcntl(fd, F_SETFL, flags & ~O_NONBLOCK) != 0
         || !(r->fp = fdopen(fd, "rb"))) {
         const char *why = errno ? strerror(errno) : "unknown reason";
@@ -83,6 +89,7 @@ rb_status rb_rec_reader_rewind(rb_rec_reader *r)
         return rb_rec_fail_at(r, RB_ERR_IO, 0, 0, "cannot go back to the start of the file");
     clearerr(r->fp);
     r->lineno = 0;
+    r->nread = 0;
     r->len = 0;
     if (r->line)
         r->line[0] = '\0';
@@ -123,7 +130,13 @@ rb_status rb_rec_reader_next(rb_rec_reader *r, int *got)
     r->len = 0;
     r->lineno++;
     *got = 1;
+    /* a file that grew past the limit after it was opened */
+    if (++r->nread > RB_REC_MAX_BYTES)
+        return rb_rec_fail_at(r, RB_ERR_LIMIT, r->lineno, 0, "the file holds more "
+                              "than the %llu MiB a record may hold (the limit)",
+                              RB_REC_MAX_BYTES >> 20);
     for (; c != EOF && c != '\n'; c = getc(r->fp)) {
+        r->nread++;
         if (c == '\0')
             return rb_rec_fail_at(r, RB_ERR_PARSE, r->lineno, (int)r->len + 1,
                                   "expected text, found a NUL byte (binary file?)");

@@ -297,7 +297,12 @@ test_free_standing() {
 # output. The tolerance of 1e-300 makes the integrator's step underflow at
 # once; if the case loader ever rejects it, find another way to fail.
 test_solver_error() {
-    printf 'extends: %s/cases/base/reference-cabinet.yaml\nmotion:\n  type: harmonic\n  amplitude: 0.6 A*\n  frequency: 4 Hz\n  duration: 1 s\nanalysis:\n  tolerance: 1e-300\n' \
+    # A valid case the solver cannot finish: a square wave of +-50 g that
+    # flips every sample (10 us) makes the cabinet chatter past the work
+    # bound on transitions. (A tolerance of 1e-300 used to serve here; it
+    # is now refused at the key, exit 2, before solving.)
+    awk 'BEGIN { for (i = 0; i < 30000; i++) print (i % 2 ? -50 : 50) }' >"$D/square.txt"
+    printf 'extends: %s/cases/base/reference-cabinet.yaml\nmotion:\n  type: record\n  file: square.txt\n  format: one-column\n  units: g\n  dt: 0.01 ms\n' \
         "$(pwd)" >"$D/tight.yaml"
     echo old >"$D/keep.json"
     run check "$D/tight.yaml" --json "$D/keep.json" --history "$D/h.csv"
