@@ -128,6 +128,9 @@ typedef struct {
     const char *reports_dir;  /* NULL: no per-case reports; else one JSON
                                  and one text report per case */
     const char *report_template; /* text of report.txt; needed with reports */
+    /* reports are staged here and renamed into place only by its
+     * rb_outplan_write (all or none); NULL: each written at once */
+    struct rb_outplan *report_stage;
     size_t shard, n_shards;   /* 1-based shard of n; 0/0: all */
     /* Called from worker threads, one call at a time, when a run or a
      * case is done. May be NULL. */
@@ -136,6 +139,12 @@ typedef struct {
 } rb_batch_opts;
 
 void rb_batch_opts_init(rb_batch_opts *o);
+
+/* The file name, without ".json" or ".txt", of the reports of the item at
+ * index of a list of total items whose tag (row tag, else case name) is
+ * tag: "<index>-<tag with unsafe bytes as _>", at most 120 bytes of tag. */
+void rb_batch_report_stem(size_t index, const char *tag, size_t total, char *buf,
+                          size_t n);
 
 /* The items of shard k of n: those whose index i has i % n == k - 1. */
 int rb_batch_in_shard(size_t index, size_t shard, size_t n_shards);

@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "batch_engine.h"
+#include "rockbolt/outplan.h"
 #include "rockbolt/report.h"
 
 /* The case name from a path: file name without directory and extension. */
@@ -146,13 +147,14 @@ void rb_batch_case_solve(rb_batch_slot *s, rb_batch_case *bc, size_t m, int desi
 
 /* Report file names: the work index keeps them unique and in work order
  * whatever the tags, and the same in every shard. */
-static void report_stem(const rb_batch_case *bc, size_t total, char *buf, size_t n)
+void rb_batch_report_stem(size_t index, const char *tag, size_t total, char *buf,
+                          size_t n)
 {
     int width = 1;
     for (size_t t = total > 0 ? total - 1 : 0; t >= 10; t /= 10)
         width++;
-    int k = snprintf(buf, n, "%0*zu-", width, bc->index);
-    for (const char *p = bc->tag; *p && k + 1 < (int)n && k < 120; p++, k++) {
+    int k = snprintf(buf, n, "%0*zu-", width, index);
+    for (const char *p = tag; *p && k + 1 < (int)n && k < 120; p++, k++) {
         int ok = (*p >= 'A' && *p <= 'Z') || (*p >= 'a' && *p <= 'z')
               || (*p >= '0' && *p <= '9') || *p == '-' || *p == '_' || *p == '.';
         buf[k] = ok ? *p : '_';
@@ -169,14 +171,18 @@ static rb_status write_reports(const rb_batch_case *bc,
     rb_status st = rb_report_json_render(rep, &json, d);
     if (st == RB_OK)
         st = rb_report_text_render(rep, o->report_template, &text, d);
-    report_stem(bc, total, stem, sizeof stem);
+    rb_batch_report_stem(bc->index, bc->tag, total, stem, sizeof stem);
     if (st == RB_OK) {
         snprintf(path, sizeof path, "%s/%s.json", o->reports_dir, stem);
-        st = rb_outfile_write_all(path, json, strlen(json), 0, d);
+        st = o->report_stage
+            ? rb_outplan_stage_data(o->report_stage, path, json, strlen(json), d)
+            : rb_outfile_write_all(path, json, strlen(json), 0, d);
     }
     if (st == RB_OK) {
         snprintf(path, sizeof path, "%s/%s.txt", o->reports_dir, stem);
-        st = rb_outfile_write_all(path, text, strlen(text), 0, d);
+        st = o->report_stage
+            ? rb_outplan_stage_data(o->report_stage, path, text, strlen(text), d)
+            : rb_outfile_write_all(path, text, strlen(text), 0, d);
     }
     free(json);
     free(text);

@@ -11,6 +11,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 #include "cli_batch.h"
+#include "rockbolt/record_cache.h"
 
 /* --reports DIR: created if missing (its parent must exist). */
 static rb_exit check_reports_dir(const char *dir)
@@ -52,7 +53,56 @@ static rb_exit build_list(const rb_batch_cli *o, rb_batch_list *l)
     return RB_EXIT_PASS;
 }
 
-static rb_exit run(const rb_batch_cli *o, const rb_batch_list *l, rb_batch_summary *s)
+/* Every file the work list reads and every report it will write, before
+ * any solving: each item of this shard is loaded as the run will load it
+ * (an item that does not load is reported by the run and writes no
+ * report). */
+static rb_exit plan_items(rb_batch_cli *o, const rb_batch_list *l)
+{
+    rb_record_cache *cache = rb_record_cache_new(0);
+    rb_status st = cache ? RB_OK : RB_ERR_NOMEM;
+    rb_diag d;
+    rb_diag_clear(&d);
+    for (size_t i = 0; i < l->n && st == RB_OK; i++) {
+        const rb_batch_item *it = &l->items[i];
+        rb_diag_list diags = {0};
+        rb_case c;
+        if (!rb_batch_in_shard(i, o->shard, o->n_shards))
+            continue;
+        st = rb_outplan_add_input(&o->plan, it->source, &d);
+        if (st == RB_OK && it->base)
+            st = rb_outplan_add_input(&o->plan, it->base, &d);
+        if (st != RB_OK || it->bad)
+            continue;
+        memset(&c, 0, sizeof c);
+        rb_status ls = it->tag
+            ? rb_case_load_overrides(it->base, it->source, it->tag, it->ov, it->n_ov,
+                                     cache, &c, &diags)
+            : rb_case_load_cached(it->source, cache, &c, &diags);
+        rb_diag_list_free(&diags);
+        if (ls == RB_ERR_NOMEM)
+            st = ls;
+        if (ls != RB_OK)
+            continue;
+        for (size_t k = 0; k < c.n_input_files && st == RB_OK; k++)
+            st = rb_outplan_add_input(&o->plan, c.input_files[k], &d);
+        if (st == RB_OK && o->reports_dir) {
+            char stem[200], path[4600];
+            const char *tag = it->tag ? it->tag : c.name ? c.name : it->source;
+            rb_batch_report_stem(i, tag, l->n, stem, sizeof stem);
+            snprintf(path, sizeof path, "%s/%s.json", o->reports_dir, stem);
+            st = rb_outplan_reserve(&o->plan, "--reports", path, &d);
+            snprintf(path, sizeof path, "%s/%s.txt", o->reports_dir, stem);
+            if (st == RB_OK)
+                st = rb_outplan_reserve(&o->plan, "--reports", path, &d);
+        }
+        rb_case_free(&c);
+    }
+    rb_record_cache_free(cache);
+    return st == RB_OK ? RB_EXIT_PASS : rb_cli_plan_error(st, &d);
+}
+
+static rb_exit run(rb_batch_cli *o, const rb_batch_list *l, rb_batch_summary *s)
 {
     rb_batch_opts bo;
     rb_cli_progress prog;
@@ -71,6 +121,7 @@ static rb_exit run(const rb_batch_cli *o, const rb_batch_list *l, rb_batch_summa
     bo.design = o->design;
     bo.reports_dir = o->reports_dir;
     bo.report_template = tmpl;
+    bo.report_stage = &o->plan;
     bo.shard = o->shard;
     bo.n_shards = o->n_shards;
     rb_cli_progress_start(&prog, o->quiet);
@@ -114,6 +165,8 @@ rb_exit rb_cli_batch_main(int argc, char **argv)
         e = check_reports_dir(o.reports_dir);
     if (e == RB_EXIT_PASS)
         e = build_list(&o, &l);
+    if (e == RB_EXIT_PASS)
+        e = plan_items(&o, &l);
     if (e == RB_EXIT_PASS)
         e = run(&o, &l, &s);
     if (e == RB_EXIT_PASS) {

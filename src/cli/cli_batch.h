@@ -4,6 +4,7 @@
 
 #include "cli.h"
 #include "rockbolt/batch.h"
+#include "rockbolt/outplan.h"
 
 typedef struct {
     const char **inputs;      /* owned array; strings point into argv */
@@ -15,13 +16,18 @@ typedef struct {
     int threads;              /* batch: -j N; 0: every processor */
     size_t shard, n_shards;   /* batch: --shard I/N; 0/0: all */
     int quiet, help;
+    rb_outplan plan;          /* every output and input (rockbolt/outplan.h) */
 } rb_batch_cli;
 
 rb_exit rb_cli_batch_parse(int argc, char **argv, int is_merge, rb_batch_cli *o);
 void rb_cli_batch_cli_free(rb_batch_cli *o);
 
-/* Check the summary outputs' directories (before any work). */
-rb_exit rb_cli_batch_check_outputs(const rb_batch_cli *o);
+/* Plan the summary outputs and the inputs named on the command line
+ * (before any work): clashes and unwritable outputs are exit 2. */
+rb_exit rb_cli_batch_check_outputs(rb_batch_cli *o);
+
+/* Print a planning error; the exit code it calls for. */
+rb_exit rb_cli_plan_error(rb_status st, const rb_diag *d);
 
 /* What batch and merge both do first: parse, answer --help (then *done is
  * set and o already freed), check the output paths. */
@@ -30,7 +36,7 @@ rb_exit rb_cli_batch_begin(int argc, char **argv, int is_merge, rb_batch_cli *o,
 
 /* Write the summary outputs asked for, all or none; print the table
  * unless quiet; return the exit code the summary calls for. */
-rb_exit rb_cli_batch_finish(const rb_batch_cli *o, const rb_batch_summary *s);
+rb_exit rb_cli_batch_finish(rb_batch_cli *o, const rb_batch_summary *s);
 
 /* The progress line on stderr (cli_batch_progress.c). */
 typedef struct {

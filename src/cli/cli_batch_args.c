@@ -77,6 +77,7 @@ rb_exit rb_cli_batch_parse(int argc, char **argv, int is_merge, rb_batch_cli *o)
 {
     int only_inputs = 0;
     memset(o, 0, sizeof *o);
+    rb_outplan_init(&o->plan);
     o->inputs = calloc((size_t)argc + 1, sizeof *o->inputs);
     if (!o->inputs) {
         rb_cli_error(NULL, NULL, "out of memory");
@@ -143,4 +144,5 @@ void rb_cli_batch_cli_free(rb_batch_cli *o)
 {
     free(o->inputs);
     o->inputs = NULL;
+    rb_outplan_free(&o->plan);
 }

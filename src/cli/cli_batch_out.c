@@ -1,6 +1,7 @@
-/* The summary outputs of batch and merge: checked before any work, then
- * written whole (temporary files, synced, then all renamed), and the exit
- * code a summary calls for. */
+/* The summary outputs of batch and merge: planned and checked against each
+ * other and the inputs before any work (rockbolt/outplan.h), then written
+ * whole (temporary files, synced, then all renamed, with batch's staged
+ * reports), and the exit code a summary calls for. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -20,63 +21,71 @@ rb_exit rb_cli_batch_begin(int argc, char **argv, int is_merge, rb_batch_cli *o,
     return e == RB_EXIT_PASS ? rb_cli_batch_check_outputs(o) : e;
 }
 
-rb_exit rb_cli_batch_check_outputs(const rb_batch_cli *o)
+rb_exit rb_cli_plan_error(rb_status st, const rb_diag *d)
+{
+    if (st == RB_ERR_NOMEM) {
+        rb_cli_error(NULL, NULL, "out of memory");
+        return RB_EXIT_INTERNAL;
+    }
+    rb_cli_diag_print(d);
+    return RB_EXIT_USAGE;
+}
+
+rb_exit rb_cli_batch_check_outputs(rb_batch_cli *o)
 {
     const char *paths[3] = {o->json_path, o->csv_path, o->junit_path};
     static const char *const names[3] = {"--json", "--csv", "--junit"};
-    for (int i = 0; i < 3; i++) {
-        rb_diag d;
-        rb_diag_clear(&d);
-        if (paths[i] && rb_outfile_check(paths[i], &d) != RB_OK) {
-            snprintf(d.key, sizeof d.key, "%s", names[i]);
-            rb_cli_diag_print(&d);
-            return RB_EXIT_USAGE;
-        }
-    }
-    return RB_EXIT_PASS;
+    rb_status st = RB_OK;
+    rb_diag d;
+    rb_diag_clear(&d);
+    /* lists, case files and shards named here; what they name is added
+     * once the work list is made (cli_batch.c) */
+    for (size_t i = 0; i < o->n_inputs && st == RB_OK; i++)
+        st = rb_outplan_add_input(&o->plan, o->inputs[i], &d);
+    if (st == RB_OK && o->base)
+        st = rb_outplan_add_input(&o->plan, o->base, &d);
+    for (int i = 0; i < 3 && st == RB_OK; i++)
+        if (paths[i])
+            st = rb_outplan_add(&o->plan, names[i], paths[i], &d);
+    return st == RB_OK ? RB_EXIT_PASS : rb_cli_plan_error(st, &d);
 }
 
 typedef char *(*render_fn)(const rb_batch_summary *s);
 
-static rb_exit write_all(const rb_batch_cli *o, const rb_batch_summary *s)
+static rb_status fill(void *ctx, size_t i, FILE *fp, rb_diag *d)
 {
-    const char *paths[3] = {o->json_path, o->csv_path, o->junit_path};
-    static const render_fn render[3] = {rb_batch_render_json, rb_batch_render_csv,
-                                        rb_batch_render_junit};
-    rb_outfile f[3];
-    rb_status st = RB_OK;
+    const void *const *cx = ctx;
+    const rb_outplan *plan = cx[0];
+    const rb_batch_summary *s = cx[1];
+    const char *opt = plan->outs[i].opt;
+    render_fn render = strcmp(opt, "--json") == 0 ? rb_batch_render_json
+                     : strcmp(opt, "--csv") == 0 ? rb_batch_render_csv
+                     : rb_batch_render_junit;
+    char *text = render(s);
+    if (!text) {
+        snprintf(d->msg, sizeof d->msg, "out of memory");
+        return RB_ERR_NOMEM;
+    }
+    size_t n = strlen(text);
+    rb_status st = fwrite(text, 1, n, fp) == n ? RB_OK : RB_ERR_IO;
+    if (st != RB_OK)
+        snprintf(d->msg, sizeof d->msg, "cannot write");
+    free(text);
+    return st;
+}
+
+/* Every summary output and every staged report: all renamed at the end. */
+static rb_exit write_all(rb_batch_cli *o, const rb_batch_summary *s)
+{
+    const void *cx[2] = {&o->plan, s};
     rb_diag d;
-    memset(f, 0, sizeof f);
     rb_diag_clear(&d);
-    for (int i = 0; i < 3 && st == RB_OK; i++) {
-        if (!paths[i])
-            continue;
-        char *text = render[i](s);
-        if (!text) {
-            rb_cli_error(NULL, NULL, "out of memory");
-            st = RB_ERR_NOMEM;
-            break;
-        }
-        st = rb_outfile_open(&f[i], paths[i], 0, &d);
-        if (st == RB_OK && fwrite(text, 1, strlen(text), f[i].fp) != strlen(text)) {
-            snprintf(d.msg, sizeof d.msg, "cannot write");
-            st = RB_ERR_IO;
-        }
-        if (st == RB_OK)
-            st = rb_outfile_finish(&f[i], &d);
-        if (st != RB_OK && !d.file[0])
-            snprintf(d.file, sizeof d.file, "%s", paths[i]);
-        free(text);
-        if (st != RB_OK)
-            rb_cli_diag_print(&d);
+    rb_status st = rb_outplan_write(&o->plan, fill, (void *)cx, &d);
+    if (st != RB_OK) {
+        rb_cli_diag_print(&d);
+        return RB_EXIT_INTERNAL;
     }
-    for (int i = 0; i < 3 && st == RB_OK; i++) {
-        if (paths[i] && (st = rb_outfile_commit(&f[i], &d)) != RB_OK)
-            rb_cli_diag_print(&d);
-    }
-    for (int i = 0; i < 3; i++)
-        rb_outfile_abort(&f[i]);
-    return st == RB_OK ? RB_EXIT_PASS : RB_EXIT_INTERNAL;
+    return RB_EXIT_PASS;
 }
 
 /* An error (solver, reports) outranks an unreadable case, which outranks a
@@ -92,12 +101,13 @@ static rb_exit exit_of(const rb_batch_summary *s)
     return n.failed ? RB_EXIT_FAIL : RB_EXIT_PASS;
 }
 
-rb_exit rb_cli_batch_finish(const rb_batch_cli *o, const rb_batch_summary *s)
+rb_exit rb_cli_batch_finish(rb_batch_cli *o, const rb_batch_summary *s)
 {
     rb_exit e = write_all(o, s);
     if (e != RB_EXIT_PASS)
         return e;
-    if (!o->quiet) {
+    /* an output on standard output is all that goes there */
+    if (!o->quiet && !rb_outplan_uses_stdout(&o->plan)) {
         char *text = rb_batch_render_text(s);
         if (!text) {
             rb_cli_error(NULL, NULL, "out of memory");

@@ -1,20 +1,32 @@
 /* "rockbolt check CASE.yaml": load, solve every motion, judge, report;
  * "rockbolt design CASE.yaml" adds the design searches before reporting.
  *
- * Order matters for the exit-code contract: output paths are checked and
- * the case and the template loaded before any solving, so usage and input
- * errors (exit 2) never leave files behind; reports are rendered whole in
- * memory, every output is written to a temporary file and synced, and only
- * then are they all renamed into place. */
+ * Order matters for the exit-code contract: every output is planned and
+ * checked (rockbolt/outplan.h) and the case and the template loaded before
+ * any solving, so usage and input errors (exit 2) never leave files
+ * behind; reports are rendered whole in memory, every output is written to
+ * a temporary file and synced, and only then are they all renamed into
+ * place. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include "cli.h"
+#include "rockbolt/outplan.h"
 #include "rockbolt/plot.h"
 #include "rockbolt/textsafe.h"
 
 #define RB_HISTORY_DT_DEFAULT_S 0.01
+
+typedef enum { OUT_JSON, OUT_TEXT, OUT_HISTORY, OUT_SWEEP, OUT_SVG, OUT_HTML } out_kind;
+
+/* What one output of the plan holds; sweeps are numbered frequency sweeps
+ * first, then each motion's amplitude sweeps, in case order; figures each
+ * motion's history, then each sweep. */
+typedef struct out_file {
+    out_kind kind;
+    size_t k;                /* SWEEP, SVG: which one */
+} out_file;
 
 typedef struct {
     rb_case c;
@@ -29,6 +41,8 @@ typedef struct {
                                 sweep; n_svgs owned strings */
     size_t n_svgs;
     char *html;              /* owned */
+    rb_outplan plan;         /* every output, in the order of outs */
+    struct out_file *outs;   /* owned, plan.n of them */
 } check_run;
 
 static void run_free(check_run *r)
@@ -47,27 +61,9 @@ static void run_free(check_run *r)
         free(r->svgs[i]);
     free(r->svgs);
     free(r->html);
+    free(r->outs);
+    rb_outplan_free(&r->plan);
     rb_case_free(&r->c);
-}
-
-/* Every output's directory must exist and be writable before we start. */
-static rb_exit check_output_paths(const rb_cli_opts *o)
-{
-    const char *paths[6] = { o->json_path, o->text_path, o->history_path,
-                             o->sweep_csv_path, o->svg_path, o->html_path };
-    static const char *const opts[6] = { "--json", "--text", "--history",
-                                         "--sweep-csv", "--svg", "--html" };
-    int i;
-    for (i = 0; i < 6; i++) {
-        rb_diag d;
-        rb_diag_clear(&d);
-        if (paths[i] && rb_outfile_check(paths[i], &d) != RB_OK) {
-            snprintf(d.key, sizeof d.key, "%s", opts[i]);
-            rb_cli_diag_print(&d);
-            return RB_EXIT_USAGE;
-        }
-    }
-    return RB_EXIT_PASS;
 }
 
 static rb_exit load_case(const rb_cli_opts *o, check_run *r)
@@ -87,37 +83,6 @@ static rb_exit load_case(const rb_cli_opts *o, check_run *r)
     if (st == RB_OK)
         return RB_EXIT_PASS;
     return st == RB_ERR_NOMEM ? RB_EXIT_INTERNAL : RB_EXIT_USAGE;
-}
-
-/* Is output the same file as input? By device and inode when both exist
- * (two spellings of one path, links), else by the path text. */
-static int same_file(const char *output, const char *input)
-{
-    struct stat a, b;
-    if (stat(output, &a) == 0 && stat(input, &b) == 0)
-        return a.st_dev == b.st_dev && a.st_ino == b.st_ino;
-    return strcmp(output, input) == 0;
-}
-
-/* No output may replace a file the case was read from: its bases and
- * records are named only inside the case, so the command line check of
- * the case path alone does not see them. Sweep and figure files get
- * numbered names, so their base names are what is compared. */
-static rb_exit check_outputs_not_inputs(const rb_cli_opts *o, const rb_case *c)
-{
-    const char *paths[6] = { o->json_path, o->text_path, o->history_path,
-                             o->sweep_csv_path, o->svg_path, o->html_path };
-    static const char *const opts[6] = { "--json", "--text", "--history",
-                                         "--sweep-csv", "--svg", "--html" };
-    size_t i, k;
-    for (i = 0; i < 6; i++)
-        for (k = 0; paths[i] && k < c->n_input_files; k++)
-            if (same_file(paths[i], c->input_files[k])) {
-                rb_cli_error(paths[i], opts[i], "is an input of the case (%s); "
-                             "refusing to overwrite it", c->input_files[k]);
-                return RB_EXIT_USAGE;
-            }
-    return RB_EXIT_PASS;
 }
 
 /* The derived constants, and the template if a text report is wanted. */
@@ -208,18 +173,6 @@ static rb_exit render_reports(const rb_cli_opts *o, check_run *r)
     return RB_EXIT_PASS;
 }
 
-typedef enum { OUT_JSON, OUT_TEXT, OUT_HISTORY, OUT_SWEEP, OUT_SVG, OUT_HTML } out_kind;
-
-/* One output file of the run; sweeps are numbered frequency sweeps first,
- * then each motion's amplitude sweeps, in case order. */
-typedef struct {
-    out_kind kind;
-    const char *path;
-    char name[4096];         /* path storage for derived sweep names */
-    const rb_sweep *sweep;
-    const char *data;        /* SVG and HTML: the rendered text */
-} out_file;
-
 static size_t count_sweeps(const rb_case_design *d)
 {
     size_t i, n = d->n_sweeps;
@@ -282,59 +235,134 @@ static rb_exit render_figures(const rb_cli_opts *o, check_run *r)
     return RB_EXIT_PASS;
 }
 
-/* The list of outputs asked for; *n_out set. NULL (after printing) if the
- * list cannot be made. */
-static out_file *list_outputs(const rb_cli_opts *o, const check_run *r, size_t *n_out)
+/* Add one output to the plan (and its kind to r->outs); print on error. */
+static rb_exit plan_add(check_run *r, const char *opt, const char *path, out_kind kind,
+                        size_t k)
 {
-    size_t n_sw = o->sweep_csv_path ? count_sweeps(&r->design) : 0, n = 0, k;
-    size_t n_fig = o->svg_path ? r->n_svgs : 0;
-    out_file *f = calloc(4 + n_sw + n_fig, sizeof *f);
-    if (!f) {
+    rb_diag d;
+    rb_status st;
+    out_file *n = realloc(r->outs, (r->plan.n + 1) * sizeof *n);
+    if (!n) {
         rb_cli_error(NULL, NULL, "out of memory");
-        return NULL;
+        return RB_EXIT_INTERNAL;
     }
-    if (o->json_path)
-        f[n].kind = OUT_JSON, f[n++].path = o->json_path;
-    if (o->text_path)
-        f[n].kind = OUT_TEXT, f[n++].path = o->text_path;
-    if (o->history_path)
-        f[n].kind = OUT_HISTORY, f[n++].path = o->history_path;
-    for (k = 0; k < n_sw; k++, n++) {
-        f[n].kind = OUT_SWEEP;
-        f[n].sweep = sweep_at(&r->design, k);
-        f[n].path = rb_cli_numbered_name(o->sweep_csv_path, k, n_sw, f[n].name,
-                                          sizeof f[n].name);
-        if (!f[n].path) {
-            rb_cli_error(o->sweep_csv_path, "--sweep-csv", "file name too long");
-            free(f);
-            return NULL;
-        }
+    r->outs = n;
+    rb_diag_clear(&d);
+    st = rb_outplan_add(&r->plan, opt, path, &d);
+    if (st != RB_OK) {
+        if (st == RB_ERR_NOMEM)
+            rb_cli_error(NULL, NULL, "out of memory");
+        else
+            rb_cli_diag_print(&d);
+        return st == RB_ERR_NOMEM ? RB_EXIT_INTERNAL : RB_EXIT_USAGE;
     }
-    if (o->html_path)
-        f[n].kind = OUT_HTML, f[n].data = r->html, f[n++].path = o->html_path;
-    for (k = 0; k < n_fig; k++, n++) {
-        f[n].kind = OUT_SVG;
-        f[n].data = r->svgs[k];
-        f[n].path = rb_cli_numbered_name(o->svg_path, k, n_fig, f[n].name,
-                                         sizeof f[n].name);
-        if (!f[n].path) {
-            rb_cli_error(o->svg_path, "--svg", "file name too long");
-            free(f);
-            return NULL;
-        }
-    }
-    *n_out = n;
-    return f;
+    r->outs[r->plan.n - 1].kind = kind;
+    r->outs[r->plan.n - 1].k = k;
+    return RB_EXIT_PASS;
 }
 
-static rb_status fill_output(const out_file *of, FILE *fp, const check_run *r, rb_diag *d)
+static rb_exit plan_input(check_run *r, const char *path)
 {
-    const char *s = of->kind == OUT_JSON ? r->json : of->kind == OUT_TEXT ? r->text
-                                                                       : of->data;
-    if (of->kind == OUT_HISTORY)
+    rb_diag d;
+    rb_status st;
+    rb_diag_clear(&d);
+    st = rb_outplan_add_input(&r->plan, path, &d);
+    if (st == RB_OK)
+        return RB_EXIT_PASS;
+    if (st == RB_ERR_NOMEM)
+        rb_cli_error(NULL, NULL, "out of memory");
+    else
+        rb_cli_diag_print(&d);
+    return st == RB_ERR_NOMEM ? RB_EXIT_INTERNAL : RB_EXIT_USAGE;
+}
+
+/* Before the case is loaded: the case file and the outputs whose names
+ * do not depend on it. */
+static rb_exit plan_fixed(const rb_cli_opts *o, check_run *r)
+{
+    rb_exit e = plan_input(r, o->case_path);
+    if (e == RB_EXIT_PASS && o->json_path)
+        e = plan_add(r, "--json", o->json_path, OUT_JSON, 0);
+    if (e == RB_EXIT_PASS && o->text_path)
+        e = plan_add(r, "--text", o->text_path, OUT_TEXT, 0);
+    if (e == RB_EXIT_PASS && o->history_path)
+        e = plan_add(r, "--history", o->history_path, OUT_HISTORY, 0);
+    if (e == RB_EXIT_PASS && o->html_path)
+        e = plan_add(r, "--html", o->html_path, OUT_HTML, 0);
+    return e;
+}
+
+/* How many sweeps design will make: known from the case before solving. */
+static size_t planned_sweeps(const rb_cli_opts *o, const rb_case *c)
+{
+    size_t i, n_freq = 0, n_amp = 0;
+    if (o->command != RB_CMD_DESIGN)
+        return 0;
+    for (i = 0; i < c->n_sweeps; i++) {
+        n_freq += c->sweeps[i].kind == RB_SWEEP_FREQUENCY;
+        n_amp += c->sweeps[i].kind == RB_SWEEP_AMPLITUDE;
+    }
+    return n_freq + c->n_motions * n_amp;
+}
+
+/* After loading: every file the case was read from, and the numbered
+ * sweep and figure files, whose count the case fixes. All before solving. */
+static rb_exit plan_loaded(const rb_cli_opts *o, check_run *r)
+{
+    size_t n_sw = planned_sweeps(o, &r->c), n_fig = r->c.n_motions + n_sw, k;
+    char name[4096];
+    rb_exit e = RB_EXIT_PASS;
+    for (k = 0; k < r->c.n_input_files && e == RB_EXIT_PASS; k++)
+        e = plan_input(r, r->c.input_files[k]);
+    for (k = 0; o->sweep_csv_path && k < n_sw && e == RB_EXIT_PASS; k++) {
+        const char *p = rb_cli_numbered_name(o->sweep_csv_path, k, n_sw, name, sizeof name);
+        if (!p) {
+            rb_cli_error(o->sweep_csv_path, "--sweep-csv", "file name too long");
+            return RB_EXIT_USAGE;
+        }
+        e = plan_add(r, "--sweep-csv", p, OUT_SWEEP, k);
+    }
+    for (k = 0; o->svg_path && k < n_fig && e == RB_EXIT_PASS; k++) {
+        const char *p = rb_cli_numbered_name(o->svg_path, k, n_fig, name, sizeof name);
+        if (!p) {
+            rb_cli_error(o->svg_path, "--svg", "file name too long");
+            return RB_EXIT_USAGE;
+        }
+        e = plan_add(r, "--svg", p, OUT_SVG, k);
+    }
+    return e;
+}
+
+static rb_status fill_output(void *ctx, size_t i, FILE *fp, rb_diag *d)
+{
+    const check_run *r = ctx;
+    const out_file *of = &r->outs[i];
+    const char *s = NULL;
+    switch (of->kind) {
+    case OUT_HISTORY:
         return rb_history_write_csv(fp, &r->rep, d);
-    if (of->kind == OUT_SWEEP)
-        return rb_sweep_write_csv(of->sweep, fp);
+    case OUT_SWEEP:
+        if (!sweep_at(&r->design, of->k))
+            break;
+        return rb_sweep_write_csv(sweep_at(&r->design, of->k), fp);
+    case OUT_JSON:
+        s = r->json;
+        break;
+    case OUT_TEXT:
+        s = r->text;
+        break;
+    case OUT_HTML:
+        s = r->html;
+        break;
+    case OUT_SVG:
+        s = of->k < r->n_svgs ? r->svgs[of->k] : NULL;
+        break;
+    }
+    if (!s) {
+        /* the plan counted more sweeps or figures than were made */
+        snprintf(d->msg, sizeof d->msg, "nothing to write here (a bug)");
+        return RB_ERR_INVALID;
+    }
     if (fwrite(s, 1, strlen(s), fp) != strlen(s)) {
         snprintf(d->msg, sizeof d->msg, "cannot write");
         return RB_ERR_IO;
@@ -346,34 +374,21 @@ static rb_status fill_output(const out_file *of, FILE *fp, const check_run *r, r
  * all: an error before the renames leaves no output touched. */
 static rb_exit write_outputs(const rb_cli_opts *o, check_run *r)
 {
-    size_t n = 0, i;
-    out_file *of = list_outputs(o, r, &n);
-    rb_outfile *f;
-    rb_status st = RB_OK;
     rb_diag d;
-    if (!of)
-        return RB_EXIT_INTERNAL;
-    if (!(f = calloc(n ? n : 1, sizeof *f))) {
-        free(of);
-        rb_cli_error(NULL, NULL, "out of memory");
+    rb_status st;
+    size_t k, n_sw = 0, n_fig = 0;
+    for (k = 0; k < r->plan.n; k++) {
+        n_sw += r->outs[k].kind == OUT_SWEEP;
+        n_fig += r->outs[k].kind == OUT_SVG;
+    }
+    if ((o->sweep_csv_path && n_sw != count_sweeps(&r->design))
+        || (o->svg_path && n_fig != r->n_svgs)) {
+        rb_cli_error(NULL, NULL, "the planned sweep or figure files do not match "
+                     "what was made (a bug); nothing written");
         return RB_EXIT_INTERNAL;
     }
     rb_diag_clear(&d);
-    for (i = 0; i < n && st == RB_OK; i++) {
-        st = rb_outfile_open(&f[i], of[i].path, 0, &d);
-        if (st == RB_OK)
-            st = fill_output(&of[i], f[i].fp, r, &d);
-        if (st == RB_OK)
-            st = rb_outfile_finish(&f[i], &d);
-        if (st != RB_OK && !d.file[0])
-            snprintf(d.file, sizeof d.file, "%s", of[i].path);
-    }
-    for (i = 0; i < n && st == RB_OK; i++)
-        st = rb_outfile_commit(&f[i], &d);
-    for (i = 0; i < n; i++)
-        rb_outfile_abort(&f[i]);
-    free(f);
-    free(of);
+    st = rb_outplan_write(&r->plan, fill_output, r, &d);
     if (st != RB_OK) {
         rb_cli_diag_print(&d);
         return RB_EXIT_INTERNAL;
@@ -386,11 +401,12 @@ rb_exit rb_cli_check_run(const rb_cli_opts *o)
     check_run r;
     rb_exit e;
     memset(&r, 0, sizeof r);
-    e = check_output_paths(o);
+    rb_outplan_init(&r.plan);
+    e = plan_fixed(o, &r);
     if (e == RB_EXIT_PASS)
         e = load_case(o, &r);
     if (e == RB_EXIT_PASS)
-        e = check_outputs_not_inputs(o, &r.c);
+        e = plan_loaded(o, &r);
     if (e == RB_EXIT_PASS)
         e = prepare(o, &r);
     if (e == RB_EXIT_PASS)
@@ -405,7 +421,8 @@ rb_exit rb_cli_check_run(const rb_cli_opts *o)
         e = render_figures(o, &r);
     if (e == RB_EXIT_PASS)
         e = write_outputs(o, &r);
-    if (e == RB_EXIT_PASS && !o->quiet) {
+    /* an output on standard output is all that goes there */
+    if (e == RB_EXIT_PASS && !o->quiet && !rb_outplan_uses_stdout(&r.plan)) {
         if (o->text_path) {
             char reason[2048];
             printf("%s: %s\n", r.rep.pass ? "PASS" : "FAIL",

@@ -2,10 +2,13 @@
  * command; nothing else happens here. */
 #include <string.h>
 #include "cli.h"
+#include "rockbolt/outplan.h"
 
 int main(int argc, char **argv)
 {
     rb_cli_opts o;
+    /* a signal removes the temporary files of outputs being written */
+    rb_outplan_signals_install();
     /* batch and merge parse their own options (cli_batch.c, cli_merge.c) */
     if (argc > 1 && strcmp(argv[1], "batch") == 0)
         return (int)rb_cli_batch_main(argc - 2, argv + 2);

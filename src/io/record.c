@@ -41,13 +41,12 @@ static rb_status rb_record_guess_columns(const rb_rec_reader *r, size_t ntok,
                                          const rb_rec_token *first,
                                          rb_record_format *fmt)
 {
-    char q[48];
     double x;
-    rb_rec_quote(first->s, first->len, q, sizeof q);
     if (rb_rec_number_parse(first->s, first->len, &x) == RB_ERR_PARSE)
         return rb_rec_fail(r, RB_ERR_PARSE, first->col, "cannot tell the format: "
                            "expected a PEER AT2 header (NPTS= in lines 1-4), a COSMOS "
-                           "header or a column of numbers, found '%s'", q);
+                           "header or a column of numbers, found text that is none "
+                           "of these");
     if (ntok > 2)
         return rb_rec_fail(r, RB_ERR_PARSE, first->col, "cannot tell the format: "
                            "expected one column (acceleration) or two (time, "

@@ -51,7 +51,6 @@ static size_t rb_at2_units_start(const rb_rec_reader *r, size_t i)
 static rb_status rb_at2_units(const rb_rec_reader *r, const rb_record_opts *o,
                               double *to_mps2)
 {
-    char q[48];
     static const char *const others[] = {"velocity", "displacement"};
     for (size_t k = 0; k < 2; k++) {
         long at = rb_rec_find(r->line, r->len, others[k]);
@@ -74,22 +73,21 @@ static rb_status rb_at2_units(const rb_rec_reader *r, const rb_record_opts *o,
     *to_mps2 = rb_rec_units_lookup(r->line + start, end - start);
     if (*to_mps2 > 0.0)
         return RB_OK;
-    rb_rec_quote(r->line + start, end - start, q, sizeof q);
     return rb_rec_fail(r, RB_ERR_PARSE, (int)start + 1, "expected acceleration units "
-                       "(g, m/s^2, cm/s^2, mm/s^2, in/s^2) after 'UNITS', found '%s'", q);
+                       "(g, m/s^2, cm/s^2, mm/s^2, in/s^2) after 'UNITS', found "
+                       "other text");
 }
 
 static rb_status rb_at2_dt_value(const rb_rec_reader *r, const rb_rec_token *tok,
                                  double *dt)
 {
-    char q[48];
     rb_status st = rb_rec_token_number(r, tok, "the time step DT in seconds", dt);
     if (st != RB_OK)
         return st;
     if (*dt > 0.0)
         return RB_OK;
-    rb_rec_quote(tok->s, tok->len, q, sizeof q);
-    return rb_rec_fail(r, RB_ERR_INVALID, tok->col, "expected DT > 0 s, found '%s'", q);
+    return rb_rec_fail(r, RB_ERR_INVALID, tok->col, "expected DT > 0 s, found a "
+                       "number at or below zero");
 }
 
 /* The number of points from tok, within 1..limit. */
@@ -140,7 +138,6 @@ static rb_status rb_at2_keyed(const rb_rec_reader *r, size_t limit, rb_at2_heade
 /* "n dt ..." as the first two tokens. */
 static rb_status rb_at2_positional(const rb_rec_reader *r, size_t limit, rb_at2_header *h)
 {
-    char q[48];
     rb_rec_token tok;
     size_t pos = 0;
     if (!rb_rec_token_next(r->line, &pos, 1, &tok))
@@ -148,9 +145,8 @@ static rb_status rb_at2_positional(const rb_rec_reader *r, size_t limit, rb_at2_
                            "on line 4, found an empty line");
     double x;
     if (rb_rec_number_parse(tok.s, tok.len, &x) != RB_OK) {
-        rb_rec_quote(r->line, r->len, q, sizeof q);
         return rb_rec_fail(r, RB_ERR_PARSE, tok.col, "expected 'NPTS= <n>, DT= <step> "
-                           "SEC' on line 4, found '%s'", q);
+                           "SEC' on line 4, found other text");
     }
     rb_status st = rb_at2_count(r, &tok, limit, h);
     if (st != RB_OK)

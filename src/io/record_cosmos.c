@@ -132,7 +132,6 @@ static rb_status rb_cosmos_text_header(rb_rec_reader *r, rb_cosmos *c)
 static rb_status rb_cosmos_block_head(rb_rec_reader *r, const char *what, size_t *n,
                                       size_t *lines, rb_cosmos_fmt *f)
 {
-    char q[48];
     rb_rec_token tok;
     size_t pos = 0;
     rb_status st = rb_cosmos_next(r, what);
@@ -141,9 +140,8 @@ static rb_status rb_cosmos_block_head(rb_rec_reader *r, const char *what, size_t
     long on = rb_rec_find(r->line, r->len, "follow on");
     if (rb_rec_find(r->line, r->len, what) < 0 || on < 0
         || !rb_rec_token_next(r->line, &pos, 0, &tok)) {
-        rb_rec_quote(r->line, r->len, q, sizeof q);
         return rb_rec_fail(r, RB_ERR_PARSE, 1, "expected '<n> %s values follow on "
-                           "<k> lines, Format= (...)', found '%s'", what, q);
+                           "<k> lines, Format= (...)', found a line without it", what);
     }
     if ((st = rb_rec_token_count(r, &tok, "the number of header values",
                                  RB_COSMOS_MAX_HEADER_VALUES, n)) != RB_OK)
@@ -218,14 +216,12 @@ static rb_status rb_cosmos_skip_comments(rb_rec_reader *r)
 static rb_status rb_cosmos_data_line(rb_rec_reader *r, const rb_record_opts *o,
                                      rb_cosmos *c, double *text_units)
 {
-    char q[48];
     rb_rec_token tok;
     size_t pos = 0;
     int first = rb_rec_token_next(r->line, &pos, 0, &tok);
-    rb_rec_quote(r->line, r->len, q, sizeof q);
     if (!first || rb_rec_find(r->line, r->len, "acceleration pts") < 0)
         return rb_rec_fail(r, RB_ERR_PARSE, 1, "expected an acceleration data block "
-                           "('<n> acceleration pts, ...'), found '%s'", q);
+                           "('<n> acceleration pts, ...'), found a line without it");
     size_t limit = rb_rec_max_points(o);
     rb_status st = rb_rec_token_count(r, &tok, "the number of points", limit, &c->npts);
     if (st != RB_OK)

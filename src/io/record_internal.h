@@ -79,8 +79,6 @@ rb_status rb_rec_token_number(const rb_rec_reader *r, const rb_rec_token *tok,
  * RB_ERR_PARSE with diag otherwise. */
 rb_status rb_rec_token_count(const rb_rec_reader *r, const rb_rec_token *tok,
                              const char *what, size_t limit, size_t *out);
-/* s (len bytes) made safe for a message: at most 40 printable characters. */
-void rb_rec_quote(const char *s, size_t len, char *out, size_t out_size);
 /* Case-insensitive search of word in the first len bytes of s; returns
  * the offset or -1. */
 long rb_rec_find(const char *s, size_t len, const char *word);

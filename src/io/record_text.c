@@ -243,20 +243,6 @@ int rb_rec_token_field(const rb_rec_reader *r, size_t start, size_t width,
     return 1;
 }
 
-void rb_rec_quote(const char *s, size_t len, char *out, size_t out_size)
-{
-    size_t keep = len > 40 ? 37 : len, j = 0;
-    if (out_size == 0)
-        return;
-    for (size_t i = 0; i < keep && j + 1 < out_size; i++) {
-        unsigned char c = (unsigned char)s[i];
-        out[j++] = (c >= 0x20 && c < 0x7f) ? (char)c : '?';
-    }
-    for (int k = 0; keep < len && k < 3 && j + 1 < out_size; k++)
-        out[j++] = '.';
-    out[j] = '\0';
-}
-
 long rb_rec_find(const char *s, size_t len, const char *word)
 {
     size_t w = strlen(word);
@@ -334,24 +320,22 @@ rb_status rb_rec_number_parse(const char *s, size_t len, double *out)
 rb_status rb_rec_token_number(const rb_rec_reader *r, const rb_rec_token *tok,
                               const char *what, double *out)
 {
-    char q[48];
     rb_status st = rb_rec_number_parse(tok->s, tok->len, out);
     if (st == RB_OK)
         return RB_OK;
-    rb_rec_quote(tok->s, tok->len, q, sizeof q);
     if (st == RB_ERR_INVALID)
-        return rb_rec_fail(r, st, tok->col, "expected %s as a finite number, "
-                           "found '%s'", what, q);
-    return rb_rec_fail(r, st, tok->col, "expected %s (a number), found '%s'", what, q);
+        return rb_rec_fail(r, st, tok->col, "expected %s as a finite number, found "
+                           "NaN, infinity, a hexadecimal number or one out of range",
+                           what);
+    return rb_rec_fail(r, st, tok->col, "expected %s (a number), found text that is "
+                       "not a number", what);
 }
 
 static rb_status rb_rec_count_fail(const rb_rec_reader *r, const rb_rec_token *tok,
                                    const char *what)
 {
-    char q[48];
-    rb_rec_quote(tok->s, tok->len, q, sizeof q);
     return rb_rec_fail(r, RB_ERR_PARSE, tok->col,
-                       "expected %s (a whole number), found '%s'", what, q);
+                       "expected %s (a whole number), found text that is not one", what);
 }
 
 rb_status rb_rec_token_count(const rb_rec_reader *r, const rb_rec_token *tok,

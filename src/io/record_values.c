@@ -39,7 +39,6 @@ static rb_status rb_rec_values_grow(rb_rec_values *b, const rb_rec_reader *r, in
 rb_status rb_rec_values_push(rb_rec_values *b, const rb_rec_reader *r,
                              const rb_rec_token *tok, double raw, double factor)
 {
-    char q[48];
     if (b->n >= b->max)
         return rb_rec_fail(r, RB_ERR_LIMIT, tok->col,
                            "more than %zu values (the point limit)", b->max);
@@ -47,9 +46,9 @@ rb_status rb_rec_values_push(rb_rec_values *b, const rb_rec_reader *r,
         return RB_ERR_NOMEM;
     double x = raw * factor;
     if (!isfinite(x)) {
-        rb_rec_quote(tok->s, tok->len, q, sizeof q);
         return rb_rec_fail(r, RB_ERR_INVALID, tok->col, "expected an acceleration "
-                           "that fits in m/s^2, found '%s'", q);
+                           "that fits in m/s^2, found one that overflows once "
+                           "converted");
     }
     b->v[b->n++] = x;
     return RB_OK;

@@ -1,0 +1,785 @@
+/* Output plans: see rockbolt/outplan.h. POSIX (Linux for /proc/self/fd). */
+#define _POSIX_C_SOURCE 200809L
+#include "rockbolt/outplan.h"
+#include <errno.h>
+#include <fcntl.h>
+#include <limits.h>
+#include <signal.h>
+#include <stdarg.h>
+#include <stdatomic.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#ifndef PATH_MAX
+#define PATH_MAX 4096
+#endif
+#define RB_TEMP_NAME ".rb-XXXXXX"
+#define RB_LINK_HOPS 40
+
+/* ---- Temporary files and signals ---------------------------------------- */
+
+/* Every temporary file is on one list that the signal handler walks. A
+ * node is published complete (its path set) before it is linked in; the
+ * handler only reads it. Nodes are unlinked from the list with the
+ * signals blocked, by the thread that owns the plan, once no other thread
+ * runs. */
+struct rb_out_temp {
+    char *path;                   /* owned; the mkstemp template */
+    char *target;                 /* owned: renamed over at commit */
+    volatile sig_atomic_t live;   /* the file may exist */
+    struct rb_out_temp *next;
+};
+
+static _Atomic(struct rb_out_temp *) temp_head;
+static pthread_mutex_t temp_lock = PTHREAD_MUTEX_INITIALIZER;
+static const int clean_signals[] = { SIGTERM, SIGINT, SIGHUP, SIGPIPE };
+#define N_CLEAN_SIGNALS (sizeof clean_signals / sizeof clean_signals[0])
+
+static void on_signal(int sig)
+{
+    int saved = errno;
+    struct rb_out_temp *t;
+    for (t = atomic_load(&temp_head); t; t = t->next)
+        if (t->live)
+            unlink(t->path);
+    /* SA_RESETHAND put the default action back: end as the signal would */
+    raise(sig);
+    errno = saved;
+}
+
+void rb_outplan_signals_install(void)
+{
+    size_t i;
+    for (i = 0; i < N_CLEAN_SIGNALS; i++) {
+        struct sigaction old, sa;
+        if (sigaction(clean_signals[i], NULL, &old) != 0 || old.sa_handler == SIG_IGN)
+            continue;
+        memset(&sa, 0, sizeof sa);
+        sa.sa_handler = on_signal;
+        sigemptyset(&sa.sa_mask);
+        sa.sa_flags = SA_RESETHAND;
+        sigaction(clean_signals[i], &sa, NULL);
+    }
+}
+
+static void block_signals(sigset_t *old)
+{
+    sigset_t set;
+    size_t i;
+    sigemptyset(&set);
+    for (i = 0; i < N_CLEAN_SIGNALS; i++)
+        sigaddset(&set, clean_signals[i]);
+    pthread_sigmask(SIG_BLOCK, &set, old);
+}
+
+/* A new temporary file in dir for target: registered before mkstemp
+ * names it, so no moment exists where it is on disk but not listed. */
+static struct rb_out_temp *temp_create(const char *dir, const char *target, int *fd,
+                                       int *err)
+{
+    struct rb_out_temp *t = calloc(1, sizeof *t);
+    size_t nd = strlen(dir);
+    *fd = -1;
+    *err = ENOMEM;
+    if (!t)
+        return NULL;
+    t->path = malloc(nd + sizeof "/" RB_TEMP_NAME);
+    t->target = strdup(target);
+    if (!t->path || !t->target) {
+        free(t->path);
+        free(t->target);
+        free(t);
+        return NULL;
+    }
+    memcpy(t->path, dir, nd);
+    memcpy(t->path + nd, "/" RB_TEMP_NAME, sizeof "/" RB_TEMP_NAME);
+    t->live = 1;
+    pthread_mutex_lock(&temp_lock);
+    t->next = atomic_load(&temp_head);
+    atomic_store(&temp_head, t);
+    pthread_mutex_unlock(&temp_lock);
+    *fd = mkstemp(t->path);
+    if (*fd < 0) {
+        *err = errno;
+        t->live = 0;
+    }
+    return t;
+}
+
+/* Remove the file if it is still there and take the node off the list.
+ * Called only where no other thread runs: the signal handler may walk the
+ * list from any thread that does not block the signals. */
+static void temp_drop(struct rb_out_temp *t)
+{
+    sigset_t old;
+    struct rb_out_temp *q;
+    if (!t)
+        return;
+    if (t->live)
+        unlink(t->path);
+    t->live = 0;
+    block_signals(&old);
+    pthread_mutex_lock(&temp_lock);
+    if (atomic_load(&temp_head) == t) {
+        atomic_store(&temp_head, t->next);
+    } else {
+        for (q = atomic_load(&temp_head); q && q->next != t; q = q->next)
+            ;
+        if (q)
+            q->next = t->next;
+    }
+    pthread_mutex_unlock(&temp_lock);
+    pthread_sigmask(SIG_SETMASK, &old, NULL);
+    free(t->path);
+    free(t->target);
+    free(t);
+}
+
+/* ---- Diagnostics -------------------------------------------------------- */
+
+#if defined(__GNUC__)
+__attribute__((format(printf, 6, 7)))
+#endif
+static rb_status fail(rb_diag *d, rb_status st, const char *file, const char *opt,
+                      int err, const char *fmt, ...)
+{
+    if (d) {
+        char what[400];
+        va_list ap;
+        snprintf(d->file, sizeof d->file, "%s", file);
+        snprintf(d->key, sizeof d->key, "%s", opt ? opt : "");
+        d->line = d->col = 0;
+        va_start(ap, fmt);
+        vsnprintf(what, sizeof what, fmt, ap);
+        va_end(ap);
+        if (err)
+            snprintf(d->msg, sizeof d->msg, "%.400s: %.100s", what, strerror(err));
+        else
+            snprintf(d->msg, sizeof d->msg, "%.500s", what);
+    }
+    return st;
+}
+
+/* ---- Resolving a name ---------------------------------------------------- */
+
+static char *dir_of(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    size_t n = slash ? (size_t)(slash - path) : 1;
+    char *d;
+    if (slash && n == 0)
+        n = 1;
+    if (!(d = malloc(n + 1)))
+        return NULL;
+    memcpy(d, slash ? path : ".", n);
+    d[n] = '\0';
+    return d;
+}
+
+static const char *base_of(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    return slash ? slash + 1 : path;
+}
+
+/* "/dev/fd/N", "/proc/self/fd/N", "/proc/<our pid>/fd/N": N, else -1. */
+static int fd_path(const char *p)
+{
+    char own[64];
+    const char *rest = NULL;
+    char *end;
+    long n;
+    snprintf(own, sizeof own, "/proc/%ld/fd/", (long)getpid());
+    if (strncmp(p, "/dev/fd/", 8) == 0)
+        rest = p + 8;
+    else if (strncmp(p, "/proc/self/fd/", 14) == 0)
+        rest = p + 14;
+    else if (strncmp(p, own, strlen(own)) == 0)
+        rest = p + strlen(own);
+    if (!rest || !*rest || *rest < '0' || *rest > '9')
+        return -1;
+    errno = 0;
+    n = strtol(rest, &end, 10);
+    return *end || errno || n > INT_MAX ? -1 : (int)n;
+}
+
+/* Follow symbolic links from path to the name that is finally written:
+ * *fd_no >= 0 when the chain ends at a descriptor path. NULL with *err. */
+static char *follow_links(const char *path, int *fd_no, int *err)
+{
+    char *cur = strdup(path);
+    int hops;
+    *fd_no = -1;
+    *err = ENOMEM;
+    for (hops = 0; cur && hops <= RB_LINK_HOPS; hops++) {
+        struct stat sb;
+        char buf[PATH_MAX], *next, *dir;
+        ssize_t n;
+        if ((*fd_no = fd_path(cur)) >= 0)
+            return cur;
+        if (strcmp(cur, "/dev/stdout") == 0) {
+            *fd_no = 1;
+            return cur;
+        }
+        if (strcmp(cur, "/dev/stderr") == 0) {
+            *fd_no = 2;
+            return cur;
+        }
+        if (lstat(cur, &sb) != 0) {
+            if (errno == ENOENT)
+                return cur;
+            *err = errno;
+            free(cur);
+            return NULL;
+        }
+        if (!S_ISLNK(sb.st_mode))
+            return cur;
+        n = readlink(cur, buf, sizeof buf - 1);
+        if (n < 0) {
+            *err = errno;
+            free(cur);
+            return NULL;
+        }
+        buf[n] = '\0';
+        if (buf[0] == '/' || !strchr(cur, '/')) {
+            next = strdup(buf);
+        } else {
+            dir = dir_of(cur);
+            next = dir ? malloc(strlen(dir) + (size_t)n + 2) : NULL;
+            if (next)
+                sprintf(next, "%s/%s", dir, buf);
+            free(dir);
+        }
+        free(cur);
+        cur = next;
+    }
+    if (cur)
+        *err = ELOOP;
+    free(cur);
+    return NULL;
+}
+
+static void out_free(rb_out *o)
+{
+    if (o->tmp)
+        temp_drop(o->tmp);
+    free(o->opt);
+    free(o->path);
+    free(o->target);
+    free(o->canon);
+    memset(o, 0, sizeof *o);
+}
+
+/* The directory of a regular output: exists, is a directory, writable;
+ * the name and the temporary file's fit the limits. */
+static rb_status check_dir(rb_out *o, rb_diag *d)
+{
+    char *dir = dir_of(o->target), *real;
+    const char *name = base_of(o->target);
+    struct stat sb;
+    long name_max;
+    rb_status st = RB_OK;
+    if (!dir)
+        return RB_ERR_NOMEM;
+    errno = 0;
+    name_max = pathconf(dir, _PC_NAME_MAX);
+    if (name_max <= 0)
+        name_max = NAME_MAX;
+    if (stat(dir, &sb) != 0)
+        st = fail(d, RB_ERR_IO, o->path, o->opt, errno, "cannot use directory '%.300s'",
+                  dir);
+    else if (!S_ISDIR(sb.st_mode))
+        st = fail(d, RB_ERR_IO, o->path, o->opt, 0, "'%.300s' is not a directory", dir);
+    else if (access(dir, W_OK | X_OK) != 0)
+        st = fail(d, RB_ERR_IO, o->path, o->opt, errno,
+                  "directory '%.300s' is not writable", dir);
+    else if (strlen(name) > (size_t)name_max) {
+        char lim[96];
+        snprintf(lim, sizeof lim, "%zu bytes, over the limit of %ld", strlen(name),
+                 name_max);
+        st = fail(d, RB_ERR_IO, o->path, o->opt, 0, "the file name is too long (%s)",
+                  lim);
+    } else if (strlen(o->target) >= PATH_MAX
+               || strlen(dir) + sizeof "/" RB_TEMP_NAME > PATH_MAX)
+        st = fail(d, RB_ERR_IO, o->path, o->opt, ENAMETOOLONG, "cannot use this path");
+    if (st == RB_OK && !o->exists) {
+        real = realpath(dir, NULL);
+        if (!real)
+            st = fail(d, RB_ERR_IO, o->path, o->opt, errno,
+                      "cannot use directory '%.300s'", dir);
+        else if ((o->canon = malloc(strlen(real) + strlen(name) + 2)))
+            sprintf(o->canon, "%s/%s", real, name);
+        else
+            st = RB_ERR_NOMEM;
+        free(real);
+    }
+    free(dir);
+    return st;
+}
+
+/* Resolve o->path into how it is written and what file it is. */
+static rb_status resolve(rb_out *o, rb_diag *d)
+{
+    struct stat sb;
+    int err;
+    const char *p = o->path;
+    if (!p[0])
+        return fail(d, RB_ERR_IO, p, o->opt, 0, "empty output path");
+    if (strcmp(p, "-") == 0)
+        o->fd_no = 1;
+    else {
+        if (p[strlen(p) - 1] == '/')
+            return fail(d, RB_ERR_IO, p, o->opt, 0, "output path names a directory");
+        if (strlen(base_of(p)) > NAME_MAX) {
+            char lim[64];
+            snprintf(lim, sizeof lim, "%zu bytes, over the limit of %d",
+                     strlen(base_of(p)), NAME_MAX);
+            return fail(d, RB_ERR_IO, p, o->opt, 0, "the file name is too long (%s)",
+                        lim);
+        }
+        if (!(o->target = follow_links(p, &o->fd_no, &err)))
+            return err == ENOMEM ? RB_ERR_NOMEM
+                 : fail(d, RB_ERR_IO, p, o->opt, err, "cannot use this path");
+    }
+    if (o->fd_no >= 0) {
+        int fl = fcntl(o->fd_no, F_GETFL);
+        o->how = RB_OUT_FD;
+        if (fl < 0 || (fl & O_ACCMODE) == O_RDONLY || fstat(o->fd_no, &sb) != 0)
+            return fail(d, RB_ERR_IO, p, o->opt, fl < 0 ? errno : EBADF,
+                        "cannot write to this descriptor");
+        o->exists = 1, o->dev = sb.st_dev, o->ino = sb.st_ino;
+        return RB_OK;
+    }
+    if (stat(o->target, &sb) == 0) {
+        o->exists = 1, o->dev = sb.st_dev, o->ino = sb.st_ino;
+        if (S_ISDIR(sb.st_mode))
+            return fail(d, RB_ERR_IO, p, o->opt, 0, "output path is a directory");
+        if (S_ISCHR(sb.st_mode) || S_ISFIFO(sb.st_mode)) {
+            o->how = RB_OUT_DEVICE;
+            if (access(o->target, W_OK) != 0)
+                return fail(d, RB_ERR_IO, p, o->opt, errno, "cannot write to it");
+            return RB_OK;
+        }
+        if (!S_ISREG(sb.st_mode))
+            return fail(d, RB_ERR_IO, p, o->opt, 0, "not a regular file, character "
+                        "device or FIFO (a socket or block device)");
+    } else if (errno != ENOENT) {
+        return fail(d, RB_ERR_IO, p, o->opt, errno, "cannot use this path");
+    }
+    o->how = RB_OUT_FILE;
+    return check_dir(o, d);
+}
+
+
+/* ---- Identity index ------------------------------------------------------ */
+
+/* Keys: "i:DEV:INO" for a file that exists, "n:CANONICAL" for one still to
+ * be made, "d:N" for a descriptor. Value: output index, or -1 - input
+ * index. Open addressing, at most half full: a batch plans two report
+ * files per case, so a list of pairs would be quadratic. */
+typedef struct rb_out_slot idx_slot;
+
+static unsigned long hash_str(const char *s)
+{
+    unsigned long h = 1469598103934665603UL;
+    for (; *s; s++)
+        h = (h ^ (unsigned char)*s) * 1099511628211UL;
+    return h;
+}
+
+static long *idx_find(rb_outplan *p, const char *key)
+{
+    size_t i;
+    if (!p->idx_cap)
+        return NULL;
+    for (i = hash_str(key) & (p->idx_cap - 1); p->idx[i].key; i = (i + 1) & (p->idx_cap - 1))
+        if (strcmp(p->idx[i].key, key) == 0)
+            return &p->idx[i].val;
+    return NULL;
+}
+
+static rb_status idx_put(rb_outplan *p, const char *key, long val)
+{
+    size_t i;
+    char *k;
+    if (2 * (p->idx_n + 1) > p->idx_cap) {
+        size_t cap = p->idx_cap ? 2 * p->idx_cap : 64, j;
+        idx_slot *n = calloc(cap, sizeof *n);
+        if (!n)
+            return RB_ERR_NOMEM;
+        for (j = 0; j < p->idx_cap; j++)
+            if (p->idx[j].key) {
+                for (i = hash_str(p->idx[j].key) & (cap - 1); n[i].key; i = (i + 1) & (cap - 1))
+                    ;
+                n[i] = p->idx[j];
+            }
+        free(p->idx);
+        p->idx = n;
+        p->idx_cap = cap;
+    }
+    if (!(k = strdup(key)))
+        return RB_ERR_NOMEM;
+    for (i = hash_str(key) & (p->idx_cap - 1); p->idx[i].key; i = (i + 1) & (p->idx_cap - 1))
+        ;
+    p->idx[i].key = k;
+    p->idx[i].val = val;
+    p->idx_n++;
+    return RB_OK;
+}
+
+/* The keys of an output (a descriptor has two); n set. */
+static void out_keys(const rb_out *o, char keys[2][PATH_MAX + 32], int *n)
+{
+    *n = 0;
+    if (o->how == RB_OUT_FD)
+        snprintf(keys[(*n)++], PATH_MAX + 32, "d:%d", o->fd_no);
+    if (o->exists)
+        snprintf(keys[(*n)++], PATH_MAX + 32, "i:%ju:%ju", (uintmax_t)o->dev,
+                 (uintmax_t)o->ino);
+    else if (o->canon)
+        snprintf(keys[(*n)++], PATH_MAX + 32, "n:%.*s", PATH_MAX, o->canon);
+}
+
+/* ---- The plan ---------------------------------------------------------- */
+
+void rb_outplan_init(rb_outplan *p)
+{
+    memset(p, 0, sizeof *p);
+    pthread_mutex_init(&p->lock, NULL);
+}
+
+void rb_outplan_free(rb_outplan *p)
+{
+    size_t i;
+    for (i = 0; i < p->n; i++)
+        out_free(&p->outs[i]);
+    for (i = 0; i < p->n_in; i++)
+        free(p->ins[i].path);
+    for (i = 0; i < p->n_extra; i++)
+        temp_drop(p->extra[i]);
+    for (i = 0; i < p->idx_cap; i++)
+        free(p->idx[i].key);
+    free(p->idx);
+    free(p->outs);
+    free(p->ins);
+    free(p->extra);
+    pthread_mutex_destroy(&p->lock);
+    memset(p, 0, sizeof *p);
+}
+
+static rb_status clash_input(const rb_out *o, const rb_out_input *in, rb_diag *d)
+{
+    return fail(d, RB_ERR_INVALID, o->path, o->opt, 0,
+                "is an input (%.300s); refusing to overwrite it", in->path);
+}
+
+static rb_status add_out(rb_outplan *p, const char *opt, const char *path, int reserved,
+                         rb_diag *d)
+{
+    static char keys[2][PATH_MAX + 32];
+    rb_out o;
+    rb_status st;
+    int nk = 0, k;
+    memset(&o, 0, sizeof o);
+    o.fd_no = -1;
+    o.reserved = reserved;
+    o.opt = strdup(opt);
+    o.path = strdup(path);
+    if (!o.opt || !o.path) {
+        out_free(&o);
+        return RB_ERR_NOMEM;
+    }
+    st = resolve(&o, d);
+    if (st == RB_OK)
+        out_keys(&o, keys, &nk);
+    for (k = 0; st == RB_OK && k < nk; k++) {
+        long *v = idx_find(p, keys[k]);
+        if (v && *v >= 0) {
+            char other[300];
+            snprintf(other, sizeof other, "%.40s '%.250s'", p->outs[*v].opt,
+                     p->outs[*v].path);
+            st = fail(d, RB_ERR_INVALID, o.path, o.opt, 0,
+                      "is the same file as %.300s; each output needs its own file",
+                      other);
+        } else if (v) {
+            st = clash_input(&o, &p->ins[-1 - *v], d);
+        }
+    }
+    if (st == RB_OK && p->n == p->cap) {
+        size_t cap = p->cap ? 2 * p->cap : 8;
+        rb_out *n = realloc(p->outs, cap * sizeof *n);
+        if (!n)
+            st = RB_ERR_NOMEM;
+        else
+            p->outs = n, p->cap = cap;
+    }
+    for (k = 0; st == RB_OK && k < nk; k++)
+        st = idx_put(p, keys[k], (long)p->n);
+    if (st != RB_OK) {
+        out_free(&o);
+        return st;
+    }
+    p->outs[p->n++] = o;
+    return RB_OK;
+}
+
+rb_status rb_outplan_add(rb_outplan *p, const char *opt, const char *path, rb_diag *d)
+{
+    return add_out(p, opt, path, 0, d);
+}
+
+rb_status rb_outplan_reserve(rb_outplan *p, const char *opt, const char *path,
+                             rb_diag *d)
+{
+    return add_out(p, opt, path, 1, d);
+}
+
+rb_status rb_outplan_add_input(rb_outplan *p, const char *path, rb_diag *d)
+{
+    struct stat sb;
+    rb_out_input in;
+    char key[64];
+    long *v;
+    if (stat(path, &sb) != 0)
+        return RB_OK;
+    snprintf(key, sizeof key, "i:%ju:%ju", (uintmax_t)sb.st_dev, (uintmax_t)sb.st_ino);
+    if ((v = idx_find(p, key)) != NULL) {
+        if (*v < 0)
+            return RB_OK;   /* read twice: one input */
+        in.path = (char *)path;
+        return clash_input(&p->outs[*v], &in, d);
+    }
+    if (p->n_in == p->cap_in) {
+        size_t cap = p->cap_in ? 2 * p->cap_in : 16;
+        rb_out_input *n = realloc(p->ins, cap * sizeof *n);
+        if (!n)
+            return RB_ERR_NOMEM;
+        p->ins = n, p->cap_in = cap;
+    }
+    in.dev = sb.st_dev;
+    in.ino = sb.st_ino;
+    if (!(in.path = strdup(path)))
+        return RB_ERR_NOMEM;
+    if (idx_put(p, key, -1 - (long)p->n_in) != RB_OK) {
+        free(in.path);
+        return RB_ERR_NOMEM;
+    }
+    p->ins[p->n_in++] = in;
+    return RB_OK;
+}
+
+int rb_outplan_uses_stdout(const rb_outplan *p)
+{
+    size_t i;
+    for (i = 0; i < p->n; i++)
+        if (p->outs[i].how == RB_OUT_FD && p->outs[i].fd_no == 1)
+            return 1;
+    return 0;
+}
+
+/* ---- Writing ------------------------------------------------------------ */
+
+/* Give the temporary file the mode and owner of the file it replaces, or
+ * the usual mode of a new file (mkstemp makes it 0600). The owner can
+ * only be kept where the process may set it; otherwise it becomes ours. */
+static void copy_meta(int fd, const char *target)
+{
+    struct stat sb;
+    if (stat(target, &sb) == 0 && S_ISREG(sb.st_mode)) {
+        if (fchown(fd, sb.st_uid, sb.st_gid) != 0)
+            (void)fchown(fd, (uid_t)-1, sb.st_gid);
+        (void)fchmod(fd, sb.st_mode & 07777);
+    } else {
+        mode_t mask = umask(0);
+        umask(mask);
+        (void)fchmod(fd, 0666 & ~mask);
+    }
+}
+
+static rb_status open_temp(const char *path, const char *opt, const char *target,
+                           struct rb_out_temp **tp, FILE **fp, rb_diag *d)
+{
+    char *dir = dir_of(target);
+    int fd, err;
+    *fp = NULL;
+    *tp = dir ? temp_create(dir, target, &fd, &err) : NULL;
+    free(dir);
+    if (!*tp)
+        return RB_ERR_NOMEM;
+    if (fd < 0)
+        return fail(d, RB_ERR_IO, path, opt, err, "cannot create a temporary file");
+    copy_meta(fd, target);
+    if (!(*fp = fdopen(fd, "wb"))) {
+        err = errno;
+        close(fd);
+        return fail(d, RB_ERR_IO, path, opt, err, "cannot write");
+    }
+    return RB_OK;
+}
+
+static rb_status open_stream(const rb_out *o, FILE **fp, rb_diag *d)
+{
+    int fd, err;
+    *fp = NULL;
+    if (o->how == RB_OUT_FD) {
+        fflush(stdout);
+        fd = dup(o->fd_no);
+    } else {
+        /* no reader on a FIFO is an error, not a wait without end */
+        fd = open(o->target, O_WRONLY | O_NONBLOCK | O_NOCTTY);
+        if (fd < 0 && errno == ENXIO)
+            return fail(d, RB_ERR_IO, o->path, o->opt, 0,
+                        "the FIFO has no reader: nothing to write to");
+        if (fd >= 0) {
+            int fl = fcntl(fd, F_GETFL);
+            if (fl >= 0)
+                (void)fcntl(fd, F_SETFL, fl & ~O_NONBLOCK);
+        }
+    }
+    if (fd < 0 || !(*fp = fdopen(fd, "wb"))) {
+        err = errno;
+        if (fd >= 0)
+            close(fd);
+        return fail(d, RB_ERR_IO, o->path, o->opt, err, "cannot open for writing");
+    }
+    return RB_OK;
+}
+
+/* Flush, sync (regular files), close; the system's reason on error. */
+static rb_status close_out(FILE *fp, int sync, const char *path, const char *opt,
+                           int write_err, rb_diag *d)
+{
+    const char *what = NULL;
+    int err = 0;
+    if (write_err)
+        what = "cannot write", err = write_err;
+    if (!what && (fflush(fp) != 0 || ferror(fp)))
+        what = "cannot write", err = errno ? errno : EIO;
+    if (!what && sync && fsync(fileno(fp)) != 0)
+        what = "cannot sync to disk", err = errno;
+    if (fclose(fp) != 0 && !what)
+        what = "cannot close", err = errno;
+    if (what)
+        return fail(d, RB_ERR_IO, path, opt, err, "%s", what);
+    return RB_OK;
+}
+
+static rb_status fill_one(rb_outplan *p, size_t i, FILE *fp, rb_outplan_fill_fn fill,
+                          void *ctx, rb_diag *d)
+{
+    rb_out *o = &p->outs[i];
+    rb_status st;
+    int err;
+    errno = 0;
+    st = fill(ctx, i, fp, d);
+    err = ferror(fp) ? (errno ? errno : EIO) : 0;
+    if (st != RB_OK && !err) {
+        fclose(fp);
+        if (!d->file[0])
+            snprintf(d->file, sizeof d->file, "%s", o->path);
+        return st;
+    }
+    return close_out(fp, o->how == RB_OUT_FILE, o->path, o->opt, err, d);
+}
+
+static rb_status rename_temp(struct rb_out_temp *t, const char *path, const char *opt,
+                             rb_diag *d)
+{
+    if (rename(t->path, t->target) != 0)
+        return fail(d, RB_ERR_IO, path, opt, errno,
+                    "cannot rename the temporary file into place");
+    t->live = 0;
+    return RB_OK;
+}
+
+rb_status rb_outplan_write(rb_outplan *p, rb_outplan_fill_fn fill, void *ctx,
+                           rb_diag *d)
+{
+    rb_status st = RB_OK;
+    size_t i;
+    int pass;
+    /* regular files first, so that a failure there leaves the streams
+     * without data; then the streams; then the renames */
+    for (pass = 0; pass < 2 && st == RB_OK; pass++)
+        for (i = 0; i < p->n && st == RB_OK; i++) {
+            rb_out *o = &p->outs[i];
+            FILE *fp;
+            if (o->reserved || (o->how == RB_OUT_FILE) != (pass == 0))
+                continue;
+            if (o->how == RB_OUT_FILE)
+                st = open_temp(o->path, o->opt, o->target, &o->tmp, &fp, d);
+            else
+                st = open_stream(o, &fp, d);
+            if (st == RB_OK)
+                st = fill_one(p, i, fp, fill, ctx, d);
+        }
+    for (i = 0; i < p->n && st == RB_OK; i++)
+        if (p->outs[i].tmp)
+            st = rename_temp(p->outs[i].tmp, p->outs[i].path, p->outs[i].opt, d);
+    for (i = 0; i < p->n_extra && st == RB_OK; i++)
+        if (p->extra[i]->live)
+            st = rename_temp(p->extra[i], p->extra[i]->target, NULL, d);
+    for (i = 0; i < p->n; i++)
+        if (p->outs[i].tmp) {
+            temp_drop(p->outs[i].tmp);
+            p->outs[i].tmp = NULL;
+        }
+    for (i = 0; i < p->n_extra; i++)
+        temp_drop(p->extra[i]);
+    p->n_extra = 0;
+    return st;
+}
+
+rb_status rb_outplan_stage_data(rb_outplan *p, const char *path, const char *data,
+                                size_t len, rb_diag *d)
+{
+    rb_out o;
+    struct rb_out_temp *t = NULL;
+    FILE *fp = NULL;
+    rb_status st;
+    int err = 0;
+    memset(&o, 0, sizeof o);
+    o.fd_no = -1;
+    if (!(o.path = strdup(path)))
+        return RB_ERR_NOMEM;
+    st = resolve(&o, d);
+    if (st == RB_OK && o.how != RB_OUT_FILE)
+        st = fail(d, RB_ERR_IO, path, NULL, 0, "not a regular file");
+    if (st == RB_OK)
+        st = open_temp(path, NULL, o.target, &t, &fp, d);
+    if (st == RB_OK) {
+        if (len && fwrite(data, 1, len, fp) != len)
+            err = errno ? errno : EIO;
+        st = close_out(fp, 1, path, NULL, err, d);
+    }
+    /* a failed one stays listed, removed, until the plan is freed: other
+     * threads may be running and the signal handler walking the list */
+    if (t && st != RB_OK) {
+        if (t->live)
+            unlink(t->path);
+        t->live = 0;
+    }
+    if (t) {
+        pthread_mutex_lock(&p->lock);
+        if (p->n_extra == p->cap_extra) {
+            size_t cap = p->cap_extra ? 2 * p->cap_extra : 16;
+            struct rb_out_temp **n = realloc(p->extra, cap * sizeof *n);
+            if (n)
+                p->extra = n, p->cap_extra = cap;
+        }
+        if (p->n_extra < p->cap_extra)
+            p->extra[p->n_extra++] = t, t = NULL;
+        else if (st == RB_OK)
+            st = RB_ERR_NOMEM;
+        pthread_mutex_unlock(&p->lock);
+    }
+    if (t && t->live) {
+        unlink(t->path);
+        t->live = 0;   /* the node stays on the list: see above */
+    }
+    out_free(&o);
+    return st;
+}
