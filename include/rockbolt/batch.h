@@ -66,6 +66,7 @@ typedef enum {
 typedef struct {
     char *motion;         /* owned: the motion's name */
     int pass;
+    unsigned warnings;    /* validity warnings (rb_verdict.warnings) */
     double usage;         /* larger toughness usage of the two bolt rows */
     double shear_over_w;  /* elastic frame shear / W (the criteria's) */
     double force_over_fy; /* larger bolt row force / Fy */

@@ -25,12 +25,14 @@
 
 /* ---- What a report is made of ------------------------------------------ */
 
+/* Room for "PASS (3 validity warnings: lift-off, sliding, bolt impact)". */
+#define RB_HEADLINE_MAX 96
+
 /* One motion of a case, solved and judged. */
 typedef struct {
     const rb_case_motion *motion; /* borrowed: name, source, rb_motion */
     const rb_result *result;      /* borrowed: the solver's result */
-    int pass;                     /* rb_criteria_judge */
-    char reason[256];             /* its one-line reason */
+    rb_verdict verdict;           /* rb_judge of the result */
 } rb_report_motion;
 
 typedef struct {
@@ -42,12 +44,19 @@ typedef struct {
     const rb_case_design *design;  /* borrowed; NULL for a check: the
                                       reports then have no design parts */
     int pass;                      /* 1 when every motion passes */
+    unsigned warnings;             /* validity warnings of any motion */
+    char headline[RB_HEADLINE_MAX]; /* "PASS", "FAIL", or either with its
+                                      validity warnings in brackets */
     char reason[384];              /* one line: what governed the verdict */
 } rb_report;
 
-/* Set r->pass and r->reason from the motions: the first failing motion
- * (and how many others fail) or, when all pass, the criterion met. */
+/* Set r->pass, r->warnings, r->headline and r->reason from the motions:
+ * the first failing motion (and how many others fail) or, when all pass,
+ * the criterion met. */
 void rb_report_conclude(rb_report *r);
+
+/* "PASS", "FAIL", or "PASS (2 validity warnings: lift-off, bolt impact)". */
+void rb_report_headline(int pass, unsigned warnings, char *buf, size_t n);
 
 /* Render the JSON report. *out is a NUL-terminated string the caller frees
  * with free(). Returns RB_ERR_NONFINITE (diag->key names the field) if any

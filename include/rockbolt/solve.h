@@ -47,7 +47,13 @@ typedef struct {
     long max_events_per_s;   /* work bound per simulated second (default 20000) */
     long max_steps;          /* total step bound (default 50 000 000) */
     double theta_init_rad;   /* start rocking at this angle (sign = side), at rest */
+    int check_reactions;     /* 1: also sum the reactions over mass points and
+                                report the largest mismatch (tests) */
 } rb_solve_opts;
+
+/* Fraction of W the floor's vertical reaction must exceed for a friction
+ * demand to be taken there. */
+#define RB_FRICTION_FLOOR 0.05
 
 /* Defaults as documented above. */
 void rb_solve_opts_init(rb_solve_opts *opts);
@@ -69,15 +75,31 @@ typedef struct {
     double a_star_mps2, a_uplift_mps2, peak_floor_mps2;
     double u_static_m;         /* pi^2 a / (8 omega^2), the thesis's tables */
     double alpha_rad, theta0_rad, fy_row_n, capacity_j, weight_n, delta;
+    int rigid_bolts;           /* bolts that stop the plate rigidly (rigid-plastic,
+                                  non-yielding): the impact check applies */
     /* peaks */
     double max_theta_rad, max_theta_over_alpha;
     double max_u_m, max_u_over_ustatic;
     double max_shear_elastic_n;   /* GA (pi/4h) U = N* omega^2 U (frame shear) */
     double max_shear_total_n;     /* horizontal floor reaction on the body */
-    double max_friction_demand;   /* max |horizontal| / vertical floor reaction */
-    /* least vertical floor reaction: where it nears zero the friction demand
-     * has no bound, and the base is close to leaving the floor */
+    /* max |horizontal| / vertical floor reaction, taken only where the
+     * floor's vertical reaction exceeds RB_FRICTION_FLOOR W: nearer zero the
+     * ratio has no bound and says nothing a friction coefficient can meet */
+    double max_friction_demand;
+    /* least vertical floor reaction; at or below zero the base would leave
+     * the floor, which the model does not follow (docs/solver.md, Validity) */
     double min_vertical_reaction_n;
+    double liftoff_first_s;       /* first time the reaction is <= 0; < 0: never */
+    double liftoff_time_s;        /* total time it is <= 0 */
+    /* rigid bolt models: the largest elastic impact force a real row of
+     * stiffness k_row would take when the plate meets it at the speed the
+     * rigid stop destroys, v sqrt(k_row I_o / l^2); 0 for elastic bolts,
+     * which resolve the impact themselves */
+    double max_bolt_impact_n;
+    double max_bolt_impact_s;     /* when it happened */
+    /* check_reactions only: the largest difference between the vertical
+     * reaction in closed form and summed over the frame's mass points */
+    double reaction_mismatch_n;
     double max_bolt_force_n[2];   /* [RB_LEFT], [RB_RIGHT] */
     /* per bolt row */
     double final_gap_m[2];

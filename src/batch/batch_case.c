@@ -110,8 +110,9 @@ void rb_batch_case_solve(rb_batch_slot *s, rb_batch_case *bc, size_t m, int desi
     rb_report_motion *rm = &s->rms[m];
     rm->motion = cm;
     rm->result = r;
-    rm->pass = rb_criteria_judge(&s->c.criteria, r, rm->reason, sizeof rm->reason);
-    run->pass = rm->pass;
+    rb_judge(&s->c.criteria, r, &rm->verdict);
+    run->pass = rm->verdict.pass;
+    run->warnings = rm->verdict.warnings;
     run->usage = fmax(r->usage[0], r->usage[1]);
     run->shear_over_w = ratio(r->max_shear_elastic_n, r->weight_n);
     run->force_over_fy = ratio(fmax(r->max_bolt_force_n[0], r->max_bolt_force_n[1]),

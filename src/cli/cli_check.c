@@ -138,8 +138,7 @@ static rb_exit solve_all(const rb_cli_opts *o, check_run *r)
         }
         rm->motion = cm;
         rm->result = &r->results[i];
-        rm->pass = rb_criteria_judge(&r->c.criteria, &r->results[i], rm->reason,
-                                     sizeof rm->reason);
+        rb_judge(&r->c.criteria, &r->results[i], &rm->verdict);
     }
     r->rep.kase = &r->c;
     r->rep.motions = r->rms;
@@ -223,7 +222,7 @@ static rb_exit render_figures(const rb_cli_opts *o, check_run *r)
     if (st == RB_OK && o->html_path) {
         snprintf(title, sizeof title, "rockbolt %s: %.150s, %s",
                  o->command == RB_CMD_DESIGN ? "design" : "check",
-                 r->c.name ? r->c.name : "case", r->rep.pass ? "PASS" : "FAIL");
+                 r->c.name ? r->c.name : "case", r->rep.headline);
         st = rb_plot_html_page(title, r->text, (const char *const *)r->svgs, r->n_svgs,
                                &r->html, &d);
     }
@@ -425,7 +424,7 @@ rb_exit rb_cli_check_run(const rb_cli_opts *o)
     if (e == RB_EXIT_PASS && !o->quiet && !rb_outplan_uses_stdout(&r.plan)) {
         if (o->text_path) {
             char reason[2048];
-            printf("%s: %s\n", r.rep.pass ? "PASS" : "FAIL",
+            printf("%s: %s\n", r.rep.headline,
                    rb_text_escape_buf(r.rep.reason, reason, sizeof reason));
         } else {
             fputs(r.text, stdout);

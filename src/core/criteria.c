@@ -1,7 +1,9 @@
-/* Verdict of one run against the acceptance criteria (thesis sec. 6.6):
- * either the bolts must stay elastic, or they may yield but must keep their
- * toughness usage below a limit and the cabinet must not overturn. */
+/* The verdict of one run (thesis sec. 6.6): either the bolts must stay
+ * elastic, or they may yield but must keep their toughness usage below a
+ * limit and the cabinet must not overturn; beside it, whether the model's
+ * own assumptions held (docs/solver.md, Validity). */
 #include <stdio.h>
+#include <string.h>
 #include "rockbolt/criteria.h"
 
 void rb_criteria_init(rb_criteria *c)
@@ -10,35 +12,139 @@ void rb_criteria_init(rb_criteria *c)
     c->usage_limit = 1.0;
     c->max_shear_over_w = 0;
     c->max_theta_over_alpha = 0;
+    c->friction_coefficient = 0;
+    c->validity = RB_VALIDITY_WARN;
+}
+
+const char *rb_check_name(rb_check k)
+{
+    switch (k) {
+    case RB_CHECK_LIFT_OFF: return "lift-off";
+    case RB_CHECK_SLIDING: return "sliding";
+    case RB_CHECK_BOLT_IMPACT: return "bolt impact";
+    case RB_N_CHECKS: break;
+    }
+    return "?";
+}
+
+const char *rb_check_key(rb_check k)
+{
+    switch (k) {
+    case RB_CHECK_LIFT_OFF: return "lift_off";
+    case RB_CHECK_SLIDING: return "sliding";
+    case RB_CHECK_BOLT_IMPACT: return "bolt_impact";
+    case RB_N_CHECKS: break;
+    }
+    return "?";
+}
+
+const char *rb_check_status_str(rb_check_status s)
+{
+    switch (s) {
+    case RB_CHECK_OK: return "ok";
+    case RB_CHECK_WARNING: return "warning";
+    case RB_CHECK_NOT_CHECKED: return "not-checked";
+    }
+    return "?";
+}
+
+int rb_warnings_count(unsigned warnings)
+{
+    int count = 0;
+    for (int k = 0; k < RB_N_CHECKS; k++)
+        count += (warnings >> k) & 1u;
+    return count;
+}
+
+void rb_warnings_str(unsigned warnings, char *buf, size_t n)
+{
+    int count = rb_warnings_count(warnings);
+    size_t k;
+    if (n)
+        buf[0] = '\0';
+    if (!count || !n)
+        return;
+    size_t len = (size_t)snprintf(buf, n, "%d validity warning%s:", count,
+                                  count == 1 ? "" : "s");
+    const char *sep = " ";
+    for (k = 0; k < RB_N_CHECKS && len < n; k++)
+        if ((warnings >> k) & 1u) {
+            len += (size_t)snprintf(buf + len, n - len, "%s%s", sep, rb_check_name((rb_check)k));
+            sep = ", ";
+        }
+}
+
+static double larger(double a, double b)
+{
+    return a > b ? a : b;
+}
+
+static void validity(const rb_criteria *c, const rb_result *r, rb_verdict *v)
+{
+    v->check[RB_CHECK_LIFT_OFF] = r->min_vertical_reaction_n <= 0 ? RB_CHECK_WARNING
+                                                                 : RB_CHECK_OK;
+    if (!(c->friction_coefficient > 0))
+        v->check[RB_CHECK_SLIDING] = RB_CHECK_NOT_CHECKED;
+    else
+        v->check[RB_CHECK_SLIDING] = r->max_friction_demand > c->friction_coefficient
+                                     ? RB_CHECK_WARNING : RB_CHECK_OK;
+    /* only a rigid stop hides the impact; an elastic row resolves it */
+    if (!r->rigid_bolts)
+        v->check[RB_CHECK_BOLT_IMPACT] = RB_CHECK_NOT_CHECKED;
+    else
+        v->check[RB_CHECK_BOLT_IMPACT] = r->max_bolt_impact_n >= r->fy_row_n
+                                         ? RB_CHECK_WARNING : RB_CHECK_OK;
+    v->warnings = 0;
+    for (int k = 0; k < RB_N_CHECKS; k++)
+        if (v->check[k] == RB_CHECK_WARNING)
+            v->warnings |= 1u << k;
 }
 
 /* A macro so that each message is a literal the compiler checks. */
-#define say(reason, n, pass, fmt, v) \
-    ((reason) && (n) ? (void)snprintf(reason, n, fmt, v) : (void)0, (pass))
+#define SAY(v, pass_, ...) \
+    ((void)snprintf((v)->reason, sizeof (v)->reason, __VA_ARGS__), (v)->criteria_pass = (pass_))
 
-int rb_criteria_judge(const rb_criteria *c, const rb_result *r, char *reason, size_t n)
+static void criteria(const rb_criteria *c, const rb_result *r, rb_verdict *v)
 {
-    double usage = r->usage[0] > r->usage[1] ? r->usage[0] : r->usage[1];
+    double usage = larger(r->usage[0], r->usage[1]);
     double shear = r->weight_n > 0 ? r->max_shear_elastic_n / r->weight_n : 0;
+    double force = r->fy_row_n > 0
+                   ? larger(r->max_bolt_force_n[0], r->max_bolt_force_n[1]) / r->fy_row_n : 0;
     if (r->overturned)
-        return say(reason, n, 0, "the cabinet overturns at t = %.3f s", r->overturn_s);
-    if (r->broken[0] || r->broken[1])
-        return say(reason, n, 0, "a bolt row breaks at t = %.3f s",
-                   r->broken[0] ? r->break_s[0] : r->break_s[1]);
-    if (c->kind == RB_CRIT_NO_YIELD && (r->yielded[0] || r->yielded[1]))
-        return say(reason, n, 0, "a bolt row yields at t = %.3f s (criterion: no yield)",
-                   r->yielded[0] ? r->first_yield_s[0] : r->first_yield_s[1]);
-    if (c->kind == RB_CRIT_NO_BREAK && usage >= c->usage_limit)
-        return say(reason, n, 0, "bolt toughness usage %.3f reaches the limit", usage);
-    if (c->max_shear_over_w > 0 && shear > c->max_shear_over_w)
-        return say(reason, n, 0, "base shear / W = %.3f exceeds its limit", shear);
-    if (c->max_theta_over_alpha > 0 && r->max_theta_over_alpha > c->max_theta_over_alpha)
-        return say(reason, n, 0, "rotation / alpha = %.4f exceeds its limit",
-                   r->max_theta_over_alpha);
-    if (c->kind == RB_CRIT_NO_YIELD) {
-        double f = r->fy_row_n > 0 ? (r->max_bolt_force_n[0] > r->max_bolt_force_n[1]
-                   ? r->max_bolt_force_n[0] : r->max_bolt_force_n[1]) / r->fy_row_n : 0;
-        return say(reason, n, 1, "bolts stay elastic (max force / Fy = %.3f)", f);
+        SAY(v, 0, "the cabinet overturns at t = %.3f s", r->overturn_s);
+    else if (r->broken[0] || r->broken[1])
+        SAY(v, 0, "a bolt row breaks at t = %.3f s",
+            r->broken[0] ? r->break_s[0] : r->break_s[1]);
+    else if (c->kind == RB_CRIT_NO_YIELD && (r->yielded[0] || r->yielded[1]))
+        SAY(v, 0, "a bolt row yields at t = %.3f s (criterion: no yield)",
+            r->yielded[0] ? r->first_yield_s[0] : r->first_yield_s[1]);
+    else if (c->kind == RB_CRIT_NO_YIELD && force >= 1.0)
+        /* rows that never yield in the model still must not reach Fy */
+        SAY(v, 0, "a bolt row force reaches Fy (max force / Fy = %.6g; criterion: no yield)",
+            force);
+    else if (c->kind == RB_CRIT_NO_BREAK && usage >= c->usage_limit)
+        SAY(v, 0, "bolt toughness usage %.6g reaches the limit %g", usage, c->usage_limit);
+    else if (c->max_shear_over_w > 0 && shear > c->max_shear_over_w)
+        SAY(v, 0, "base shear / W = %.6g exceeds its limit %g", shear, c->max_shear_over_w);
+    else if (c->max_theta_over_alpha > 0 && r->max_theta_over_alpha > c->max_theta_over_alpha)
+        SAY(v, 0, "rotation / alpha = %.6g exceeds its limit %g", r->max_theta_over_alpha,
+            c->max_theta_over_alpha);
+    else if (c->kind == RB_CRIT_NO_YIELD)
+        SAY(v, 1, "bolts stay elastic (max force / Fy = %.6g)", force);
+    else
+        SAY(v, 1, "bolt toughness usage %.6g is below the limit %g", usage, c->usage_limit);
+}
+
+void rb_judge(const rb_criteria *c, const rb_result *r, rb_verdict *v)
+{
+    memset(v, 0, sizeof *v);
+    criteria(c, r, v);
+    validity(c, r, v);
+    v->pass = v->criteria_pass;
+    if (v->pass && v->warnings && c->validity == RB_VALIDITY_FAIL) {
+        char w[128];
+        rb_warnings_str(v->warnings, w, sizeof w);
+        snprintf(v->reason, sizeof v->reason, "%s (criteria: validity: fail)", w);
+        v->pass = 0;
     }
-    return say(reason, n, 1, "bolt toughness usage %.3f is below the limit", usage);
 }

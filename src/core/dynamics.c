@@ -291,9 +291,44 @@ void rb_dyn_reactions(const rb_sys *S, const rb_disc *D, const double *y,
     mirror(D, y, m);
     /* the angle's cosine and sine come with aux, from the same evaluation */
     double thd = m[3], c = a->cos_th, sn = a->sin_th;
-    double Mb = S->M * S->b - (S->form == RB_FORM_CONSISTENT ? d->Nstar * m[0] : 0);
+    /* Newton's law on the deformed body whatever the formulation: a mass
+     * point moved by u along the base's axis rises by u sin theta */
+    double Mb = S->M * S->b - d->Nstar * m[0];
     double Ad = d->Nstar * a->udd + S->M * S->h * a->thdd + Mb * thd * thd;
     double A2 = -S->M * S->h * thd * thd - 2 * d->Nstar * m[1] * thd + Mb * a->thdd;
     *horizontal = s * (-S->M * s * a->x + c * Ad + sn * A2);
     *vertical = d->W - sn * Ad + c * A2;
+}
+
+/* The same reactions as rb_dyn_reactions, summed over the frame's mass
+ * points instead of through the mode's integrals N*, M h and M b: a point
+ * at height y sits at p = b - U phi(y) along the base from the pivot, and
+ * the floor and bolts give it m (x'' + X'') and m (g + Z''). Composite
+ * Simpson over 2h in RB_REACTION_PANELS panels; only tests pay for it. */
+#define RB_REACTION_PANELS 256
+void rb_dyn_reactions_points(const rb_sys *S, const rb_disc *D, const double *y,
+                             const rb_aux *a, double *horizontal, double *vertical)
+{
+    double s = D->side < 0 ? -1.0 : 1.0, m[4];
+    mirror(D, y, m);
+    double U = m[0], Ud = m[1], thd = m[3], Udd = a->udd, thdd = a->thdd;
+    double c = a->cos_th, sn = a->sin_th, H = 2 * S->h, dy = H / RB_REACTION_PANELS;
+    double sum_x = 0, sum_z = 0;
+    for (int i = 0; i <= RB_REACTION_PANELS; i++) {
+        double yy = i * dy;
+        double w = (i == 0 || i == RB_REACTION_PANELS) ? 1 : (i % 2 ? 4 : 2);
+        double phi = sin(M_PI * yy / (2 * H));
+        double p = S->b - U * phi, pd = -Ud * phi, pdd = -Udd * phi;
+        double Xdd = pdd * c - 2 * pd * sn * thd - p * (sn * thdd + c * thd * thd)
+                     - yy * (c * thdd - sn * thd * thd);
+        double Zdd = pdd * sn + 2 * pd * c * thd + p * (c * thdd - sn * thd * thd)
+                     - yy * (sn * thdd + c * thd * thd);
+        sum_x += w * Xdd;
+        sum_z += w * Zdd;
+    }
+    double mass_per_height = S->M / H;
+    sum_x *= mass_per_height * dy / 3;
+    sum_z *= mass_per_height * dy / 3;
+    *horizontal = -(S->M * a->x + s * sum_x);
+    *vertical = S->d.W + sum_z;
 }

@@ -75,5 +75,8 @@ double rb_dyn_strain(const rb_sys *S, const rb_disc *D, const double *y);
 /* Horizontal and vertical floor reactions on the body (N, physical sign). */
 void rb_dyn_reactions(const rb_sys *S, const rb_disc *D, const double *y,
                       const rb_aux *aux, double *horizontal, double *vertical);
+/* The same, summed over mass points: an independent check of the above. */
+void rb_dyn_reactions_points(const rb_sys *S, const rb_disc *D, const double *y,
+                             const rb_aux *aux, double *horizontal, double *vertical);
 
 #endif

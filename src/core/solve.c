@@ -125,11 +125,13 @@ static void fill_constants(rb_solver *sv, const rb_motion *motion)
     r->a_uplift_mps2 = S->d.a_uplift_mps2;
     r->peak_floor_mps2 = rb_motion_peak(motion);
     r->min_vertical_reaction_n = HUGE_VAL; /* the first point sets it */
+    r->liftoff_first_s = -1;
     r->u_static_m = S->model->rigid ? 0
                     : M_PI * M_PI * r->peak_floor_mps2 / (8 * S->d.omega * S->d.omega);
     r->alpha_rad = S->d.alpha;
     r->theta0_rad = S->d.theta0_rad;
     r->fy_row_n = S->d.fy_row_n;
+    r->rigid_bolts = S->has_bolts && !S->elastic_bolts;
     r->capacity_j = S->d.capacity_j;
     r->weight_n = S->d.W;
     r->delta = S->d.delta;

@@ -51,6 +51,9 @@ typedef struct {
     /* sampled peaks of |shear|, friction demand and bolt force, reset at
      * every transition (a peak is only interpolated where it is smooth) */
     rb_peak_window win_shear, win_friction, win_bolt, win_vertical;
+    /* the last point's floor reaction, for the time spent at or below 0 */
+    double lift_t, lift_v;
+    int lift_have;
     int done;
 } rb_solver;
 

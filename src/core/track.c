@@ -48,6 +48,35 @@ static double peak_push(rb_peak_window *w, double t, double v)
     return fmax(v, w->v[1] + slope * dt + curv * dt * dt);
 }
 
+/* Time with the floor's reaction at or below zero, linear between the
+ * points visited; a point at the time of the one before (the two sides of
+ * a transition) only replaces it. */
+static void note_liftoff(rb_solver *sv, double t, double v)
+{
+    rb_result *r = sv->res;
+    if (sv->lift_have && t > sv->lift_t) {
+        double t0 = sv->lift_t, v0 = sv->lift_v, dt = t - t0;
+        if (v0 <= 0 && v <= 0)
+            r->liftoff_time_s += dt;
+        else if (v0 <= 0 || v <= 0) {
+            /* one end is at or below zero: the crossing, linearly */
+            double tc = t0 + dt * v0 / (v0 - v);
+            if (v0 <= 0)
+                r->liftoff_time_s += tc - t0;
+            else {
+                r->liftoff_time_s += t - tc;
+                if (r->liftoff_first_s < 0)
+                    r->liftoff_first_s = tc;
+            }
+        }
+    }
+    if (v <= 0 && r->liftoff_first_s < 0)
+        r->liftoff_first_s = t;
+    sv->lift_have = 1;
+    sv->lift_t = t;
+    sv->lift_v = v;
+}
+
 void rb_track_reset(rb_solver *sv)
 {
     sv->win_shear.n = sv->win_friction.n = sv->win_bolt.n = sv->win_vertical.n = 0;
@@ -65,6 +94,12 @@ void rb_track_aux(rb_solver *sv, double t, const double *y, const rb_aux *a)
                                         peak_push(&sv->win_bolt, t, a->bolt_force));
     }
     rb_dyn_reactions(S, &sv->disc, y, a, &H, &V);
+    if (sv->opts.check_reactions) {
+        double Hp, Vp;
+        rb_dyn_reactions_points(S, &sv->disc, y, a, &Hp, &Vp);
+        r->reaction_mismatch_n = fmax(r->reaction_mismatch_n,
+                                      fmax(fabs(Hp - H), fabs(Vp - V)));
+    }
     r->max_shear_total_n = fmax(r->max_shear_total_n, peak_push(&sv->win_shear, t, fabs(H)));
     /* V is what floor and bolt give together; the floor presses on the
      * plate with that plus the tension of a loaded bolt, which pulls the
@@ -73,7 +108,8 @@ void rb_track_aux(rb_solver *sv, double t, const double *y, const rb_aux *a)
     /* a least value is the peak of its negative */
     r->min_vertical_reaction_n = fmin(r->min_vertical_reaction_n,
                                       -peak_push(&sv->win_vertical, t, -floor_v));
-    if (floor_v > 0)
+    note_liftoff(sv, t, floor_v);
+    if (floor_v > RB_FRICTION_FLOOR * S->d.W)
         r->max_friction_demand = fmax(r->max_friction_demand,
                                       peak_push(&sv->win_friction, t, fabs(H) / floor_v));
     else

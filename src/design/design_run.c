@@ -69,25 +69,6 @@ void rb_design_motion_at(const rb_design_ctx *ctx, double level_mps2, rb_motion 
         out->amplitude_mps2 = copysign(level_mps2, ctx->motion->amplitude_mps2);
 }
 
-/* The criteria's verdict, plus one case they cannot see: non-yielding bolts
- * never record a yield, so "no yield" must read their force against Fy. */
-static int judge(const rb_design_ctx *ctx, const rb_model *model, const rb_result *r,
-                 char *reason, size_t n)
-{
-    int ok = rb_criteria_judge(ctx->criteria, r, reason, n);
-    if (ok && ctx->criteria->kind == RB_CRIT_NO_YIELD
-        && model->bolt_model == RB_BOLT_NONYIELDING && r->fy_row_n > 0) {
-        double f = rb_design_max2(r->max_bolt_force_n[0], r->max_bolt_force_n[1])
-                   / r->fy_row_n;
-        if (f >= 1.0) {
-            snprintf(reason, n, "a bolt row force reaches Fy (max force / Fy = %.3f; "
-                     "criterion: no yield)", f);
-            ok = 0;
-        }
-    }
-    return ok;
-}
-
 void rb_design_run_one(const rb_design_ctx *ctx, const rb_model *model,
                        const rb_motion *motion, rb_design_run *out)
 {
@@ -98,7 +79,12 @@ void rb_design_run_one(const rb_design_ctx *ctx, const rb_model *model,
     out->r.history = NULL;
     out->meets = -1;
     if (out->status == RB_OK && ctx->criteria)
-        out->meets = judge(ctx, model, &out->r, out->reason, sizeof out->reason);
+    {
+        rb_verdict v;
+        rb_judge(ctx->criteria, &out->r, &v);
+        out->meets = v.pass;
+        snprintf(out->reason, sizeof out->reason, "%s", v.reason);
+    }
     else if (out->status != RB_OK)
         snprintf(out->reason, sizeof out->reason, "the run failed: %s",
                  rb_status_str(out->status));

@@ -25,7 +25,8 @@ static const char *const rb_anchorage_keys[] = {
     "model", "bolts_per_row", "diameter", "area", "yield_stress", "toughness",
     "deformable_length", "lever_arm", "edge_distance", "elastic_modulus", NULL};
 static const char *const rb_criteria_keys[] = {
-    "kind", "usage_limit", "max_shear_over_w", "max_rotation_over_alpha", NULL};
+    "kind", "usage_limit", "max_shear_over_w", "max_rotation_over_alpha",
+    "friction_coefficient", "validity", NULL};
 static const char *const rb_analysis_keys[] = {
     "formulation", "integrator", "tolerance", "output_interval", "history",
     "stretch_past_failure", NULL};
@@ -235,7 +236,6 @@ static void rb_read_gap(rb_cctx *c, rb_ynode *root, rb_model *m)
         c->gap_is_ratio = 1;
         m->gap_m = c->gap_ratio * m->lever_arm_m;
     }
-}
     /* a gap that is not zero but a rounding error of the lever arm makes
      * the bolts chatter at every contact */
     double l = m->lever_arm_m;
@@ -245,10 +245,12 @@ static void rb_read_gap(rb_cctx *c, rb_ynode *root, rb_model *m)
                       RB_CASE_MIN_GAP_RATIO, RB_CASE_MIN_GAP_RATIO * l * 1e3, v->text);
         c->model_errors++;
     }
+}
 
 static void rb_read_criteria(rb_cctx *c, rb_ynode *cr, rb_criteria *k)
 {
     static const char *const kinds[] = {"no-yield", "no-break", NULL};
+    static const char *const validity_modes[] = {"warn", "fail", NULL};
     const char *p = "criteria";
     int i;
     rb_ynode *v = rb_cv_get(c, cr, p, "kind", 0, "");
@@ -260,6 +262,11 @@ static void rb_read_criteria(rb_cctx *c, rb_ynode *cr, rb_criteria *k)
                  &k->max_shear_over_w);
     rb_cv_number(c, cr, p, "max_rotation_over_alpha", 0, RB_DIM_RATIO, 0, 1,
                  (double)NAN, 0, &k->max_theta_over_alpha);
+    rb_cv_number(c, cr, p, "friction_coefficient", 0, RB_DIM_RATIO, 0, 1, (double)NAN, 0,
+                 &k->friction_coefficient);
+    v = rb_cv_get(c, cr, p, "validity", 0, "");
+    if (v && rb_cv_enum(c, v, "criteria.validity", validity_modes, &i))
+        k->validity = i == 0 ? RB_VALIDITY_WARN : RB_VALIDITY_FAIL;
     rb_cv_unknown_keys(c, cr, p, rb_criteria_keys);
 }
 

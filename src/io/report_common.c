@@ -35,18 +35,29 @@ void rb_report_norms_compute(const rb_report *r, const rb_report_motion *m,
     }
 }
 
+void rb_report_headline(int pass, unsigned warnings, char *buf, size_t n)
+{
+    char w[80];
+    rb_warnings_str(warnings, w, sizeof w);
+    snprintf(buf, n, "%s%s%s%s", pass ? "PASS" : "FAIL", w[0] ? " (" : "", w,
+             w[0] ? ")" : "");
+}
+
 void rb_report_conclude(rb_report *r)
 {
     size_t i, failed = 0;
     const rb_report_motion *first = NULL;
+    r->warnings = 0;
     for (i = 0; i < r->n_motions; i++) {
-        if (!r->motions[i].pass) {
+        r->warnings |= r->motions[i].verdict.warnings;
+        if (!r->motions[i].verdict.pass) {
             if (!first)
                 first = &r->motions[i];
             failed++;
         }
     }
     r->pass = failed == 0;
+    rb_report_headline(r->pass, r->warnings, r->headline, sizeof r->headline);
     if (!first) {
         snprintf(r->reason, sizeof r->reason, "%s%zu motion%s meet%s the %s criterion",
                  r->n_motions > 1 ? "all " : "", r->n_motions,
@@ -54,11 +65,11 @@ void rb_report_conclude(rb_report *r)
                  rb_report_criterion_str(r->kase->criteria.kind));
     } else if (failed == 1) {
         snprintf(r->reason, sizeof r->reason, "motion '%.100s': %.250s",
-                 first->motion->name ? first->motion->name : "?", first->reason);
+                 first->motion->name ? first->motion->name : "?", first->verdict.reason);
     } else {
         snprintf(r->reason, sizeof r->reason,
                  "motion '%.100s': %.200s (and %zu more motions fail)",
-                 first->motion->name ? first->motion->name : "?", first->reason,
+                 first->motion->name ? first->motion->name : "?", first->verdict.reason,
                  failed - 1);
     }
 }
@@ -120,6 +131,15 @@ const char *rb_report_criterion_str(rb_criterion_kind kind)
     switch (kind) {
     case RB_CRIT_NO_YIELD: return "no-yield";
     case RB_CRIT_NO_BREAK: return "no-break";
+    }
+    return "unknown";
+}
+
+const char *rb_report_validity_mode_str(rb_validity_mode mode)
+{
+    switch (mode) {
+    case RB_VALIDITY_WARN: return "warn";
+    case RB_VALIDITY_FAIL: return "fail";
     }
     return "unknown";
 }

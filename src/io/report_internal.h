@@ -32,6 +32,7 @@ const char *rb_report_bolt_model_str(rb_bolt_model model);
 const char *rb_report_formulation_str(rb_formulation form);
 const char *rb_report_integrator_str(rb_integrator integ);
 const char *rb_report_criterion_str(rb_criterion_kind kind);
+const char *rb_report_validity_mode_str(rb_validity_mode mode);
 const char *rb_report_side_str(int side); /* RB_LEFT, RB_RIGHT */
 
 /* ---- report_suite.c: a case's motions taken together -------------------- */

@@ -94,6 +94,9 @@ static void add_settings(rb_jctx *cx, cJSON *root, const rb_case *c)
     rb_j_opt(cx, o, "max_shear_over_w", k->max_shear_over_w > 0, k->max_shear_over_w);
     rb_j_opt(cx, o, "max_theta_over_alpha", k->max_theta_over_alpha > 0,
           k->max_theta_over_alpha);
+    rb_j_opt(cx, o, "friction_coefficient", k->friction_coefficient > 0,
+             k->friction_coefficient);
+    rb_j_str(cx, o, "validity", rb_report_validity_mode_str(k->validity));
 }
 
 static void add_motion_desc(rb_jctx *cx, cJSON *parent, const rb_case_motion *cm,
@@ -293,8 +296,11 @@ static void add_motion(rb_jctx *cx, cJSON *arr, const rb_report *r, size_t i)
     rb_j_str(cx, o, "name", m->motion->name);
     add_motion_desc(cx, o, m->motion, &n, m->result);
     v = rb_j_obj(cx, o, "verdict");
-    rb_j_bool(cx, v, "pass", m->pass);
-    rb_j_str(cx, v, "reason", m->reason);
+    rb_j_bool(cx, v, "pass", m->verdict.pass);
+    rb_j_bool(cx, v, "criteria_pass", m->verdict.criteria_pass);
+    rb_j_warnings(cx, v, "validity_warnings", m->verdict.warnings);
+    rb_j_str(cx, v, "reason", m->verdict.reason);
+    rb_report_json_validity(cx, o, r, m);
     v = rb_j_obj(cx, o, "result");
     add_peaks(cx, v, m->result, &n);
     add_rows_outcome(cx, v, m->result, &n);
@@ -319,10 +325,12 @@ static void add_head(rb_jctx *cx, cJSON *root, const rb_report *r)
     rb_j_str(cx, o, "path", r->kase->path);
     rb_j_str(cx, o, "description", r->kase->description);
     for (i = 0; i < r->n_motions; i++)
-        failed += !r->motions[i].pass;
+        failed += !r->motions[i].verdict.pass;
     o = rb_j_obj(cx, root, "verdict");
     rb_j_bool(cx, o, "pass", r->pass);
     rb_j_str(cx, o, "result", r->pass ? "PASS" : "FAIL");
+    rb_j_str(cx, o, "headline", r->headline);
+    rb_j_warnings(cx, o, "validity_warnings", r->warnings);
     rb_j_str(cx, o, "reason", r->reason);
     rb_j_num(cx, o, "motions", (double)r->n_motions);
     rb_j_num(cx, o, "motions_failed", (double)failed);

@@ -35,4 +35,10 @@ void rb_report_json_case_design(rb_jctx *cx, cJSON *root, const rb_report *r);
 void rb_report_json_motion_design(rb_jctx *cx, cJSON *motion_o, const rb_report *r,
                                   size_t i);
 
+/* report_json_validity.c: a motion's validity block, and an array of the
+ * names of the checks in a warnings mask. */
+void rb_report_json_validity(rb_jctx *cx, cJSON *motion_o, const rb_report *r,
+                             const rb_report_motion *m);
+void rb_j_warnings(rb_jctx *cx, cJSON *o, const char *key, unsigned warnings);
+
 #endif

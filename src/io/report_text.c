@@ -17,8 +17,10 @@ static void case_vars(rb_tvars *t, const rb_report *r)
     const rb_derived *d = &r->derived;
     size_t i, failed = 0;
     for (i = 0; i < r->n_motions; i++)
-        failed += !r->motions[i].pass;
+        failed += !r->motions[i].verdict.pass;
     rb_tv_str(t, "verdict", r->pass ? "PASS" : "FAIL");
+    rb_tv_str(t, "headline", r->headline);
+    rb_tv_int(t, "n_validity_warnings", (long)rb_warnings_count(r->warnings));
     rb_tv_str(t, "reason", r->reason);
     rb_tv_str(t, "version", RB_VERSION_STRING);
     rb_tv_str(t, "case_name", r->kase->name);
@@ -83,15 +85,17 @@ static void suite_vars(rb_tvars *t, const rb_report *r)
 }
 
 static void motion_head_vars(rb_tvars *t, const rb_report *r, size_t i,
-                             const rb_report_norms *n)
+                             const rb_report_norms *n, char *rm_headline, size_t hn)
 {
     const rb_report_motion *rm = &r->motions[i];
     const rb_result *res = rm->result;
     rb_tv_int(t, "index", (long)(i + 1));
     rb_tv_str(t, "name", rm->motion->name);
     rb_tv_str(t, "source", rm->motion->source);
-    rb_tv_str(t, "motion_verdict", rm->pass ? "PASS" : "FAIL");
-    rb_tv_str(t, "motion_reason", rm->reason);
+    rb_report_headline(rm->verdict.pass, rm->verdict.warnings, rm_headline, hn);
+    rb_tv_str(t, "motion_verdict", rm->verdict.pass ? "PASS" : "FAIL");
+    rb_tv_str(t, "motion_headline", rm_headline);
+    rb_tv_str(t, "motion_reason", rm->verdict.reason);
     rb_tv_str(t, "kind", rb_report_motion_kind_str(rm->motion->motion.kind));
     rb_tv_num(t, "peak_mps2", res->peak_floor_mps2);
     rb_tv_num(t, "peak_g", n->peak_g);
@@ -162,6 +166,29 @@ static void motion_outcome_vars(rb_tvars *t, const rb_result *res)
     rb_tv_int(t, "events", res->events);
 }
 
+/* The checks of the model's assumptions (docs/report-format.md, Validity). */
+static void motion_validity_vars(rb_tvars *t, const rb_report *r, const rb_report_motion *rm)
+{
+    const rb_result *res = rm->result;
+    const rb_criteria *c = &r->kase->criteria;
+    const rb_verdict *v = &rm->verdict;
+    rb_tv_str(t, "validity_mode", rb_report_validity_mode_str(c->validity));
+    rb_tv_str(t, "lift_off_status", rb_check_status_str(v->check[RB_CHECK_LIFT_OFF]));
+    rb_tv_opt(t, "liftoff_first_s", res->liftoff_first_s >= 0, res->liftoff_first_s);
+    rb_tv_num(t, "liftoff_time_s", res->liftoff_time_s);
+    rb_tv_str(t, "sliding_status", rb_check_status_str(v->check[RB_CHECK_SLIDING]));
+    rb_tv_opt(t, "friction_coefficient", c->friction_coefficient > 0,
+              c->friction_coefficient);
+    rb_tv_num(t, "friction_floor_over_w", RB_FRICTION_FLOOR);
+    rb_tv_str(t, "bolt_impact_status", rb_check_status_str(v->check[RB_CHECK_BOLT_IMPACT]));
+    rb_tv_opt(t, "impact_force_kn", res->rigid_bolts, res->max_bolt_impact_n * 1e-3);
+    rb_tv_opt(t, "impact_over_fy", res->rigid_bolts,
+              rb_report_ratio(res->max_bolt_impact_n, res->fy_row_n));
+    rb_tv_opt(t, "impact_s", res->rigid_bolts && res->max_bolt_impact_n > 0,
+              res->max_bolt_impact_s);
+    rb_tv_opt(t, "k_row_mn_per_m", res->rigid_bolts, r->derived.k_row_npm * 1e-6);
+}
+
 rb_status rb_report_text_render(const rb_report *r, const char *tmpl,
                                 char **out, rb_diag *diag)
 {
@@ -172,10 +199,11 @@ rb_status rb_report_text_render(const rb_report *r, const char *tmpl,
     rb_txt_arena *arena = rb_txt_arena_new();
     rb_tscope top = {0};
     rb_tlist lists[2] = { { "motions", NULL, 0 }, { "design", NULL, 0 } };
+    char (*heads)[RB_HEADLINE_MAX] = calloc(n ? n : 1, sizeof *heads);
     rb_tvars t;
     rb_status st = RB_ERR_NOMEM;
     *out = NULL;
-    if (!vars || !items || !motion_lists || !arena)
+    if (!vars || !items || !motion_lists || !arena || !heads)
         goto done;
     t.v = vars;
     t.n = 0;
@@ -188,9 +216,10 @@ rb_status rb_report_text_render(const rb_report *r, const char *tmpl,
         rb_report_norms_compute(r, &r->motions[i], &norms);
         t.v = vars + (i + 1) * RB_TXT_MAX_VARS;
         t.n = 0;
-        motion_head_vars(&t, r, i, &norms);
+        motion_head_vars(&t, r, i, &norms, heads[i], sizeof heads[i]);
         motion_row_vars(&t, r->motions[i].result, &norms);
         motion_outcome_vars(&t, r->motions[i].result);
+        motion_validity_vars(&t, r, &r->motions[i]);
         items[i].vars = t.v;
         items[i].n_vars = t.n;
         if (rb_report_text_motion_design(r, i, arena, &motion_lists[i]) != RB_OK)
@@ -208,6 +237,7 @@ rb_status rb_report_text_render(const rb_report *r, const char *tmpl,
 done:
     rb_txt_arena_free(arena);
     free(motion_lists);
+    free(heads);
     free(vars);
     free(items);
     return st;

@@ -324,9 +324,10 @@ static void draw_titles(rb_sbuf *b, const rb_report *rep, const rb_report_motion
     rb_sbuf_puts(b, " \xe2\x80\x94 ");
     rb_sbuf_escape(b, motion_name);
     rb_sbuf_puts(b, "</text>\n");
-    rb_sbuf_printf(b, "<text x=\"%.1f\" y=\"44\" font-size=\"12\">%s: ", LEFT,
-                   rm->pass ? "PASS" : "FAIL");
-    rb_sbuf_escape(b, rm->reason);
+    char head[RB_HEADLINE_MAX];
+    rb_report_headline(rm->verdict.pass, rm->verdict.warnings, head, sizeof head);
+    rb_sbuf_printf(b, "<text x=\"%.1f\" y=\"44\" font-size=\"12\">%s: ", LEFT, head);
+    rb_sbuf_escape(b, rm->verdict.reason);
     rb_sbuf_puts(b, "</text>\n");
     if (res->a_star_mps2 > 0 && rep->derived.g > 0 && isfinite(res->a_star_mps2)
         && isfinite(res->peak_floor_mps2)) {

@@ -98,8 +98,7 @@ rb_status rb_plot_report_html(const rb_report *rep, const char *text_report,
             n++;
     }
     if (st == RB_OK) {
-        snprintf(title, sizeof title, "%s: %.200s",
-                 rep->pass ? "PASS" : "FAIL",
+        snprintf(title, sizeof title, "%s: %.200s", rep->headline,
                  rep->kase && rep->kase->name ? rep->kase->name : "rockbolt check");
         st = rb_plot_html_page(title, text_report, (const char *const *)svgs, n, out,
                                diag);

@@ -116,8 +116,7 @@ int main(int argc, char **argv)
         }
         rm[i].motion = &c.motions[i];
         rm[i].result = &res[i];
-        rm[i].pass = rb_criteria_judge(&c.criteria, &res[i], rm[i].reason,
-                                       sizeof rm[i].reason);
+        rb_judge(&c.criteria, &res[i], &rm[i].verdict);
     }
     rep.kase = &c;
     rep.motions = rm;

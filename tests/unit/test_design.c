@@ -286,7 +286,11 @@ static int elcentro(rb_series *s, rb_motion *mo, const rb_model *m, double level
 static int run_meets(const rb_model *m, const rb_motion *mo, const rb_criteria *c)
 {
     rb_result r;
-    int ok = rb_solve_run(m, mo, NULL, &r, NULL) == RB_OK && rb_criteria_judge(c, &r, NULL, 0);
+    rb_verdict v;
+    int ok = rb_solve_run(m, mo, NULL, &r, NULL) == RB_OK;
+    if (ok)
+        rb_judge(c, &r, &v);
+    ok = ok && v.pass;
     rb_result_free(&r);
     return ok;
 }

@@ -74,7 +74,7 @@ static rb_status solve(double a_over_astar, double duration, double dt)
     rb_solve_opts_init(&o);
     o.history_dt_s = dt;
     rb_status st = rb_solve_run(&kase.model, &cm.motion, &o, &res, NULL);
-    rm.pass = rb_criteria_judge(&kase.criteria, &res, rm.reason, sizeof rm.reason);
+    rb_judge(&kase.criteria, &res, &rm.verdict);
     rb_report_conclude(&rep);
     return st;
 }

@@ -51,8 +51,8 @@ static void setup(void)
     res.stage_time_s[2] = 0.5;
     rm.motion = &cm;
     rm.result = &res;
-    rm.pass = 1;
-    snprintf(rm.reason, sizeof rm.reason, "fine");
+    rm.verdict.pass = 1;
+    snprintf(rm.verdict.reason, sizeof rm.verdict.reason, "fine");
     memset(&rep, 0, sizeof rep);
     rep.kase = &kase;
     CHECK(rb_model_derive(&kase.model, &rep.derived, NULL) == RB_OK);
@@ -139,10 +139,10 @@ static void test_text(void)
     CHECK(out && strstr(out, "= 2.000 W") != NULL);
     CHECK(out && strstr(out, "first yield (s)               n/a      0.500") != NULL);
     free(out);
-    rm.pass = 0;
+    rm.verdict.pass = 0;
     rb_report_conclude(&rep);
     CHECK(!rep.pass && strcmp(rep.reason, "motion 'harmonic': fine") == 0);
-    rm.pass = 1;
+    rm.verdict.pass = 1;
     rb_report_conclude(&rep);
 }
 

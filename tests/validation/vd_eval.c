@@ -570,11 +570,10 @@ static void eval_grid_level(vd_ctx *c, const rb_case *k, const rb_motion *m,
         rb_diag_clear(&d);
         rb_status st = rb_solve_run(&k->model, &at, &o, &r, &d);
         c->solver_runs++;
-        int meets = st == RB_OK && rb_criteria_judge(&k->criteria, &r, NULL, 0);
-        /* bolts that cannot yield fail "no-yield" by reaching Fy, as in
-         * rb_design_factor */
-        if (meets && k->criteria.kind == RB_CRIT_NO_YIELD)
-            meets = fmax(r.max_bolt_force_n[0], r.max_bolt_force_n[1]) < r.fy_row_n;
+        rb_verdict vd;
+        if (st == RB_OK)
+            rb_judge(&k->criteria, &r, &vd);
+        int meets = st == RB_OK && vd.pass;
         rb_result_free(&r);
         if (st != RB_OK) {
             snprintf(v->err, sizeof v->err, "run at %.2f A*: %s: %s", i * step,

@@ -62,7 +62,7 @@ int vd_figure_write(const char *root, const char *kase, const char *svg_path)
         memset(&m, 0, sizeof m);
         m.motion = &c.motions[0];
         m.result = &r;
-        m.pass = rb_criteria_judge(&c.criteria, &r, m.reason, sizeof m.reason);
+        rb_judge(&c.criteria, &r, &m.verdict);
         rb_report rep;
         memset(&rep, 0, sizeof rep);
         rep.kase = &c;

@@ -1,0 +1,71 @@
+/* The JSON report's validity parts: per motion, whether the model's own
+ * assumptions held (docs/report-format.md, "Validity"), and the names of
+ * the checks that warn, which the verdicts carry. */
+#include <math.h>
+#include <stdio.h>
+#include "rockbolt/rockbolt.h"
+#include "report_internal.h"
+#include "report_json_build.h"
+
+void rb_j_warnings(rb_jctx *cx, cJSON *o, const char *key, unsigned warnings)
+{
+    cJSON *a;
+    if (cx->st != RB_OK)
+        return;
+    if (!(a = cJSON_AddArrayToObject(o, key))) {
+        rb_j_oom(cx, a);
+        return;
+    }
+    for (int k = 0; k < RB_N_CHECKS && cx->st == RB_OK; k++) {
+        cJSON *s;
+        if (!((warnings >> k) & 1u))
+            continue;
+        s = cJSON_CreateString(rb_check_name((rb_check)k));
+        rb_j_oom(cx, s);
+        if (s && !cJSON_AddItemToArray(a, s)) {
+            cJSON_Delete(s);
+            rb_j_oom(cx, NULL);
+        }
+    }
+}
+
+static cJSON *check_obj(rb_jctx *cx, cJSON *parent, const rb_verdict *v, rb_check k)
+{
+    cJSON *o = rb_j_obj(cx, parent, rb_check_key(k));
+    rb_j_str(cx, o, "status", rb_check_status_str(v->check[k]));
+    return o;
+}
+
+void rb_report_json_validity(rb_jctx *cx, cJSON *motion_o, const rb_report *r,
+                             const rb_report_motion *m)
+{
+    const rb_result *res = m->result;
+    const rb_criteria *c = &r->kase->criteria;
+    const rb_verdict *v = &m->verdict;
+    double w = res->weight_n;
+    cJSON *o = rb_j_obj(cx, motion_o, "validity"), *k;
+    rb_j_str(cx, o, "mode", rb_report_validity_mode_str(c->validity));
+    k = check_obj(cx, o, v, RB_CHECK_LIFT_OFF);
+    rb_j_num(cx, k, "min_vertical_reaction_n", res->min_vertical_reaction_n);
+    rb_j_norm(cx, k, "min_vertical_reaction_over_w",
+              rb_report_ratio(res->min_vertical_reaction_n, w));
+    rb_j_opt(cx, k, "first_s", res->liftoff_first_s >= 0, res->liftoff_first_s);
+    rb_j_num(cx, k, "time_s", res->liftoff_time_s);
+    k = check_obj(cx, o, v, RB_CHECK_SLIDING);
+    rb_j_opt(cx, k, "friction_coefficient", c->friction_coefficient > 0,
+             c->friction_coefficient);
+    rb_j_num(cx, k, "reaction_floor_over_w", RB_FRICTION_FLOOR);
+    rb_j_num(cx, k, "max_friction_demand", res->max_friction_demand);
+    rb_j_num(cx, k, "max_horizontal_reaction_n", res->max_shear_total_n);
+    rb_j_norm(cx, k, "max_horizontal_reaction_over_w",
+              rb_report_ratio(res->max_shear_total_n, w));
+    k = check_obj(cx, o, v, RB_CHECK_BOLT_IMPACT);
+    rb_j_opt(cx, k, "max_force_n", res->rigid_bolts, res->max_bolt_impact_n);
+    rb_j_norm(cx, k, "max_force_over_fy", res->rigid_bolts
+              ? rb_report_ratio(res->max_bolt_impact_n, res->fy_row_n) : (double)NAN);
+    rb_j_opt(cx, k, "time_s", res->rigid_bolts && res->max_bolt_impact_n > 0,
+             res->max_bolt_impact_s);
+    rb_j_opt(cx, k, "row_stiffness_npm", res->rigid_bolts, r->derived.k_row_npm);
+    rb_j_opt(cx, k, "effective_mass_kg", res->rigid_bolts,
+             r->derived.Io / (r->kase->model.lever_arm_m * r->kase->model.lever_arm_m));
+}
