@@ -128,6 +128,12 @@ struct rb_record_cache;
 rb_status rb_case_load_cached(const char *path, struct rb_record_cache *cache,
                               rb_case *out, rb_diag_list *diags);
 
+/* rb_case_load_cached for a case file rockbolt wrote itself (the temporary
+ * file of rb_case_load_overrides): the file is not held to --sandbox
+ * (rockbolt/sandbox.h), the bases and records it names are. */
+rb_status rb_case_load_generated(const char *path, struct rb_record_cache *cache,
+                                 rb_case *out, rb_diag_list *diags);
+
 /* Free what a case owns; accepts NULL. */
 void rb_case_free(rb_case *c);
 

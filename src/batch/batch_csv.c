@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "batch_internal.h"
+#include "rockbolt/sandbox.h"
 
 #define RB_CSV_MAX_BYTES (64u * 1024u * 1024u)
 #define RB_CSV_MAX_FIELDS 64
@@ -461,7 +462,7 @@ static rb_status read_lines(csv_ctx *cx, rb_batch_list *l, const char *buf, size
 rb_status rb_batch_csv_read(rb_batch_list *l, const char *path, const char *default_base)
 {
     csv_ctx cx;
-    char msg[200];
+    char msg[700];
     size_t len = 0, n_before = l->n;
     memset(&cx, 0, sizeof cx);
     cx.path = path;
@@ -472,7 +473,13 @@ rb_status rb_batch_csv_read(rb_batch_list *l, const char *path, const char *defa
         return RB_ERR_NOMEM;
     memcpy(cx.dir, path, dl);
     cx.dir[dl] = '\0';
-    char *buf = slurp(path, &len, msg, sizeof msg);
+    char why[600];
+    char *buf = NULL;
+    if (!rb_sandbox_allows(path, why, sizeof why))
+        snprintf(msg, sizeof msg, "the list lies outside the sandbox '%.*s' (%.*s)",
+                 300, rb_sandbox_dir(), 300, why);
+    else
+        buf = slurp(path, &len, msg, sizeof msg);
     rb_status st = RB_OK;
     if (!buf) {
         rb_batch_item *it = rb_batch_list_push(l, path);

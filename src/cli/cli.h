@@ -37,11 +37,17 @@ typedef struct {
     int threads;              /* design: -j N; 0: every processor */
     const char *svg_path;     /* --svg FILE: the figures, or NULL */
     const char *html_path;    /* --html FILE: report and figures, or NULL */
+    const char *sandbox_dir;  /* --sandbox DIR: inputs must lie inside, or NULL */
 } rb_cli_opts;
 
 /* Parse argv into o. Returns RB_EXIT_PASS, or RB_EXIT_USAGE after printing
  * what is wrong. Strings in o point into argv. */
 rb_exit rb_cli_args_parse(int argc, char **argv, rb_cli_opts *o);
+
+/* --sandbox DIR of check, design and batch: confine every input to DIR
+ * (rockbolt/sandbox.h) before anything is read. RB_EXIT_USAGE after
+ * printing why when DIR is not a directory. NULL: nothing to do. */
+rb_exit rb_cli_sandbox(const char *dir);
 
 /* check and design share one flow; design adds the searches. */
 rb_exit rb_cli_check_run(const rb_cli_opts *o);

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "cli.h"
+#include "rockbolt/sandbox.h"
 
 /* Is arg the option name, as "--name" alone or "--name=VALUE"? Sets
  * *inline_val to the text after '=' if any. */
@@ -107,6 +108,8 @@ static rb_exit check_option(int argc, char **argv, int *i, rb_cli_opts *o)
         return take_value(argc, argv, i, "--svg", val, &o->svg_path);
     if (opt_is(arg, "--html", &val))
         return take_value(argc, argv, i, "--html", val, &o->html_path);
+    if (opt_is(arg, "--sandbox", &val))
+        return take_value(argc, argv, i, "--sandbox", val, &o->sandbox_dir);
     if (strcmp(arg, "--quiet") == 0 || strcmp(arg, "-q") == 0) {
         o->quiet = 1;
         return RB_EXIT_PASS;
@@ -209,5 +212,19 @@ rb_exit rb_cli_args_parse(int argc, char **argv, rb_cli_opts *o)
         rb_cli_error(NULL, NULL, "'%s' needs a case file: rockbolt %s CASE.yaml", c, c);
         return RB_EXIT_USAGE;
     }
-    return check_distinct(o);
+    if ((e = check_distinct(o)) != RB_EXIT_PASS)
+        return e;
+    return rb_cli_sandbox(o->sandbox_dir);
+}
+
+rb_exit rb_cli_sandbox(const char *dir)
+{
+    rb_diag d;
+    if (!dir)
+        return RB_EXIT_PASS;
+    if (rb_sandbox_set(dir, &d) != RB_OK) {
+        rb_cli_diag_print(&d);
+        return RB_EXIT_USAGE;
+    }
+    return RB_EXIT_PASS;
 }

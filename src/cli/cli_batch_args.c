@@ -106,6 +106,8 @@ rb_exit rb_cli_batch_parse(int argc, char **argv, int is_merge, rb_batch_cli *o)
             e = take(argc, argv, &i, "--reports", v, &o->reports_dir);
         else if (!is_merge && opt_is(a, "--base", &v))
             e = take(argc, argv, &i, "--base", v, &o->base);
+        else if (!is_merge && opt_is(a, "--sandbox", &v))
+            e = take(argc, argv, &i, "--sandbox", v, &o->sandbox);
         else if (!is_merge && strcmp(a, "--design") == 0)
             o->design = 1;
         else if (!is_merge && opt_is(a, "--shard", &v)) {
@@ -137,7 +139,7 @@ rb_exit rb_cli_batch_parse(int argc, char **argv, int is_merge, rb_batch_cli *o)
                      "lists (see 'rockbolt --help')");
         return RB_EXIT_USAGE;
     }
-    return RB_EXIT_PASS;
+    return rb_cli_sandbox(o->sandbox);
 }
 
 void rb_cli_batch_cli_free(rb_batch_cli *o)

@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "case_internal.h"
+#include "rockbolt/sandbox.h"
 
 void rb_diag_list_free(rb_diag_list *l)
 {
@@ -245,21 +246,42 @@ rb_status rb_case_load(const char *path, rb_case *out, rb_diag_list *diags)
     return rb_case_load_cached(path, NULL, out, diags);
 }
 
+static rb_status rb_case_load_from(const char *path, rb_record_cache *cache,
+                                   rb_case *out, rb_diag_list *diags, int confined);
+
 rb_status rb_case_load_cached(const char *path, rb_record_cache *cache, rb_case *out,
                               rb_diag_list *diags)
 {
+    return rb_case_load_from(path, cache, out, diags, 1);
+}
+
+rb_status rb_case_load_generated(const char *path, rb_record_cache *cache,
+                                 rb_case *out, rb_diag_list *diags)
+{
+    return rb_case_load_from(path, cache, out, diags, 0);
+}
+
+static rb_status rb_case_load_from(const char *path, rb_record_cache *cache,
+                                   rb_case *out, rb_diag_list *diags, int confined)
+{
     rb_cctx c;
+    char why[600];
     rb_ynode *root = NULL;
     memset(&c, 0, sizeof c);
     c.diags = diags;
     c.cache = cache;
+    c.overrides = !confined;
     size_t first = diags->n;
     c.first_diag = first;
     if (!rb_case_defaults(out, path)) {
         rb_case_free(out);
         return RB_ERR_NOMEM;
     }
-    if (rb_case_read_merged(&c, path, &root) == RB_OK && !c.fatal) {
+    if (confined && path && !rb_sandbox_allows(path, why, sizeof why)) {
+        rb_cctx_error_at(&c, RB_ERR_IO, path, 0, 0, "case", "'%s' lies outside the "
+                         "sandbox '%s' (%s)", path, rb_sandbox_dir(), why);
+        c.fatal = 1;
+    } else if (rb_case_read_merged(&c, path, &root) == RB_OK && !c.fatal) {
         rb_case_read_schema(&c, root, out);
         if (!c.nomem)
             rb_case_resolve(&c, out, root);

@@ -15,6 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "case_internal.h"
+#include "rockbolt/sandbox.h"
 
 #ifndef PATH_MAX
 #define PATH_MAX 4096
@@ -88,6 +89,128 @@ static void rb_ymerge(rb_cctx *c, rb_ynode *dst, rb_ynode *base)
     }
 }
 
+/* A deep copy of n (positions kept); NULL when memory runs out. */
+static rb_ynode *rb_ynode_copy(rb_cctx *c, const rb_ynode *n)
+{
+    rb_ynode *d = calloc(1, sizeof *d);
+    if (!d) {
+        c->nomem = 1;
+        return NULL;
+    }
+    *d = *n;
+    d->text = NULL;
+    d->entries = NULL;
+    d->items = NULL;
+    d->n = d->cap = 0;
+    if (n->text && !(d->text = strdup(n->text)))
+        goto oom;
+    if (n->kind == RB_YNODE_MAP && n->n) {
+        if (!(d->entries = calloc(n->n, sizeof *d->entries)))
+            goto oom;
+        d->cap = n->n;
+        for (; d->n < n->n; d->n++) {
+            rb_yentry *e = &d->entries[d->n];
+            *e = n->entries[d->n];
+            e->key = strdup(e->key);
+            e->value = e->key ? rb_ynode_copy(c, n->entries[d->n].value) : NULL;
+            if (!e->value) {
+                free(e->key);
+                goto oom;
+            }
+        }
+    } else if (n->kind == RB_YNODE_SEQ && n->n) {
+        if (!(d->items = calloc(n->n, sizeof *d->items)))
+            goto oom;
+        d->cap = n->n;
+        for (; d->n < n->n; d->n++)
+            if (!(d->items[d->n] = rb_ynode_copy(c, n->items[d->n])))
+                goto oom;
+    }
+    return d;
+oom:
+    c->nomem = 1;
+    rb_ynode_free(d);
+    return NULL;
+}
+
+static const char *rb_motion_type(const rb_ynode *m)
+{
+    const rb_yentry *t = rb_ymap_find(m, "type");
+    return t && t->value->kind == RB_YNODE_SCALAR ? t->value->text : "";
+}
+
+/* Whether every override key of a row's motion can apply to motion m of a
+ * base's list (item k, 1-based); an error at the override if not. The
+ * motion column (a `file`) picks one record, so it needs a list of one. */
+static int rb_row_motion_fits(rb_cctx *c, const rb_ynode *row, const rb_ynode *m, size_t k,
+                              size_t n)
+{
+    const char *type = rb_motion_type(m);
+    int record = strcmp(type, "record") == 0;
+    int ok = 1;
+    for (size_t i = 0; i < row->n; i++) {
+        const rb_yentry *e = &row->entries[i];
+        if (strcmp(e->key, "file") == 0 && n != 1) {
+            rb_cctx_error(c, e->value, "motion", "the base has %zu motions (a motions: "
+                          "list), and a motion column cannot say which of them to "
+                          "replace: give the row a base with one motion", n);
+            return 0;
+        }
+        if (rb_ymap_find(row, "file"))
+            continue;   /* the row's own record: it replaces m whole if m is not one */
+        if ((strcmp(e->key, "peak") == 0 || strcmp(e->key, "building") == 0) && !record) {
+            rb_cctx_error(c, e->value, e->key, "applies to record motions, but motions[%zu] "
+                          "of the base is a %s motion", k, type[0] ? type : "untyped");
+            ok = 0;
+        }
+        if (strcmp(e->key, "amplitude") == 0 && record) {
+            rb_cctx_error(c, e->value, e->key, "applies to harmonic and pulse motions, but "
+                          "motions[%zu] of the base is a record", k);
+            ok = 0;
+        }
+    }
+    return ok;
+}
+
+/* A row's `motion:` over a base's `motions:` list: the row's values apply
+ * to each motion of the list, which keeps everything else (building,
+ * window, polarity, run time, the other motions). Left alone, `motion`
+ * would replace the whole list as its alternative. */
+static void rb_distribute_row_motion(rb_cctx *c, rb_ynode *root, rb_ynode *base)
+{
+    size_t at;
+    rb_yentry *me = rb_ymap_find(root, "motion"), *se = rb_ymap_find(base, "motions");
+    if (!me || !se || me->value->kind != RB_YNODE_MAP || se->value->kind != RB_YNODE_SEQ)
+        return;
+    rb_ynode *row = me->value, *list = se->value;
+    int ok = 1;
+    for (size_t k = 0; k < list->n; k++)
+        if (list->items[k]->kind == RB_YNODE_MAP)
+            ok &= rb_row_motion_fits(c, row, list->items[k], k + 1, list->n);
+    if (!ok) {
+        c->fatal = 1;
+        return;
+    }
+    for (size_t k = 0; k < list->n && !c->nomem; k++) {
+        if (list->items[k]->kind != RB_YNODE_MAP)
+            continue;
+        rb_ynode *merged = rb_ynode_copy(c, row);
+        if (!merged)
+            return;
+        if (!rb_types_differ(merged, list->items[k]))
+            rb_ymerge(c, merged, list->items[k]);
+        rb_ynode_free(list->items[k]);
+        list->items[k] = merged;
+    }
+    /* the row's mapping is spent: take it out so the list is inherited */
+    at = (size_t)(me - root->entries);
+    free(me->key);
+    rb_ynode_free(me->value);
+    memmove(&root->entries[at], &root->entries[at + 1],
+            (root->n - at - 1) * sizeof *root->entries);
+    root->n--;
+}
+
 /* dir of including + "/" + rel, unless rel is absolute or including has no
  * directory part. */
 static char *rb_extends_path(const char *including, const char *rel)
@@ -135,6 +258,25 @@ static char *rb_canonical(const char *path)
 static rb_status rb_read_chain(rb_cctx *c, const char *file, const rb_ynode *where,
                                rb_chain *chain, rb_ynode **root);
 
+/* A YAML file is taken for a case only if at least one of its top-level
+ * keys is a case key (the list of rb_top_keys in case_schema.c). Any other
+ * YAML file (a CI configuration, a secret) gets one diagnostic that quotes
+ * none of its keys or values, instead of one "unknown key 'password'" per
+ * key in artefacts that may be published. */
+static int rb_plausible_case(const rb_ynode *root)
+{
+    static const char *const keys[] = {
+        "name", "description", "extends", "equipment", "anchorage", "gap",
+        "gap_ratio", "motion", "motions", "criteria", "analysis", "design"};
+    if (!root || root->kind != RB_YNODE_MAP || root->n == 0)
+        return 1;   /* the schema says what is wrong, quoting nothing */
+    for (size_t i = 0; i < root->n; i++)
+        for (size_t k = 0; k < sizeof keys / sizeof keys[0]; k++)
+            if (strcmp(root->entries[i].key, keys[k]) == 0)
+                return 1;
+    return 0;
+}
+
 /* Follow root's `extends:` (if any) and merge the base under root. */
 static void rb_follow_extends(rb_cctx *c, const char *file, rb_ynode *root,
                               rb_chain *chain)
@@ -158,8 +300,12 @@ static void rb_follow_extends(rb_cctx *c, const char *file, rb_ynode *root,
     rb_ynode *base = NULL;
     /* Without its base a case is missing so much that listing each missing
      * key would bury the one real problem: stop here. */
-    if (rb_read_chain(c, path, v, chain, &base) == RB_OK && base)
-        rb_ymerge(c, root, base);
+    if (rb_read_chain(c, path, v, chain, &base) == RB_OK && base) {
+        if (c->overrides && chain->n == 1)
+            rb_distribute_row_motion(c, root, base);
+        if (!c->fatal)
+            rb_ymerge(c, root, base);
+    }
     else
         c->fatal = 1;
     rb_ynode_free(base);
@@ -190,9 +336,31 @@ static rb_status rb_read_chain(rb_cctx *c, const char *file, const rb_ynode *whe
         free(id);
         return RB_ERR_LIMIT;
     }
+    char why[600];
+    if (where && !rb_sandbox_allows(file, why, sizeof why)) {
+        rb_cctx_error(c, where, "extends", "cannot use '%s': it lies outside the "
+                      "sandbox '%s' (%s)", file, rb_sandbox_dir(), why);
+        free(id);
+        return RB_ERR_IO;
+    }
     chain->names[chain->n] = file;
     chain->ids[chain->n++] = id;
     rb_status st = rb_yaml_read_tree(c, file, where, "extends", root);
+    if (st == RB_OK && !rb_plausible_case(*root)) {
+        if (where)
+            rb_cctx_error(c, where, "extends", "'%s' is not a rockbolt case: none of "
+                          "its top-level keys is a case key (name, equipment, "
+                          "anchorage, motion, ...)", file);
+        else
+            rb_cctx_error_at(c, RB_ERR_PARSE, file, (*root)->line, (*root)->col,
+                             "case", "not a rockbolt case: none of the file's "
+                             "top-level keys is a case key (name, equipment, "
+                             "anchorage, motion, ...)");
+        rb_ynode_free(*root);
+        *root = NULL;
+        c->fatal = 1;
+        st = RB_ERR_PARSE;
+    }
     if (st == RB_OK)
         rb_follow_extends(c, file, *root, chain);
     free(chain->ids[--chain->n]);

@@ -387,7 +387,7 @@ rb_status rb_case_load_overrides(const char *base_path, const char *origin,
     if (st != RB_OK)
         goto done;
     size_t first = diags->n;
-    st = rb_case_load_cached(tmp, cache, out, diags);
+    st = rb_case_load_generated(tmp, cache, out, diags);
     unlink(tmp);
     map_diags(diags, first, tmp, &g, origin, row_line, cwd);
     if (st == RB_OK) {

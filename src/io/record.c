@@ -5,6 +5,7 @@
 #include <math.h>
 #include <string.h>
 #include "record_internal.h"
+#include "rockbolt/sandbox.h"
 
 /* How far to look for the first data row when guessing a column file. */
 #define RB_REC_SNIFF_LINES 64
@@ -162,6 +163,10 @@ rb_status rb_record_read(const char *path, const rb_record_opts *opts,
     if (!path || !out)
         return rb_rec_fail_at(&r, RB_ERR_INVALID, 0, 0, "no file name or no output");
     rb_status st = rb_record_check_opts(&r, opts);
+    char why[600];
+    if (st == RB_OK && !rb_sandbox_allows(path, why, sizeof why))
+        st = rb_rec_fail_at(&r, RB_ERR_IO, 0, 0, "it lies outside the sandbox '%s' "
+                            "(%s)", rb_sandbox_dir(), why);
     if (st == RB_OK)
         st = rb_rec_reader_open(&r, path, diag);
     if (st == RB_OK)

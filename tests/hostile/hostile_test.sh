@@ -95,14 +95,14 @@ criteria: {kind: no-yield}
 YAML
     run 1 check "$s/c.yaml" --json "$s/c.json" --html "$s/c.html" --svg "$s/c.svg"
     no_ctl "$s/out" "$s/c.json" "$s/c.html" "$s/c.svg"
-    has "$s/out" '^FAIL: '
+    has "$s/out" '^FAIL'
     has "$s/out" 'spoof\\x1b\[2K\\rPASS'
     has "$s/out" "motion 'm\\\\x1b\]0;title\\\\x07\\\\r'"
     has "$s/c.json" '"name":	"spoof\\u001b\[2K\\rPASS"'
     # the verdict line alone, with --text
     run 1 check "$s/c.yaml" --text "$s/c.txt"
     no_ctl "$s/out" "$s/c.txt"
-    has "$s/out" "^FAIL: motion 'm\\\\x1b"
+    has "$s/out" "^FAIL.*motion 'm\\\\x1b"
     # diagnostics on stderr quote the value escaped
     printf 'extends: %s\nname: x\nmotion: {type: "sine\\e[32m\\rPASS"}\n' "$base" >"$s/d.yaml"
     run 2 check "$s/d.yaml"
@@ -117,6 +117,75 @@ YAML
         python3 -c 'import sys, xml.etree.ElementTree as E; E.parse(sys.argv[1])' "$s/b.xml" \
             || fail "JUnit is not well-formed XML"
     fi
+    ;;
+no_quote)
+    # a system file named as a record, a YAML file of another kind named as
+    # a base: refused at a line and column, none of their text quoted into
+    # the terminal, JSON, CSV or JUnit
+    printf 'root:x:0:0:root:/root:/bin/bash\nhunter2-secret\n' >"$s/passwd"
+    printf 'apiVersion: v1\nkind: Secret\ndata:\n  password: hunter2-secret\n' >"$s/secret.yaml"
+    cat >"$s/r.yaml" <<YAML
+extends: $base
+name: rec
+motion: {type: record, file: passwd, format: auto, units: g, dt: 0.01 s}
+YAML
+    printf 'extends: secret.yaml\nname: ext\n' >"$s/e.yaml"
+    run 2 check "$s/r.yaml"
+    has "$s/err" 'r.yaml:3:.*motion.file: cannot read record'
+    run 2 check "$s/e.yaml"
+    has "$s/err" "e.yaml:1:10: error: extends: '.*secret.yaml' is not a rockbolt case"
+    run 2 batch "$s/r.yaml" "$s/e.yaml" "$s/secret.yaml" --json "$s/b.json" \
+        --csv "$s/b.csv" --junit "$s/b.xml"
+    for f in out err b.json b.csv b.xml; do
+        for w in root:x /bin/bash hunter2 apiVersion password Secret; do
+            lacks "$s/$f" "$w"
+        done
+    done
+    has "$s/b.csv" 'secret.yaml:1:1: case: not a rockbolt case'
+    ;;
+sandbox)
+    # inputs confined to a tree: bases, records, lists and row bases
+    in="$s/in"
+    out=$(mktemp -d "${TMPDIR:-/tmp}/rb-sandbox-XXXXXX") || fail "mktemp"
+    trap 'rm -rf "$out"' EXIT
+    mkdir -p "$in"
+    cp cases/base/reference-cabinet.yaml "$in/cab.yaml"
+    cp cases/base/reference-cabinet.yaml "$out/cab.yaml"
+    sed "s#^extends: .*#extends: cab.yaml#" "$base" >"$in/base.yaml"
+    cp "$in/base.yaml" "$out/base.yaml"
+    printf 'extends: base.yaml\nname: a\n' >"$in/a.yaml"
+    run 0 check "$in/a.yaml" --sandbox "$in" -q
+    # ../ out of the tree, an absolute path, a link that leads out
+    printf 'extends: ../../../../../../../../../../../../..%s/base.yaml\nname: b\n' "$out" \
+        >"$in/b.yaml"
+    printf 'extends: %s/base.yaml\nname: b\n' "$out" >"$in/c.yaml"
+    ln -s "$out/base.yaml" "$in/link.yaml"
+    printf 'extends: link.yaml\nname: b\n' >"$in/d.yaml"
+    for c in b c d; do
+        run 2 check "$in/$c.yaml" --sandbox "$in"
+        has "$s/err" "$c.yaml:1:10: error: extends: cannot use .* outside the sandbox"
+    done
+    run 0 check "$in/c.yaml" -q
+    # a record outside (the shipped records are allowed)
+    printf 'extends: base.yaml\nname: r\nmotion: {type: record, file: /etc/hostname, units: g, dt: 0.01 s}\n' \
+        >"$in/r.yaml"
+    run 2 check "$in/r.yaml" --sandbox "$in"
+    has "$s/err" "r.yaml:3:.*: error: motion.file: .*outside the sandbox"
+    # the case itself, and design
+    run 2 design "$out/cab.yaml" --sandbox "$in"
+    has "$s/err" "cab.yaml: error: case: .* lies outside the sandbox"
+    # batch: the list's rows, each checked; a list outside; no default
+    printf 'tag,base,motion\nX,%s/base.yaml,\nY,base.yaml,elcentro\n' "$out" >"$in/l.csv"
+    cp "$in/l.csv" "$out/l.csv"
+    run 2 batch "$in/l.csv" "$out/l.csv" "$in/b.yaml" --sandbox "$in" --csv "$s/b.csv" -q
+    has "$s/b.csv" "^0,.*l.csv,2,X,.*unreadable.*outside the sandbox"
+    has "$s/b.csv" "^1,.*l.csv,3,Y,elcentro,1,"
+    has "$s/b.csv" "^2,.*l.csv,0,.*unreadable.*the list lies outside the sandbox"
+    has "$s/b.csv" "^3,.*b.yaml,0,b,.*unreadable.*outside the sandbox"
+    run 0 batch "$in/b.yaml" -q
+    run 2 batch "$in/a.yaml" --sandbox "$s/none"
+    has "$s/err" "none: error: --sandbox: expected an existing directory"
+    run 2 check "$in/a.yaml" --sandbox "$in/a.yaml"
     ;;
 *)
     fail "unknown test $t"

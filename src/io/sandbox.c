@@ -1,0 +1,81 @@
+/* --sandbox DIR (include/rockbolt/sandbox.h): a path is inside when its
+ * real path is DIR itself or starts with DIR and a '/'. */
+#include <errno.h>
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include "rockbolt/sandbox.h"
+
+#ifndef PATH_MAX
+#define PATH_MAX 4096
+#endif
+
+static char rb_sandbox_root[PATH_MAX];
+static char rb_sandbox_shipped[PATH_MAX];
+static int rb_sandbox_on;
+
+rb_status rb_sandbox_set(const char *dir, rb_diag *diag)
+{
+    struct stat sb;
+    rb_sandbox_on = 0;
+    if (!dir)
+        return RB_OK;
+    if (!realpath(dir, rb_sandbox_root) || stat(rb_sandbox_root, &sb) != 0
+        || !S_ISDIR(sb.st_mode)) {
+        if (diag) {
+            rb_diag_clear(diag);
+            snprintf(diag->file, sizeof diag->file, "%s", dir);
+            snprintf(diag->key, sizeof diag->key, "--sandbox");
+            snprintf(diag->msg, sizeof diag->msg, "expected an existing directory%s%s",
+                     errno ? ": " : "", errno ? strerror(errno) : "");
+        }
+        return RB_ERR_IO;
+    }
+#ifdef RB_SOURCE_DIR
+    if (!realpath(RB_SOURCE_DIR "/cases/records", rb_sandbox_shipped))
+        rb_sandbox_shipped[0] = '\0';
+#endif
+    rb_sandbox_on = 1;
+    return RB_OK;
+}
+
+const char *rb_sandbox_dir(void)
+{
+    return rb_sandbox_on ? rb_sandbox_root : NULL;
+}
+
+static int under(const char *real, const char *root)
+{
+    size_t n = strlen(root);
+    if (!root[0])
+        return 0;
+    if (n == 1 && root[0] == '/')
+        return 1;
+    return strncmp(real, root, n) == 0 && (real[n] == '\0' || real[n] == '/');
+}
+
+int rb_sandbox_allows(const char *path, char *why, size_t why_size)
+{
+    char real[PATH_MAX];
+    if (!rb_sandbox_on)
+        return 1;
+    errno = 0;
+    if (!realpath(path, real)) {
+        /* missing: the open that follows says so; anything else (a loop
+         * of links, a part that cannot be searched) cannot be shown to be
+         * inside, so it is refused */
+        if (errno == ENOENT || errno == ENOTDIR)
+            return 1;
+        if (why && why_size)
+            snprintf(why, why_size, "its real path cannot be resolved: %s",
+                     strerror(errno));
+        return 0;
+    }
+    if (under(real, rb_sandbox_root) || under(real, rb_sandbox_shipped))
+        return 1;
+    if (why && why_size)
+        snprintf(why, why_size, "it resolves to '%s'", real);
+    return 0;
+}
