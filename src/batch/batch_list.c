@@ -33,11 +33,13 @@ void rb_batch_item_bad(rb_batch_item *it, int line, int col, const char *key,
                        const char *msg)
 {
     it->bad = 1;
-    snprintf(it->error.file, sizeof it->error.file, "%s", it->source);
-    it->error.line = line;
-    it->error.col = col;
-    snprintf(it->error.key, sizeof it->error.key, "%s", key);
-    snprintf(it->error.msg, sizeof it->error.msg, "%s", msg);
+    if (!it->error && !(it->error = calloc(1, sizeof *it->error)))
+        return;     /* the case loader reports it without the details */
+    snprintf(it->error->file, sizeof it->error->file, "%s", it->source);
+    it->error->line = line;
+    it->error->col = col;
+    snprintf(it->error->key, sizeof it->error->key, "%s", key);
+    snprintf(it->error->msg, sizeof it->error->msg, "%s", msg);
 }
 
 static void item_free(rb_batch_item *it)
@@ -50,6 +52,7 @@ static void item_free(rb_batch_item *it)
         free((char *)it->ov[k].value);
     }
     free(it->ov);
+    free(it->error);
 }
 
 void rb_batch_list_free(rb_batch_list *l)
@@ -73,10 +76,34 @@ static int ends_with(const char *s, const char *suffix)
     return n >= k && strcmp(s + n - k, suffix) == 0;
 }
 
-/* One file found by a directory or glob: a list or a case. */
-static rb_status add_file(rb_batch_list *l, const char *path, const char *default_base)
+/* A bad item for a name that is not a regular file: a FIFO would block
+ * the batch for ever at its open, a device could be endless. */
+static rb_status add_not_regular(rb_batch_list *l, const char *path, const char *what)
 {
-    if (ends_with(path, ".csv"))
+    rb_batch_item *it = rb_batch_list_push(l, path);
+    if (!it)
+        return RB_ERR_NOMEM;
+    rb_batch_item_bad(it, 0, 0, "case", what);
+    return RB_OK;
+}
+
+/* One file named or found: a list or a case. Names found by a directory
+ * scan or a glob (found) must be regular files and are not opened
+ * otherwise; so must an equipment list, which is named by its .csv. A case
+ * named on the command line may be a pipe (`batch <(gen-case)`): the case
+ * loader opens it without waiting for a writer. */
+static rb_status add_file(rb_batch_list *l, const char *path, const char *default_base,
+                          int found)
+{
+    struct stat sb;
+    int csv = ends_with(path, ".csv");
+    if ((found || csv) && stat(path, &sb) == 0 && !S_ISREG(sb.st_mode))
+        return add_not_regular(l, path, S_ISDIR(sb.st_mode)
+                               ? "not a regular file but a directory: skipped, not read"
+                               : "not a regular file (a FIFO, socket or device): "
+                                 "refused without opening it, since reading it could "
+                                 "wait for ever");
+    if (csv)
         return rb_batch_csv_read(l, path, default_base);
     return rb_batch_list_push(l, path) ? RB_OK : RB_ERR_NOMEM;
 }
@@ -130,7 +157,7 @@ static rb_status add_dir(rb_batch_list *l, const char *dir, const char *default_
         qsort(names, n, sizeof *names, cmp_str);
     for (size_t i = 0; i < n; i++) {
         if (st == RB_OK)
-            st = add_file(l, names[i], default_base);
+            st = add_file(l, names[i], default_base, 1);
         free(names[i]);
     }
     free(names);
@@ -161,7 +188,7 @@ static rb_status add_glob(rb_batch_list *l, const char *pattern, const char *def
         if (stat(g.gl_pathv[i], &sb) == 0 && S_ISDIR(sb.st_mode))
             st = add_dir(l, g.gl_pathv[i], default_base);
         else
-            st = add_file(l, g.gl_pathv[i], default_base);
+            st = add_file(l, g.gl_pathv[i], default_base, 1);
     }
     globfree(&g);
     return st;
@@ -174,5 +201,5 @@ rb_status rb_batch_list_add(rb_batch_list *l, const char *arg, const char *defau
         return add_dir(l, arg, default_base);
     if (strpbrk(arg, "*?[") && stat(arg, &sb) != 0)
         return add_glob(l, arg, default_base);
-    return add_file(l, arg, default_base);
+    return add_file(l, arg, default_base, 0);
 }

@@ -410,6 +410,32 @@ static FILE *rb_yaml_open_base(const char *file, int *not_regular)
     return f;
 }
 
+/* Open the case file itself. It may be a pipe (`rockbolt check
+ * <(gen-case)`), but the open must not wait: opening a FIFO that no
+ * process writes to would block for ever. O_NONBLOCK makes the open return
+ * at once and is cleared before reading, so a pipe with a writer is read
+ * to its end and one without reads as empty. NULL with errno. */
+static FILE *rb_yaml_open_case(const char *file)
+{
+    int fd = open(file, O_RDONLY | O_NONBLOCK);
+    if (fd < 0)
+        return NULL;
+    int flags = fcntl(fd, F_GETFL);
+    if (flags < 0 || fcntl(fd, F_SETFL, flags & ~O_NONBLOCK) != 0) {
+        int e = errno;
+        close(fd);
+        errno = e;
+        return NULL;
+    }
+    FILE *f = fdopen(fd, "rb");
+    if (!f) {
+        int e = errno;
+        close(fd);
+        errno = e;
+    }
+    return f;
+}
+
 /* Read the whole file, refusing more than the size limit. The case file
  * itself may be anything readable (`rockbolt check <(gen-case)`); bases
  * must be regular files. */
@@ -419,7 +445,7 @@ static rb_status rb_yaml_slurp(rb_cctx *c, const char *file, const rb_ynode *whe
 {
     int not_regular = 0;
     errno = 0;
-    FILE *f = where ? rb_yaml_open_base(file, &not_regular) : fopen(file, "rb");
+    FILE *f = where ? rb_yaml_open_base(file, &not_regular) : rb_yaml_open_case(file);
     const char *dfile = where ? where->file : file;
     int line = where ? where->line : 0, col = where ? where->col : 0;
     const char *key = where ? where_key : "case";
