@@ -31,7 +31,8 @@ typedef struct {
     rb_case_override *ov; /* owned, with owned key and value strings */
     size_t n_ov;
     int bad;              /* 1: the item cannot be run; error says why */
-    rb_diag error;
+    rb_diag *error;       /* owned: set only when bad (a list of 100 000
+                             rows would otherwise carry 100 MB of them) */
 } rb_batch_item;
 
 typedef struct {
@@ -87,11 +88,17 @@ typedef struct {
                              unreadable) */
     rb_batch_verdict verdict;
     char *reason;         /* owned: one line */
-    rb_diag error;        /* the first error (UNREADABLE, ERROR) */
+    rb_diag *error;       /* owned: the first error (UNREADABLE, ERROR); NULL
+                             when there is none, so that a summary row stays
+                             a few hundred bytes (read it with
+                             rb_batch_case_error) */
     size_t n_errors;      /* how many the load reported */
     rb_batch_result *runs;   /* owned, one per motion (none when unreadable) */
     size_t n_runs;
 } rb_batch_case;
+
+/* "sha256:" and 64 hex digits, with the NUL. */
+#define RB_BATCH_DIGEST_CHARS 72
 
 typedef struct {
     int design;           /* design factor and gap were asked for */
@@ -99,9 +106,17 @@ typedef struct {
     size_t shard, n_shards; /* 1-based shard; 0/0 for the whole list */
     rb_batch_case *cases; /* owned, by index */
     size_t n_cases;
+    char inputs_digest[RB_BATCH_DIGEST_CHARS]; /* of the work list and the
+                             files it names (rb_batch_list_digest); "" if
+                             unknown */
 } rb_batch_summary;
 
 void rb_batch_summary_free(rb_batch_summary *s);
+
+/* The case's first error, or an empty diag when it has none; never NULL. */
+const rb_diag *rb_batch_case_error(const rb_batch_case *c);
+/* Set the case's error to a copy of d; 0 when memory runs out. */
+int rb_batch_case_set_error(rb_batch_case *c, const rb_diag *d);
 
 /* The governing motion of a case: the failing motion with the largest
  * usage if any fails, else the motion with the largest usage; ties go to
@@ -154,6 +169,16 @@ int rb_batch_in_shard(size_t index, size_t shard, size_t n_shards);
  * rb_batch_summary_free, also after an error). Cases that cannot be read
  * or solved are verdicts, not errors: the call fails only for
  * RB_ERR_NOMEM or bad options (RB_ERR_INVALID, diag says which). */
+/* The digest of a work list, alike in every shard: each item's source,
+ * line, tag, base and overrides, then the bytes of every distinct case
+ * file, list and base it names. RB_ERR_NOMEM, else RB_OK. */
+rb_status rb_batch_list_digest(const rb_batch_list *l, char out[RB_BATCH_DIGEST_CHARS]);
+
+/* The digest of a work list, alike in every shard: each item's source,
+ * line, tag, base and overrides, then the bytes of every distinct case
+ * file, list and base it names. RB_ERR_NOMEM, else RB_OK. */
+rb_status rb_batch_list_digest(const rb_batch_list *l, char out[RB_BATCH_DIGEST_CHARS]);
+
 rb_status rb_batch_run(const rb_batch_list *l, const rb_batch_opts *o,
                        rb_batch_summary *out, rb_diag *diag);
 

@@ -27,9 +27,8 @@ static char *stem_of(const char *path)
 
 static void set_error(rb_batch_case *bc, const rb_diag *d, const char *source)
 {
-    bc->error = *d;
-    if (!bc->error.file[0])
-        snprintf(bc->error.file, sizeof bc->error.file, "%s", source);
+    if (rb_batch_case_set_error(bc, d) && !bc->error->file[0])
+        snprintf(bc->error->file, sizeof bc->error->file, "%s", source);
 }
 
 void rb_batch_case_load(rb_batch_slot *s, const rb_batch_item *it, rb_batch_case *bc)
@@ -38,7 +37,7 @@ void rb_batch_case_load(rb_batch_slot *s, const rb_batch_item *it, rb_batch_case
     rb_status st;
     if (it->bad) {
         bc->verdict = RB_BATCH_UNREADABLE;
-        set_error(bc, &it->error, it->source);
+        set_error(bc, it->error ? it->error : rb_batch_case_error(NULL), it->source);
         bc->n_errors = 1;
         return;
     }
@@ -207,7 +206,7 @@ void rb_batch_case_finish(rb_batch_slot *s, rb_batch_case *bc, const rb_batch_op
         snprintf(d.msg, sizeof d.msg, "%s%s%.400s", rb_status_str(s->run_status[m]),
                  s->run_diag[m].msg[0] ? ": " : "", s->run_diag[m].msg);
         bc->verdict = RB_BATCH_ERROR;
-        bc->error = d;
+        rb_batch_case_set_error(bc, &d);
         bc->n_errors = 1;
         goto done;
     }
@@ -227,7 +226,7 @@ void rb_batch_case_finish(rb_batch_slot *s, rb_batch_case *bc, const rb_batch_op
             if (!d.key[0])
                 snprintf(d.key, sizeof d.key, "--reports");
             bc->verdict = RB_BATCH_ERROR;
-            bc->error = d;
+            rb_batch_case_set_error(bc, &d);
             bc->n_errors = 1;
         }
     }
@@ -235,7 +234,7 @@ done:
     if (!bc->reason) {
         char buf[700];
         snprintf(buf, sizeof buf, "%s: %s", bc->verdict == RB_BATCH_UNREADABLE
-                 ? "cannot read the case" : "error", bc->error.msg);
+                 ? "cannot read the case" : "error", rb_batch_case_error(bc)->msg);
         bc->reason = rb_batch_strdup(buf);
     }
     rb_batch_slot_free(s);

@@ -14,6 +14,7 @@
 #include <string.h>
 #include <cjson/cJSON.h>
 #include "batch_summary.h"
+#include "rockbolt/report.h"
 
 static int add_num(cJSON *o, const char *k, double v)
 {
@@ -49,6 +50,20 @@ static int add_stat(cJSON *parent, const char *name, const rb_batch_stat *st,
     return ok;
 }
 
+/* The names of the validity checks that warned, as in the reports. */
+static int add_warnings(cJSON *o, unsigned warnings)
+{
+    cJSON *a = cJSON_AddArrayToObject(o, "validity_warnings");
+    for (int k = 0; a && k < RB_N_CHECKS; k++) {
+        if (!((warnings >> k) & 1u))
+            continue;
+        cJSON *s = cJSON_CreateString(rb_check_name((rb_check)k));
+        if (!s || !cJSON_AddItemToArray(a, s))
+            return cJSON_Delete(s), 0;
+    }
+    return a != NULL;
+}
+
 static int add_run(cJSON *arr, const rb_batch_result *r, int design)
 {
     cJSON *o = cJSON_CreateObject();
@@ -59,7 +74,8 @@ static int add_run(cJSON *arr, const rb_batch_result *r, int design)
         && add_num(o, "usage", r->usage)
         && add_num(o, "shear_over_w", r->shear_over_w)
         && add_num(o, "force_over_fy", r->force_over_fy)
-        && add_num(o, "theta_over_alpha", r->theta_over_alpha);
+        && add_num(o, "theta_over_alpha", r->theta_over_alpha)
+        && add_warnings(o, r->warnings);
     if (ok && design) {
         ok = (r->has_factor ? add_num(o, "design_factor", r->design_factor)
                             : cJSON_AddNullToObject(o, "design_factor") != NULL)
@@ -75,10 +91,11 @@ static int add_error(cJSON *o, const rb_batch_case *c)
     if (c->verdict == RB_BATCH_PASS || c->verdict == RB_BATCH_FAIL)
         return cJSON_AddNullToObject(o, "error") != NULL;
     cJSON *e = cJSON_AddObjectToObject(o, "error");
-    return e && cJSON_AddStringToObject(e, "file", c->error.file)
-        && add_num(e, "line", c->error.line) && add_num(e, "col", c->error.col)
-        && cJSON_AddStringToObject(e, "key", c->error.key)
-        && cJSON_AddStringToObject(e, "message", c->error.msg)
+    const rb_diag *d = rb_batch_case_error(c);
+    return e && cJSON_AddStringToObject(e, "file", d->file)
+        && add_num(e, "line", d->line) && add_num(e, "col", d->col)
+        && cJSON_AddStringToObject(e, "key", d->key)
+        && cJSON_AddStringToObject(e, "message", d->msg)
         && add_num(e, "count", (double)c->n_errors);
 }
 
@@ -111,6 +128,19 @@ static int add_case(cJSON *arr, const rb_batch_case *c, int design)
         && add_stat(o, "max", &max, design, 1);
 }
 
+/* "digest": the SHA-256 of the case's object as printed without it
+ * (batch_digest.c), so that merge can tell an edited row. */
+static int add_digest(cJSON *o)
+{
+    char d[RB_BATCH_DIGEST_CHARS];
+    char *text = cJSON_PrintUnformatted(o);
+    if (!text)
+        return 0;
+    rb_batch_digest_text(text, d);
+    cJSON_free(text);
+    return cJSON_AddStringToObject(o, "digest", d) != NULL;
+}
+
 char *rb_batch_render_json(const rb_batch_summary *s)
 {
     rb_batch_counts n;
@@ -120,7 +150,9 @@ char *rb_batch_render_json(const rb_batch_summary *s)
     int ok = root && cJSON_AddStringToObject(root, "format", "rockbolt-batch")
         && add_num(root, "format_version", RB_BATCH_FORMAT_VERSION)
         && cJSON_AddBoolToObject(root, "design", s->design)
-        && add_num(root, "total", (double)s->total);
+        && add_num(root, "total", (double)s->total)
+        && (!s->inputs_digest[0]
+            || cJSON_AddStringToObject(root, "inputs_digest", s->inputs_digest));
     if (ok && s->n_shards > 0) {
         snprintf(shard, sizeof shard, "%zu/%zu", s->shard, s->n_shards);
         ok = cJSON_AddStringToObject(root, "shard", shard) != NULL;
@@ -133,8 +165,11 @@ char *rb_batch_render_json(const rb_batch_summary *s)
         && add_num(counts, "errors", (double)n.errors)
         && add_num(counts, "runs", (double)n.runs)
         && (cases = cJSON_AddArrayToObject(root, "cases")) != NULL;
-    for (size_t i = 0; ok && i < s->n_cases; i++)
+    for (size_t i = 0; ok && i < s->n_cases; i++) {
         ok = add_case(cases, &s->cases[i], s->design);
+        if (ok)
+            ok = add_digest(cJSON_GetArrayItem(cases, cJSON_GetArraySize(cases) - 1));
+    }
     char *text = ok ? cJSON_Print(root) : NULL, *out = NULL;
     cJSON_Delete(root);
     if (text) {
@@ -216,6 +251,24 @@ static void rd_copy(rd_ctx *r, const cJSON *o, const char *k, char *dst, size_t 
     free(s);
 }
 
+static void rd_warnings(rd_ctx *r, const cJSON *o, unsigned *warnings)
+{
+    const cJSON *a = cJSON_GetObjectItemCaseSensitive(o, "validity_warnings"), *it;
+    *warnings = 0;
+    if (!cJSON_IsArray(a)) {
+        rd_fail(r, "validity_warnings", "expected a list of check names");
+        return;
+    }
+    cJSON_ArrayForEach(it, a) {
+        rb_check k;
+        if (!cJSON_IsString(it) || !rb_check_parse(it->valuestring, &k)) {
+            rd_fail(r, "validity_warnings", "expected lift-off, sliding or bolt impact");
+            return;
+        }
+        *warnings |= 1u << k;
+    }
+}
+
 static void rd_run(rd_ctx *r, const cJSON *o, rb_batch_result *run, int design)
 {
     char *v;
@@ -229,12 +282,45 @@ static void rd_run(rd_ctx *r, const cJSON *o, rb_batch_result *run, int design)
     run->shear_over_w = rd_num(r, o, "shear_over_w");
     run->force_over_fy = rd_num(r, o, "force_over_fy");
     run->theta_over_alpha = rd_num(r, o, "theta_over_alpha");
+    rd_warnings(r, o, &run->warnings);
     if (!design)
         return;
     run->design_factor = rd_opt(r, o, "design_factor", &run->has_factor);
     run->factor_bound = cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(o,
                                                  "design_factor_bound"));
     run->gap_ratio = rd_opt(r, o, "gap_ratio", &run->has_gap);
+}
+
+/* The case object's digest must be that of the object printed without it:
+ * a row edited by hand (a verdict, a number) no longer matches. */
+static void rd_digest(rd_ctx *r, const cJSON *o)
+{
+    char want[RB_BATCH_DIGEST_CHARS], msg[400];
+    const cJSON *idx = cJSON_GetObjectItemCaseSensitive(o, "index");
+    const cJSON *tag = cJSON_GetObjectItemCaseSensitive(o, "tag");
+    cJSON *copy = cJSON_Duplicate(o, 1);
+    cJSON *d = copy ? cJSON_DetachItemFromObjectCaseSensitive(copy, "digest") : NULL;
+    char *text = copy ? cJSON_PrintUnformatted(copy) : NULL;
+    snprintf(msg, sizeof msg, "case %.0f (tag '%.100s') ",
+             cJSON_IsNumber(idx) ? idx->valuedouble : -1.0,
+             cJSON_IsString(tag) ? tag->valuestring : "?");
+    if (!copy || (d && !text)) {
+        rd_fail(r, "digest", "out of memory");
+    } else if (!cJSON_IsString(d)) {
+        strncat(msg, "has no digest (written by an older rockbolt, or edited)",
+                sizeof msg - strlen(msg) - 1);
+        rd_fail(r, "digest", msg);
+    } else {
+        rb_batch_digest_text(text, want);
+        if (strcmp(want, d->valuestring) != 0) {
+            strncat(msg, "does not match its digest: the row was changed after "
+                    "rockbolt wrote it", sizeof msg - strlen(msg) - 1);
+            rd_fail(r, "digest", msg);
+        }
+    }
+    cJSON_free(text);
+    cJSON_Delete(d);
+    cJSON_Delete(copy);
 }
 
 static void rd_case(rd_ctx *r, const cJSON *o, rb_batch_case *c, int design)
@@ -257,11 +343,15 @@ static void rd_case(rd_ctx *r, const cJSON *o, rb_batch_case *c, int design)
             rd_fail(r, "error", "expected an object");
             return;
         }
-        rd_copy(r, e, "file", c->error.file, sizeof c->error.file);
-        c->error.line = (int)rd_num(r, e, "line");
-        c->error.col = (int)rd_num(r, e, "col");
-        rd_copy(r, e, "key", c->error.key, sizeof c->error.key);
-        rd_copy(r, e, "message", c->error.msg, sizeof c->error.msg);
+        rb_diag d;
+        rb_diag_clear(&d);
+        rd_copy(r, e, "file", d.file, sizeof d.file);
+        d.line = (int)rd_num(r, e, "line");
+        d.col = (int)rd_num(r, e, "col");
+        rd_copy(r, e, "key", d.key, sizeof d.key);
+        rd_copy(r, e, "message", d.msg, sizeof d.msg);
+        if (!rb_batch_case_set_error(c, &d))
+            rd_fail(r, "error", "out of memory");
         c->n_errors = rd_size(r, e, "count");
         return;
     }
@@ -297,6 +387,12 @@ rb_status rb_batch_summary_parse(const char *text, rb_batch_summary *out, rb_dia
         rd_fail(&r, "format_version", "written by another version of the format");
     out->design = cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(root, "design"));
     out->total = rd_size(&r, root, "total");
+    const cJSON *dg = cJSON_GetObjectItemCaseSensitive(root, "inputs_digest");
+    if (!cJSON_IsString(dg) || strlen(dg->valuestring) != RB_BATCH_DIGEST_CHARS - 1)
+        rd_fail(&r, "inputs_digest", "expected the digest of the work list "
+                "(written by an older rockbolt, or edited)");
+    else
+        memcpy(out->inputs_digest, dg->valuestring, RB_BATCH_DIGEST_CHARS);
     const cJSON *sh = cJSON_GetObjectItemCaseSensitive(root, "shard");
     if (cJSON_IsString(sh) && sscanf(sh->valuestring, "%zu/%zu", &out->shard,
                                      &out->n_shards) != 2)
@@ -311,7 +407,9 @@ rb_status rb_batch_summary_parse(const char *text, rb_batch_summary *out, rb_dia
         cJSON_ArrayForEach(it, cases) {
             if (r.bad)
                 break;
-            rd_case(&r, it, &out->cases[out->n_cases++], out->design);
+            rd_digest(&r, it);
+            if (!r.bad)
+                rd_case(&r, it, &out->cases[out->n_cases++], out->design);
         }
     }
     cJSON_Delete(root);

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "batch_summary.h"
+#include "rockbolt/report.h"
 #include "rockbolt/textsafe.h"
 
 /* Text for XML content and attributes: first the shared escaping of
@@ -51,12 +52,27 @@ static void junit_case(rb_bbuf *b, const rb_batch_case *c)
     if (c->line > 0)
         rb_bbuf_printf(b, " (line %d)", c->line);
     rb_bbuf_str(b, "\"");
-    if (c->verdict == RB_BATCH_PASS) {
+    unsigned warnings = 0;
+    for (size_t m = 0; m < c->n_runs; m++)
+        warnings |= c->runs[m].warnings;
+    if (c->verdict == RB_BATCH_PASS && !warnings) {
         rb_bbuf_str(b, "/>\n");
         return;
     }
     rb_bbuf_str(b, ">\n");
-    if (c->verdict == RB_BATCH_FAIL) {
+    /* JUnit has no warning element: a property a CI can gate on, and the
+     * headline in the output where people read it */
+    char w[80], head[RB_HEADLINE_MAX];
+    rb_warnings_names(warnings, w, sizeof w);
+    rb_report_headline(c->verdict == RB_BATCH_PASS, warnings, head, sizeof head);
+    if (warnings) {
+        rb_bbuf_str(b, "      <properties><property name=\"validity_warnings\" value=\"");
+        xml_text(b, w);
+        rb_bbuf_str(b, "\"/></properties>\n");
+    }
+    if (c->verdict == RB_BATCH_PASS) {
+        /* only warnings: no failure */
+    } else if (c->verdict == RB_BATCH_FAIL) {
         rb_bbuf_str(b, "      <failure type=\"criteria\" message=\"");
         xml_text(b, c->reason ? c->reason : "");
         rb_bbuf_str(b, "\">");
@@ -71,7 +87,7 @@ static void junit_case(rb_bbuf *b, const rb_batch_case *c)
         }
         rb_bbuf_str(b, "</failure>\n");
     } else {
-        const rb_diag *e = &c->error;
+        const rb_diag *e = rb_batch_case_error(c);
         char msg[1400];
         if (e->line > 0)
             snprintf(msg, sizeof msg, "%s:%d:%d: error: %s: %s", e->file, e->line,
@@ -83,6 +99,11 @@ static void junit_case(rb_bbuf *b, const rb_batch_case *c)
         xml_text(b, msg);
         rb_bbuf_printf(b, "\">%zu error%s reported</error>\n", c->n_errors,
                        c->n_errors == 1 ? "" : "s");
+    }
+    if (warnings) {
+        rb_bbuf_str(b, "      <system-out>");
+        xml_text(b, head);
+        rb_bbuf_str(b, "</system-out>\n");
     }
     rb_bbuf_str(b, "    </testcase>\n");
 }

@@ -29,8 +29,11 @@ static int copy_case(rb_batch_case *dst, const rb_batch_case *src)
     dst->source = rb_batch_strdup(src->source);
     dst->tag = rb_batch_strdup(src->tag);
     dst->reason = rb_batch_strdup(src->reason ? src->reason : "");
+    dst->error = NULL;
+    int error_ok = !src->error || rb_batch_case_set_error(dst, src->error);
     dst->runs = src->n_runs ? calloc(src->n_runs, sizeof *dst->runs) : NULL;
-    if (!dst->source || !dst->tag || !dst->reason || (src->n_runs && !dst->runs)) {
+    if (!dst->source || !dst->tag || !dst->reason || !error_ok
+        || (src->n_runs && !dst->runs)) {
         dst->n_runs = 0;
         return 0;
     }
@@ -59,6 +62,16 @@ rb_status rb_batch_merge(const rb_batch_summary *shards, size_t n,
         if (shards[k].design != shards[0].design)
             return fail(diag, "summary %zu and the first differ in --design", k + 1);
     }
+    for (size_t k = 1; k < n; k++)
+        if (strcmp(shards[k].inputs_digest, shards[0].inputs_digest) != 0)
+            return fail(diag, "summary %zu was run on other inputs than the first "
+                        "(a different list, case or base: their inputs digests "
+                        "differ)", k + 1);
+    for (size_t k = 1; k < n; k++)
+        if (strcmp(shards[k].inputs_digest, shards[0].inputs_digest) != 0)
+            return fail(diag, "summary %zu was run on other inputs than the first "
+                        "(a different list, case or base: their inputs digests "
+                        "differ)", k + 1);
     rb_batch_case **at = calloc(total ? total : 1, sizeof *at);
     if (!at)
         return RB_ERR_NOMEM;
@@ -83,6 +96,8 @@ rb_status rb_batch_merge(const rb_batch_summary *shards, size_t n,
     if (st == RB_OK && !(out->cases = calloc(total ? total : 1, sizeof *out->cases)))
         st = RB_ERR_NOMEM;
     out->design = shards[0].design;
+    memcpy(out->inputs_digest, shards[0].inputs_digest, sizeof out->inputs_digest);
+    memcpy(out->inputs_digest, shards[0].inputs_digest, sizeof out->inputs_digest);
     out->total = total;
     for (size_t i = 0; i < total && st == RB_OK; i++) {
         out->n_cases++;

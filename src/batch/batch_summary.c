@@ -5,6 +5,20 @@
 #include <string.h>
 #include "batch_summary.h"
 
+const rb_diag *rb_batch_case_error(const rb_batch_case *c)
+{
+    static const rb_diag none;
+    return c && c->error ? c->error : &none;
+}
+
+int rb_batch_case_set_error(rb_batch_case *c, const rb_diag *d)
+{
+    if (!c->error && !(c->error = malloc(sizeof *c->error)))
+        return 0;
+    *c->error = *d;
+    return 1;
+}
+
 void rb_batch_summary_free(rb_batch_summary *s)
 {
     if (!s)
@@ -14,6 +28,7 @@ void rb_batch_summary_free(rb_batch_summary *s)
         free(c->source);
         free(c->tag);
         free(c->reason);
+        free(c->error);
         for (size_t m = 0; c->runs && m < c->n_runs; m++)
             free(c->runs[m].motion);
         free(c->runs);

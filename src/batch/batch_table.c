@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "batch_summary.h"
+#include "rockbolt/report.h"
 #include "rockbolt/textsafe.h"
 
 static const char *upper_verdict(rb_batch_verdict v)
@@ -38,7 +39,7 @@ static void text_nums(rb_bbuf *b, double usage, double vw, double ff, double ta,
 static void text_case(rb_bbuf *b, const rb_batch_case *c, int design)
 {
     if (c->verdict != RB_BATCH_PASS && c->verdict != RB_BATCH_FAIL) {
-        const rb_diag *e = &c->error;
+        const rb_diag *e = rb_batch_case_error(c);
         char tag[128], file[1024], key[256], msg[1024];
         rb_bbuf_printf(b, "%-24.24s %-18s %-10s ", rb_text_escape_buf(c->tag, tag, sizeof tag),
                        "-", upper_verdict(c->verdict));
@@ -127,14 +128,14 @@ char *rb_batch_render_csv(const rb_batch_summary *s)
                     "usage,shear_over_w,force_over_fy,theta_over_alpha");
     if (s->design)
         rb_bbuf_str(&b, ",design_factor,design_factor_bound,gap_ratio");
-    rb_bbuf_str(&b, ",error\n");
+    rb_bbuf_str(&b, ",validity_warnings,error\n");
     for (size_t i = 0; i < s->n_cases; i++) {
         const rb_batch_case *c = &s->cases[i];
         if (c->verdict != RB_BATCH_PASS && c->verdict != RB_BATCH_FAIL) {
             char err[1400];
-            const rb_diag *e = &c->error;
+            const rb_diag *e = rb_batch_case_error(c);
             csv_head(&b, c, "", 0, rb_batch_verdict_str(c->verdict));
-            rb_bbuf_str(&b, s->design ? ",,,,,,,," : ",,,,,");
+            rb_bbuf_str(&b, s->design ? ",,,,,,,,," : ",,,,,,");
             if (e->line > 0)
                 snprintf(err, sizeof err, "%s:%d:%d: %s: %s", e->file, e->line, e->col,
                          e->key, e->msg);
@@ -160,6 +161,10 @@ char *rb_batch_render_csv(const rb_batch_summary *s)
                 else
                     rb_bbuf_str(&b, ",");
             }
+            char w[80];
+            rb_warnings_names(r->warnings, w, sizeof w);
+            rb_bbuf_str(&b, ",");
+            csv_field(&b, w);
             rb_bbuf_str(&b, ",\n");
         }
     }

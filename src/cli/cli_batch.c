@@ -145,7 +145,7 @@ static void print_errors(const rb_batch_summary *s)
     for (size_t i = 0; i < s->n_cases; i++) {
         const rb_batch_case *c = &s->cases[i];
         if (c->verdict == RB_BATCH_UNREADABLE || c->verdict == RB_BATCH_ERROR)
-            rb_cli_diag_print(&c->error);
+            rb_cli_diag_print(rb_batch_case_error(c));
     }
 }
 
