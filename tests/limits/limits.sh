@@ -1,0 +1,126 @@
+#!/bin/sh
+# Bounds on work and memory that a single bad case file cannot show.
+# Usage: limits.sh TEST ROCKBOLT SCRATCH   (from the repository root)
+#   fifo_batch    a FIFO and a directory named *.yaml in a batch directory
+#                 are refused by name, and the batch ends (it used to wait
+#                 for ever on the FIFO)
+#   fifo_check    `check` on a FIFO nobody writes to ends at once (exit 2)
+#   fifo_list     an equipment list that is a FIFO is refused, not opened
+#   record_bytes  a record file over 256 MiB (blank lines) is refused
+#                 before it is read (1 GiB used to be read for 45 s)
+#   batch_memory  peak memory of a batch grows by under 1 KB per list row
+#                 (2 000 against 20 000 rows; it grew by 2.8 KB before the
+#                 rows' errors were kept only for the rows that have one)
+set -u
+T=$1
+R=$2
+D=$3
+rm -rf "$D"
+mkdir -p "$D" || exit 1
+BASE="$(pwd)/cases/base/reference-cabinet.yaml"
+
+fail() {
+    echo "FAIL [$T]: $*"
+    for f in "$D/out" "$D/err"; do
+        [ -f "$f" ] && { echo "--- $f"; head -n 20 "$f"; }
+    done
+    exit 1
+}
+
+# run SECONDS ARGS...: rockbolt with a time limit; sets rc (124: timed out)
+run() {
+    secs=$1
+    shift
+    timeout "$secs" "$R" "$@" >"$D/out" 2>"$D/err"
+    rc=$?
+}
+
+cheap_case() {
+    printf 'extends: %s\nmotion:\n  type: harmonic\n  amplitude: 0.1 A*\n  frequency: 4 Hz\n  duration: 0.01 s\n' \
+        "$BASE" >"$1"
+}
+
+case "$T" in
+fifo_batch)
+    mkdir "$D/dir" && cheap_case "$D/dir/a-good.yaml" && mkfifo "$D/dir/b-fifo.yaml" \
+        && mkdir "$D/dir/c-dir.yaml" || exit 77
+    run 30 batch "$D/dir" -j 2
+    [ "$rc" -ne 124 ] || fail "the batch waited on the FIFO"
+    [ "$rc" -eq 2 ] || fail "exit code $rc, want 2 (two entries cannot be read)"
+    grep -q "b-fifo.yaml: error: case: not a regular file (a FIFO" "$D/err" \
+        || fail "no diagnostic naming the FIFO"
+    grep -q "c-dir.yaml: error: case: not a regular file but a directory" "$D/err" \
+        || fail "no diagnostic naming the directory"
+    grep -q "^a-good .* pass" "$D/out" || fail "the regular case did not run"
+    # the same through a glob
+    run 30 batch "$D/dir/*.yaml" -j 2
+    [ "$rc" -eq 2 ] || fail "glob: exit code $rc, want 2"
+    ;;
+fifo_check)
+    mkfifo "$D/lone.yaml" || exit 77
+    run 30 check "$D/lone.yaml"
+    [ "$rc" -ne 124 ] || fail "check waited for a writer on the FIFO"
+    [ "$rc" -eq 2 ] || fail "exit code $rc, want 2"
+    # a pipe that has a writer is still read (`check <(gen-case)`)
+    cheap_case "$D/c.yaml"
+    cat "$D/c.yaml" | timeout 30 "$R" check /dev/stdin --quiet >"$D/out" 2>"$D/err"
+    rc=$?
+    [ "$rc" -eq 0 ] || fail "a pipe with a writer: exit code $rc, want 0"
+    ;;
+fifo_list)
+    mkfifo "$D/list.csv" || exit 77
+    run 30 batch "$D/list.csv" --base "$BASE"
+    [ "$rc" -ne 124 ] || fail "batch waited on the FIFO list"
+    [ "$rc" -eq 2 ] || fail "exit code $rc, want 2"
+    grep -q "list.csv: error: case: not a regular file" "$D/err" \
+        || fail "no diagnostic naming the list"
+    ;;
+record_bytes)
+    # 270 000 000 bytes, just over 256 MiB: two samples, then blank lines
+    { printf '0.1\n-0.1\n'; head -c 270000000 /dev/zero | tr '\0' '\n'; } >"$D/blank.txt" \
+        || exit 77
+    printf 'extends: %s\nmotion:\n  type: record\n  file: blank.txt\n  format: one-column\n  units: g\n  dt: 0.01 s\n' \
+        "$BASE" >"$D/c.yaml"
+    start=$(date +%s)
+    run 60 check "$D/c.yaml"
+    took=$(( $(date +%s) - start ))
+    rm -f "$D/blank.txt"
+    [ "$rc" -eq 2 ] || fail "exit code $rc, want 2"
+    grep -q "c.yaml:4:9: error: motion.file: cannot read record .*over the 256 MiB a record may hold" \
+        "$D/err" || fail "diagnostic does not name the limit at the key"
+    [ "$took" -le 5 ] || fail "took $took s: the file was read before it was refused"
+    ;;
+batch_memory)
+    # peak RSS of a child, in KB
+    if [ -x /usr/bin/time ]; then
+        peak() { /usr/bin/time -v "$@" 2>&1 >/dev/null | sed -n 's/.*Maximum resident set size (kbytes): //p'; }
+    elif command -v python3 >/dev/null 2>&1; then
+        peak() {
+            python3 -c 'import resource, subprocess, sys
+subprocess.run(sys.argv[1:], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+print(resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss)' "$@"
+        }
+    else
+        echo "no /usr/bin/time and no python3: skipped"
+        exit 77
+    fi
+    cheap_case "$D/base.yaml"
+    for n in 2000 20000; do
+        awk -v n=$n 'BEGIN { print "tag,base,mass"; for (i = 1; i <= n; i++)
+            printf "T-%d,base.yaml,%d kg\n", i, 400 + i % 100 }' >"$D/list$n.csv"
+    done
+    small=$(peak "$R" batch "$D/list2000.csv" -j 2 --quiet)
+    large=$(peak "$R" batch "$D/list20000.csv" -j 2 --quiet)
+    [ -n "$small" ] && [ -n "$large" ] || fail "no peak memory measured"
+    per_row=$(( (large - small) * 1024 / 18000 ))
+    echo "peak RSS: $small KB for 2000 rows, $large KB for 20000 rows: $per_row bytes per row"
+    [ "$per_row" -lt 1024 ] || fail "memory grows by $per_row bytes per row (want < 1024)"
+    ;;
+*)
+    echo "unknown test $T"
+    exit 1
+    ;;
+esac
+rm -rf "$D"
+echo "$T: ok"
+exit 0
