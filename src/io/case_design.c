@@ -71,10 +71,17 @@ static void rb_read_sweep(rb_cctx *c, rb_ynode *m, const char *path,
     }
     if (freq) {
         rb_design_value(c, m, path, "amplitude", 0, 1, &sw->amplitude_astar);
-        rb_cv_number(c, m, path, "duration", 0, RB_DIM_TIME, 0, 0, 3600, 1,
-                     &sw->duration_s);
-        rb_cv_number(c, m, path, "ramp", 0, RB_DIM_TIME, 0, 1, 3600, 1,
-                     &sw->ramp_s);
+        /* the case's own time limits: 1 ms (ramp 0) to one simulated hour */
+        const rb_ynode *t = rb_cv_number(c, m, path, "duration", 0, RB_DIM_TIME, 0, 0,
+                                         (double)NAN, 0, &sw->duration_s);
+        rb_case_keypath(k, path, "duration");
+        if (t)
+            rb_cv_time_range(c, t, k, sw->duration_s, 0);
+        t = rb_cv_number(c, m, path, "ramp", 0, RB_DIM_TIME, 0, 1, (double)NAN, 0,
+                         &sw->ramp_s);
+        rb_case_keypath(k, path, "ramp");
+        if (t)
+            rb_cv_time_range(c, t, k, sw->ramp_s, 1);
     } else {
         static const char *const freq_only[] = {"amplitude", "duration", "ramp"};
         size_t i;
