@@ -60,10 +60,14 @@ void rb_judge(const rb_criteria *c, const rb_result *r, rb_verdict *v);
 /* A check's name for people ("lift-off") and its JSON key ("lift_off"). */
 const char *rb_check_name(rb_check k);
 const char *rb_check_key(rb_check k);
+/* The check a name of rb_check_name stands for; 0 if none. */
+int rb_check_parse(const char *name, rb_check *k);
 const char *rb_check_status_str(rb_check_status s);
 
 /* How many checks a warnings mask names. */
 int rb_warnings_count(unsigned warnings);
+/* "name; name" for a warnings mask (one CSV field); "" for none. */
+void rb_warnings_names(unsigned warnings, char *buf, size_t n);
 /* "N validity warning(s): name, name" for a warnings mask; "" for none. */
 void rb_warnings_str(unsigned warnings, char *buf, size_t n);
 

@@ -14,21 +14,15 @@
 #include <string.h>
 #include <cjson/cJSON.h>
 #include "batch_summary.h"
+#include "rockbolt/jsonnum.h"
 #include "rockbolt/report.h"
 
 static int add_num(cJSON *o, const char *k, double v)
 {
-    char buf[32];
-    int prec;
+    char buf[RB_JSONNUM_MAX];
     if (!isfinite(v))
         return cJSON_AddNullToObject(o, k) != NULL;
-    for (prec = 15; prec < 17; prec++) {
-        snprintf(buf, sizeof buf, "%.*g", prec, v);
-        if (strtod(buf, NULL) == v)
-            break;
-    }
-    if (prec == 17)
-        snprintf(buf, sizeof buf, "%.17g", v);
+    rb_json_number(v, buf);
     return cJSON_AddRawToObject(o, k, buf) != NULL;
 }
 

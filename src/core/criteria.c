@@ -38,6 +38,16 @@ const char *rb_check_key(rb_check k)
     return "?";
 }
 
+int rb_check_parse(const char *name, rb_check *k)
+{
+    for (int i = 0; i < RB_N_CHECKS; i++)
+        if (strcmp(name, rb_check_name((rb_check)i)) == 0) {
+            *k = (rb_check)i;
+            return 1;
+        }
+    return 0;
+}
+
 const char *rb_check_status_str(rb_check_status s)
 {
     switch (s) {
@@ -54,6 +64,18 @@ int rb_warnings_count(unsigned warnings)
     for (int k = 0; k < RB_N_CHECKS; k++)
         count += (warnings >> k) & 1u;
     return count;
+}
+
+void rb_warnings_names(unsigned warnings, char *buf, size_t n)
+{
+    size_t len = 0;
+    if (!n)
+        return;
+    buf[0] = '\0';
+    for (int k = 0; k < RB_N_CHECKS && len < n; k++)
+        if ((warnings >> k) & 1u)
+            len += (size_t)snprintf(buf + len, n - len, "%s%s", len ? "; " : "",
+                                    rb_check_name((rb_check)k));
 }
 
 void rb_warnings_str(unsigned warnings, char *buf, size_t n)

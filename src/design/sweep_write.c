@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <cjson/cJSON.h>
+#include "rockbolt/jsonnum.h"
 #include "rockbolt/report.h"
 #include "rockbolt/textsafe.h"
 #include "design_internal.h"
@@ -40,8 +41,11 @@ rb_status rb_sweep_write_csv(const rb_sweep *s, FILE *fp)
 /* JSON has no infinity: such numbers are written as null. */
 static int add_num(cJSON *o, const char *key, double v)
 {
-    return (isfinite(v) ? cJSON_AddNumberToObject(o, key, v)
-                        : cJSON_AddNullToObject(o, key)) != NULL;
+    char buf[RB_JSONNUM_MAX];
+    if (!isfinite(v))
+        return cJSON_AddNullToObject(o, key) != NULL;
+    rb_json_number(v, buf);
+    return cJSON_AddRawToObject(o, key, buf) != NULL;
 }
 
 /* Per-row values as {"left": .., "right": ..}, as in the check report. */

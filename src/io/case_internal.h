@@ -136,6 +136,9 @@ typedef struct {
     rb_record_cache *cache;     /* borrowed; NULL: read every record */
     double history_dt_s;        /* output_interval, or the default */
     const rb_ynode *history_dt_node; /* NULL: not given */
+    int overrides;              /* the root document is a list row's
+                                   overrides: its `motion:` applies to each
+                                   motion of a base's `motions:` list */
 } rb_cctx;
 
 /* --- case.c: diagnostics ------------------------------------------------ */

@@ -101,7 +101,7 @@ const char *rb_report_bolt_model_str(rb_bolt_model model)
     switch (model) {
     case RB_BOLT_NONE: return "none";
     case RB_BOLT_RIGID_PLASTIC: return "rigid-plastic";
-    case RB_BOLT_NONYIELDING: return "nonyielding";
+    case RB_BOLT_NONYIELDING: return "non-yielding";
     case RB_BOLT_ELASTIC_PLASTIC: return "elastic-plastic";
     }
     return "unknown";

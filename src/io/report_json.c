@@ -15,6 +15,7 @@
 #include <cjson/cJSON.h>
 #include "rockbolt/rockbolt.h"
 #include "report_internal.h"
+#include "rockbolt/jsonnum.h"
 #include "report_json_build.h"
 
 static void add_model(rb_jctx *cx, cJSON *root, const rb_model *m)
@@ -234,7 +235,9 @@ static void j_column(rb_jctx *cx, cJSON *o, const char *key, const double *v, si
                      cx->where, key, i);
             return;
         }
-        x = cJSON_CreateNumber(v[i]);
+        char buf[RB_JSONNUM_MAX];
+        rb_json_number(v[i], buf);
+        x = cJSON_CreateRaw(buf);
         if (!x || !cJSON_AddItemToArray(a, x)) {
             cJSON_Delete(x);
             cx->st = RB_ERR_NOMEM;

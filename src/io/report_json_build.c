@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <cjson/cJSON.h>
 #include "rockbolt/rockbolt.h"
+#include "rockbolt/jsonnum.h"
 #include "report_json_build.h"
 
 void rb_j_oom(rb_jctx *cx, const void *added)
@@ -30,7 +31,9 @@ void rb_j_num(rb_jctx *cx, cJSON *o, const char *key, double v)
         snprintf(cx->bad_key, sizeof cx->bad_key, "%s.%s", cx->where, key);
         return;
     }
-    rb_j_oom(cx, cJSON_AddNumberToObject(o, key, v));
+    char buf[RB_JSONNUM_MAX];
+    rb_json_number(v, buf);
+    rb_j_oom(cx, cJSON_AddRawToObject(o, key, buf));
 }
 
 void rb_j_null(rb_jctx *cx, cJSON *o, const char *key)

@@ -432,7 +432,12 @@ static void writers(const rb_sweep *s)
         CHECK(count_lines(fp) == (int)s->n_points + 1);
         fclose(fp);
     }
-    cJSON *j = rb_sweep_to_json(s);
+    /* read as a reader would: numbers are raw text until parsed */
+    cJSON *built = rb_sweep_to_json(s);
+    char *text = built ? cJSON_PrintUnformatted(built) : NULL;
+    cJSON *j = text ? cJSON_Parse(text) : NULL;
+    free(text);
+    cJSON_Delete(built);
     cJSON *pts = cJSON_GetObjectItem(j, "points");
     CHECK(j && cJSON_GetArraySize(pts) == (int)s->n_points);
     cJSON *p0 = cJSON_GetArrayItem(pts, 0);
