@@ -174,11 +174,6 @@ int rb_batch_in_shard(size_t index, size_t shard, size_t n_shards);
  * file, list and base it names. RB_ERR_NOMEM, else RB_OK. */
 rb_status rb_batch_list_digest(const rb_batch_list *l, char out[RB_BATCH_DIGEST_CHARS]);
 
-/* The digest of a work list, alike in every shard: each item's source,
- * line, tag, base and overrides, then the bytes of every distinct case
- * file, list and base it names. RB_ERR_NOMEM, else RB_OK. */
-rb_status rb_batch_list_digest(const rb_batch_list *l, char out[RB_BATCH_DIGEST_CHARS]);
-
 rb_status rb_batch_run(const rb_batch_list *l, const rb_batch_opts *o,
                        rb_batch_summary *out, rb_diag *diag);
 

@@ -285,36 +285,32 @@ static void rd_run(rd_ctx *r, const cJSON *o, rb_batch_result *run, int design)
     run->gap_ratio = rd_opt(r, o, "gap_ratio", &run->has_gap);
 }
 
-/* The case object's digest must be that of the object printed without it:
- * a row edited by hand (a verdict, a number) no longer matches. */
-static void rd_digest(rd_ctx *r, const cJSON *o)
+/* A case's digest must be that of the case as this writer prints it (its
+ * numbers in the writer's own shortest form): a row edited by hand (a
+ * verdict, a number, a name) no longer matches. dg is the file's digest. */
+static void rd_digest(rd_ctx *r, const cJSON *dg, const rb_batch_case *c, int design)
 {
     char want[RB_BATCH_DIGEST_CHARS], msg[400];
-    const cJSON *idx = cJSON_GetObjectItemCaseSensitive(o, "index");
-    const cJSON *tag = cJSON_GetObjectItemCaseSensitive(o, "tag");
-    cJSON *copy = cJSON_Duplicate(o, 1);
-    cJSON *d = copy ? cJSON_DetachItemFromObjectCaseSensitive(copy, "digest") : NULL;
-    char *text = copy ? cJSON_PrintUnformatted(copy) : NULL;
-    snprintf(msg, sizeof msg, "case %.0f (tag '%.100s') ",
-             cJSON_IsNumber(idx) ? idx->valuedouble : -1.0,
-             cJSON_IsString(tag) ? tag->valuestring : "?");
-    if (!copy || (d && !text)) {
+    cJSON *arr = cJSON_CreateArray();
+    char *text = arr && add_case(arr, c, design)
+        ? cJSON_PrintUnformatted(cJSON_GetArrayItem(arr, 0)) : NULL;
+    snprintf(msg, sizeof msg, "case %zu (tag '%.100s') ", c->index, c->tag ? c->tag : "?");
+    if (!text) {
         rd_fail(r, "digest", "out of memory");
-    } else if (!cJSON_IsString(d)) {
+    } else if (!cJSON_IsString(dg)) {
         strncat(msg, "has no digest (written by an older rockbolt, or edited)",
                 sizeof msg - strlen(msg) - 1);
         rd_fail(r, "digest", msg);
     } else {
         rb_batch_digest_text(text, want);
-        if (strcmp(want, d->valuestring) != 0) {
+        if (strcmp(want, dg->valuestring) != 0) {
             strncat(msg, "does not match its digest: the row was changed after "
                     "rockbolt wrote it", sizeof msg - strlen(msg) - 1);
             rd_fail(r, "digest", msg);
         }
     }
     cJSON_free(text);
-    cJSON_Delete(d);
-    cJSON_Delete(copy);
+    cJSON_Delete(arr);
 }
 
 static void rd_case(rd_ctx *r, const cJSON *o, rb_batch_case *c, int design)
@@ -401,9 +397,10 @@ rb_status rb_batch_summary_parse(const char *text, rb_batch_summary *out, rb_dia
         cJSON_ArrayForEach(it, cases) {
             if (r.bad)
                 break;
-            rd_digest(&r, it);
+            rd_case(&r, it, &out->cases[out->n_cases++], out->design);
             if (!r.bad)
-                rd_case(&r, it, &out->cases[out->n_cases++], out->design);
+                rd_digest(&r, cJSON_GetObjectItemCaseSensitive(it, "digest"),
+                          &out->cases[out->n_cases - 1], out->design);
         }
     }
     cJSON_Delete(root);

@@ -67,11 +67,6 @@ rb_status rb_batch_merge(const rb_batch_summary *shards, size_t n,
             return fail(diag, "summary %zu was run on other inputs than the first "
                         "(a different list, case or base: their inputs digests "
                         "differ)", k + 1);
-    for (size_t k = 1; k < n; k++)
-        if (strcmp(shards[k].inputs_digest, shards[0].inputs_digest) != 0)
-            return fail(diag, "summary %zu was run on other inputs than the first "
-                        "(a different list, case or base: their inputs digests "
-                        "differ)", k + 1);
     rb_batch_case **at = calloc(total ? total : 1, sizeof *at);
     if (!at)
         return RB_ERR_NOMEM;
@@ -96,7 +91,6 @@ rb_status rb_batch_merge(const rb_batch_summary *shards, size_t n,
     if (st == RB_OK && !(out->cases = calloc(total ? total : 1, sizeof *out->cases)))
         st = RB_ERR_NOMEM;
     out->design = shards[0].design;
-    memcpy(out->inputs_digest, shards[0].inputs_digest, sizeof out->inputs_digest);
     memcpy(out->inputs_digest, shards[0].inputs_digest, sizeof out->inputs_digest);
     out->total = total;
     for (size_t i = 0; i < total && st == RB_OK; i++) {

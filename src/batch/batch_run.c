@@ -158,6 +158,8 @@ rb_status rb_batch_run(const rb_batch_list *l, const rb_batch_opts *o,
     out->total = l->n;
     out->shard = o->shard;
     out->n_shards = o->n_shards;
+    if ((st = rb_batch_list_digest(l, out->inputs_digest)) != RB_OK)
+        return st;
     if ((st = select_cases(l, o, out)) != RB_OK)
         return st;
     memset(&cx, 0, sizeof cx);

@@ -19,4 +19,7 @@ typedef struct {
 /* Zero when the case has no results (unreadable, error). */
 void rb_batch_stats(const rb_batch_case *c, rb_batch_stat *mean, rb_batch_stat *max);
 
+/* "sha256:" and the hex SHA-256 of text (batch_digest.c). */
+void rb_batch_digest_text(const char *text, char out[RB_BATCH_DIGEST_CHARS]);
+
 #endif

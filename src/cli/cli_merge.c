@@ -62,6 +62,13 @@ static rb_exit read_shards(const rb_batch_cli *o, rb_batch_summary *sh)
             rb_cli_diag_print(&d);
             return st == RB_ERR_NOMEM ? RB_EXIT_INTERNAL : RB_EXIT_USAGE;
         }
+        /* shards of one list were run on the same list, cases and bases */
+        if (i > 0 && strcmp(sh[i].inputs_digest, sh[0].inputs_digest) != 0) {
+            rb_cli_error(o->inputs[i], "inputs_digest", "this shard was run on other "
+                         "inputs than '%s' (a different list, case or base file)",
+                         o->inputs[0]);
+            return RB_EXIT_USAGE;
+        }
     }
     return RB_EXIT_PASS;
 }

@@ -187,6 +187,34 @@ sandbox)
     has "$s/err" "none: error: --sandbox: expected an existing directory"
     run 2 check "$in/a.yaml" --sandbox "$in/a.yaml"
     ;;
+merge_digest)
+    # shards of one list merge; shards of two lists with as many rows, and
+    # a shard whose verdict was edited by hand, are refused by name
+    c="tests/batch/cases/a-pass.yaml tests/batch/cases/b-fail.yaml"
+    "$rb" batch $c -q --shard 1/2 --json "$s/s1.json"
+    "$rb" batch $c -q --shard 2/2 --json "$s/s2.json"
+    has "$s/s1.json" '"inputs_digest":	"sha256:[0-9a-f]\{64\}"'
+    has "$s/s1.json" '"digest":	"sha256:[0-9a-f]\{64\}"'
+    run 1 merge "$s/s1.json" "$s/s2.json" --json "$s/m.json"
+    run 1 batch $c -q --json "$s/all.json"
+    cmp "$s/m.json" "$s/all.json" || fail "merged shards differ from one run"
+    printf 'tag,base,mass\nA,%s,454 kg\nB,%s,454 kg\n' "$base" "$base" >"$s/l1.csv"
+    printf 'tag,base,mass\nA,%s,454 kg\nB,%s,600 kg\n' "$base" "$base" >"$s/l2.csv"
+    "$rb" batch "$s/l1.csv" -q --shard 1/2 --json "$s/l1-1.json"
+    "$rb" batch "$s/l2.csv" -q --shard 2/2 --json "$s/l2-2.json"
+    run 2 merge "$s/l1-1.json" "$s/l2-2.json" --json "$s/bad.json"
+    has "$s/err" "l2-2.json: error: inputs_digest: this shard was run on other inputs than '.*l1-1.json'"
+    [ ! -e "$s/bad.json" ] || fail "merge wrote an output after an error"
+    # a FAIL turned into a PASS, a number changed
+    sed 's/"verdict":	"fail"/"verdict":	"pass"/' "$s/s2.json" >"$s/e2.json"
+    cmp -s "$s/s2.json" "$s/e2.json" && fail "the edit changed nothing"
+    run 2 merge "$s/s1.json" "$s/e2.json"
+    has "$s/err" "e2.json: error: digest: case 1 (tag 'b-fail') does not match its digest"
+    sed 's/"usage":	0\.1/"usage":	0.2/' "$s/s1.json" >"$s/e1.json"
+    cmp -s "$s/s1.json" "$s/e1.json" && fail "the usage edit changed nothing"
+    run 2 merge "$s/e1.json" "$s/s2.json"
+    has "$s/err" "e1.json: error: digest: case 0 (tag 'a-pass') does not match"
+    ;;
 *)
     fail "unknown test $t"
     ;;

@@ -1,7 +1,7 @@
 # Hostile text and files in inputs (label "hostile"): formula injection in
 # CSV outputs, control characters in names, file content quoted in
 # diagnostics, --sandbox, and merge's digests. See hostile_test.sh.
-set(RB_HOSTILE_TESTS csv_formula control_chars no_quote sandbox)
+set(RB_HOSTILE_TESTS csv_formula control_chars no_quote sandbox merge_digest)
 foreach(t ${RB_HOSTILE_TESTS})
   add_test(NAME hostile_${t}
            COMMAND sh ${PROJECT_SOURCE_DIR}/tests/hostile/hostile_test.sh ${t}
