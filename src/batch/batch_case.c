@@ -12,6 +12,7 @@
 #include "batch_engine.h"
 #include "rockbolt/outplan.h"
 #include "rockbolt/report.h"
+#include "rockbolt/run.h"
 
 /* The case name from a path: file name without directory and extension. */
 static char *stem_of(const char *path)
@@ -98,18 +99,15 @@ void rb_batch_case_solve(rb_batch_slot *s, rb_batch_case *bc, size_t m, int desi
     rb_batch_result *run = &bc->runs[m];
     rb_solve_opts so = s->c.solve;
     rb_diag *d = &s->run_diag[m];
-    so.history_dt_s = 0;   /* summaries and reports of a batch carry no history */
+    rb_report_motion *rm = &s->rms[m];
+    so.history_dt_s = 0;   /* the design searches keep no history */
     rb_diag_clear(d);
-    s->run_status[m] = rb_solve_run(&s->c.model, &cm->motion, &so, r, d);
+    s->run_status[m] = rb_run_motion(&s->c, m, 0, r, rm, d);
     run->motion = rb_batch_strdup(cm->name ? cm->name : "?");
     if (!run->motion && s->run_status[m] == RB_OK)
         s->run_status[m] = RB_ERR_NOMEM;
     if (s->run_status[m] != RB_OK)
         return;
-    rb_report_motion *rm = &s->rms[m];
-    rm->motion = cm;
-    rm->result = r;
-    rb_judge(&s->c.criteria, r, &rm->verdict);
     run->pass = rm->verdict.pass;
     run->warnings = rm->verdict.warnings;
     run->usage = fmax(r->usage[0], r->usage[1]);
@@ -212,16 +210,11 @@ void rb_batch_case_finish(rb_batch_slot *s, rb_batch_case *bc, const rb_batch_op
     }
     rb_report rep;
     rb_diag d;
-    memset(&rep, 0, sizeof rep);
     rb_diag_clear(&d);
-    rep.kase = &s->c;
-    rep.motions = s->rms;
-    rep.n_motions = bc->n_runs;
-    rb_report_conclude(&rep);
+    rb_run_conclude(&s->c, s->rms, &rep);
     bc->verdict = rep.pass ? RB_BATCH_PASS : RB_BATCH_FAIL;
     bc->reason = rb_batch_strdup(rep.reason);
     if (o->reports_dir) {
-        rb_model_derive(&s->c.model, &rep.derived, NULL);
         if (write_reports(bc, o, total, &rep, &d) != RB_OK) {
             if (!d.key[0])
                 snprintf(d.key, sizeof d.key, "--reports");

@@ -14,9 +14,9 @@
 #include "cli.h"
 #include "rockbolt/outplan.h"
 #include "rockbolt/plot.h"
+#include "rockbolt/run.h"
 #include "rockbolt/textsafe.h"
 
-#define RB_HISTORY_DT_DEFAULT_S 0.01
 
 typedef enum { OUT_JSON, OUT_TEXT, OUT_HISTORY, OUT_SWEEP, OUT_SVG, OUT_HTML } out_kind;
 
@@ -116,35 +116,21 @@ static rb_exit prepare(const rb_cli_opts *o, check_run *r)
 /* Solve and judge every motion; a solver failure is exit 3. */
 static rb_exit solve_all(const rb_cli_opts *o, check_run *r)
 {
-    rb_solve_opts so = r->c.solve;
-    size_t i;
-    if (r->c.write_history || o->history_path || o->svg_path || o->html_path) {
-        if (!(so.history_dt_s > 0))
-            so.history_dt_s = RB_HISTORY_DT_DEFAULT_S;
-    }
-    for (i = 0; i < r->c.n_motions; i++) {
-        const rb_case_motion *cm = &r->c.motions[i];
-        rb_report_motion *rm = &r->rms[i];
+    int figures = o->history_path || o->svg_path || o->html_path;
+    for (size_t i = 0; i < r->c.n_motions; i++) {
         rb_diag d;
-        rb_status st;
         rb_diag_clear(&d);
-        st = rb_solve_run(&r->c.model, &cm->motion, &so, &r->results[i], &d);
+        rb_status st = rb_run_motion(&r->c, i, figures, &r->results[i], &r->rms[i], &d);
         if (st != RB_OK) {
+            const char *name = r->c.motions[i].name;
             char key[128];
-            snprintf(key, sizeof key, "motion '%.100s'", cm->name ? cm->name : "?");
+            snprintf(key, sizeof key, "motion '%.100s'", name ? name : "?");
             rb_cli_error(o->case_path, key, "%s%s%s", rb_status_str(st),
                          d.msg[0] ? ": " : "", d.msg);
             return RB_EXIT_INTERNAL;
         }
-        rm->motion = cm;
-        rm->result = &r->results[i];
-        rb_judge(&r->c.criteria, &r->results[i], &rm->verdict);
     }
-    r->rep.kase = &r->c;
-    r->rep.motions = r->rms;
-    r->rep.n_motions = r->c.n_motions;
-    r->rep.with_history = r->c.write_history;
-    rb_report_conclude(&r->rep);
+    rb_run_conclude(&r->c, r->rms, &r->rep);
     return RB_EXIT_PASS;
 }
 
