@@ -7,11 +7,11 @@ void rb_cli_help_print(void)
 {
     fputs(
 "usage: rockbolt check CASE.yaml [--json FILE] [--text FILE] [--history FILE]\n"
-"                      [--svg FILE] [--html FILE] [--quiet]\n"
+"                      [--svg FILE] [--html FILE] [--sandbox DIR] [--quiet]\n"
 "       rockbolt design CASE.yaml [check's options] [-j N] [--sweep-csv FILE]\n"
 "       rockbolt batch INPUT... [--base CASE] [-j N] [--design] [--csv FILE]\n"
 "                      [--json FILE] [--junit FILE] [--reports DIR]\n"
-"                      [--shard I/N] [--quiet]\n"
+"                      [--shard I/N] [--sandbox DIR] [--quiet]\n"
 "       rockbolt merge SHARD.json... [--json FILE] [--csv FILE] [--junit FILE]\n"
 "       rockbolt init [FILE]\n"
 "       rockbolt --help | --version\n"
@@ -35,13 +35,19 @@ void rb_cli_help_print(void)
 "                    terminal; --design adds the design factor and the\n"
 "                    recommended gap; --reports DIR writes each case's\n"
 "                    JSON and text report; --shard I/N runs every N-th\n"
-"                    item from the I-th; exit 0 all pass, 1 a case fails,\n"
+"                    item from the I-th; --sandbox DIR as for check (no\n"
+"                    default); exit 0 all pass, 1 a case fails,\n"
 "                    2 a case cannot be read, 3 a solver error (docs/batch.md)\n"
 "  merge SHARD.json...  combine the --json summaries of the shards of one\n"
-"                    batch into the summary a single run gives\n"
+"                    batch into the summary a single run gives; refuses\n"
+"                    shards run on other inputs and rows edited by hand\n"
+"                    (each summary carries SHA-256 digests)\n"
 "  init [FILE]       write a commented starter case to FILE (default\n"
 "                    case.yaml); never overwrites an existing file\n"
-"\n"
+"\n",
+        stdout);
+    /* two strings: C99 compilers need only take 4095 characters in one */
+    fputs(
 "options of check:\n"
 "  --json FILE       write the JSON report (docs/report-format.md)\n"
 "  --text FILE       write the text report to FILE; standard output then\n"
@@ -52,6 +58,10 @@ void rb_cli_help_print(void)
 "                    (thesis Figs. 5.13-6.18) and, for design, each sweep;\n"
 "                    several figures go to FILE-1, FILE-2, ... in that order\n"
 "  --html FILE       one self-contained page: the text report and the figures\n"
+"  --sandbox DIR     every input (the case, its extends bases, its records;\n"
+"                    for batch also lists and row bases) must resolve to a\n"
+"                    file inside DIR, links and '..' followed, else exit 2\n"
+"                    naming the key and the file; shipped records allowed\n"
 "  -q, --quiet       print nothing on standard output\n"
 "\n"
 "options of design (and all of check's):\n"
