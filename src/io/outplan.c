@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <time.h>
 #include <unistd.h>
 
 #ifndef PATH_MAX
@@ -18,6 +19,7 @@
 #endif
 #define RB_TEMP_NAME ".rb-XXXXXX"
 #define RB_LINK_HOPS 40
+#define RB_FIFO_WAIT_MS 10000  /* for a FIFO's reader to open it */
 
 /* ---- Temporary files and signals ---------------------------------------- */
 
@@ -628,11 +630,19 @@ static rb_status open_stream(const rb_out *o, FILE **fp, rb_diag *d)
         fflush(stdout);
         fd = dup(o->fd_no);
     } else {
-        /* no reader on a FIFO is an error, not a wait without end */
-        fd = open(o->target, O_WRONLY | O_NONBLOCK | O_NOCTTY);
+        /* a FIFO's reader may come a little later; none within the
+         * bound is an error, not a wait without end */
+        int waited_ms = 0;
+        while ((fd = open(o->target, O_WRONLY | O_NONBLOCK | O_NOCTTY)) < 0
+               && errno == ENXIO && waited_ms < RB_FIFO_WAIT_MS) {
+            struct timespec ts = { 0, 10 * 1000000L };
+            nanosleep(&ts, NULL);
+            waited_ms += 10;
+        }
         if (fd < 0 && errno == ENXIO)
             return fail(d, RB_ERR_IO, o->path, o->opt, 0,
-                        "the FIFO has no reader: nothing to write to");
+                        "the FIFO has no reader (waited %d s): nothing to write to",
+                        RB_FIFO_WAIT_MS / 1000);
         if (fd >= 0) {
             int fl = fcntl(fd, F_GETFL);
             if (fl >= 0)

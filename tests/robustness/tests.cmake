@@ -10,3 +10,15 @@ foreach(t ${RB_ROBUSTNESS_TESTS})
   set_tests_properties(robustness_${t} PROPERTIES LABELS robustness
       WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} SKIP_RETURN_CODE 77 TIMEOUT 120)
 endforeach()
+
+# What the executable writes and leaves behind (outputs.sh): clashes with
+# inputs and other outputs, special files, long names, signals, reasons.
+set(RB_OUTPUT_TESTS fanout clashes special names signals reasons)
+foreach(t ${RB_OUTPUT_TESTS})
+  add_test(NAME outputs_${t}
+           COMMAND sh ${PROJECT_SOURCE_DIR}/tests/robustness/outputs.sh ${t}
+                   $<TARGET_FILE:rockbolt>
+                   ${CMAKE_CURRENT_BINARY_DIR}/outputs-scratch/${t})
+  set_tests_properties(outputs_${t} PROPERTIES LABELS robustness
+      WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} SKIP_RETURN_CODE 77 TIMEOUT 120)
+endforeach()
