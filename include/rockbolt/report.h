@@ -151,7 +151,7 @@ rb_status rb_template_load(const char *name, char **text, const char **origin,
 typedef struct {
     FILE *fp;          /* write here between open and commit */
     char *path;        /* owned */
-    char *tmp_path;    /* owned; "<path>.tmp.XXXXXX" */
+    char *tmp_path;    /* owned; ".rb-XXXXXX" in the directory of path */
     int no_clobber;    /* refuse to replace an existing file */
     int finished;      /* data flushed, synced and the file closed */
 } rb_outfile;

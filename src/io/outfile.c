@@ -1,8 +1,10 @@
 /* Atomic output files: a report is either there whole or not at all.
  *
- * Data go to "<path>.tmp.XXXXXX" created by mkstemp in the same directory
- * (so the final rename stays within one file system and is atomic), are
- * flushed and fsync'ed, and only then renamed over path. For files that
+ * Data go to ".rb-XXXXXX" created by mkstemp in the directory of path (so
+ * the final rename stays within one file system and is atomic, and the
+ * temporary name fits NAME_MAX whatever the name of path), are flushed
+ * and fsync'ed, and only then renamed over path; a file being replaced
+ * keeps its mode and, where the process may set it, its owner. For files that
  * must not replace an existing one (rockbolt init) the temporary file is
  * hard-linked to path instead, which fails atomically if path exists.
  * Every error path removes the temporary file. POSIX. */
@@ -88,18 +90,26 @@ rb_status rb_outfile_open(rb_outfile *f, const char *path, int no_clobber,
 {
     size_t n = strlen(path);
     int fd;
+    char *dir;
+    size_t nd;
+    struct stat sb;
     memset(f, 0, sizeof *f);
     if (no_clobber && access(path, F_OK) == 0)
         return io_fail(diag, path, "file exists; not overwriting it", 0);
+    if (!(dir = dir_of(path)))
+        return RB_ERR_NOMEM;
+    nd = strlen(dir);
     f->path = malloc(n + 1);
-    f->tmp_path = malloc(n + sizeof ".tmp.XXXXXX");
+    f->tmp_path = malloc(nd + sizeof "/.rb-XXXXXX");
     if (!f->path || !f->tmp_path) {
+        free(dir);
         outfile_release(f);
         return RB_ERR_NOMEM;
     }
     memcpy(f->path, path, n + 1);
-    memcpy(f->tmp_path, path, n);
-    memcpy(f->tmp_path + n, ".tmp.XXXXXX", sizeof ".tmp.XXXXXX");
+    memcpy(f->tmp_path, dir, nd);
+    memcpy(f->tmp_path + nd, "/.rb-XXXXXX", sizeof "/.rb-XXXXXX");
+    free(dir);
     f->no_clobber = no_clobber;
     fd = mkstemp(f->tmp_path);
     if (fd < 0) {
@@ -107,8 +117,13 @@ rb_status rb_outfile_open(rb_outfile *f, const char *path, int no_clobber,
         outfile_release(f);
         return st;
     }
-    /* mkstemp makes the file 0600; a report should get the usual mode */
-    {
+    /* mkstemp makes the file 0600: a replaced file's mode and owner, or
+     * the usual mode of a new file */
+    if (stat(path, &sb) == 0 && S_ISREG(sb.st_mode)) {
+        if (fchown(fd, sb.st_uid, sb.st_gid) != 0)
+            (void)fchown(fd, (uid_t)-1, sb.st_gid);
+        (void)fchmod(fd, sb.st_mode & 07777);
+    } else {
         mode_t mask = umask(0);
         umask(mask);
         (void)fchmod(fd, 0666 & ~mask);

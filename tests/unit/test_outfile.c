@@ -10,6 +10,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 #include "harness.h"
+#include "rockbolt/outplan.h"
 #include "rockbolt/report.h"
 
 static char dir[] = "/tmp/rb-outfile-XXXXXX";
@@ -31,7 +32,8 @@ static int file_equals(const char *path, const char *want)
     return n == strlen(want) && memcmp(buf, want, n) == 0;
 }
 
-/* Entries in dir whose names contain ".tmp." */
+/* Entries in dir that are temporary files (".rb-XXXXXX", or the old
+ * "<name>.tmp.XXXXXX") */
 static int temp_files(void)
 {
     DIR *d = opendir(dir);
@@ -40,7 +42,7 @@ static int temp_files(void)
     if (!d)
         return -1;
     while ((e = readdir(d)) != NULL)
-        n += strstr(e->d_name, ".tmp.") != NULL;
+        n += strstr(e->d_name, ".tmp.") != NULL || strncmp(e->d_name, ".rb-", 4) == 0;
     closedir(d);
     return n;
 }
@@ -119,6 +121,164 @@ static void test_check(void)
     unlink(p);
 }
 
+/* A 255-byte name: the temporary name must not grow from it. */
+static void test_long_name(void)
+{
+    char name[256], p[600];
+    rb_diag d;
+    memset(name, 'x', 255);
+    name[255] = '\0';
+    memcpy(name + 250, ".json", 5);
+    snprintf(p, sizeof p, "%s/%s", dir, name);
+    CHECK(rb_outfile_write_all(p, "long\n", 5, 0, &d) == RB_OK);
+    CHECK(file_equals(p, "long\n"));
+    CHECK(temp_files() == 0);
+    unlink(p);
+}
+
+/* An overwritten file keeps its mode (and owner where allowed). */
+static void test_keep_mode(void)
+{
+    char p[512];
+    struct stat sb;
+    rb_diag d;
+    path_in(p, sizeof p, "mode.json");
+    CHECK(rb_outfile_write_all(p, "a\n", 2, 0, &d) == RB_OK);
+    CHECK(chmod(p, 0604) == 0);
+    CHECK(rb_outfile_write_all(p, "b\n", 2, 0, &d) == RB_OK);
+    CHECK(stat(p, &sb) == 0 && (sb.st_mode & 07777) == 0604);
+    CHECK(file_equals(p, "b\n"));
+    unlink(p);
+}
+
+static rb_status fill_name(void *ctx, size_t i, FILE *fp, rb_diag *d)
+{
+    const rb_outplan *p = ctx;
+    (void)d;
+    fprintf(fp, "%s\n", p->outs[i].opt);
+    return RB_OK;
+}
+
+static rb_status fill_fails(void *ctx, size_t i, FILE *fp, rb_diag *d)
+{
+    (void)ctx;
+    fputs("partial", fp);
+    if (i == 1) {
+        snprintf(d->msg, sizeof d->msg, "refused");
+        return RB_ERR_INVALID;
+    }
+    return RB_OK;
+}
+
+/* Clashes between outputs and with inputs, however spelt. */
+static void test_plan_clashes(void)
+{
+    char a[512], a2[512], in[512], ln[512];
+    rb_outplan p;
+    rb_diag d;
+    path_in(a, sizeof a, "a.json");
+    snprintf(a2, sizeof a2, "%s/./a.json", dir);
+    path_in(in, sizeof in, "case.yaml");
+    path_in(ln, sizeof ln, "case-link.yaml");
+    CHECK(rb_outfile_write_all(in, "case\n", 5, 0, &d) == RB_OK);
+    CHECK(symlink("case.yaml", ln) == 0);
+    rb_outplan_init(&p);
+    CHECK(rb_outplan_add_input(&p, in, &d) == RB_OK);
+    CHECK(rb_outplan_add_input(&p, ln, &d) == RB_OK); /* one input, twice */
+    CHECK(p.n_in == 1);
+    CHECK(rb_outplan_add(&p, "--json", a, &d) == RB_OK);
+    /* a file still to be made, spelt differently */
+    CHECK(rb_outplan_add(&p, "--html", a2, &d) == RB_ERR_INVALID);
+    CHECK(strcmp(d.key, "--html") == 0 && strstr(d.msg, "--json") != NULL);
+    /* the input through a link */
+    CHECK(rb_outplan_add(&p, "--text", ln, &d) == RB_ERR_INVALID);
+    CHECK(strstr(d.msg, "input") != NULL);
+    CHECK(rb_outplan_reserve(&p, "--reports", in, &d) == RB_ERR_INVALID);
+    /* one descriptor twice */
+    CHECK(rb_outplan_add(&p, "--csv", "-", &d) == RB_OK);
+    CHECK(rb_outplan_uses_stdout(&p));
+    CHECK(rb_outplan_add(&p, "--junit", "/dev/fd/1", &d) == RB_ERR_INVALID);
+    /* names */
+    CHECK(rb_outplan_add(&p, "--svg", "", &d) == RB_ERR_IO);
+    CHECK(rb_outplan_add(&p, "--svg", dir, &d) == RB_ERR_IO);
+    {
+        char longp[700], name[300];
+        memset(name, 'y', 256);
+        name[256] = '\0';
+        snprintf(longp, sizeof longp, "%s/%s", dir, name);
+        CHECK(rb_outplan_add(&p, "--svg", longp, &d) == RB_ERR_IO);
+        CHECK(strstr(d.msg, "too long") != NULL);
+    }
+    CHECK(p.n == 2);
+    rb_outplan_free(&p);
+    /* an output added first, the input after */
+    rb_outplan_init(&p);
+    CHECK(rb_outplan_add(&p, "--json", in, &d) == RB_OK);
+    CHECK(rb_outplan_add_input(&p, in, &d) == RB_ERR_INVALID);
+    rb_outplan_free(&p);
+    CHECK(file_equals(in, "case\n"));
+    unlink(ln);
+    unlink(in);
+}
+
+/* Write: all or none, links written through, staged extras renamed last. */
+static void test_plan_write(void)
+{
+    char a[512], b[512], real[512], ln[512], x[512];
+    rb_outplan p;
+    rb_diag d;
+    path_in(a, sizeof a, "a.out");
+    path_in(b, sizeof b, "b.out");
+    path_in(real, sizeof real, "real.out");
+    path_in(ln, sizeof ln, "link.out");
+    path_in(x, sizeof x, "extra.out");
+    CHECK(rb_outfile_write_all(real, "old\n", 4, 0, &d) == RB_OK);
+    CHECK(symlink("real.out", ln) == 0);
+    /* a failing output: nothing is written, no temporary file is left */
+    rb_outplan_init(&p);
+    CHECK(rb_outplan_add(&p, "--json", a, &d) == RB_OK);
+    CHECK(rb_outplan_add(&p, "--csv", ln, &d) == RB_OK);
+    CHECK(rb_outplan_stage_data(&p, x, "x\n", 2, &d) == RB_OK);
+    CHECK(temp_files() == 1);
+    CHECK(rb_outplan_write(&p, fill_fails, &p, &d) == RB_ERR_INVALID);
+    CHECK(strcmp(d.msg, "refused") == 0);
+    CHECK(access(a, F_OK) != 0 && access(x, F_OK) != 0);
+    CHECK(file_equals(real, "old\n"));
+    CHECK(temp_files() == 0);
+    rb_outplan_free(&p);
+    /* and one that works */
+    rb_outplan_init(&p);
+    CHECK(rb_outplan_add(&p, "--json", a, &d) == RB_OK);
+    CHECK(rb_outplan_add(&p, "--csv", ln, &d) == RB_OK);
+    CHECK(rb_outplan_add(&p, "--null", "/dev/null", &d) == RB_OK);
+    CHECK(rb_outplan_stage_data(&p, b, "b\n", 2, &d) == RB_OK);
+    CHECK(access(b, F_OK) != 0);
+    CHECK(rb_outplan_write(&p, fill_name, &p, &d) == RB_OK);
+    CHECK(file_equals(a, "--json\n"));
+    CHECK(file_equals(real, "--csv\n"));
+    CHECK(file_equals(b, "b\n"));
+    {
+        struct stat sb;
+        CHECK(lstat(ln, &sb) == 0 && S_ISLNK(sb.st_mode));
+        CHECK(stat("/dev/null", &sb) == 0 && S_ISCHR(sb.st_mode));
+    }
+    CHECK(temp_files() == 0);
+    rb_outplan_free(&p);
+    /* a full device says why */
+    if (access("/dev/full", W_OK) == 0) {
+        rb_outplan_init(&p);
+        CHECK(rb_outplan_add(&p, "--json", "/dev/full", &d) == RB_OK);
+        CHECK(rb_outplan_write(&p, fill_name, &p, &d) == RB_ERR_IO);
+        CHECK(strstr(d.msg, "No space left on device") != NULL);
+        CHECK(strcmp(d.key, "--json") == 0);
+        rb_outplan_free(&p);
+    }
+    unlink(a);
+    unlink(b);
+    unlink(ln);
+    unlink(real);
+}
+
 int main(void)
 {
     char p[512];
@@ -129,6 +289,10 @@ int main(void)
     test_commit_and_abort();
     test_no_clobber();
     test_check();
+    test_long_name();
+    test_keep_mode();
+    test_plan_clashes();
+    test_plan_write();
     path_in(p, sizeof p, "a.json");
     unlink(p);
     path_in(p, sizeof p, "starter.yaml");
