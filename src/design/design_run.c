@@ -62,6 +62,10 @@ rb_status rb_design_ctx_init(rb_design_ctx *ctx, const rb_model *model,
 void rb_design_motion_at(const rb_design_ctx *ctx, double level_mps2, rb_motion *out)
 {
     *out = *ctx->motion;
+    /* the motion's own level is the motion itself, not a rescaling that
+     * could land an ulp away from it */
+    if (level_mps2 == rb_motion_peak(ctx->motion))
+        return;
     /* the sign of the shape's factor is kept: it is part of the shape */
     if (out->kind == RB_MOTION_SAMPLED)
         out->scale = copysign(level_mps2 / ctx->shape_peak, ctx->motion->scale);
@@ -88,4 +92,22 @@ void rb_design_run_one(const rb_design_ctx *ctx, const rb_model *model,
     else if (out->status != RB_OK)
         snprintf(out->reason, sizeof out->reason, "the run failed: %s",
                  rb_status_str(out->status));
+}
+
+rb_status rb_design_run_at(const rb_model *model, const rb_motion *motion,
+                           const rb_solve_opts *opts, const rb_criteria *criteria,
+                           double level_mps2, rb_result *out, rb_verdict *verdict,
+                           rb_diag *diag)
+{
+    rb_design_ctx ctx;
+    rb_motion at;
+    memset(out, 0, sizeof *out);
+    rb_status st = rb_design_ctx_init(&ctx, model, motion, opts, criteria, diag);
+    if (st != RB_OK)
+        return st;
+    rb_design_motion_at(&ctx, level_mps2, &at);
+    st = rb_solve_run(model, &at, &ctx.opts, out, diag);
+    if (st == RB_OK)
+        rb_judge(criteria, out, verdict);
+    return st;
 }
