@@ -309,6 +309,9 @@ static void map_diags(rb_diag_list *l, size_t first, const char *tmp,
             snprintf(d->file, sizeof d->file, "%s", origin);
             d->line = k >= 0 ? g->ov[k].line : row_line;
             d->col = k >= 0 ? g->ov[k].col : 1;
+            /* the generated `extends:` is the row's base: say so */
+            if (k < 0 && strcmp(d->key, "extends") == 0)
+                snprintf(d->key, sizeof d->key, "base");
         } else {
             strip_prefix(d->file, cwd);
         }

@@ -175,10 +175,10 @@ sandbox)
     run 2 design "$out/cab.yaml" --sandbox "$in"
     has "$s/err" "cab.yaml: error: case: .* lies outside the sandbox"
     # batch: the list's rows, each checked; a list outside; no default
-    printf 'tag,base,motion\nX,%s/base.yaml,\nY,base.yaml,elcentro\n' "$out" >"$in/l.csv"
+    printf 'tag,base,motion\nX,%s/base.yaml,taft\nY,base.yaml,elcentro\n' "$out" >"$in/l.csv"
     cp "$in/l.csv" "$out/l.csv"
     run 2 batch "$in/l.csv" "$out/l.csv" "$in/b.yaml" --sandbox "$in" --csv "$s/b.csv" -q
-    has "$s/b.csv" "^0,.*l.csv,2,X,.*unreadable.*outside the sandbox"
+    has "$s/b.csv" "^0,.*l.csv,2,X,.*unreadable.*l.csv:2:1: base: cannot use .*outside the sandbox"
     has "$s/b.csv" "^1,.*l.csv,3,Y,elcentro,1,"
     has "$s/b.csv" "^2,.*l.csv,0,.*unreadable.*the list lies outside the sandbox"
     has "$s/b.csv" "^3,.*b.yaml,0,b,.*unreadable.*outside the sandbox"
