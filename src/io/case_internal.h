@@ -50,6 +50,20 @@
 #define RB_CASE_MIN_TOLERANCE 1e-13      /* what double precision can meet */
 #define RB_CASE_MIN_TIME_S 1e-3          /* durations, run times, ramps */
 #define RB_CASE_MIN_RECORD_PEAK 1e-6     /* m/s^2: a record scaled to `peak` */
+#define RB_CASE_MIN_MASS_KG 1.0          /* equipment.mass */
+#define RB_CASE_MAX_MASS_KG 1e9
+#define RB_CASE_MIN_YIELD_PA 1e6         /* anchorage.yield_stress */
+#define RB_CASE_MAX_YIELD_PA 1e10
+#define RB_CASE_MIN_TOUGHNESS 1e3        /* J/m^3, anchorage.toughness */
+#define RB_CASE_MAX_TOUGHNESS 1e10
+#define RB_CASE_MIN_MODULUS_PA 1e9       /* anchorage.elastic_modulus */
+#define RB_CASE_MAX_MODULUS_PA 1e12
+#define RB_CASE_MIN_DIAMETER_M 1e-3      /* anchorage.diameter; area alike */
+#define RB_CASE_MAX_DIAMETER_M 0.2
+#define RB_CASE_MAX_ACCEL_G 1000.0       /* amplitude, peak: 1000 g */
+#define RB_CASE_MAX_MOTION_FREQ_HZ 1000.0 /* a harmonic's frequency */
+#define RB_CASE_MIN_BUILDING_HZ 0.01     /* a record's building filter */
+#define RB_CASE_MAX_BUILDING_HZ 100.0
 /* Work bounds, checked before anything is solved. One simulated hour is
  * ten times the longest strong-motion records (a few minutes) and takes
  * about half a second to solve; 1e5 s took 14 s and 1e9 s would take 40

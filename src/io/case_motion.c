@@ -61,8 +61,8 @@ static int rb_read_harmonic(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
     m->kind = RB_MOTION_HARMONIC;
     cm->amplitude_node = rb_cmotion_accel(c, map, p, "amplitude", 1, &cm->amplitude);
     ok &= cm->amplitude_node != NULL;
-    ok &= rb_cv_number(c, map, p, "frequency", 1, RB_DIM_FREQUENCY, 0, 0, (double)NAN, 0,
-                       &m->freq_hz) != NULL;
+    ok &= rb_cv_number(c, map, p, "frequency", 1, RB_DIM_FREQUENCY, 0, 0,
+                       RB_CASE_MAX_MOTION_FREQ_HZ, 1, &m->freq_hz) != NULL;
     ok &= rb_cmotion_time(c, map, p, "duration", 1, 0, &m->duration_s);
     ok &= rb_cmotion_time(c, map, p, "ramp", 0, 1, &m->ramp_s);
     rb_cv_unknown_keys(c, map, p, rb_harmonic_keys);
@@ -128,8 +128,9 @@ static int rb_read_building(rb_cctx *c, rb_ynode *v, rb_cmotion *cm)
     rb_case_keypath(k, cm->key, "building");
     if (!rb_cv_map(c, v, k))
         return 0;
-    int ok = rb_cv_number(c, v, k, "frequency", 1, RB_DIM_FREQUENCY, 0, 0, (double)NAN,
-                          0, &cm->building_freq_hz) != NULL;
+    int ok = rb_cv_number(c, v, k, "frequency", 1, RB_DIM_FREQUENCY,
+                          RB_CASE_MIN_BUILDING_HZ, 1, RB_CASE_MAX_BUILDING_HZ, 1,
+                          &cm->building_freq_hz) != NULL;
     ok &= rb_cv_number(c, v, k, "damping", 1, RB_DIM_RATIO, 0, 1, 1, 0,
                        &cm->building_damping) != NULL;
     rb_cv_unknown_keys(c, v, k, keys);

@@ -67,6 +67,17 @@ static rb_ynode *rb_section(rb_cctx *c, rb_ynode *root, const char *name,
     return v;
 }
 
+/* A value outside [lo, hi] (what the solver takes, docs/robustness.md) is
+ * an error at its node v, if v is set; range says the bounds in units. */
+static void rb_within(rb_cctx *c, const rb_ynode *v, const char *key, double x,
+                      double lo, double hi, const char *range)
+{
+    if (!v || (x >= lo && x <= hi))
+        return;
+    rb_cctx_error(c, v, key, "must be between %s (got '%s')", range, v->text);
+    c->model_errors++;
+}
+
 /* A quantity that is also a model field (see rb_cv_note_field). */
 static const rb_ynode *rb_field(rb_cctx *c, rb_ynode *map, const char *path,
                                 const char *key, const char *field, int required,
@@ -88,7 +99,10 @@ static void rb_read_equipment(rb_cctx *c, rb_ynode *eq, rb_model *m)
 {
     const char *p = "equipment";
     double x;
-    rb_field(c, eq, p, "mass", "mass", 1, RB_DIM_MASS, 0, 0, (double)NAN, 0, &m->mass_kg);
+    const rb_ynode *mv = rb_field(c, eq, p, "mass", "mass", 1, RB_DIM_MASS, 0, 0,
+                                  (double)NAN, 0, &m->mass_kg);
+    rb_within(c, mv, "equipment.mass", m->mass_kg, RB_CASE_MIN_MASS_KG,
+              RB_CASE_MAX_MASS_KG, "1 kg and 1e9 kg");
     int which = rb_one_of(c, eq, p, "height", "cm_height", 1,
                           "the total height, or the height of the centre of mass");
     if (which < 0)
@@ -184,18 +198,30 @@ static void rb_read_anchorage(rb_cctx *c, rb_ynode *an, rb_model *m)
         c->model_errors++;
     int which = rb_one_of(c, an, p, "diameter", "area", 1,
                           "the bolt diameter, or its tensile area");
-    if (which == 0 && rb_field(c, an, p, "diameter", "bolt_area", 1,
-                               RB_DIM_LENGTH, 0, 0, (double)NAN, 0, &x))
+    const rb_ynode *bv;
+    if (which == 0 && (bv = rb_field(c, an, p, "diameter", "bolt_area", 1,
+                                     RB_DIM_LENGTH, 0, 0, (double)NAN, 0, &x))) {
         m->bolt_area_m2 = RB_PI * x * x / 4;
-    else if (which == 1)
-        rb_field(c, an, p, "area", "bolt_area", 1, RB_DIM_AREA, 0, 0, (double)NAN, 0,
-                 &m->bolt_area_m2);
+        rb_within(c, bv, "anchorage.diameter", x, RB_CASE_MIN_DIAMETER_M,
+                  RB_CASE_MAX_DIAMETER_M, "1 mm and 200 mm");
+    } else if (which == 1) {
+        bv = rb_field(c, an, p, "area", "bolt_area", 1, RB_DIM_AREA, 0, 0, (double)NAN, 0,
+                      &m->bolt_area_m2);
+        rb_within(c, bv, "anchorage.area", m->bolt_area_m2,
+                  RB_PI * RB_CASE_MIN_DIAMETER_M * RB_CASE_MIN_DIAMETER_M / 4,
+                  RB_PI * RB_CASE_MAX_DIAMETER_M * RB_CASE_MAX_DIAMETER_M / 4,
+                  "0.785 mm^2 and 31 416 mm^2 (a bolt of 1 mm to 200 mm)");
+    }
     else if (which < 0)
         c->model_errors++;
-    rb_field(c, an, p, "yield_stress", "yield_stress", 1, RB_DIM_STRESS, 0, 0,
-             (double)NAN, 0, &m->yield_stress_pa);
-    rb_field(c, an, p, "toughness", "toughness", 1, RB_DIM_ENERGY_DENSITY, 0,
-             0, (double)NAN, 0, &m->toughness_jpm3);
+    bv = rb_field(c, an, p, "yield_stress", "yield_stress", 1, RB_DIM_STRESS, 0, 0,
+                  (double)NAN, 0, &m->yield_stress_pa);
+    rb_within(c, bv, "anchorage.yield_stress", m->yield_stress_pa, RB_CASE_MIN_YIELD_PA,
+              RB_CASE_MAX_YIELD_PA, "1 MPa and 10 GPa");
+    bv = rb_field(c, an, p, "toughness", "toughness", 1, RB_DIM_ENERGY_DENSITY, 0,
+                  0, (double)NAN, 0, &m->toughness_jpm3);
+    rb_within(c, bv, "anchorage.toughness", m->toughness_jpm3, RB_CASE_MIN_TOUGHNESS,
+              RB_CASE_MAX_TOUGHNESS, "1 kJ/m^3 and 1e7 kJ/m^3");
     v = (rb_ynode *)rb_field(c, an, p, "deformable_length", "deformable_length", 1,
                              RB_DIM_LENGTH, 0, 0, (double)NAN, 0,
                              &m->deformable_length_m);
@@ -206,8 +232,10 @@ static void rb_read_anchorage(rb_cctx *c, rb_ynode *an, rb_model *m)
                       RB_CASE_MAX_BOLT_LENGTH_M, v->text);
         c->model_errors++;
     }
-    rb_field(c, an, p, "elastic_modulus", "elastic_modulus", 0, RB_DIM_STRESS,
-             0, 0, (double)NAN, 0, &m->elastic_modulus_pa);
+    bv = rb_field(c, an, p, "elastic_modulus", "elastic_modulus", 0, RB_DIM_STRESS,
+                  0, 0, (double)NAN, 0, &m->elastic_modulus_pa);
+    rb_within(c, bv, "anchorage.elastic_modulus", m->elastic_modulus_pa,
+              RB_CASE_MIN_MODULUS_PA, RB_CASE_MAX_MODULUS_PA, "1 GPa and 1000 GPa");
     rb_read_lever_arm(c, an, m);
     rb_cv_unknown_keys(c, an, p, rb_anchorage_keys);
 }

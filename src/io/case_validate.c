@@ -62,6 +62,20 @@ static int rb_check_model(rb_cctx *c, rb_case *cs, const rb_ynode *root,
     return 0;
 }
 
+/* A floor acceleration at most 1000 g, once A* is multiplied out. */
+static int rb_check_accel(rb_cctx *c, const rb_cmotion *cm, const rb_ynode *v,
+                          const char *key, double a)
+{
+    char k[RB_CASE_KEY_MAX];
+    const double g = 9.80665;
+    if (a <= RB_CASE_MAX_ACCEL_G * g)
+        return 1;
+    rb_case_keypath(k, cm->key, key);
+    rb_cctx_error(c, v, k, "must be at most %g g (got '%s', %g g)",
+                  RB_CASE_MAX_ACCEL_G, v->text, a / g);
+    return 0;
+}
+
 /* Resolve an amplitude that may be in A*; 0 after an error. */
 static int rb_resolve_accel(rb_cctx *c, const rb_cmotion *cm, const rb_ynode *v,
                             const char *key, rb_quantity q, const rb_derived *d,
@@ -70,7 +84,7 @@ static int rb_resolve_accel(rb_cctx *c, const rb_cmotion *cm, const rb_ynode *v,
     char k[RB_CASE_KEY_MAX];
     if (!q.relative_a_star) {
         *out = q.value;
-        return 1;
+        return rb_check_accel(c, cm, v, key, *out);
     }
     if (!have_model)
         return 0;   /* the model's own errors say why */
@@ -82,7 +96,7 @@ static int rb_resolve_accel(rb_cctx *c, const rb_cmotion *cm, const rb_ynode *v,
         return 0;
     }
     *out = q.value * d->a_star_mps2;
-    return 1;
+    return rb_check_accel(c, cm, v, key, *out);
 }
 
 /* The record's path: relative to the directory of the file that named it. */
