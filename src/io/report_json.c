@@ -202,7 +202,11 @@ static void add_rows_outcome(rb_jctx *cx, cJSON *res_o, const rb_result *r,
     rb_j_num(cx, o, "uplifts", (double)r->uplifts);
 }
 
-static void add_energy_cost(rb_jctx *cx, cJSON *res_o, const rb_result *r)
+/* history_rows counts the rows the report carries (analysis.history), not
+ * those kept for --history or the figures: the JSON report must not change
+ * with the other outputs asked for. */
+static void add_energy_cost(rb_jctx *cx, cJSON *res_o, const rb_result *r,
+                            int with_history)
 {
     cJSON *o = rb_j_obj(cx, res_o, "energy_j");
     rb_j_num(cx, o, "input", r->e_input);
@@ -218,7 +222,8 @@ static void add_energy_cost(rb_jctx *cx, cJSON *res_o, const rb_result *r)
     rb_j_num(cx, o, "rejected_steps", (double)r->rejected_steps);
     rb_j_num(cx, o, "events", (double)r->events);
     rb_j_num(cx, o, "rhs_evals", (double)r->rhs_evals);
-    rb_j_num(cx, o, "history_rows", r->history ? (double)r->history->n : 0);
+    rb_j_num(cx, o, "history_rows",
+             with_history && r->history ? (double)r->history->n : 0);
 }
 
 /* One column of a history as a JSON array of numbers. */
@@ -307,7 +312,7 @@ static void add_motion(rb_jctx *cx, cJSON *arr, const rb_report *r, size_t i)
     v = rb_j_obj(cx, o, "result");
     add_peaks(cx, v, m->result, &n);
     add_rows_outcome(cx, v, m->result, &n);
-    add_energy_cost(cx, v, m->result);
+    add_energy_cost(cx, v, m->result, r->with_history);
     rb_report_json_motion_design(cx, o, r, i);
     if (r->with_history)
         add_history(cx, o, m->result->history);

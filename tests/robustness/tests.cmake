@@ -22,3 +22,12 @@ foreach(t ${RB_OUTPUT_TESTS})
   set_tests_properties(outputs_${t} PROPERTIES LABELS robustness
       WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} SKIP_RETURN_CODE 77 TIMEOUT 120)
 endforeach()
+
+# Property: the exit code and every file written are the same whatever
+# other outputs are asked for (random cases and option sets, 40 s budget).
+add_test(NAME outputs_property
+         COMMAND sh ${PROJECT_SOURCE_DIR}/tests/robustness/outputs_property.sh
+                 $<TARGET_FILE:rockbolt>
+                 ${CMAKE_CURRENT_BINARY_DIR}/outputs-scratch/property 40)
+set_tests_properties(outputs_property PROPERTIES LABELS robustness
+    WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} TIMEOUT 240)
