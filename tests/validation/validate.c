@@ -80,7 +80,7 @@ static int write_report(const char *path, const vd_table *t, const vd_outcome *o
         free(svgs);
         return 0;
     }
-    vd_report_opts opts = {VD_COMMAND, notes, (const char *const *)svgs};
+    vd_report_opts opts = {VD_COMMAND, notes, (const char *const *)svgs, root};
     rb_outfile f;
     rb_diag d;
     rb_diag_clear(&d);

@@ -109,7 +109,13 @@ typedef struct {
     const char *const *figure_svgs; /* per vd_figures entry, its SVG path
                                        relative to the report, or NULL when
                                        not drawn; NULL: no figures at all */
+    const char *root;        /* source root: the validity section runs the
+                                cases under it; NULL: no such section */
 } vd_report_opts;
+
+/* vd_validity.c: the validity section (every thesis case, each check's
+ * status). Returns 0 on a write error. */
+int vd_validity_write(FILE *fp, const char *root);
 
 /* Write the Markdown report of every row to fp. Returns 0 on a write or
  * read error. */

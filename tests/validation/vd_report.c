@@ -160,6 +160,7 @@ int vd_report_write(FILE *fp, const vd_table *t, const vd_outcome *o,
         }
         ok = ok && section_figures(fp, t, sec, opts);
     }
+    ok = ok && (!opts->root || vd_validity_write(fp, opts->root));
     ok = ok && fputs("\n", fp) >= 0 && copy_notes(fp, opts->notes_path);
     return ok;
 }
