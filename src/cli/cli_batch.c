@@ -5,6 +5,7 @@
  * summary like the others and decide the exit code; only a problem with
  * the command itself stops before any solving (exit 2, nothing written). */
 #include <errno.h>
+#include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -31,14 +32,24 @@ static rb_exit check_reports_dir(const char *dir)
     return RB_EXIT_PASS;
 }
 
+/* --base must be a regular file it can open: a FIFO would block the open
+ * (and every row's load) for ever, so it is opened without waiting and
+ * looked at before anything is read. */
 static rb_exit check_base(const char *base)
 {
-    FILE *f = fopen(base, "rb");
-    if (!f) {
+    struct stat sb;
+    int fd = open(base, O_RDONLY | O_NONBLOCK);
+    if (fd < 0) {
         rb_cli_error(base, "--base", "cannot open the base case: %s", strerror(errno));
         return RB_EXIT_USAGE;
     }
-    fclose(f);
+    int regular = fstat(fd, &sb) == 0 && S_ISREG(sb.st_mode);
+    close(fd);
+    if (!regular) {
+        rb_cli_error(base, "--base", "the base case is not a regular file (a "
+                     "directory, FIFO or device)");
+        return RB_EXIT_USAGE;
+    }
     return RB_EXIT_PASS;
 }
 

@@ -6,6 +6,7 @@
 #                 for ever on the FIFO)
 #   fifo_check    `check` on a FIFO nobody writes to ends at once (exit 2)
 #   fifo_list     an equipment list that is a FIFO is refused, not opened
+#   fifo_base     a --base that is a FIFO is refused, not waited on
 #   record_bytes  a record file over 256 MiB (blank lines) is refused
 #                 before it is read (1 GiB used to be read for 45 s)
 #   batch_memory  peak memory of a batch grows by under 1 KB per list row
@@ -74,6 +75,15 @@ fifo_list)
     [ "$rc" -eq 2 ] || fail "exit code $rc, want 2"
     grep -q "list.csv: error: case: not a regular file" "$D/err" \
         || fail "no diagnostic naming the list"
+    ;;
+fifo_base)
+    mkfifo "$D/base.yaml" || exit 77
+    printf 'tag,mass\nA,454 kg\n' >"$D/list.csv"
+    run 30 batch "$D/list.csv" --base "$D/base.yaml"
+    [ "$rc" -ne 124 ] || fail "batch waited on the FIFO base"
+    [ "$rc" -eq 2 ] || fail "exit code $rc, want 2"
+    grep -q "base.yaml: error: --base: the base case is not a regular file" "$D/err" \
+        || fail "no diagnostic naming the base"
     ;;
 record_bytes)
     # 270 000 000 bytes, just over 256 MiB: two samples, then blank lines

@@ -1,7 +1,8 @@
 # Work and resource bounds that need more than one case file: inputs that
 # must never block (FIFOs), record files over the byte limit, and batch
 # memory against the length of the list (docs/robustness.md).
-set(RB_LIMITS_TESTS fifo_batch fifo_check fifo_list record_bytes batch_memory)
+set(RB_LIMITS_TESTS fifo_batch fifo_check fifo_list fifo_base record_bytes
+    batch_memory)
 foreach(t ${RB_LIMITS_TESTS})
   add_test(NAME limits_${t}
            COMMAND sh ${PROJECT_SOURCE_DIR}/tests/limits/limits.sh ${t}
