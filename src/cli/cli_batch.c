@@ -64,14 +64,40 @@ static rb_exit build_list(const rb_batch_cli *o, rb_batch_list *l)
     return RB_EXIT_PASS;
 }
 
+/* What decides the files a row reads: its list, its base and the values
+ * of its path overrides (keys ending in "file"); other overrides change
+ * numbers only. NULL for a case file, which is loaded on its own. */
+static char *inputs_key(const rb_batch_item *it)
+{
+    size_t n = strlen(it->source) + strlen(it->base ? it->base : "") + 3;
+    for (size_t k = 0; k < it->n_ov; k++)
+        n += strlen(it->ov[k].key) + strlen(it->ov[k].value) + 2;
+    char *key = it->tag ? malloc(n) : NULL;
+    if (!key)
+        return NULL;
+    int w = snprintf(key, n, "%s\n%s", it->source, it->base ? it->base : "");
+    for (size_t k = 0; k < it->n_ov; k++) {
+        size_t kl = strlen(it->ov[k].key);
+        if (kl >= 4 && strcmp(it->ov[k].key + kl - 4, "file") == 0)
+            w += snprintf(key + w, n - (size_t)w, "\n%s=%s", it->ov[k].key,
+                          it->ov[k].value);
+    }
+    return key;
+}
+
+#define RB_SEEN_KEYS 64
+
 /* Every file the work list reads and every report it will write, before
  * any solving: each item of this shard is loaded as the run will load it
  * (an item that does not load is reported by the run and writes no
- * report). */
+ * report). Rows whose inputs are those of a row already loaded (same list,
+ * base and path overrides: usually all of a list's) are not loaded again. */
 static rb_exit plan_items(rb_batch_cli *o, const rb_batch_list *l)
 {
     rb_record_cache *cache = rb_record_cache_new(0);
     rb_status st = cache ? RB_OK : RB_ERR_NOMEM;
+    char *seen[RB_SEEN_KEYS] = {0};
+    size_t n_seen = 0;
     rb_diag d;
     rb_diag_clear(&d);
     for (size_t i = 0; i < l->n && st == RB_OK; i++) {
@@ -85,6 +111,26 @@ static rb_exit plan_items(rb_batch_cli *o, const rb_batch_list *l)
             st = rb_outplan_add_input(&o->plan, it->base, &d);
         if (st != RB_OK || it->bad)
             continue;
+        char *key = inputs_key(it);
+        int known = 0;
+        for (size_t k = 0; key && k < n_seen && k < RB_SEEN_KEYS && !known; k++)
+            known = strcmp(seen[k], key) == 0;
+        if (known && !o->reports_dir) {
+            free(key);
+            continue;
+        }
+        if (known) {
+            /* a row's report is named by its tag: no need to load it */
+            char stem[200], path[4600];
+            free(key);
+            rb_batch_report_stem(i, it->tag, l->n, stem, sizeof stem);
+            snprintf(path, sizeof path, "%s/%s.json", o->reports_dir, stem);
+            st = rb_outplan_reserve(&o->plan, "--reports", path, &d);
+            snprintf(path, sizeof path, "%s/%s.txt", o->reports_dir, stem);
+            if (st == RB_OK)
+                st = rb_outplan_reserve(&o->plan, "--reports", path, &d);
+            continue;
+        }
         memset(&c, 0, sizeof c);
         rb_status ls = it->tag
             ? rb_case_load_overrides(it->base, it->source, it->tag, it->ov, it->n_ov,
@@ -93,8 +139,18 @@ static rb_exit plan_items(rb_batch_cli *o, const rb_batch_list *l)
         rb_diag_list_free(&diags);
         if (ls == RB_ERR_NOMEM)
             st = ls;
-        if (ls != RB_OK)
+        if (ls != RB_OK) {
+            free(key);
             continue;
+        }
+        if (key) {
+            /* remembered once loaded: a row that fails leaves its inputs
+             * to the next row with the same key */
+            free(seen[n_seen % RB_SEEN_KEYS]);
+            seen[n_seen++ % RB_SEEN_KEYS] = key;
+            if (n_seen == 2 * RB_SEEN_KEYS)
+                n_seen = RB_SEEN_KEYS;
+        }
         for (size_t k = 0; k < c.n_input_files && st == RB_OK; k++)
             st = rb_outplan_add_input(&o->plan, c.input_files[k], &d);
         if (st == RB_OK && o->reports_dir) {
@@ -110,6 +166,8 @@ static rb_exit plan_items(rb_batch_cli *o, const rb_batch_list *l)
         rb_case_free(&c);
     }
     rb_record_cache_free(cache);
+    for (size_t k = 0; k < RB_SEEN_KEYS; k++)
+        free(seen[k]);
     return st == RB_OK ? RB_EXIT_PASS : rb_cli_plan_error(st, &d);
 }
 
