@@ -14,13 +14,16 @@
 #include "cli_batch.h"
 #include "rockbolt/record_cache.h"
 
-/* --reports DIR: created if missing (its parent must exist). */
-static rb_exit check_reports_dir(const char *dir)
+/* --reports DIR: created if missing (its parent must exist); *created set. */
+static rb_exit check_reports_dir(const char *dir, int *created)
 {
     struct stat sb;
+    *created = 0;
     if (stat(dir, &sb) != 0) {
-        if (errno == ENOENT && mkdir(dir, 0777) == 0)
+        if (errno == ENOENT && mkdir(dir, 0777) == 0) {
+            *created = 1;
             return RB_EXIT_PASS;
+        }
         rb_cli_error(dir, "--reports", "cannot create the directory: %s",
                      strerror(errno));
         return RB_EXIT_USAGE;
@@ -224,20 +227,23 @@ rb_exit rb_cli_batch_main(int argc, char **argv)
     rb_batch_list l = {0};
     rb_batch_summary s;
     memset(&s, 0, sizeof s);
-    int done;
+    int done, made_dir = 0;
     rb_exit e = rb_cli_batch_begin(argc, argv, 0, &o, &done);
     if (done)
         return RB_EXIT_PASS;
     if (e == RB_EXIT_PASS && o.base)
         e = check_base(o.base);
     if (e == RB_EXIT_PASS && o.reports_dir)
-        e = check_reports_dir(o.reports_dir);
+        e = check_reports_dir(o.reports_dir, &made_dir);
     if (e == RB_EXIT_PASS)
         e = build_list(&o, &l);
     if (e == RB_EXIT_PASS)
         e = plan_items(&o, &l);
     if (e == RB_EXIT_PASS)
         e = run(&o, &l, &s);
+    /* refused before any work: not even the reports directory is left */
+    if (made_dir && e == RB_EXIT_USAGE && s.n_cases == 0)
+        rmdir(o.reports_dir);
     if (e == RB_EXIT_PASS) {
         print_errors(&s);
         e = rb_cli_batch_finish(&o, &s);

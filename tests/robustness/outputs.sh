@@ -144,6 +144,16 @@ test_clashes() {
     grep -q -- "--reports" "$D/err" || fail "no --reports in the message"
     cksum "$D/r/0-two.txt" | cmp -s - "$D/before" || fail "the case under --reports changed"
     [ "$(ls -A "$D/r")" = "0-two.txt" ] || fail "files written: $(ls -A "$D/r")"
+    # a clash found once the cases are read leaves no reports directory
+    mkdir -p "$D/rec"
+    cp cases/records/elcentro_1940_ns.at2 "$D/rec/"
+    sed -e "s|extends: base/|extends: $ROOT/cases/base/|" \
+        -e "s|file: records/|file: $D/rec/|" cases/reference-elcentro.yaml >"$D/rec/c.yaml"
+    cksum "$D/rec/elcentro_1940_ns.at2" >"$D/before"
+    run batch "$D/rec/c.yaml" --reports "$D/rec/new" --json "$D/rec/elcentro_1940_ns.at2"
+    [ "$rc" -eq 2 ] || fail "batch --json onto a case's record: exit $rc"
+    cksum "$D/rec/elcentro_1940_ns.at2" | cmp -s - "$D/before" || fail "the record changed"
+    [ ! -e "$D/rec/new" ] || fail "the reports directory was left"
     # check --json o --html ./o would keep only one
     mkdir -p "$D/c"
     run check cases/reference-harmonic.yaml --json "$D/c/o" --html "$D/c/./o"
