@@ -35,6 +35,10 @@ struct rb_out_temp {
     struct rb_out_temp *next;
 };
 
+/* The umask, read once by rb_outplan_init: reading it means setting it, so
+ * worker threads staging reports must not do that. */
+static mode_t file_mask = 022;
+
 static _Atomic(struct rb_out_temp *) temp_head;
 static pthread_mutex_t temp_lock = PTHREAD_MUTEX_INITIALIZER;
 static const int clean_signals[] = { SIGTERM, SIGINT, SIGHUP, SIGPIPE };
@@ -449,6 +453,9 @@ static void out_keys(const rb_out *o, char keys[2][PATH_MAX + 32], int *n)
 
 void rb_outplan_init(rb_outplan *p)
 {
+    mode_t mask = umask(0);
+    umask(mask);
+    file_mask = mask;
     memset(p, 0, sizeof *p);
     pthread_mutex_init(&p->lock, NULL);
 }
@@ -481,7 +488,7 @@ static rb_status clash_input(const rb_out *o, const rb_out_input *in, rb_diag *d
 static rb_status add_out(rb_outplan *p, const char *opt, const char *path, int reserved,
                          rb_diag *d)
 {
-    static char keys[2][PATH_MAX + 32];
+    char keys[2][PATH_MAX + 32];
     rb_out o;
     rb_status st;
     int nk = 0, k;
@@ -595,9 +602,7 @@ static void copy_meta(int fd, const char *target)
             (void)fchown(fd, (uid_t)-1, sb.st_gid);
         (void)fchmod(fd, sb.st_mode & 07777);
     } else {
-        mode_t mask = umask(0);
-        umask(mask);
-        (void)fchmod(fd, 0666 & ~mask);
+        (void)fchmod(fd, 0666 & ~file_mask);
     }
 }
 
