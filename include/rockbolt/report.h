@@ -21,7 +21,7 @@
 
 /* Bumped whenever a JSON field is renamed, removed or changes meaning;
  * adding a field does not bump it. */
-#define RB_REPORT_FORMAT_VERSION 1
+#define RB_REPORT_FORMAT_VERSION 2
 
 /* ---- What a report is made of ------------------------------------------ */
 

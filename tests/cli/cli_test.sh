@@ -114,7 +114,7 @@ test_harmonic() {
     [ "$rc" -eq 0 ] || [ "$rc" -eq 1 ] || fail "exit code $rc"
     "$JG" "$D/h.json" || fail "JSON does not parse"
     [ "$(jget "$D/h.json" format)" = rockbolt-report ] || fail "format"
-    [ "$(jget "$D/h.json" format_version)" = 1 ] || fail "format_version"
+    [ "$(jget "$D/h.json" format_version)" = 2 ] || fail "format_version"
     [ "$(jget "$D/h.json" tool.version)" = "$("$RB" --version | cut -d' ' -f2)" ] ||
         fail "tool version"
     [ "$(jget "$D/h.json" case.path)" = "$HARMONIC" ] || fail "case path"

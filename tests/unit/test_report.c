@@ -86,7 +86,7 @@ static void test_json(void)
     if (!root)
         return;
     CHECK(strcmp(cJSON_GetStringValue(at(root, "format", NULL, NULL)), "rockbolt-report") == 0);
-    CHECK(cJSON_GetNumberValue(at(root, "format_version", NULL, NULL)) == 1);
+    CHECK(cJSON_GetNumberValue(at(root, "format_version", NULL, NULL)) == 2);
     CHECK(cJSON_IsTrue(at(root, "verdict", "pass", NULL)));
     CHECK_REL(cJSON_GetNumberValue(at(root, "derived", "a_star_g", NULL)), 11.7, 0.01);
     CHECK(strcmp(cJSON_GetStringValue(at(root, "solver", "integrator", NULL)), "auto") == 0);
