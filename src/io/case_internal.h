@@ -13,6 +13,7 @@
 #define RB_CASE_INTERNAL_H
 
 #include <stddef.h>
+#include "rockbolt/names.h"
 #include "rockbolt/case.h"
 #include "rockbolt/record.h"
 #include "rockbolt/record_cache.h"
@@ -207,6 +208,11 @@ int rb_cv_int(rb_cctx *c, const rb_ynode *v, const char *key, long lo,
               long hi, long *out);
 int rb_cv_enum(rb_cctx *c, const rb_ynode *v, const char *key,
                const char *const names[], int *out);
+/* The same over a name table of rockbolt/names.h: *out is the enum value.
+ * Only the first n_parse names may be given (0: all of them). */
+#define RB_CV_ENUM_MAX 16
+int rb_cv_enum_table(rb_cctx *c, const rb_ynode *v, const char *key,
+                     const rb_enum_name *table, size_t n_parse, int *out);
 int rb_cv_string(rb_cctx *c, const rb_ynode *v, const char *key, char **out);
 /* A mapping value (error if it is not one). */
 int rb_cv_map(rb_cctx *c, const rb_ynode *v, const char *key);

@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "case_internal.h"
+#include "rockbolt/datadir.h"
 
 static const char *const rb_harmonic_keys[] = {
     "type", "name", "polarity", "amplitude", "frequency", "duration", "ramp", NULL};
@@ -71,10 +72,6 @@ static int rb_read_harmonic(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
 
 static int rb_read_pulse(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
 {
-    static const char *const shapes[] = {"rectangular", "triangular-decreasing",
-                                         "triangular-increasing", "half-sine", NULL};
-    static const rb_pulse_shape kinds[] = {RB_PULSE_RECT, RB_PULSE_TRI_DEC,
-                                           RB_PULSE_TRI_INC, RB_PULSE_HALF_SINE};
     const char *p = cm->key;
     char k[RB_CASE_KEY_MAX];
     rb_motion *m = &cm->motion;
@@ -83,8 +80,8 @@ static int rb_read_pulse(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
     rb_ynode *v = rb_cv_get(c, map, p, "shape", 1, "one of rectangular, "
                             "triangular-decreasing, triangular-increasing, half-sine");
     rb_case_keypath(k, p, "shape");
-    if (v && rb_cv_enum(c, v, k, shapes, &i))
-        m->pulse = kinds[i];
+    if (v && rb_cv_enum_table(c, v, k, rb_pulse_shape_names, 0, &i))
+        m->pulse = (rb_pulse_shape)i;
     else
         ok = 0;
     cm->amplitude_node = rb_cmotion_accel(c, map, p, "amplitude", 1, &cm->amplitude);
@@ -173,15 +170,41 @@ static int rb_read_record(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
     m->kind = RB_MOTION_SAMPLED;
     rb_record_opts_init(&cm->ropts);
     rb_ynode *v = rb_cv_get(c, map, p, "file", 1, "the record file, relative "
-                            "to this case file");
+                            "to this case file, or shipped:NAME");
+    const rb_shipped_record *sr = NULL;
     rb_case_keypath(k, p, "file");
     char *dummy = NULL;
     if (v && rb_cv_string(c, v, k, &dummy) && dummy[0])
         cm->file_node = v;
     else if (v && dummy)
         rb_cctx_error(c, v, k, "expected a file name, found an empty text");
+    if (cm->file_node && strncmp(dummy, RB_SHIPPED_PREFIX,
+                                 strlen(RB_SHIPPED_PREFIX)) == 0
+        && !(sr = rb_shipped_find(dummy + strlen(RB_SHIPPED_PREFIX)))) {
+        rb_cctx_error(c, v, k, "no shipped record called '%.100s' (shipped: %s)",
+                      dummy + strlen(RB_SHIPPED_PREFIX), rb_shipped_names());
+        cm->file_node = NULL;
+    }
     ok &= cm->file_node != NULL;
     free(dummy);
+    /* a shipped record brings its format, sample interval and units; the
+     * case's own keys still win */
+    if (sr) {
+        rb_quantity q;
+        char msg[200];
+        for (i = 0; formats[i] && strcmp(formats[i], sr->format) != 0; i++)
+            ;
+        if (formats[i])
+            cm->ropts.format = fk[i];
+        if (sr->dt && rb_unit_parse(sr->dt, RB_DIM_TIME, &q, msg, sizeof msg) == RB_OK)
+            cm->ropts.dt_s = q.value;
+        if (sr->units) {
+            char text[64];
+            snprintf(text, sizeof text, "1 %s", sr->units);
+            if (rb_unit_parse(text, RB_DIM_ACCEL, &q, msg, sizeof msg) == RB_OK)
+                cm->ropts.units_to_mps2 = q.value;
+        }
+    }
     rb_case_keypath(k, p, "format");
     if ((v = rb_cv_get(c, map, p, "format", 0, ""))) {
         if (rb_cv_enum(c, v, k, formats, &i))
@@ -237,7 +260,6 @@ static void rb_read_polarity(rb_cctx *c, const rb_ynode *v, const char *key,
 
 static void rb_read_motion(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
 {
-    static const char *const types[] = {"harmonic", "pulse", "record", NULL};
     char k[RB_CASE_KEY_MAX];
     int t;
     rb_motion_init(&cm->motion);
@@ -254,14 +276,15 @@ static void rb_read_motion(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
         rb_read_polarity(c, v, k, &cm->motion.polarity);
     v = rb_cv_get(c, map, cm->key, "type", 1, "harmonic, pulse or record");
     rb_case_keypath(k, cm->key, "type");
-    if (!v || !rb_cv_enum(c, v, k, types, &t)) {
+    /* the critical excitation (last in the table) is built by tests only */
+    if (!v || !rb_cv_enum_table(c, v, k, rb_motion_type_names, 3, &t)) {
         for (size_t i = 0; i < map->n; i++)
             map->entries[i].used = 1;   /* no type: its keys cannot be judged */
         return;
     }
-    if (t == 0)
+    if (t == RB_MOTION_HARMONIC)
         cm->ok = rb_read_harmonic(c, map, cm);
-    else if (t == 1)
+    else if (t == RB_MOTION_PULSE)
         cm->ok = rb_read_pulse(c, map, cm);
     else
         cm->ok = rb_read_record(c, map, cm);

@@ -173,17 +173,13 @@ static void rb_read_lever_arm(rb_cctx *c, rb_ynode *an, rb_model *m)
 
 static void rb_read_anchorage(rb_cctx *c, rb_ynode *an, rb_model *m)
 {
-    static const char *const models[] = {"rigid-plastic", "non-yielding",
-                                         "elastic-plastic", "none", NULL};
-    static const rb_bolt_model kinds[] = {RB_BOLT_RIGID_PLASTIC,
-        RB_BOLT_NONYIELDING, RB_BOLT_ELASTIC_PLASTIC, RB_BOLT_NONE};
     const char *p = "anchorage";
-    int i = 0;
+    int i = RB_BOLT_RIGID_PLASTIC;
     double x;
     rb_ynode *v = rb_cv_get(c, an, p, "model", 0, "");
-    if (v && !rb_cv_enum(c, v, "anchorage.model", models, &i))
+    if (v && !rb_cv_enum_table(c, v, "anchorage.model", rb_bolt_model_names, 0, &i))
         c->model_errors++;
-    m->bolt_model = kinds[i];
+    m->bolt_model = (rb_bolt_model)i;
     if (m->bolt_model == RB_BOLT_NONE) {
         /* Free-standing: bolt data inherited from a base case is ignored. */
         for (size_t k = 0; k < an->n; k++)
@@ -277,13 +273,11 @@ static void rb_read_gap(rb_cctx *c, rb_ynode *root, rb_model *m)
 
 static void rb_read_criteria(rb_cctx *c, rb_ynode *cr, rb_criteria *k)
 {
-    static const char *const kinds[] = {"no-yield", "no-break", NULL};
-    static const char *const validity_modes[] = {"warn", "fail", NULL};
     const char *p = "criteria";
     int i;
     rb_ynode *v = rb_cv_get(c, cr, p, "kind", 0, "");
-    if (v && rb_cv_enum(c, v, "criteria.kind", kinds, &i))
-        k->kind = i == 0 ? RB_CRIT_NO_YIELD : RB_CRIT_NO_BREAK;
+    if (v && rb_cv_enum_table(c, v, "criteria.kind", rb_criterion_names, 0, &i))
+        k->kind = (rb_criterion_kind)i;
     rb_cv_number(c, cr, p, "usage_limit", 0, RB_DIM_RATIO, 0, 0, (double)NAN, 0,
                  &k->usage_limit);
     rb_cv_number(c, cr, p, "max_shear_over_w", 0, RB_DIM_RATIO, 0, 1, (double)NAN, 0,
@@ -293,27 +287,22 @@ static void rb_read_criteria(rb_cctx *c, rb_ynode *cr, rb_criteria *k)
     rb_cv_number(c, cr, p, "friction_coefficient", 0, RB_DIM_RATIO, 0, 1, (double)NAN, 0,
                  &k->friction_coefficient);
     v = rb_cv_get(c, cr, p, "validity", 0, "");
-    if (v && rb_cv_enum(c, v, "criteria.validity", validity_modes, &i))
-        k->validity = i == 0 ? RB_VALIDITY_WARN : RB_VALIDITY_FAIL;
+    if (v && rb_cv_enum_table(c, v, "criteria.validity", rb_validity_mode_names, 0, &i))
+        k->validity = (rb_validity_mode)i;
     rb_cv_unknown_keys(c, cr, p, rb_criteria_keys);
 }
 
 static void rb_read_analysis(rb_cctx *c, rb_ynode *an, rb_case *cs)
 {
-    static const char *const forms[] = {"large", "small", "consistent", NULL};
-    static const rb_formulation fk[] = {RB_FORM_LARGE, RB_FORM_SMALL,
-                                        RB_FORM_CONSISTENT};
-    static const char *const integs[] = {"auto", "rk45", NULL};
-    static const rb_integrator ik[] = {RB_INTEGRATOR_AUTO, RB_INTEGRATOR_RK45};
     const char *p = "analysis";
     int i, b;
     double dt = 0.01;
     rb_ynode *v = rb_cv_get(c, an, p, "formulation", 0, "");
-    if (v && rb_cv_enum(c, v, "analysis.formulation", forms, &i))
-        cs->solve.formulation = fk[i];
+    if (v && rb_cv_enum_table(c, v, "analysis.formulation", rb_formulation_names, 0, &i))
+        cs->solve.formulation = (rb_formulation)i;
     v = rb_cv_get(c, an, p, "integrator", 0, "");
-    if (v && rb_cv_enum(c, v, "analysis.integrator", integs, &i))
-        cs->solve.integrator = ik[i];
+    if (v && rb_cv_enum_table(c, v, "analysis.integrator", rb_integrator_names, 0, &i))
+        cs->solve.integrator = (rb_integrator)i;
     rb_cv_number(c, an, p, "tolerance", 0, RB_DIM_RATIO, RB_CASE_MIN_TOLERANCE, 1,
                  0.01, 1, &cs->solve.rtol);
     /* checked against the motions' run times in case_validate.c, whether or

@@ -221,6 +221,21 @@ int rb_cv_enum(rb_cctx *c, const rb_ynode *v, const char *key,
     return 0;
 }
 
+int rb_cv_enum_table(rb_cctx *c, const rb_ynode *v, const char *key,
+                     const rb_enum_name *table, size_t n_parse, int *out)
+{
+    const char *names[RB_CV_ENUM_MAX + 1];
+    size_t n = 0;
+    for (; table[n].name && n < RB_CV_ENUM_MAX && (n_parse == 0 || n < n_parse); n++)
+        names[n] = table[n].name;
+    names[n] = NULL;
+    int i;
+    if (!rb_cv_enum(c, v, key, names, &i))
+        return 0;
+    *out = table[i].value;
+    return 1;
+}
+
 int rb_cv_string(rb_cctx *c, const rb_ynode *v, const char *key, char **out)
 {
     if (!rb_cv_scalar(c, v, key, "text"))

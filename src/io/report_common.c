@@ -1,10 +1,10 @@
 /* Shared pieces of the reports: the overall verdict, the normalised forms
  * of a result (thesis sec. 6: ratios to W, V0 = M a, Fy, l, A*, g) and the
- * names of enum values. The switches have no default so that a new enum
- * value without a name is a compiler warning. */
+ * side names (the names of enum values are in rockbolt/names.h). */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include "rockbolt/names.h"
 #include "report_internal.h"
 
 double rb_report_ratio(double a, double b)
@@ -62,7 +62,7 @@ void rb_report_conclude(rb_report *r)
         snprintf(r->reason, sizeof r->reason, "%s%zu motion%s meet%s the %s criterion",
                  r->n_motions > 1 ? "all " : "", r->n_motions,
                  r->n_motions == 1 ? "" : "s", r->n_motions == 1 ? "s" : "",
-                 rb_report_criterion_str(r->kase->criteria.kind));
+                 rb_enum_str(rb_criterion_names, (int)r->kase->criteria.kind));
     } else if (failed == 1) {
         snprintf(r->reason, sizeof r->reason, "motion '%.100s': %.250s",
                  first->motion->name ? first->motion->name : "?", first->verdict.reason);
@@ -72,76 +72,6 @@ void rb_report_conclude(rb_report *r)
                  first->motion->name ? first->motion->name : "?", first->verdict.reason,
                  failed - 1);
     }
-}
-
-const char *rb_report_motion_kind_str(rb_motion_kind kind)
-{
-    switch (kind) {
-    case RB_MOTION_HARMONIC: return "harmonic";
-    case RB_MOTION_PULSE: return "pulse";
-    case RB_MOTION_SAMPLED: return "sampled";
-    case RB_MOTION_CRITICAL: return "critical";
-    }
-    return "unknown";
-}
-
-const char *rb_report_pulse_str(rb_pulse_shape shape)
-{
-    switch (shape) {
-    case RB_PULSE_RECT: return "rectangular";
-    case RB_PULSE_TRI_DEC: return "triangular-decreasing";
-    case RB_PULSE_TRI_INC: return "triangular-increasing";
-    case RB_PULSE_HALF_SINE: return "half-sine";
-    }
-    return "unknown";
-}
-
-const char *rb_report_bolt_model_str(rb_bolt_model model)
-{
-    switch (model) {
-    case RB_BOLT_NONE: return "none";
-    case RB_BOLT_RIGID_PLASTIC: return "rigid-plastic";
-    case RB_BOLT_NONYIELDING: return "non-yielding";
-    case RB_BOLT_ELASTIC_PLASTIC: return "elastic-plastic";
-    }
-    return "unknown";
-}
-
-const char *rb_report_formulation_str(rb_formulation form)
-{
-    switch (form) {
-    case RB_FORM_LARGE: return "large";
-    case RB_FORM_SMALL: return "small";
-    case RB_FORM_CONSISTENT: return "consistent";
-    }
-    return "unknown";
-}
-
-const char *rb_report_integrator_str(rb_integrator integ)
-{
-    switch (integ) {
-    case RB_INTEGRATOR_AUTO: return "auto";
-    case RB_INTEGRATOR_RK45: return "rk45";
-    }
-    return "unknown";
-}
-
-const char *rb_report_criterion_str(rb_criterion_kind kind)
-{
-    switch (kind) {
-    case RB_CRIT_NO_YIELD: return "no-yield";
-    case RB_CRIT_NO_BREAK: return "no-break";
-    }
-    return "unknown";
-}
-
-const char *rb_report_validity_mode_str(rb_validity_mode mode)
-{
-    switch (mode) {
-    case RB_VALIDITY_WARN: return "warn";
-    case RB_VALIDITY_FAIL: return "fail";
-    }
-    return "unknown";
 }
 
 const char *rb_report_side_str(int side)

@@ -26,13 +26,6 @@ void rb_report_norms_compute(const rb_report *r, const rb_report_motion *m,
 double rb_report_ratio(double a, double b);
 
 /* Fixed names of enum values, as written in the reports; never NULL. */
-const char *rb_report_motion_kind_str(rb_motion_kind kind);
-const char *rb_report_pulse_str(rb_pulse_shape shape);
-const char *rb_report_bolt_model_str(rb_bolt_model model);
-const char *rb_report_formulation_str(rb_formulation form);
-const char *rb_report_integrator_str(rb_integrator integ);
-const char *rb_report_criterion_str(rb_criterion_kind kind);
-const char *rb_report_validity_mode_str(rb_validity_mode mode);
 const char *rb_report_side_str(int side); /* RB_LEFT, RB_RIGHT */
 
 /* ---- report_suite.c: a case's motions taken together -------------------- */

@@ -14,6 +14,7 @@
 #include <string.h>
 #include <cjson/cJSON.h>
 #include "rockbolt/rockbolt.h"
+#include "rockbolt/names.h"
 #include "report_internal.h"
 #include "rockbolt/jsonnum.h"
 #include "report_json_build.h"
@@ -30,7 +31,7 @@ static void add_model(rb_jctx *cx, cJSON *root, const rb_model *m)
     rb_j_num(cx, o, "damping", m->damping);
     rb_j_opt(cx, o, "inertia_kgm2", m->inertia_kgm2 > 0, m->inertia_kgm2);
     rb_j_opt(cx, o, "restitution", m->restitution >= 0, m->restitution);
-    rb_j_str(cx, o, "bolt_model", rb_report_bolt_model_str(m->bolt_model));
+    rb_j_str(cx, o, "bolt_model", rb_enum_str(rb_bolt_model_names, (int)m->bolt_model));
     rb_j_num(cx, o, "bolts_per_row", m->bolts_per_row);
     rb_j_num(cx, o, "bolt_area_m2", m->bolt_area_m2);
     rb_j_num(cx, o, "yield_stress_pa", m->yield_stress_pa);
@@ -77,8 +78,8 @@ static void add_settings(rb_jctx *cx, cJSON *root, const rb_case *c)
     const rb_criteria *k = &c->criteria;
     cJSON *o = rb_j_obj(cx, root, "solver");
     cx->where = "solver";
-    rb_j_str(cx, o, "formulation", rb_report_formulation_str(s->formulation));
-    rb_j_str(cx, o, "integrator", rb_report_integrator_str(s->integrator));
+    rb_j_str(cx, o, "formulation", rb_enum_str(rb_formulation_names, (int)s->formulation));
+    rb_j_str(cx, o, "integrator", rb_enum_str(rb_integrator_names, (int)s->integrator));
     rb_j_num(cx, o, "rtol", s->rtol);
     rb_j_num(cx, o, "event_tol", s->event_tol);
     rb_j_opt(cx, o, "max_step_s", s->max_step_s > 0, s->max_step_s);
@@ -90,14 +91,14 @@ static void add_settings(rb_jctx *cx, cJSON *root, const rb_case *c)
     rb_j_num(cx, o, "theta_init_rad", s->theta_init_rad);
     o = rb_j_obj(cx, root, "criteria");
     cx->where = "criteria";
-    rb_j_str(cx, o, "kind", rb_report_criterion_str(k->kind));
+    rb_j_str(cx, o, "kind", rb_enum_str(rb_criterion_names, (int)k->kind));
     rb_j_num(cx, o, "usage_limit", k->usage_limit);
     rb_j_opt(cx, o, "max_shear_over_w", k->max_shear_over_w > 0, k->max_shear_over_w);
     rb_j_opt(cx, o, "max_theta_over_alpha", k->max_theta_over_alpha > 0,
           k->max_theta_over_alpha);
     rb_j_opt(cx, o, "friction_coefficient", k->friction_coefficient > 0,
              k->friction_coefficient);
-    rb_j_str(cx, o, "validity", rb_report_validity_mode_str(k->validity));
+    rb_j_str(cx, o, "validity", rb_enum_str(rb_validity_mode_names, (int)k->validity));
 }
 
 static void add_motion_desc(rb_jctx *cx, cJSON *parent, const rb_case_motion *cm,
@@ -105,7 +106,7 @@ static void add_motion_desc(rb_jctx *cx, cJSON *parent, const rb_case_motion *cm
 {
     const rb_motion *m = &cm->motion;
     cJSON *o = rb_j_obj(cx, parent, "motion"), *b;
-    rb_j_str(cx, o, "kind", rb_report_motion_kind_str(m->kind));
+    rb_j_str(cx, o, "kind", rb_enum_str(rb_motion_type_names, (int)m->kind));
     rb_j_str(cx, o, "source", cm->source);
     rb_j_num(cx, o, "peak_floor_mps2", res->peak_floor_mps2);
     rb_j_norm(cx, o, "peak_floor_g", n->peak_g);
@@ -125,7 +126,7 @@ static void add_motion_desc(rb_jctx *cx, cJSON *parent, const rb_case_motion *cm
         rb_j_num(cx, o, "ramp_s", m->ramp_s);
     }
     if (m->kind == RB_MOTION_PULSE) {
-        rb_j_str(cx, o, "pulse_shape", rb_report_pulse_str(m->pulse));
+        rb_j_str(cx, o, "pulse_shape", rb_enum_str(rb_pulse_shape_names, (int)m->pulse));
         rb_j_num(cx, o, "pulse_s", m->pulse_s);
     }
     rb_j_opt(cx, o, "target_peak_mps2", cm->target_peak_mps2 > 0, cm->target_peak_mps2);

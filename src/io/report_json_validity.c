@@ -4,6 +4,7 @@
 #include <math.h>
 #include <stdio.h>
 #include "rockbolt/rockbolt.h"
+#include "rockbolt/names.h"
 #include "report_internal.h"
 #include "report_json_build.h"
 
@@ -44,7 +45,7 @@ void rb_report_json_validity(rb_jctx *cx, cJSON *motion_o, const rb_report *r,
     const rb_verdict *v = &m->verdict;
     double w = res->weight_n;
     cJSON *o = rb_j_obj(cx, motion_o, "validity"), *k;
-    rb_j_str(cx, o, "mode", rb_report_validity_mode_str(c->validity));
+    rb_j_str(cx, o, "mode", rb_enum_str(rb_validity_mode_names, (int)c->validity));
     k = check_obj(cx, o, v, RB_CHECK_LIFT_OFF);
     rb_j_num(cx, k, "min_vertical_reaction_n", res->min_vertical_reaction_n);
     rb_j_norm(cx, k, "min_vertical_reaction_over_w",

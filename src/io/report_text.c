@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "rockbolt/rockbolt.h"
+#include "rockbolt/names.h"
 #include "report_internal.h"
 
 static void case_vars(rb_tvars *t, const rb_report *r)
@@ -26,10 +27,10 @@ static void case_vars(rb_tvars *t, const rb_report *r)
     rb_tv_str(t, "case_name", r->kase->name);
     rb_tv_str(t, "case_path", r->kase->path);
     rb_tv_str(t, "description", r->kase->description);
-    rb_tv_str(t, "criterion", rb_report_criterion_str(r->kase->criteria.kind));
+    rb_tv_str(t, "criterion", rb_enum_str(rb_criterion_names, (int)r->kase->criteria.kind));
     rb_tv_num(t, "usage_limit", r->kase->criteria.usage_limit);
-    rb_tv_str(t, "formulation", rb_report_formulation_str(r->kase->solve.formulation));
-    rb_tv_str(t, "integrator", rb_report_integrator_str(r->kase->solve.integrator));
+    rb_tv_str(t, "formulation", rb_enum_str(rb_formulation_names, (int)r->kase->solve.formulation));
+    rb_tv_str(t, "integrator", rb_enum_str(rb_integrator_names, (int)r->kase->solve.integrator));
     rb_tv_int(t, "n_motions", (long)r->n_motions);
     rb_tv_int(t, "n_failed", (long)failed);
     rb_tv_num(t, "mass_kg", m->mass_kg);
@@ -39,7 +40,7 @@ static void case_vars(rb_tvars *t, const rb_report *r)
     rb_tv_str(t, "rigid", rb_yes_no(m->rigid));
     rb_tv_num(t, "freq_hz", m->freq_hz);
     rb_tv_num(t, "damping", m->damping);
-    rb_tv_str(t, "bolt_model", rb_report_bolt_model_str(m->bolt_model));
+    rb_tv_str(t, "bolt_model", rb_enum_str(rb_bolt_model_names, (int)m->bolt_model));
     rb_tv_int(t, "has_bolts", m->bolt_model != RB_BOLT_NONE);
     rb_tv_int(t, "bolts_per_row", m->bolts_per_row);
     rb_tv_num(t, "bolt_area_mm2", m->bolt_area_m2 * 1e6);
@@ -96,7 +97,7 @@ static void motion_head_vars(rb_tvars *t, const rb_report *r, size_t i,
     rb_tv_str(t, "motion_verdict", rm->verdict.pass ? "PASS" : "FAIL");
     rb_tv_str(t, "motion_headline", rm_headline);
     rb_tv_str(t, "motion_reason", rm->verdict.reason);
-    rb_tv_str(t, "kind", rb_report_motion_kind_str(rm->motion->motion.kind));
+    rb_tv_str(t, "kind", rb_enum_str(rb_motion_type_names, (int)rm->motion->motion.kind));
     rb_tv_num(t, "peak_mps2", res->peak_floor_mps2);
     rb_tv_num(t, "peak_g", n->peak_g);
     rb_tv_num(t, "peak_over_a_star", n->peak_over_a_star);
@@ -172,7 +173,7 @@ static void motion_validity_vars(rb_tvars *t, const rb_report *r, const rb_repor
     const rb_result *res = rm->result;
     const rb_criteria *c = &r->kase->criteria;
     const rb_verdict *v = &rm->verdict;
-    rb_tv_str(t, "validity_mode", rb_report_validity_mode_str(c->validity));
+    rb_tv_str(t, "validity_mode", rb_enum_str(rb_validity_mode_names, (int)c->validity));
     rb_tv_str(t, "lift_off_status", rb_check_status_str(v->check[RB_CHECK_LIFT_OFF]));
     rb_tv_opt(t, "liftoff_first_s", res->liftoff_first_s >= 0, res->liftoff_first_s);
     rb_tv_num(t, "liftoff_time_s", res->liftoff_time_s);

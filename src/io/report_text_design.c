@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "rockbolt/names.h"
 #include "report_internal.h"
 
 struct rb_txt_arena {
@@ -228,7 +229,7 @@ rb_status rb_report_text_motion_design(const rb_report *r, size_t i, rb_txt_aren
     factor_vars(&t, "factor_no_break", "factor_no_break_text", &md->no_break,
                 text + 320, 320);
     rb_tv_num(&t, "no_break_usage_limit", d->no_break.usage_limit);
-    rb_tv_str(&t, "gap_criterion", rb_report_criterion_str(d->gap_criteria.kind));
+    rb_tv_str(&t, "gap_criterion", rb_enum_str(rb_criterion_names, (int)d->gap_criteria.kind));
     if (md->has_gap)
         rb_gap_describe(g, text + 640, 320);
     rb_tv_str(&t, "gap_text", md->has_gap ? text + 640 : NULL);

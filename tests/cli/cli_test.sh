@@ -189,7 +189,7 @@ test_elcentro() {
     run check "$ELCENTRO" --json "$D/e.json" --text "$D/e.txt"
     [ "$rc" -eq 0 ] || [ "$rc" -eq 1 ] || fail "exit code $rc"
     verdict_agrees "$D/e.json" "$D/e.txt"
-    [ "$(jget "$D/e.json" motions.0.motion.kind)" = sampled ] || fail "sampled motion"
+    [ "$(jget "$D/e.json" motions.0.motion.kind)" = record ] || fail "record motion"
     holds "$(jget "$D/e.json" motions.0.motion.peak_floor_over_a_star)" 0.4 \
         "A - B < 1e-6 && B - A < 1e-6" "floor peak scaled to 0.4 A*"
     holds "$(jget "$D/e.json" motions.0.result.peaks.max_u_over_ustatic)" 0 \

@@ -155,7 +155,7 @@ static void check_builtin(const char *name)
     CHECK(builtin != NULL);
     if (builtin && file && strcmp(builtin, file) != 0)
         fprintf(stderr, "%s differs from its compiled-in copy: "
-                "run tools/embed-templates.sh\n", path);
+                "rebuild\n", path);
     CHECK(builtin && file && strcmp(builtin, file) == 0);
     free(file);
 }

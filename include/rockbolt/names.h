@@ -1,0 +1,28 @@
+/* The one name table of each enum that a case file, a report or a list
+ * spells out: the case loader parses with it and every report prints with
+ * it, so whatever a report writes can be pasted back into a case. Each
+ * table lists its names in the order diagnostics offer them and ends with
+ * {NULL, 0}. No I/O. */
+#ifndef ROCKBOLT_NAMES_H
+#define ROCKBOLT_NAMES_H
+
+typedef struct {
+    const char *name;
+    int value;
+} rb_enum_name;
+
+extern const rb_enum_name rb_bolt_model_names[];    /* rb_bolt_model */
+extern const rb_enum_name rb_formulation_names[];   /* rb_formulation */
+extern const rb_enum_name rb_integrator_names[];    /* rb_integrator */
+extern const rb_enum_name rb_criterion_names[];     /* rb_criterion_kind */
+extern const rb_enum_name rb_validity_mode_names[]; /* rb_validity_mode */
+extern const rb_enum_name rb_motion_type_names[];   /* rb_motion_kind: harmonic,
+                                                       pulse, record (sampled) */
+extern const rb_enum_name rb_pulse_shape_names[];   /* rb_pulse_shape */
+
+/* The name of value in table t; "unknown" when it has none. */
+const char *rb_enum_str(const rb_enum_name *t, int value);
+/* The value named s: 1 and *value set, or 0. */
+int rb_enum_parse(const rb_enum_name *t, const char *s, int *value);
+
+#endif
