@@ -231,6 +231,20 @@ static rb_status read_header(csv_ctx *cx, rb_batch_list *l, const csv_row *r, in
 {
     char msg[512];
     cx->tag_col = cx->base_col = -1;
+    /* A header without one known column is not a list's (a CSV of another
+     * kind, a system file named *.csv): say so without quoting it, since
+     * the error goes into published summaries. */
+    size_t known = 0;
+    for (size_t i = 0; i < r->n; i++)
+        known += find_col(r->f[i].text) >= 0;
+    if (known == 0) {
+        rb_batch_item *it = rb_batch_list_push(l, cx->path);
+        if (!it)
+            return RB_ERR_NOMEM;
+        rb_batch_item_bad(it, line, 1, "header", "not an equipment list: none of the "
+                          "header's columns is a known column (tag, base, mass, ...)");
+        return RB_ERR_INVALID;
+    }
     for (size_t i = 0; i < r->n; i++) {
         int k = find_col(r->f[i].text);
         const char *bad = NULL;

@@ -142,6 +142,15 @@ YAML
         done
     done
     has "$s/b.csv" 'secret.yaml:1:1: case: not a rockbolt case'
+    # a file of another kind named as an equipment list
+    cp "$s/passwd" "$s/passwd.csv"
+    run 2 batch "$s/passwd.csv" --junit "$s/l.xml" --csv "$s/l.csv"
+    has "$s/err" "passwd.csv:1:1: error: header: not an equipment list"
+    for f in out err l.xml l.csv; do
+        for w in root:x /bin/bash hunter2; do
+            lacks "$s/$f" "$w"
+        done
+    done
     ;;
 sandbox)
     # inputs confined to a tree: bases, records, lists and row bases
