@@ -13,69 +13,69 @@
  * control characters (XML 1.0 allows none but tab and newline, and a
  * reader should see them as \x1b, \r), then XML's own. Newlines that
  * the summary itself puts between lines go through xml_raw. */
-static void xml_raw(rb_bbuf *b, const char *s)
+static void xml_raw(rb_strbuf *b, const char *s)
 {
     for (const unsigned char *p = (const unsigned char *)s; *p; p++) {
         switch (*p) {
-        case '&': rb_bbuf_str(b, "&amp;"); break;
-        case '<': rb_bbuf_str(b, "&lt;"); break;
-        case '>': rb_bbuf_str(b, "&gt;"); break;
-        case '"': rb_bbuf_str(b, "&quot;"); break;
-        case '\'': rb_bbuf_str(b, "&apos;"); break;
-        case '\n': rb_bbuf_str(b, "&#10;"); break;
+        case '&': rb_strbuf_puts(b, "&amp;"); break;
+        case '<': rb_strbuf_puts(b, "&lt;"); break;
+        case '>': rb_strbuf_puts(b, "&gt;"); break;
+        case '"': rb_strbuf_puts(b, "&quot;"); break;
+        case '\'': rb_strbuf_puts(b, "&apos;"); break;
+        case '\n': rb_strbuf_puts(b, "&#10;"); break;
         default:
             if (*p < 0x20 || *p == 0x7f)
-                rb_bbuf_str(b, "?");   /* unreachable after rb_text_escape */
+                rb_strbuf_puts(b, "?");   /* unreachable after rb_text_escape */
             else
-                rb_bbuf_put(b, (const char *)p, 1);
+                rb_strbuf_putn(b, (const char *)p, 1);
         }
     }
 }
 
-static void xml_text(rb_bbuf *b, const char *s)
+static void xml_text(rb_strbuf *b, const char *s)
 {
     char *t = rb_text_escape(s);
     if (!t) {
-        b->nomem = 1;
+        b->oom = 1;
         return;
     }
     xml_raw(b, t);
     free(t);
 }
 
-static void junit_case(rb_bbuf *b, const rb_batch_case *c)
+static void junit_case(rb_strbuf *b, const rb_batch_case *c)
 {
-    rb_bbuf_str(b, "    <testcase classname=\"");
+    rb_strbuf_puts(b, "    <testcase classname=\"");
     xml_text(b, c->source);
-    rb_bbuf_str(b, "\" name=\"");
+    rb_strbuf_puts(b, "\" name=\"");
     xml_text(b, c->tag);
     if (c->line > 0)
-        rb_bbuf_printf(b, " (line %d)", c->line);
-    rb_bbuf_str(b, "\"");
+        rb_strbuf_printf(b, " (line %d)", c->line);
+    rb_strbuf_puts(b, "\"");
     unsigned warnings = 0;
     for (size_t m = 0; m < c->n_runs; m++)
         warnings |= c->runs[m].warnings;
     if (c->verdict == RB_BATCH_PASS && !warnings) {
-        rb_bbuf_str(b, "/>\n");
+        rb_strbuf_puts(b, "/>\n");
         return;
     }
-    rb_bbuf_str(b, ">\n");
+    rb_strbuf_puts(b, ">\n");
     /* JUnit has no warning element: a property a CI can gate on, and the
      * headline in the output where people read it */
     char w[80], head[RB_HEADLINE_MAX];
     rb_warnings_names(warnings, w, sizeof w);
     rb_report_headline(c->verdict == RB_BATCH_PASS, warnings, head, sizeof head);
     if (warnings) {
-        rb_bbuf_str(b, "      <properties><property name=\"validity_warnings\" value=\"");
+        rb_strbuf_puts(b, "      <properties><property name=\"validity_warnings\" value=\"");
         xml_text(b, w);
-        rb_bbuf_str(b, "\"/></properties>\n");
+        rb_strbuf_puts(b, "\"/></properties>\n");
     }
     if (c->verdict == RB_BATCH_PASS) {
         /* only warnings: no failure */
     } else if (c->verdict == RB_BATCH_FAIL) {
-        rb_bbuf_str(b, "      <failure type=\"criteria\" message=\"");
+        rb_strbuf_puts(b, "      <failure type=\"criteria\" message=\"");
         xml_text(b, c->reason ? c->reason : "");
-        rb_bbuf_str(b, "\">");
+        rb_strbuf_puts(b, "\">");
         for (size_t m = 0; m < c->n_runs; m++) {
             const rb_batch_result *r = &c->runs[m];
             char line[400];
@@ -85,7 +85,7 @@ static void junit_case(rb_bbuf *b, const rb_batch_case *c)
                      r->usage, r->shear_over_w, r->force_over_fy, r->theta_over_alpha);
             xml_raw(b, line);
         }
-        rb_bbuf_str(b, "</failure>\n");
+        rb_strbuf_puts(b, "</failure>\n");
     } else {
         const rb_diag *e = rb_batch_case_error(c);
         char msg[1400];
@@ -94,33 +94,33 @@ static void junit_case(rb_bbuf *b, const rb_batch_case *c)
                      e->col, e->key, e->msg);
         else
             snprintf(msg, sizeof msg, "%s: error: %s: %s", e->file, e->key, e->msg);
-        rb_bbuf_printf(b, "      <error type=\"%s\" message=\"",
+        rb_strbuf_printf(b, "      <error type=\"%s\" message=\"",
                        c->verdict == RB_BATCH_UNREADABLE ? "unreadable" : "error");
         xml_text(b, msg);
-        rb_bbuf_printf(b, "\">%zu error%s reported</error>\n", c->n_errors,
+        rb_strbuf_printf(b, "\">%zu error%s reported</error>\n", c->n_errors,
                        c->n_errors == 1 ? "" : "s");
     }
     if (warnings) {
-        rb_bbuf_str(b, "      <system-out>");
+        rb_strbuf_puts(b, "      <system-out>");
         xml_text(b, head);
-        rb_bbuf_str(b, "</system-out>\n");
+        rb_strbuf_puts(b, "</system-out>\n");
     }
-    rb_bbuf_str(b, "    </testcase>\n");
+    rb_strbuf_puts(b, "    </testcase>\n");
 }
 
 char *rb_batch_render_junit(const rb_batch_summary *s)
 {
-    rb_bbuf b = {0};
+    rb_strbuf b = {0};
     rb_batch_counts n;
     rb_batch_count(s, &n);
     size_t errors = n.unreadable + n.errors;
-    rb_bbuf_str(&b, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
-    rb_bbuf_printf(&b, "<testsuites name=\"rockbolt batch\" tests=\"%zu\" failures=\"%zu\""
+    rb_strbuf_puts(&b, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
+    rb_strbuf_printf(&b, "<testsuites name=\"rockbolt batch\" tests=\"%zu\" failures=\"%zu\""
                    " errors=\"%zu\">\n", n.cases, n.failed, errors);
-    rb_bbuf_printf(&b, "  <testsuite name=\"rockbolt\" tests=\"%zu\" failures=\"%zu\" "
+    rb_strbuf_printf(&b, "  <testsuite name=\"rockbolt\" tests=\"%zu\" failures=\"%zu\" "
                    "errors=\"%zu\" skipped=\"0\">\n", n.cases, n.failed, errors);
     for (size_t i = 0; i < s->n_cases; i++)
         junit_case(&b, &s->cases[i]);
-    rb_bbuf_str(&b, "  </testsuite>\n</testsuites>\n");
-    return rb_bbuf_take(&b);
+    rb_strbuf_puts(&b, "  </testsuite>\n</testsuites>\n");
+    return rb_strbuf_take(&b);
 }

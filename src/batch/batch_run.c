@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "batch_engine.h"
+#include "util/pool.h"
 
 #define RB_BATCH_CHUNK 256
 
@@ -57,7 +58,7 @@ static void progress(run_ctx *cx, const rb_batch_case *done_case, int run_done)
     pthread_mutex_unlock(&cx->lock);
 }
 
-static void load_job(void *arg, size_t i)
+static rb_status load_job(void *arg, size_t i)
 {
     run_ctx *cx = arg;
     rb_batch_case *bc = &cx->out->cases[cx->first + i];
@@ -68,9 +69,10 @@ static void load_job(void *arg, size_t i)
         rb_batch_case_finish(s, bc, cx->o, cx->out->total);
         progress(cx, bc, 0);
     }
+    return RB_OK;
 }
 
-static void run_job(void *arg, size_t k)
+static rb_status run_job(void *arg, size_t k)
 {
     run_ctx *cx = arg;
     const run_ref *r = &cx->runs[k];
@@ -83,12 +85,13 @@ static void run_job(void *arg, size_t k)
     if (last)
         rb_batch_case_finish(s, bc, cx->o, cx->out->total);
     progress(cx, last ? bc : NULL, 1);
+    return RB_OK;
 }
 
 static rb_status run_chunk(run_ctx *cx, size_t n)
 {
     size_t n_runs = 0;
-    rb_status st = rb_batch_parallel(n, cx->o->n_threads, load_job, cx);
+    rb_status st = rb_pool_map(n, cx->o->n_threads, load_job, cx, NULL);
     if (st != RB_OK)
         return st;
     for (size_t i = 0; i < n; i++)
@@ -102,7 +105,7 @@ static rb_status run_chunk(run_ctx *cx, size_t n)
         for (size_t m = 0; cx->slots[i].loaded && m < cx->slots[i].remaining; m++)
             runs[n_runs].slot = i, runs[n_runs++].motion = m;
     cx->runs = runs;
-    st = rb_batch_parallel(n_runs, cx->o->n_threads, run_job, cx);
+    st = rb_pool_map(n_runs, cx->o->n_threads, run_job, cx, NULL);
     free(runs);
     cx->runs = NULL;
     return st;

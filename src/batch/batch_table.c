@@ -19,34 +19,34 @@ static const char *upper_verdict(rb_batch_verdict v)
     return "ERROR";
 }
 
-static void text_nums(rb_bbuf *b, double usage, double vw, double ff, double ta,
+static void text_nums(rb_strbuf *b, double usage, double vw, double ff, double ta,
                       int design, int has_f, double f, int bound, int has_g, double g)
 {
-    rb_bbuf_printf(b, " %7.3f %7.3f %7.3f %7.3f", usage, vw, ff, ta);
+    rb_strbuf_printf(b, " %7.3f %7.3f %7.3f %7.3f", usage, vw, ff, ta);
     if (design) {
         if (has_f)
-            rb_bbuf_printf(b, " %s%7.3f", bound ? ">" : " ", f);
+            rb_strbuf_printf(b, " %s%7.3f", bound ? ">" : " ", f);
         else
-            rb_bbuf_str(b, "      n/a");
+            rb_strbuf_puts(b, "      n/a");
         if (has_g)
-            rb_bbuf_printf(b, " %8.4f", g);
+            rb_strbuf_printf(b, " %8.4f", g);
         else
-            rb_bbuf_str(b, "     none");
+            rb_strbuf_puts(b, "     none");
     }
-    rb_bbuf_str(b, "\n");
+    rb_strbuf_puts(b, "\n");
 }
 
-static void text_case(rb_bbuf *b, const rb_batch_case *c, int design)
+static void text_case(rb_strbuf *b, const rb_batch_case *c, int design)
 {
     if (c->verdict != RB_BATCH_PASS && c->verdict != RB_BATCH_FAIL) {
         const rb_diag *e = rb_batch_case_error(c);
         char tag[128], file[1024], key[256], msg[1024];
-        rb_bbuf_printf(b, "%-24.24s %-18s %-10s ", rb_text_escape_buf(c->tag, tag, sizeof tag),
+        rb_strbuf_printf(b, "%-24.24s %-18s %-10s ", rb_text_escape_buf(c->tag, tag, sizeof tag),
                        "-", upper_verdict(c->verdict));
-        rb_bbuf_printf(b, "%s", rb_text_escape_buf(e->file, file, sizeof file));
+        rb_strbuf_printf(b, "%s", rb_text_escape_buf(e->file, file, sizeof file));
         if (e->line > 0)
-            rb_bbuf_printf(b, ":%d:%d", e->line, e->col);
-        rb_bbuf_printf(b, ": %s%s%s\n", rb_text_escape_buf(e->key, key, sizeof key),
+            rb_strbuf_printf(b, ":%d:%d", e->line, e->col);
+        rb_strbuf_printf(b, ": %s%s%s\n", rb_text_escape_buf(e->key, key, sizeof key),
                        e->key[0] ? ": " : "", rb_text_escape_buf(e->msg, msg, sizeof msg));
         return;
     }
@@ -57,7 +57,7 @@ static void text_case(rb_bbuf *b, const rb_batch_case *c, int design)
         rb_text_escape_buf(r->motion, name, sizeof name);
         snprintf(motion, sizeof motion, "%s%.17s", c->n_runs > 1 && m == g ? "*" : "",
                  name);
-        rb_bbuf_printf(b, "%-24.24s %-18s %-10s",
+        rb_strbuf_printf(b, "%-24.24s %-18s %-10s",
                        m == 0 ? rb_text_escape_buf(c->tag, tag, sizeof tag) : "", motion,
                        r->pass ? "pass" : "FAIL");
         text_nums(b, r->usage, r->shear_over_w, r->force_over_fy, r->theta_over_alpha,
@@ -67,11 +67,11 @@ static void text_case(rb_bbuf *b, const rb_batch_case *c, int design)
     if (c->n_runs > 1) {
         rb_batch_stat mean, max;
         rb_batch_stats(c, &mean, &max);
-        rb_bbuf_printf(b, "%-24s %-18s %-10s", "", "(mean)", "");
+        rb_strbuf_printf(b, "%-24s %-18s %-10s", "", "(mean)", "");
         text_nums(b, mean.usage, mean.shear_over_w, mean.force_over_fy,
                   mean.theta_over_alpha, design, mean.has_factor, mean.design_factor,
                   0, mean.has_gap, mean.gap_ratio);
-        rb_bbuf_printf(b, "%-24s %-18s %-10s", "", "(max)",
+        rb_strbuf_printf(b, "%-24s %-18s %-10s", "", "(max)",
                        c->verdict == RB_BATCH_PASS ? "PASS" : "FAIL");
         text_nums(b, max.usage, max.shear_over_w, max.force_over_fy,
                   max.theta_over_alpha, design, max.has_factor, max.design_factor,
@@ -81,92 +81,92 @@ static void text_case(rb_bbuf *b, const rb_batch_case *c, int design)
 
 char *rb_batch_render_text(const rb_batch_summary *s)
 {
-    rb_bbuf b = {0};
+    rb_strbuf b = {0};
     rb_batch_counts n;
-    rb_bbuf_printf(&b, "%-24s %-18s %-10s %7s %7s %7s %7s", "tag", "motion", "verdict",
+    rb_strbuf_printf(&b, "%-24s %-18s %-10s %7s %7s %7s %7s", "tag", "motion", "verdict",
                    "usage", "V/W", "F/Fy", "th/alp");
     if (s->design)
-        rb_bbuf_printf(&b, " %8s %8s", "factor", "gap");
-    rb_bbuf_str(&b, "\n");
+        rb_strbuf_printf(&b, " %8s %8s", "factor", "gap");
+    rb_strbuf_puts(&b, "\n");
     for (size_t i = 0; i < s->n_cases; i++)
         text_case(&b, &s->cases[i], s->design);
     rb_batch_count(s, &n);
-    rb_bbuf_printf(&b, "%zu case%s: %zu passed, %zu failed, %zu unreadable, %zu "
+    rb_strbuf_printf(&b, "%zu case%s: %zu passed, %zu failed, %zu unreadable, %zu "
                    "error%s; %zu runs\n", n.cases, n.cases == 1 ? "" : "s", n.passed,
                    n.failed, n.unreadable, n.errors, n.errors == 1 ? "" : "s", n.runs);
-    return rb_bbuf_take(&b);
+    return rb_strbuf_take(&b);
 }
 
 /* A CSV text field through the shared writer (escaped, formula-guarded). */
-static void csv_field(rb_bbuf *b, const char *s)
+static void csv_field(rb_strbuf *b, const char *s)
 {
     char *f = rb_csv_field(s, 0);
     if (!f) {
-        b->nomem = 1;
+        b->oom = 1;
         return;
     }
-    rb_bbuf_str(b, f);
+    rb_strbuf_puts(b, f);
     free(f);
 }
 
-static void csv_head(rb_bbuf *b, const rb_batch_case *c, const char *motion,
+static void csv_head(rb_strbuf *b, const rb_batch_case *c, const char *motion,
                      int governing, const char *verdict)
 {
-    rb_bbuf_printf(b, "%zu,", c->index);
+    rb_strbuf_printf(b, "%zu,", c->index);
     csv_field(b, c->source);
-    rb_bbuf_printf(b, ",%d,", c->line);
+    rb_strbuf_printf(b, ",%d,", c->line);
     csv_field(b, c->tag);
-    rb_bbuf_str(b, ",");
+    rb_strbuf_puts(b, ",");
     csv_field(b, motion);
-    rb_bbuf_printf(b, ",%d,%s,%s", governing, verdict, rb_batch_verdict_str(c->verdict));
+    rb_strbuf_printf(b, ",%d,%s,%s", governing, verdict, rb_batch_verdict_str(c->verdict));
 }
 
 char *rb_batch_render_csv(const rb_batch_summary *s)
 {
-    rb_bbuf b = {0};
-    rb_bbuf_str(&b, "index,source,line,tag,motion,governing,verdict,case_verdict,"
+    rb_strbuf b = {0};
+    rb_strbuf_puts(&b, "index,source,line,tag,motion,governing,verdict,case_verdict,"
                     "usage,shear_over_w,force_over_fy,theta_over_alpha");
     if (s->design)
-        rb_bbuf_str(&b, ",design_factor,design_factor_bound,gap_ratio");
-    rb_bbuf_str(&b, ",validity_warnings,error\n");
+        rb_strbuf_puts(&b, ",design_factor,design_factor_bound,gap_ratio");
+    rb_strbuf_puts(&b, ",validity_warnings,error\n");
     for (size_t i = 0; i < s->n_cases; i++) {
         const rb_batch_case *c = &s->cases[i];
         if (c->verdict != RB_BATCH_PASS && c->verdict != RB_BATCH_FAIL) {
             char err[1400];
             const rb_diag *e = rb_batch_case_error(c);
             csv_head(&b, c, "", 0, rb_batch_verdict_str(c->verdict));
-            rb_bbuf_str(&b, s->design ? ",,,,,,,,," : ",,,,,,");
+            rb_strbuf_puts(&b, s->design ? ",,,,,,,,," : ",,,,,,");
             if (e->line > 0)
                 snprintf(err, sizeof err, "%s:%d:%d: %s: %s", e->file, e->line, e->col,
                          e->key, e->msg);
             else
                 snprintf(err, sizeof err, "%s: %s: %s", e->file, e->key, e->msg);
             csv_field(&b, err);
-            rb_bbuf_str(&b, "\n");
+            rb_strbuf_puts(&b, "\n");
             continue;
         }
         size_t g = rb_batch_governing(c);
         for (size_t m = 0; m < c->n_runs; m++) {
             const rb_batch_result *r = &c->runs[m];
             csv_head(&b, c, r->motion, m == g, r->pass ? "pass" : "fail");
-            rb_bbuf_printf(&b, ",%.6g,%.6g,%.6g,%.6g", r->usage, r->shear_over_w,
+            rb_strbuf_printf(&b, ",%.6g,%.6g,%.6g,%.6g", r->usage, r->shear_over_w,
                            r->force_over_fy, r->theta_over_alpha);
             if (s->design) {
                 if (r->has_factor)
-                    rb_bbuf_printf(&b, ",%.6g,%d", r->design_factor, r->factor_bound);
+                    rb_strbuf_printf(&b, ",%.6g,%d", r->design_factor, r->factor_bound);
                 else
-                    rb_bbuf_str(&b, ",,");
+                    rb_strbuf_puts(&b, ",,");
                 if (r->has_gap)
-                    rb_bbuf_printf(&b, ",%.6g", r->gap_ratio);
+                    rb_strbuf_printf(&b, ",%.6g", r->gap_ratio);
                 else
-                    rb_bbuf_str(&b, ",");
+                    rb_strbuf_puts(&b, ",");
             }
             char w[80];
             rb_warnings_names(r->warnings, w, sizeof w);
-            rb_bbuf_str(&b, ",");
+            rb_strbuf_puts(&b, ",");
             csv_field(&b, w);
-            rb_bbuf_str(&b, ",\n");
+            rb_strbuf_puts(&b, ",\n");
         }
     }
-    return rb_bbuf_take(&b);
+    return rb_strbuf_take(&b);
 }

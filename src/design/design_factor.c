@@ -48,7 +48,7 @@ static rb_status batch_job(void *v, size_t i)
 static rb_status eval_levels(factor_search *s, size_t n)
 {
     factor_batch b = {s->ctx, s->levels, s->runs};
-    return rb_design_parallel(n, s->n_threads, batch_job, &b, NULL);
+    return rb_pool_map(n, s->n_threads, batch_job, &b, NULL);
 }
 
 /* A run the search needs must have worked: there is no verdict otherwise. */
@@ -199,7 +199,7 @@ rb_status rb_design_factor(const rb_model *model, const rb_motion *motion,
     memset(&s, 0, sizeof s);
     s.ctx = &ctx;
     s.out = out;
-    s.n_threads = n_threads > 0 ? n_threads : rb_design_threads_default();
+    s.n_threads = n_threads > 0 ? n_threads : rb_pool_threads_default();
     s.nt = (size_t)s.n_threads;
     s.hi = HUGE_VAL;
     s.scan_end = design->scan_end;

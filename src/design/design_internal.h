@@ -7,17 +7,8 @@
 #include <stddef.h>
 #include "rockbolt/design.h"
 
-/* One job of a parallel map: fills slot i of whatever ctx points to and
- * returns its status. Jobs must not share writable state. */
-typedef rb_status (*rb_design_job)(void *ctx, size_t i);
-
-/* Run job(ctx, i) for i in [0, n) on up to n_threads threads (<= 0: all
- * processors), the calling thread included. Every job runs, whatever the
- * others return; the statuses go to status[i] (may be NULL). If threads
- * cannot be created the calling thread runs the rest. Returns RB_ERR_NOMEM
- * when the thread table cannot be allocated (no job has run then). */
-rb_status rb_design_parallel(size_t n, int n_threads, rb_design_job job, void *ctx,
-                             rb_status *status);
+/* The searches' runs are independent jobs of the shared pool. */
+#include "util/pool.h"
 
 /* Everything one run needs, read-only and shared by all jobs of a search. */
 typedef struct {

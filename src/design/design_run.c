@@ -6,6 +6,11 @@
 #include <string.h>
 #include "design_internal.h"
 
+int rb_design_threads_default(void)
+{
+    return rb_pool_threads_default();
+}
+
 void rb_design_opts_defaults(rb_design_opts *o)
 {
     o->scan_start = 0.05;

@@ -96,7 +96,7 @@ static rb_status run_grid(const rb_design_ctx *ctx, const double *ratios, int n_
                           rb_gap_result *out, rb_diag *diag)
 {
     size_t n = out->n_points;
-    size_t nt = (size_t)(n_threads > 0 ? n_threads : rb_design_threads_default());
+    size_t nt = (size_t)(n_threads > 0 ? n_threads : rb_pool_threads_default());
     rb_design_run *runs = malloc(nt * sizeof *runs);
     if (!runs)
         return RB_ERR_NOMEM;
@@ -105,7 +105,7 @@ static rb_status run_grid(const rb_design_ctx *ctx, const double *ratios, int n_
     for (size_t k = n; st == RB_OK && k > 0 && out->fail_index < 0;) {
         size_t m = k < nt ? k : nt;
         gap_batch b = {ctx, ratios + (k - m), runs};
-        if ((st = rb_design_parallel(m, n_threads, gap_job, &b, NULL)) != RB_OK)
+        if ((st = rb_pool_map(m, n_threads, gap_job, &b, NULL)) != RB_OK)
             break;
         /* slot j holds grid point k - m + j; read them from the top down */
         for (size_t j = m; j-- > 0;) {

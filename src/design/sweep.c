@@ -127,7 +127,7 @@ static rb_status sweep_run(const rb_model *model, const rb_motion *motion,
         return RB_ERR_NOMEM;
     out->n_points = o->n_points;
     sweep_job_ctx c = {&ctx, out, o};
-    st = rb_design_parallel(o->n_points, n_threads, sweep_job, &c, NULL);
+    st = rb_pool_map(o->n_points, n_threads, sweep_job, &c, NULL);
     if (st != RB_OK)
         rb_sweep_free(out);
     return st;

@@ -92,29 +92,29 @@ double rb_panel_y(const rb_panel *p, double y)
     return isfinite(v) ? v : p->y0 + p->h;
 }
 
-void rb_panel_draw(rb_sbuf *b, const rb_panel *p, const char *y_title,
+void rb_panel_draw(rb_strbuf *b, const rb_panel *p, const char *y_title,
                    int x_labels, const char *x_title)
 {
     char lab[64];
     int i;
-    rb_sbuf_puts(b, "<g class=\"grid\" stroke=\"#dddddd\" stroke-width=\"0.6\">\n");
+    rb_strbuf_puts(b, "<g class=\"grid\" stroke=\"#dddddd\" stroke-width=\"0.6\">\n");
     for (i = 0; i < p->ya.n_ticks; i++) {
         double y = rb_panel_y(p, p->ya.ticks[i]);
-        rb_sbuf_printf(b, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\"/>\n",
+        rb_strbuf_printf(b, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\"/>\n",
                        p->x0, y, p->x0 + p->w, y);
     }
     for (i = 0; i < p->xa.n_ticks; i++) {
         double x = rb_panel_x(p, p->xa.ticks[i]);
-        rb_sbuf_printf(b, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\"/>\n",
+        rb_strbuf_printf(b, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\"/>\n",
                        x, p->y0, x, p->y0 + p->h);
     }
-    rb_sbuf_puts(b, "</g>\n");
+    rb_strbuf_puts(b, "</g>\n");
     /* zero line: signs matter in every panel */
     if (p->ya.lo < 0 && p->ya.hi > 0)
-        rb_sbuf_printf(b, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" "
+        rb_strbuf_printf(b, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" "
                        "stroke=\"#999999\" stroke-width=\"0.8\"/>\n",
                        p->x0, rb_panel_y(p, 0), p->x0 + p->w, rb_panel_y(p, 0));
-    rb_sbuf_printf(b, "<rect class=\"frame\" x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" "
+    rb_strbuf_printf(b, "<rect class=\"frame\" x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" "
                    "height=\"%.1f\" fill=\"none\" stroke=\"#333333\" "
                    "stroke-width=\"0.8\"/>\n", p->x0, p->y0, p->w, p->h);
     for (i = 0; i < p->ya.n_ticks; i++) {
@@ -124,11 +124,11 @@ void rb_panel_draw(rb_sbuf *b, const rb_panel *p, const char *y_title,
     }
     if (y_title) {
         double cx = p->x0 - 52, cy = p->y0 + p->h / 2;
-        rb_sbuf_printf(b, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"12\" "
+        rb_strbuf_printf(b, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"12\" "
                        "text-anchor=\"middle\" transform=\"rotate(-90 %.1f %.1f)\">",
                        cx, cy, cx, cy);
-        rb_sbuf_escape(b, y_title);
-        rb_sbuf_puts(b, "</text>\n");
+        rb_plot_escape(b, y_title);
+        rb_strbuf_puts(b, "</text>\n");
     }
     if (!x_labels)
         return;
@@ -142,18 +142,18 @@ void rb_panel_draw(rb_sbuf *b, const rb_panel *p, const char *y_title,
                     x_title);
 }
 
-void rb_panel_hline(rb_sbuf *b, const rb_panel *p, double y, const char *colour)
+void rb_panel_hline(rb_strbuf *b, const rb_panel *p, double y, const char *colour)
 {
     double py;
     if (!isfinite(y) || y < p->ya.lo || y > p->ya.hi)
         return;
     py = rb_panel_y(p, y);
-    rb_sbuf_printf(b, "<line class=\"ref\" x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" "
+    rb_strbuf_printf(b, "<line class=\"ref\" x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" "
                    "y2=\"%.1f\" stroke=\"%s\" stroke-width=\"0.8\" "
                    "stroke-dasharray=\"5 3\"/>\n", p->x0, py, p->x0 + p->w, py, colour);
 }
 
-void rb_panel_legend(rb_sbuf *b, const rb_panel *p, const char *const *names,
+void rb_panel_legend(rb_strbuf *b, const rb_panel *p, const char *const *names,
                      const char *const *colours, int n)
 {
     /* right-aligned entries, measured with an average glyph width */
@@ -162,10 +162,10 @@ void rb_panel_legend(rb_sbuf *b, const rb_panel *p, const char *const *names,
     for (i = n - 1; i >= 0; i--) {
         double text_w = 6.0 * (double)strlen(names[i]);
         double x_line = x - text_w - 26;
-        rb_sbuf_printf(b, "<rect x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"14\" "
+        rb_strbuf_printf(b, "<rect x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"14\" "
                        "fill=\"#ffffff\" fill-opacity=\"0.8\"/>\n",
                        x_line - 2, y - 10, text_w + 30);
-        rb_sbuf_printf(b, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" "
+        rb_strbuf_printf(b, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" "
                        "stroke=\"%s\" stroke-width=\"2\"/>\n",
                        x_line, y - 4, x_line + 20, y - 4, colours[i]);
         rb_svg_text(b, x_line + 24, y, 11, "start", NULL, names[i]);
@@ -173,29 +173,29 @@ void rb_panel_legend(rb_sbuf *b, const rb_panel *p, const char *const *names,
     }
 }
 
-void rb_svg_open(rb_sbuf *b, double width, double height)
+void rb_svg_open(rb_strbuf *b, double width, double height)
 {
-    rb_sbuf_printf(b, "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" "
+    rb_strbuf_printf(b, "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" "
                    "width=\"%.0f\" height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\" "
                    "font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\">\n",
                    width, height, width, height);
-    rb_sbuf_printf(b, "<rect x=\"0\" y=\"0\" width=\"%.0f\" height=\"%.0f\" "
+    rb_strbuf_printf(b, "<rect x=\"0\" y=\"0\" width=\"%.0f\" height=\"%.0f\" "
                    "fill=\"#ffffff\"/>\n", width, height);
 }
 
-void rb_svg_close(rb_sbuf *b)
+void rb_svg_close(rb_strbuf *b)
 {
-    rb_sbuf_puts(b, "</svg>\n");
+    rb_strbuf_puts(b, "</svg>\n");
 }
 
-void rb_svg_text(rb_sbuf *b, double x, double y, double size, const char *anchor,
+void rb_svg_text(rb_strbuf *b, double x, double y, double size, const char *anchor,
                  const char *weight, const char *s)
 {
-    rb_sbuf_printf(b, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"%.0f\" "
+    rb_strbuf_printf(b, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"%.0f\" "
                    "text-anchor=\"%s\"", x, y, size, anchor);
     if (weight)
-        rb_sbuf_printf(b, " font-weight=\"%s\"", weight);
-    rb_sbuf_puts(b, ">");
-    rb_sbuf_escape(b, s);
-    rb_sbuf_puts(b, "</text>\n");
+        rb_strbuf_printf(b, " font-weight=\"%s\"", weight);
+    rb_strbuf_puts(b, ">");
+    rb_plot_escape(b, s);
+    rb_strbuf_puts(b, "</text>\n");
 }

@@ -1,76 +1,11 @@
-/* The growing text buffer of the renderers and XML escaping. A failed
- * allocation only sets a flag, so drawing code can append without checking
- * every call; rb_sbuf_finish turns the flag into RB_ERR_NOMEM once. */
-#include <stdarg.h>
+/* XML escaping of the renderers' text, and the hand-over of their buffer
+ * (src/util/strbuf.h): rb_plot_finish turns a failed allocation into
+ * RB_ERR_NOMEM once. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "plot_internal.h"
 #include "rockbolt/textsafe.h"
-
-static int reserve(rb_sbuf *b, size_t more)
-{
-    size_t cap;
-    char *p;
-    if (b->oom)
-        return 0;
-    if (b->n + more + 1 <= b->cap)
-        return 1;
-    cap = b->cap ? b->cap : 4096;
-    while (cap < b->n + more + 1) {
-        if (cap > ((size_t)-1) / 2) {
-            b->oom = 1;
-            return 0;
-        }
-        cap *= 2;
-    }
-    p = realloc(b->p, cap);
-    if (!p) {
-        b->oom = 1;
-        return 0;
-    }
-    b->p = p;
-    b->cap = cap;
-    return 1;
-}
-
-void rb_sbuf_putn(rb_sbuf *b, const char *s, size_t n)
-{
-    if (!reserve(b, n))
-        return;
-    memcpy(b->p + b->n, s, n);
-    b->n += n;
-    b->p[b->n] = '\0';
-}
-
-void rb_sbuf_puts(rb_sbuf *b, const char *s)
-{
-    rb_sbuf_putn(b, s, strlen(s));
-}
-
-void rb_sbuf_printf(rb_sbuf *b, const char *fmt, ...)
-{
-    char small[256];
-    va_list ap;
-    int len;
-    va_start(ap, fmt);
-    len = vsnprintf(small, sizeof small, fmt, ap);
-    va_end(ap);
-    if (len < 0) {
-        b->oom = 1;
-        return;
-    }
-    if ((size_t)len < sizeof small) {
-        rb_sbuf_putn(b, small, (size_t)len);
-        return;
-    }
-    if (!reserve(b, (size_t)len))
-        return;
-    va_start(ap, fmt);
-    vsnprintf(b->p + b->n, (size_t)len + 1, fmt, ap);
-    va_end(ap);
-    b->n += (size_t)len;
-}
 
 /* Length of the valid UTF-8 sequence at s (1 to 4), or 0 if it is not one.
  * Overlong forms, surrogates and code points past U+10FFFF are invalid,
@@ -105,7 +40,7 @@ static size_t utf8_len(const unsigned char *s)
     return n;
 }
 
-void rb_sbuf_escape(rb_sbuf *b, const char *s)
+void rb_plot_escape(rb_strbuf *b, const char *s)
 {
     const unsigned char *p = (const unsigned char *)s;
     if (!s)
@@ -118,16 +53,16 @@ void rb_sbuf_escape(rb_sbuf *b, const char *s)
                && *p != '"' && *p != '\'')
             p++;
         if (p > run)
-            rb_sbuf_putn(b, (const char *)run, (size_t)(p - run));
+            rb_strbuf_putn(b, (const char *)run, (size_t)(p - run));
         if (!*p)
             break;
         switch (*p) {
-        case '&': rb_sbuf_puts(b, "&amp;"); p++; continue;
-        case '<': rb_sbuf_puts(b, "&lt;"); p++; continue;
-        case '>': rb_sbuf_puts(b, "&gt;"); p++; continue;
-        case '"': rb_sbuf_puts(b, "&quot;"); p++; continue;
-        case '\'': rb_sbuf_puts(b, "&#39;"); p++; continue;
-        case '\t': case '\n': rb_sbuf_putn(b, (const char *)p, 1); p++; continue;
+        case '&': rb_strbuf_puts(b, "&amp;"); p++; continue;
+        case '<': rb_strbuf_puts(b, "&lt;"); p++; continue;
+        case '>': rb_strbuf_puts(b, "&gt;"); p++; continue;
+        case '"': rb_strbuf_puts(b, "&quot;"); p++; continue;
+        case '\'': rb_strbuf_puts(b, "&#39;"); p++; continue;
+        case '\t': case '\n': rb_strbuf_putn(b, (const char *)p, 1); p++; continue;
         default: break;
         }
         if (*p < 0x20 || *p == 0x7f) {
@@ -135,25 +70,25 @@ void rb_sbuf_escape(rb_sbuf *b, const char *s)
              * escaping of user text shows it (\x1b) */
             char one[2] = {(char)*p, '\0'}, rep[8];
             rb_text_escape_to(rep, sizeof rep, one);
-            rb_sbuf_puts(b, rep);
+            rb_strbuf_puts(b, rep);
             p++;
             continue;
         }
         k = utf8_len(p);
         if (k) {
-            rb_sbuf_putn(b, (const char *)p, k);
+            rb_strbuf_putn(b, (const char *)p, k);
             p += k;
         } else {
-            rb_sbuf_puts(b, "\xEF\xBF\xBD");
+            rb_strbuf_puts(b, "\xEF\xBF\xBD");
             p++;
         }
     }
 }
 
-rb_status rb_sbuf_finish(rb_sbuf *b, char **out, rb_diag *diag)
+rb_status rb_plot_finish(rb_strbuf *b, char **out, rb_diag *diag)
 {
     if (b->oom || !b->p) {
-        rb_sbuf_free(b);
+        rb_strbuf_free(b);
         *out = NULL;
         if (diag)
             snprintf(diag->msg, sizeof diag->msg, "out of memory while drawing");
@@ -163,12 +98,4 @@ rb_status rb_sbuf_finish(rb_sbuf *b, char **out, rb_diag *diag)
     b->p = NULL;
     b->n = b->cap = 0;
     return RB_OK;
-}
-
-void rb_sbuf_free(rb_sbuf *b)
-{
-    free(b->p);
-    b->p = NULL;
-    b->n = b->cap = 0;
-    b->oom = 0;
 }

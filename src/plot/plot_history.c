@@ -154,7 +154,7 @@ static void layout_panel(rb_panel *p, int k, double top, const panel_spec *ps,
 
 /* The stage of each pixel column: the highest stage any sample interval
  * touching the column is in, so that a short yielding spell still shows. */
-static void draw_stages(rb_sbuf *b, const rb_panel *top, double bottom,
+static void draw_stages(rb_strbuf *b, const rb_panel *top, double bottom,
                         const rb_history *h)
 {
     int col[MAX_COLS];
@@ -181,28 +181,28 @@ static void draw_stages(rb_sbuf *b, const rb_panel *top, double bottom,
             if (st > col[c])
                 col[c] = st;
     }
-    rb_sbuf_puts(b, "<g class=\"stages\" stroke=\"none\">\n");
+    rb_strbuf_puts(b, "<g class=\"stages\" stroke=\"none\">\n");
     for (start = 0; start < n_cols; start = c) {
         for (c = start; c < n_cols && col[c] == col[start]; c++)
             ;
         if (col[start] < 1)
             continue;
-        rb_sbuf_printf(b, "<rect class=\"stage s%d\" x=\"%.1f\" y=\"%.1f\" "
+        rb_strbuf_printf(b, "<rect class=\"stage s%d\" x=\"%.1f\" y=\"%.1f\" "
                        "width=\"%.1f\" height=\"%.1f\" fill=\"%s\"/>\n", col[start],
                        top->x0 + top->w * (double)start / (double)n_cols, top->y0,
                        top->w * (double)(c - start) / (double)n_cols,
                        bottom - top->y0, stage_fill[col[start]]);
     }
-    rb_sbuf_puts(b, "</g>\n");
+    rb_strbuf_puts(b, "</g>\n");
 }
 
-static void draw_stage_legend(rb_sbuf *b, double y)
+static void draw_stage_legend(rb_strbuf *b, double y)
 {
     double x = LEFT;
     int s;
     rb_svg_text(b, LEFT - 8, y + 10, 11, "end", NULL, "stage:");
     for (s = 1; s <= 5; s++) {
-        rb_sbuf_printf(b, "<rect class=\"stage-key s%d\" x=\"%.1f\" y=\"%.1f\" "
+        rb_strbuf_printf(b, "<rect class=\"stage-key s%d\" x=\"%.1f\" y=\"%.1f\" "
                        "width=\"16\" height=\"12\" fill=\"%s\" stroke=\"#999999\" "
                        "stroke-width=\"0.6\"/>\n", s, x, y, stage_fill[s]);
         rb_svg_text(b, x + 21, y + 10, 11, "start", NULL, stage_name[s]);
@@ -284,14 +284,14 @@ static int place_markers(marker *m, int n, const rb_panel *p)
 
 /* Lines first, then the labels with a white halo, so that a line never
  * runs through the label of an earlier event. */
-static void draw_markers(rb_sbuf *b, const marker *m, int n, const rb_panel *top,
+static void draw_markers(rb_strbuf *b, const marker *m, int n, const rb_panel *top,
                          double bottom)
 {
     int i;
     for (i = 0; i < n; i++) {
         if (m[i].t < top->xa.lo || m[i].t > top->xa.hi)
             continue;
-        rb_sbuf_printf(b, "<line class=\"marker %s\" x1=\"%.1f\" y1=\"%.1f\" "
+        rb_strbuf_printf(b, "<line class=\"marker %s\" x1=\"%.1f\" y1=\"%.1f\" "
                        "x2=\"%.1f\" y2=\"%.1f\" stroke=\"%s\" stroke-width=\"1.2\" "
                        "stroke-dasharray=\"6 3\"/>\n", m[i].kind, m[i].x,
                        top->y0 - 14 - MARK_ROW * m[i].row, m[i].x, bottom, m[i].colour);
@@ -301,34 +301,34 @@ static void draw_markers(rb_sbuf *b, const marker *m, int n, const rb_panel *top
         if (m[i].t < top->xa.lo || m[i].t > top->xa.hi)
             continue;
         snprintf(lab, sizeof lab, "%s %.3f s", m[i].label, m[i].t);
-        rb_sbuf_printf(b, "<text class=\"marker-label\" x=\"%.1f\" y=\"%.1f\" "
+        rb_strbuf_printf(b, "<text class=\"marker-label\" x=\"%.1f\" y=\"%.1f\" "
                        "font-size=\"11\" text-anchor=\"%s\" fill=\"%s\" "
                        "stroke=\"#ffffff\" stroke-width=\"3\" paint-order=\"stroke\">",
                        m[i].right ? m[i].x + 3 : m[i].x - 3,
                        top->y0 - 5 - MARK_ROW * m[i].row, m[i].right ? "start" : "end",
                        m[i].colour);
-        rb_sbuf_escape(b, lab);
-        rb_sbuf_puts(b, "</text>\n");
+        rb_plot_escape(b, lab);
+        rb_strbuf_puts(b, "</text>\n");
     }
 }
 
-static void draw_titles(rb_sbuf *b, const rb_report *rep, const rb_report_motion *rm)
+static void draw_titles(rb_strbuf *b, const rb_report *rep, const rb_report_motion *rm)
 {
     const rb_result *res = rm->result;
     const char *case_name = rep->kase && rep->kase->name ? rep->kase->name : "case";
     const char *motion_name = rm->motion && rm->motion->name ? rm->motion->name : "motion";
     char line[512];
-    rb_sbuf_printf(b, "<text x=\"%.1f\" y=\"24\" font-size=\"16\" font-weight=\"bold\">",
+    rb_strbuf_printf(b, "<text x=\"%.1f\" y=\"24\" font-size=\"16\" font-weight=\"bold\">",
                    LEFT);
-    rb_sbuf_escape(b, case_name);
-    rb_sbuf_puts(b, " \xe2\x80\x94 ");
-    rb_sbuf_escape(b, motion_name);
-    rb_sbuf_puts(b, "</text>\n");
+    rb_plot_escape(b, case_name);
+    rb_strbuf_puts(b, " \xe2\x80\x94 ");
+    rb_plot_escape(b, motion_name);
+    rb_strbuf_puts(b, "</text>\n");
     char head[RB_HEADLINE_MAX];
     rb_report_headline(rm->verdict.pass, rm->verdict.warnings, head, sizeof head);
-    rb_sbuf_printf(b, "<text x=\"%.1f\" y=\"44\" font-size=\"12\">%s: ", LEFT, head);
-    rb_sbuf_escape(b, rm->verdict.reason);
-    rb_sbuf_puts(b, "</text>\n");
+    rb_strbuf_printf(b, "<text x=\"%.1f\" y=\"44\" font-size=\"12\">%s: ", LEFT, head);
+    rb_plot_escape(b, rm->verdict.reason);
+    rb_strbuf_puts(b, "</text>\n");
     if (res->a_star_mps2 > 0 && rep->derived.g > 0 && isfinite(res->a_star_mps2)
         && isfinite(res->peak_floor_mps2)) {
         double l = rep->kase ? rep->kase->model.lever_arm_m : 0;
@@ -371,7 +371,7 @@ rb_status rb_plot_history_svg(const rb_report *rep, size_t motion_index,
     panel_spec ps[N_PANELS];
     rb_panel p[N_PANELS];
     marker marks[MAX_MARKERS];
-    rb_sbuf b = {0};
+    rb_strbuf b = {0};
     double bottom, height, top;
     int k, i, n_marks, rows;
     rb_status st = check_motion(rep, motion_index, diag);
@@ -412,5 +412,5 @@ rb_status rb_plot_history_svg(const rb_report *rep, size_t motion_index,
     draw_markers(&b, marks, n_marks, &p[0], bottom);
     draw_stage_legend(&b, bottom + 50);
     rb_svg_close(&b);
-    return rb_sbuf_finish(&b, out, diag);
+    return rb_plot_finish(&b, out, diag);
 }

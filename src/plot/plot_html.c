@@ -34,7 +34,7 @@ rb_status rb_plot_html_page(const char *title, const char *text_report,
                             const char *const *svgs, size_t n_svgs,
                             char **out, rb_diag *diag)
 {
-    rb_sbuf b = {0};
+    rb_strbuf b = {0};
     size_t i;
     *out = NULL;
     for (i = 0; i < n_svgs; i++) {
@@ -47,26 +47,26 @@ rb_status rb_plot_html_page(const char *title, const char *text_report,
     }
     if (!title)
         title = "rockbolt";
-    rb_sbuf_puts(&b, "<!DOCTYPE html>\n<html xmlns=\"http://www.w3.org/1999/xhtml\" "
+    rb_strbuf_puts(&b, "<!DOCTYPE html>\n<html xmlns=\"http://www.w3.org/1999/xhtml\" "
                  "lang=\"en\">\n<head>\n<meta charset=\"utf-8\"/>\n<title>");
-    rb_sbuf_escape(&b, title);
-    rb_sbuf_puts(&b, "</title>\n<style>\n");
-    rb_sbuf_puts(&b, style);
-    rb_sbuf_puts(&b, "</style>\n</head>\n<body>\n<h1>");
-    rb_sbuf_escape(&b, title);
-    rb_sbuf_puts(&b, "</h1>\n");
+    rb_plot_escape(&b, title);
+    rb_strbuf_puts(&b, "</title>\n<style>\n");
+    rb_strbuf_puts(&b, style);
+    rb_strbuf_puts(&b, "</style>\n</head>\n<body>\n<h1>");
+    rb_plot_escape(&b, title);
+    rb_strbuf_puts(&b, "</h1>\n");
     if (text_report) {
-        rb_sbuf_puts(&b, "<pre class=\"report\">");
-        rb_sbuf_escape(&b, text_report);
-        rb_sbuf_puts(&b, "</pre>\n");
+        rb_strbuf_puts(&b, "<pre class=\"report\">");
+        rb_plot_escape(&b, text_report);
+        rb_strbuf_puts(&b, "</pre>\n");
     }
     for (i = 0; i < n_svgs; i++) {
-        rb_sbuf_printf(&b, "<figure class=\"figure\" data-figure=\"%zu\">\n", i + 1);
-        rb_sbuf_puts(&b, svg_start(svgs[i]));
-        rb_sbuf_puts(&b, "</figure>\n");
+        rb_strbuf_printf(&b, "<figure class=\"figure\" data-figure=\"%zu\">\n", i + 1);
+        rb_strbuf_puts(&b, svg_start(svgs[i]));
+        rb_strbuf_puts(&b, "</figure>\n");
     }
-    rb_sbuf_puts(&b, "</body>\n</html>\n");
-    return rb_sbuf_finish(&b, out, diag);
+    rb_strbuf_puts(&b, "</body>\n</html>\n");
+    return rb_plot_finish(&b, out, diag);
 }
 
 rb_status rb_plot_report_html(const rb_report *rep, const char *text_report,

@@ -10,27 +10,16 @@
 
 /* ---- Text buffer ---------------------------------------------------------- */
 
-typedef struct {
-    char *p;       /* owned; NUL-terminated while !oom */
-    size_t n, cap;
-    int oom;       /* an append failed: the text is incomplete */
-} rb_sbuf;
+#include "util/strbuf.h"
 
-void rb_sbuf_puts(rb_sbuf *b, const char *s);
-void rb_sbuf_putn(rb_sbuf *b, const char *s, size_t n);
-#if defined(__GNUC__)
-__attribute__((format(printf, 2, 3)))
-#endif
-void rb_sbuf_printf(rb_sbuf *b, const char *fmt, ...);
 /* Append s with & < > " ' escaped, control characters other than tab and
  * newline dropped and invalid UTF-8 replaced by U+FFFD, so that the result
  * is always well-formed XML text or attribute content. NULL appends
  * nothing. */
-void rb_sbuf_escape(rb_sbuf *b, const char *s);
+void rb_plot_escape(rb_strbuf *b, const char *s);
 /* Hand the text over: *out gets it (RB_OK) or NULL (RB_ERR_NOMEM, with
  * diag->msg set). The buffer is empty afterwards either way. */
-rb_status rb_sbuf_finish(rb_sbuf *b, char **out, rb_diag *diag);
-void rb_sbuf_free(rb_sbuf *b);
+rb_status rb_plot_finish(rb_strbuf *b, char **out, rb_diag *diag);
 
 /* ---- Axes ------------------------------------------------------------------ */
 
@@ -66,15 +55,15 @@ double rb_panel_y(const rb_panel *p, double y);
 /* Frame, grid lines and y tick labels of p, and the y axis title (rotated,
  * left of the labels). With x_labels the x tick labels and x_title go
  * below the panel. */
-void rb_panel_draw(rb_sbuf *b, const rb_panel *p, const char *y_title,
+void rb_panel_draw(rb_strbuf *b, const rb_panel *p, const char *y_title,
                    int x_labels, const char *x_title);
 
 /* A dashed horizontal reference line at y, if y is inside the panel. */
-void rb_panel_hline(rb_sbuf *b, const rb_panel *p, double y, const char *colour);
+void rb_panel_hline(rb_strbuf *b, const rb_panel *p, double y, const char *colour);
 
 /* Legend entries in the panel's top right corner: a short line of each
  * colour and its name. Drawn with <line> and <text>, never <path>. */
-void rb_panel_legend(rb_sbuf *b, const rb_panel *p, const char *const *names,
+void rb_panel_legend(rb_strbuf *b, const rb_panel *p, const char *const *names,
                      const char *const *colours, int n);
 
 /* ---- Series ---------------------------------------------------------------- */
@@ -85,7 +74,7 @@ void rb_panel_legend(rb_sbuf *b, const rb_panel *p, const char *const *names,
  * the current subpath. Always exactly one <path> element, even when no
  * point is finite (its d is then empty). dash may be NULL; name goes
  * into the path's data-series attribute. */
-void rb_series_path(rb_sbuf *b, const rb_panel *p, const double *x,
+void rb_series_path(rb_strbuf *b, const rb_panel *p, const double *x,
                     const double *y, size_t n, double scale,
                     const char *colour, const char *dash, const char *name);
 
@@ -96,10 +85,10 @@ int rb_series_range(const double *y, size_t n, double scale, double *lo,
 /* ---- Common SVG pieces ---------------------------------------------------- */
 
 /* <svg ...> with its size and the shared font, and a white background. */
-void rb_svg_open(rb_sbuf *b, double width, double height);
-void rb_svg_close(rb_sbuf *b);
+void rb_svg_open(rb_strbuf *b, double width, double height);
+void rb_svg_close(rb_strbuf *b);
 /* A text element; s is escaped. anchor is "start", "middle" or "end". */
-void rb_svg_text(rb_sbuf *b, double x, double y, double size, const char *anchor,
+void rb_svg_text(rb_strbuf *b, double x, double y, double size, const char *anchor,
                  const char *weight, const char *s);
 
 #endif

@@ -7,7 +7,7 @@
 #include "plot_internal.h"
 
 typedef struct {
-    rb_sbuf *b;
+    rb_strbuf *b;
     const rb_panel *p;
     int pen_down;        /* 0: the next point starts a subpath */
     size_t count;        /* points written */
@@ -19,7 +19,7 @@ static void emit(path_state *s, double x, double y)
 {
     double px = rb_panel_x(s->p, x), py = rb_panel_y(s->p, y);
     const char *sep = s->count == 0 ? "" : s->count % 12 == 0 ? "\n" : " ";
-    rb_sbuf_printf(s->b, "%s%s%.1f,%.1f", sep, s->pen_down ? "" : "M", px, py);
+    rb_strbuf_printf(s->b, "%s%s%.1f,%.1f", sep, s->pen_down ? "" : "M", px, py);
     s->pen_down = 1;
     s->count++;
 }
@@ -53,20 +53,20 @@ static size_t column_of(const rb_panel *p, double x, size_t n_cols)
     return (size_t)c;
 }
 
-void rb_series_path(rb_sbuf *b, const rb_panel *p, const double *x,
+void rb_series_path(rb_strbuf *b, const rb_panel *p, const double *x,
                     const double *y, size_t n, double scale,
                     const char *colour, const char *dash, const char *name)
 {
     path_state s = { b, p, 0, 0 };
     size_t n_cols = (size_t)(p->w > 1 ? p->w : 1);
     size_t i = 0;
-    rb_sbuf_puts(b, "<path class=\"series\" data-series=\"");
-    rb_sbuf_escape(b, name);
-    rb_sbuf_printf(b, "\" fill=\"none\" stroke=\"%s\" stroke-width=\"1.1\" "
+    rb_strbuf_puts(b, "<path class=\"series\" data-series=\"");
+    rb_plot_escape(b, name);
+    rb_strbuf_printf(b, "\" fill=\"none\" stroke=\"%s\" stroke-width=\"1.1\" "
                    "stroke-linejoin=\"round\"", colour);
     if (dash)
-        rb_sbuf_printf(b, " stroke-dasharray=\"%s\"", dash);
-    rb_sbuf_puts(b, " d=\"");
+        rb_strbuf_printf(b, " stroke-dasharray=\"%s\"", dash);
+    rb_strbuf_puts(b, " d=\"");
     if (n <= 2 * n_cols) {
         for (i = 0; i < n; i++) {
             double v = scale * y[i];
@@ -103,5 +103,5 @@ void rb_series_path(rb_sbuf *b, const rb_panel *p, const double *x,
         }
         i = j;
     }
-    rb_sbuf_puts(b, "\"/>\n");
+    rb_strbuf_puts(b, "\"/>\n");
 }

@@ -44,7 +44,7 @@ static int failed(const rb_sweep_point *p, int row)
 
 /* A mark at every point with a result: x where it failed (it also yielded,
  * and the x says more), o where it yielded, a dot otherwise. */
-static void draw_marks(rb_sbuf *b, const rb_panel *p, const rb_sweep *s,
+static void draw_marks(rb_strbuf *b, const rb_panel *p, const rb_sweep *s,
                        const double *x, const double *y, int row)
 {
     size_t i;
@@ -56,17 +56,17 @@ static void draw_marks(rb_sbuf *b, const rb_panel *p, const rb_sweep *s,
         px = rb_panel_x(p, x[i]);
         py = rb_panel_y(p, y[i]);
         if (failed(pt, row))
-            rb_sbuf_printf(b, "<g class=\"mark-fail\" stroke=\"#b00000\" "
+            rb_strbuf_printf(b, "<g class=\"mark-fail\" stroke=\"#b00000\" "
                            "stroke-width=\"1.6\"><line x1=\"%.1f\" y1=\"%.1f\" "
                            "x2=\"%.1f\" y2=\"%.1f\"/><line x1=\"%.1f\" y1=\"%.1f\" "
                            "x2=\"%.1f\" y2=\"%.1f\"/></g>\n", px - 4, py - 4, px + 4,
                            py + 4, px - 4, py + 4, px + 4, py - 4);
         else if (yielded(pt, row))
-            rb_sbuf_printf(b, "<circle class=\"mark-yield\" cx=\"%.1f\" cy=\"%.1f\" "
+            rb_strbuf_printf(b, "<circle class=\"mark-yield\" cx=\"%.1f\" cy=\"%.1f\" "
                            "r=\"4\" fill=\"none\" stroke=\"#c98a00\" "
                            "stroke-width=\"1.6\"/>\n", px, py);
         else
-            rb_sbuf_printf(b, "<circle class=\"mark-point\" cx=\"%.1f\" cy=\"%.1f\" "
+            rb_strbuf_printf(b, "<circle class=\"mark-point\" cx=\"%.1f\" cy=\"%.1f\" "
                            "r=\"1.8\" fill=\"#333333\"/>\n", px, py);
     }
 }
@@ -89,12 +89,12 @@ static void layout(rb_panel *p, int k, const rb_axis *xa, const double *const *y
     rb_axis_nice(&p->ya, lo, hi + 0.01 * (hi - lo), 5, 1);
 }
 
-static void draw_key(rb_sbuf *b, double y)
+static void draw_key(rb_strbuf *b, double y)
 {
-    rb_sbuf_printf(b, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"4\" fill=\"none\" "
+    rb_strbuf_printf(b, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"4\" fill=\"none\" "
                    "stroke=\"#c98a00\" stroke-width=\"1.6\"/>\n", LEFT + 4, y - 4);
     rb_svg_text(b, LEFT + 14, y, 11, "start", NULL, "a bolt row yielded");
-    rb_sbuf_printf(b, "<g stroke=\"#b00000\" stroke-width=\"1.6\"><line x1=\"%.1f\" "
+    rb_strbuf_printf(b, "<g stroke=\"#b00000\" stroke-width=\"1.6\"><line x1=\"%.1f\" "
                    "y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\"/><line x1=\"%.1f\" y1=\"%.1f\" "
                    "x2=\"%.1f\" y2=\"%.1f\"/></g>\n", LEFT + 140, y - 8, LEFT + 148,
                    y, LEFT + 140, y, LEFT + 148, y - 8);
@@ -105,7 +105,7 @@ static void draw_key(rb_sbuf *b, double y)
 rb_status rb_plot_sweep_svg(const rb_sweep *s, const char *title, char **out,
                             rb_diag *diag)
 {
-    rb_sbuf b = {0};
+    rb_strbuf b = {0};
     double *x = NULL, *u = NULL, *fl = NULL, *fr = NULL, bottom;
     rb_axis xa;
     rb_panel p[2];
@@ -144,11 +144,11 @@ rb_status rb_plot_sweep_svg(const rb_sweep *s, const char *title, char **out,
     bottom = p[1].y0 + PANEL_H;
 
     rb_svg_open(&b, FIG_W, bottom + 90);
-    rb_sbuf_printf(&b, "<text x=\"%.1f\" y=\"24\" font-size=\"16\" "
+    rb_strbuf_printf(&b, "<text x=\"%.1f\" y=\"24\" font-size=\"16\" "
                    "font-weight=\"bold\">", LEFT);
-    rb_sbuf_escape(&b, title ? title : s->kind == RB_SWEEP_FREQUENCY
+    rb_plot_escape(&b, title ? title : s->kind == RB_SWEEP_FREQUENCY
                    ? "Frequency response" : "Amplitude response");
-    rb_sbuf_puts(&b, "</text>\n");
+    rb_strbuf_puts(&b, "</text>\n");
     /* an upstream NaN must not reach the text as "nan" */
     if (!isfinite(s->amplitude_astar) || !isfinite(s->fixed_base_hz)
         || !isfinite(s->a_star_mps2))
@@ -193,6 +193,6 @@ done:
     free(u);
     free(fl);
     free(fr);
-    st = rb_sbuf_finish(&b, out, diag);
+    st = rb_plot_finish(&b, out, diag);
     return st;
 }
