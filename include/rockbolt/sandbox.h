@@ -2,8 +2,9 @@
  * records, equipment lists and the bases their rows name) must lie inside
  * DIR once every symbolic link and '..' is resolved (realpath), or the run
  * refuses it with an error that names the key and the file (exit code 2).
- * The records shipped with rockbolt (cases/records of the source tree,
- * which lists name as `elcentro`, `taft`) are always allowed.
+ * The records shipped with rockbolt (the data directory's records, which
+ * lists name as `elcentro`, `taft` and cases as `shipped:elcentro`:
+ * rockbolt/datadir.h) are always allowed.
  *
  * The sandbox is process-wide: set it once, before loading anything (and
  * before any thread starts); the loaders then check every file they open.

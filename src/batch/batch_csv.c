@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "batch_internal.h"
+#include "rockbolt/datadir.h"
 #include "rockbolt/sandbox.h"
 
 #define RB_CSV_MAX_BYTES (64u * 1024u * 1024u)
@@ -55,16 +56,6 @@ static const col_def rb_csv_cols[] = {
     {"usage_limit", COL_KEY, "criteria.usage_limit"},
 };
 #define RB_CSV_NCOLS (sizeof rb_csv_cols / sizeof rb_csv_cols[0])
-
-/* Records shipped in cases/records, by the name a list may use. */
-typedef struct {
-    const char *name, *file, *format, *dt, *units;
-} shipped_motion;
-
-static const shipped_motion rb_shipped[] = {
-    {"elcentro", "elcentro_1940_ns.at2", "at2", NULL, NULL},
-    {"taft", "taft_1952_s69e.txt", "one-column", "0.01 s", "g"},
-};
 
 typedef struct {
     char *text;    /* owned */
@@ -190,28 +181,24 @@ static rb_status add_motion(rb_batch_item *it, const char *v, int line, int col)
         if (st == RB_OK)
             st = add_ov(it, "motion.file", v, line, col);
     } else {
-        size_t n = sizeof rb_shipped / sizeof rb_shipped[0], k;
-        for (k = 0; k < n && strcmp(rb_shipped[k].name, v) != 0; k++)
-            ;
-        if (k == n) {
+        const rb_shipped_record *sr = rb_shipped_find(v);
+        char file[4096];
+        if (!sr || !rb_shipped_path(v, file, sizeof file)) {
             char msg[300];
             snprintf(msg, sizeof msg, "unknown motion '%.100s' (give a record "
-                     "file, or one of: elcentro, taft)", v);
+                     "file, or one of: %s)", v, rb_shipped_names());
             rb_batch_item_bad(it, line, col, "motion", msg);
             return RB_ERR_INVALID;
         }
-        char file[4096];
-        snprintf(file, sizeof file, "%s/cases/records/%s", RB_SOURCE_DIR,
-                 rb_shipped[k].file);
         st = add_ov(it, "motion.type", "record", line, col);
         if (st == RB_OK)
             st = add_ov(it, "motion.file", file, line, col);
         if (st == RB_OK)
-            st = add_ov(it, "motion.format", rb_shipped[k].format, line, col);
-        if (st == RB_OK && rb_shipped[k].dt)
-            st = add_ov(it, "motion.dt", rb_shipped[k].dt, line, col);
-        if (st == RB_OK && rb_shipped[k].units)
-            st = add_ov(it, "motion.units", rb_shipped[k].units, line, col);
+            st = add_ov(it, "motion.format", sr->format, line, col);
+        if (st == RB_OK && sr->dt)
+            st = add_ov(it, "motion.dt", sr->dt, line, col);
+        if (st == RB_OK && sr->units)
+            st = add_ov(it, "motion.units", sr->units, line, col);
     }
     if (st == RB_OK)
         st = add_ov(it, "motion.name", v, line, col);

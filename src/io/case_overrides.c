@@ -16,6 +16,7 @@
 #include <string.h>
 #include <unistd.h>
 #include "rockbolt/case_overrides.h"
+#include "rockbolt/datadir.h"
 
 #define RB_OV_MAX_DEPTH 4
 #define RB_OV_COMP_MAX 64
@@ -172,7 +173,8 @@ static void gen_map(rb_ovgen *g, size_t first, int d, char *done)
         if (key_depth(key) == d + 1) {
             const char *v = g->ov[i].value;
             sb_str(&g->sb, " ");
-            if (is_path_key(key) && v[0] && v[0] != '/') {
+            if (is_path_key(key) && v[0] && v[0] != '/'
+                && strncmp(v, RB_SHIPPED_PREFIX, strlen(RB_SHIPPED_PREFIX)) != 0) {
                 char *abs = malloc(strlen(g->origin_dir) + strlen(v) + 1);
                 if (!abs) {
                     g->sb.nomem = 1;

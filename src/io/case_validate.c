@@ -14,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "case_internal.h"
+#include "rockbolt/datadir.h"
 
 #define RB_DEG (180.0 / 3.14159265358979323846)
 
@@ -99,9 +100,19 @@ static int rb_resolve_accel(rb_cctx *c, const rb_cmotion *cm, const rb_ynode *v,
     return rb_check_accel(c, cm, v, key, *out);
 }
 
-/* The record's path: relative to the directory of the file that named it. */
+/* The record's path: relative to the directory of the file that named it,
+ * or "shipped:NAME" in the data directory (rockbolt/datadir.h). */
 static char *rb_record_path(const rb_ynode *v)
 {
+    size_t sl = strlen(RB_SHIPPED_PREFIX);
+    if (strncmp(v->text, RB_SHIPPED_PREFIX, sl) == 0) {
+        char buf[4096];
+        const char *sp = rb_shipped_path(v->text + sl, buf, sizeof buf);
+        char *copy = sp ? malloc(strlen(sp) + 1) : NULL;
+        if (copy)
+            memcpy(copy, sp, strlen(sp) + 1);
+        return copy;
+    }
     const char *slash = strrchr(v->file, '/');
     size_t dlen = (v->text[0] == '/' || !slash) ? 0 : (size_t)(slash - v->file + 1);
     size_t rlen = strlen(v->text);

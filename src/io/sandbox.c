@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include "rockbolt/datadir.h"
 #include "rockbolt/sandbox.h"
 
 #ifndef PATH_MAX
@@ -33,10 +34,8 @@ rb_status rb_sandbox_set(const char *dir, rb_diag *diag)
         }
         return RB_ERR_IO;
     }
-#ifdef RB_SOURCE_DIR
-    if (!realpath(RB_SOURCE_DIR "/cases/records", rb_sandbox_shipped))
+    if (!realpath(rb_data_records_dir(), rb_sandbox_shipped))
         rb_sandbox_shipped[0] = '\0';
-#endif
     rb_sandbox_on = 1;
     return RB_OK;
 }

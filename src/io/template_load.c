@@ -2,13 +2,14 @@
  *
  * A developer edits templates/ and wants the change seen without a
  * rebuild; a user runs an installed binary with no source tree. So the
- * search is: $RB_TEMPLATE_DIR, then the source tree the binary was built
- * from (RB_SOURCE_DIR, set by the build), then the compiled-in copy, which
- * a unit test keeps identical to the file. */
+ * search is: $RB_TEMPLATE_DIR, then the data directory's templates (the
+ * installed share/rockbolt/templates, $RB_DATA_DIR, or the source tree the
+ * binary was built from: rockbolt/datadir.h), then the compiled-in copy. */
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "rockbolt/datadir.h"
 #include "rockbolt/report.h"
 
 #define TMPL_MAX_BYTES (1024L * 1024L) /* a template is a few kilobytes */
@@ -97,13 +98,11 @@ rb_status rb_template_load(const char *name, char **text, const char **origin,
         if (st == RB_OK || !missing)
             return st;
     }
-#ifdef RB_SOURCE_DIR
-    st = try_dir(RB_SOURCE_DIR "/templates", name, text, &missing, diag);
+    st = try_dir(rb_data_templates_dir(), name, text, &missing, diag);
     if (st == RB_OK && origin)
-        *origin = "source tree";
+        *origin = rb_data_origin();
     if (st == RB_OK || !missing)
         return st;
-#endif
     rb_diag_clear(diag);
     if (!(*text = malloc(strlen(builtin) + 1)))
         return RB_ERR_NOMEM;

@@ -1,0 +1,151 @@
+/* The data directory (include/rockbolt/datadir.h): records and templates
+ * found relative to the installed binary, with RB_DATA_DIR to override and
+ * the source tree for a build that is not installed. */
+#include <limits.h>
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include "rockbolt/datadir.h"
+
+#ifndef PATH_MAX
+#define PATH_MAX 4096
+#endif
+
+static const rb_shipped_record rb_shipped[] = {
+    {"elcentro", "elcentro_1940_ns.at2", "at2", NULL, NULL},
+    {"taft", "taft_1952_s69e.txt", "one-column", "0.01 s", "g"},
+};
+
+static char rb_records[PATH_MAX];
+static char rb_templates[PATH_MAX];
+static const char *rb_origin;
+static pthread_mutex_t rb_data_lock = PTHREAD_MUTEX_INITIALIZER;
+
+static int is_dir(const char *p)
+{
+    struct stat sb;
+    return stat(p, &sb) == 0 && S_ISDIR(sb.st_mode);
+}
+
+static int set_pair(const char *rec, const char *tmpl, const char *origin)
+{
+    int a = snprintf(rb_records, sizeof rb_records, "%s", rec);
+    int b = snprintf(rb_templates, sizeof rb_templates, "%s", tmpl);
+    if (a < 0 || (size_t)a >= sizeof rb_records || b < 0
+        || (size_t)b >= sizeof rb_templates)
+        return 0;
+    rb_origin = origin;
+    return 1;
+}
+
+/* DIR/records and DIR/templates. */
+static int set_share(const char *dir, const char *origin)
+{
+    char rec[PATH_MAX], tmpl[PATH_MAX];
+    int a = snprintf(rec, sizeof rec, "%s/records", dir);
+    int b = snprintf(tmpl, sizeof tmpl, "%s/templates", dir);
+    if (a < 0 || (size_t)a >= sizeof rec || b < 0 || (size_t)b >= sizeof tmpl)
+        return 0;
+    return set_pair(rec, tmpl, origin);
+}
+
+/* ../share/rockbolt from the directory of the running executable. */
+static int from_exe(void)
+{
+    char exe[PATH_MAX], share[PATH_MAX], rec[PATH_MAX];
+    ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
+    if (n <= 0)
+        return 0;
+    exe[n] = '\0';
+    char *slash = strrchr(exe, '/');
+    if (!slash)
+        return 0;
+    *slash = '\0';
+    int a = snprintf(share, sizeof share, "%s/../share/rockbolt", exe);
+    if (a < 0 || (size_t)a >= sizeof share)
+        return 0;
+    int b = snprintf(rec, sizeof rec, "%s/records", share);
+    if (b < 0 || (size_t)b >= sizeof rec || !is_dir(rec))
+        return 0;
+    /* a clean path in messages and reports */
+    char real[PATH_MAX];
+    return set_share(realpath(share, real) ? real : share, "installed");
+}
+
+static void find(void)
+{
+    const char *env = getenv("RB_DATA_DIR");
+    if (env && env[0] && set_share(env, "RB_DATA_DIR"))
+        return;
+    if (from_exe())
+        return;
+#ifdef RB_SOURCE_DIR
+    if (is_dir(RB_SOURCE_DIR "/cases/records")
+        && set_pair(RB_SOURCE_DIR "/cases/records", RB_SOURCE_DIR "/templates",
+                    "source tree"))
+        return;
+#endif
+#ifdef RB_INSTALL_DATADIR
+    if (set_share(RB_INSTALL_DATADIR, "install prefix"))
+        return;
+#endif
+    set_share("/usr/share/rockbolt", "install prefix");
+}
+
+static void ensure(void)
+{
+    pthread_mutex_lock(&rb_data_lock);
+    if (!rb_origin)
+        find();
+    pthread_mutex_unlock(&rb_data_lock);
+}
+
+const char *rb_data_records_dir(void)
+{
+    ensure();
+    return rb_records;
+}
+
+const char *rb_data_templates_dir(void)
+{
+    ensure();
+    return rb_templates;
+}
+
+const char *rb_data_origin(void)
+{
+    ensure();
+    return rb_origin;
+}
+
+void rb_data_reset(void)
+{
+    pthread_mutex_lock(&rb_data_lock);
+    rb_origin = NULL;
+    pthread_mutex_unlock(&rb_data_lock);
+}
+
+const rb_shipped_record *rb_shipped_find(const char *name)
+{
+    for (size_t k = 0; k < sizeof rb_shipped / sizeof rb_shipped[0]; k++)
+        if (strcmp(rb_shipped[k].name, name) == 0)
+            return &rb_shipped[k];
+    return NULL;
+}
+
+const char *rb_shipped_names(void)
+{
+    return "elcentro, taft";
+}
+
+const char *rb_shipped_path(const char *name, char *buf, size_t size)
+{
+    const rb_shipped_record *r = rb_shipped_find(name);
+    if (!r)
+        return NULL;
+    int n = snprintf(buf, size, "%s/%s", rb_data_records_dir(), r->file);
+    return n > 0 && (size_t)n < size ? buf : NULL;
+}
