@@ -6,6 +6,7 @@
 #ifndef RB_CLI_H
 #define RB_CLI_H
 
+#include <getopt.h>
 #include "rockbolt/rockbolt.h"
 
 /* Exit codes, as documented in --help and README.md. */
@@ -38,6 +39,7 @@ typedef struct {
     const char *svg_path;     /* --svg FILE: the figures, or NULL */
     const char *html_path;    /* --html FILE: report and figures, or NULL */
     const char *sandbox_dir;  /* --sandbox DIR: inputs must lie inside, or NULL */
+    const char *help_command; /* help: the command asked about, or NULL */
 } rb_cli_opts;
 
 /* Parse argv into o. Returns RB_EXIT_PASS, or RB_EXIT_USAGE after printing
@@ -71,6 +73,43 @@ rb_exit rb_cli_merge_main(int argc, char **argv);
 /* --help on stdout; --version on stdout. */
 void rb_cli_help_print(void);
 void rb_cli_version_print(void);
+
+/* One command's usage and options on stdout (`rockbolt help COMMAND`,
+ * `rockbolt COMMAND --help`); RB_EXIT_USAGE after an error when there is
+ * no such command. */
+rb_exit rb_cli_help_command_print(const char *name);
+
+/* The candidate closest to word (an option, "--jsn=x" counts as "--jsn")
+ * when close enough to be a likely typo, else NULL. */
+const char *rb_cli_nearest(const char *word, const char *const *cands);
+
+/* "unknown WHAT 'WORD' [for 'CMD'][; did you mean 'X'?] (see ...)". */
+void rb_cli_unknown_word(const char *what, const char *word, const char *const *cands,
+                         const char *cmd);
+
+/* An unknown option of cmd, with a "did you mean" from the options its
+ * help documents, or the command it belongs to. */
+void rb_cli_unknown_option(const char *cmd, const char *arg);
+
+/* The option loop of every command (cli_getopt.c), over glibc's
+ * getopt_long. rb_cli_getopt_next returns an option's value (its short
+ * letter or long val) with its value in arg and its name as written in
+ * name; 1 for an operand (in arg); ':' when the option in name lacks its
+ * value; '?' after printing an unknown option; -1 at the end. */
+typedef struct {
+    const char *cmd;
+    int argc;
+    char **argv;
+    char optstring[32];
+    const struct option *longs;
+    int rest;                 /* after "--": operands only */
+    const char *arg;
+    char name[64];
+} rb_cli_getopt;
+
+void rb_cli_getopt_init(rb_cli_getopt *g, const char *cmd, int argc, char **argv,
+                        const char *shorts, const struct option *longs);
+int rb_cli_getopt_next(rb_cli_getopt *g);
 
 /* Diagnostics on stderr, one line each. */
 #if defined(__GNUC__)

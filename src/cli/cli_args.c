@@ -1,44 +1,19 @@
-/* Command-line parsing: "rockbolt COMMAND [ARGS] [OPTIONS]".
+/* Command-line parsing: "rockbolt COMMAND [ARGS] [OPTIONS]", with
+ * getopt_long (cli_getopt.c).
  *
  * Options may come before or after the case file, as "--json FILE" or
  * "--json=FILE"; "--" ends the options. Every mistake is a usage error
  * (exit 2) with one line naming the offending argument, and is found
- * before anything is read or written. */
+ * before anything is read or written. The options are documented in
+ * src/cli/help.txt, which --help and the man page are made from. */
 #include <stdlib.h>
 #include <string.h>
 #include "cli.h"
 #include "rockbolt/sandbox.h"
 
-/* Is arg the option name, as "--name" alone or "--name=VALUE"? Sets
- * *inline_val to the text after '=' if any. */
-static int opt_is(const char *arg, const char *name, const char **inline_val)
+/* Store the value of a FILE option, once, not empty. */
+static rb_exit take_value(const char *name, const char *v, const char **dst)
 {
-    size_t n = strlen(name);
-    if (strncmp(arg, name, n) != 0)
-        return 0;
-    if (arg[n] == '\0') {
-        *inline_val = NULL;
-        return 1;
-    }
-    if (arg[n] == '=') {
-        *inline_val = arg + n + 1;
-        return 1;
-    }
-    return 0;
-}
-
-/* Take the value of a FILE option from "=VALUE" or the next argument. */
-static rb_exit take_value(int argc, char **argv, int *i, const char *name,
-                          const char *inline_val, const char **dst)
-{
-    const char *v = inline_val;
-    if (!v) {
-        if (*i + 1 >= argc) {
-            rb_cli_error(NULL, NULL, "option '%s' needs a file name", name);
-            return RB_EXIT_USAGE;
-        }
-        v = argv[++*i];
-    }
     if (!v[0]) {
         rb_cli_error(NULL, NULL, "option '%s' needs a non-empty file name", name);
         return RB_EXIT_USAGE;
@@ -52,20 +27,10 @@ static rb_exit take_value(int argc, char **argv, int *i, const char *name,
 }
 
 /* -j N / --threads N: a whole number from 1 to 1024. */
-static rb_exit take_threads(int argc, char **argv, int *i, const char *inline_val,
-                            rb_cli_opts *o)
+static rb_exit take_threads(const char *v, rb_cli_opts *o)
 {
-    const char *v = inline_val;
     char *end;
-    long n;
-    if (!v) {
-        if (*i + 1 >= argc) {
-            rb_cli_error(NULL, NULL, "option '-j' needs a number of threads");
-            return RB_EXIT_USAGE;
-        }
-        v = argv[++*i];
-    }
-    n = strtol(v, &end, 10);
+    long n = strtol(v, &end, 10);
     if (end == v || *end || n < 1 || n > 1024) {
         rb_cli_error(NULL, NULL, "option '-j' needs a whole number of threads from 1 "
                      "to 1024 (got '%s')", v);
@@ -75,48 +40,66 @@ static rb_exit take_threads(int argc, char **argv, int *i, const char *inline_va
     return RB_EXIT_PASS;
 }
 
-/* Options only `design` takes; RB_EXIT_INTERNAL when arg is not one. */
-static rb_exit design_option(int argc, char **argv, int *i, rb_cli_opts *o)
-{
-    const char *arg = argv[*i], *val = NULL;
-    if (opt_is(arg, "--sweep-csv", &val))
-        return take_value(argc, argv, i, "--sweep-csv", val, &o->sweep_csv_path);
-    if (opt_is(arg, "--threads", &val) || opt_is(arg, "-j", &val))
-        return take_threads(argc, argv, i, val, o);
-    if (strncmp(arg, "-j", 2) == 0 && arg[2])
-        return take_threads(argc, argv, i, arg + 2, o);
-    return RB_EXIT_INTERNAL;
-}
+enum { OPT_JSON = 256, OPT_TEXT, OPT_HISTORY, OPT_SVG, OPT_HTML, OPT_SANDBOX,
+       OPT_SWEEP_CSV };
 
-/* One option of "check" or "design"; RB_EXIT_USAGE if arg is not one. */
-static rb_exit check_option(int argc, char **argv, int *i, rb_cli_opts *o)
+/* The options of check; design's add --sweep-csv and -j; init's --help. */
+static const struct option check_longs[] = {
+    {"json", required_argument, NULL, OPT_JSON},
+    {"text", required_argument, NULL, OPT_TEXT},
+    {"history", required_argument, NULL, OPT_HISTORY},
+    {"svg", required_argument, NULL, OPT_SVG},
+    {"html", required_argument, NULL, OPT_HTML},
+    {"sandbox", required_argument, NULL, OPT_SANDBOX},
+    {"quiet", no_argument, NULL, 'q'},
+    {"help", no_argument, NULL, 'h'},
+    {NULL, 0, NULL, 0}
+};
+static const struct option design_longs[] = {
+    {"json", required_argument, NULL, OPT_JSON},
+    {"text", required_argument, NULL, OPT_TEXT},
+    {"history", required_argument, NULL, OPT_HISTORY},
+    {"svg", required_argument, NULL, OPT_SVG},
+    {"html", required_argument, NULL, OPT_HTML},
+    {"sandbox", required_argument, NULL, OPT_SANDBOX},
+    {"sweep-csv", required_argument, NULL, OPT_SWEEP_CSV},
+    {"threads", required_argument, NULL, 'j'},
+    {"quiet", no_argument, NULL, 'q'},
+    {"help", no_argument, NULL, 'h'},
+    {NULL, 0, NULL, 0}
+};
+static const struct option init_longs[] = {
+    {"help", no_argument, NULL, 'h'},
+    {NULL, 0, NULL, 0}
+};
+
+/* One option of check, design or init (already known to the table). */
+static rb_exit take_option(int c, const rb_cli_getopt *g, rb_cli_opts *o)
 {
-    const char *arg = argv[*i], *val = NULL;
-    const char *cmd = o->command == RB_CMD_DESIGN ? "design" : "check";
-    if (o->command == RB_CMD_DESIGN) {
-        rb_exit e = design_option(argc, argv, i, o);
-        if (e != RB_EXIT_INTERNAL)
-            return e;
-    }
-    if (opt_is(arg, "--json", &val))
-        return take_value(argc, argv, i, "--json", val, &o->json_path);
-    if (opt_is(arg, "--text", &val))
-        return take_value(argc, argv, i, "--text", val, &o->text_path);
-    if (opt_is(arg, "--history", &val))
-        return take_value(argc, argv, i, "--history", val, &o->history_path);
-    if (opt_is(arg, "--svg", &val))
-        return take_value(argc, argv, i, "--svg", val, &o->svg_path);
-    if (opt_is(arg, "--html", &val))
-        return take_value(argc, argv, i, "--html", val, &o->html_path);
-    if (opt_is(arg, "--sandbox", &val))
-        return take_value(argc, argv, i, "--sandbox", val, &o->sandbox_dir);
-    if (strcmp(arg, "--quiet") == 0 || strcmp(arg, "-q") == 0) {
+    switch (c) {
+    case OPT_JSON:
+        return take_value(g->name, g->arg, &o->json_path);
+    case OPT_TEXT:
+        return take_value(g->name, g->arg, &o->text_path);
+    case OPT_HISTORY:
+        return take_value(g->name, g->arg, &o->history_path);
+    case OPT_SVG:
+        return take_value(g->name, g->arg, &o->svg_path);
+    case OPT_HTML:
+        return take_value(g->name, g->arg, &o->html_path);
+    case OPT_SANDBOX:
+        return take_value(g->name, g->arg, &o->sandbox_dir);
+    case OPT_SWEEP_CSV:
+        return take_value(g->name, g->arg, &o->sweep_csv_path);
+    case 'j':
+        return take_threads(g->arg, o);
+    case 'q':
         o->quiet = 1;
         return RB_EXIT_PASS;
+    default:
+        rb_cli_error(NULL, NULL, "option '%s' is not handled (a bug)", g->name);
+        return RB_EXIT_INTERNAL;
     }
-    rb_cli_error(NULL, NULL, "unknown option '%s' for '%s' (see rockbolt --help)",
-                 arg, cmd);
-    return RB_EXIT_USAGE;
 }
 
 /* Two outputs, or an output and the case, must not be the same file. */
@@ -136,36 +119,43 @@ static rb_exit check_distinct(const rb_cli_opts *o)
     return RB_EXIT_PASS;
 }
 
-/* Positional arguments and options after the command name. */
+/* Operands and options after the command name. */
 static rb_exit parse_rest(int argc, char **argv, rb_cli_opts *o)
 {
     int takes_case = o->command == RB_CMD_CHECK || o->command == RB_CMD_DESIGN;
     const char **positional = takes_case ? &o->case_path : &o->init_path;
-    int i, options_done = 0;
-    for (i = 2; i < argc; i++) {
-        const char *arg = argv[i];
+    const char *cmd = argv[1];
+    rb_cli_getopt g;
+    int c;
+    if (o->command == RB_CMD_DESIGN)
+        rb_cli_getopt_init(&g, cmd, argc - 1, argv + 1, "qhj:", design_longs);
+    else if (o->command == RB_CMD_CHECK)
+        rb_cli_getopt_init(&g, cmd, argc - 1, argv + 1, "qh", check_longs);
+    else
+        rb_cli_getopt_init(&g, cmd, argc - 1, argv + 1, "h", init_longs);
+    while ((c = rb_cli_getopt_next(&g)) != -1) {
         rb_exit e = RB_EXIT_PASS;
-        if (!options_done && (strcmp(arg, "--help") == 0 || strcmp(arg, "-h") == 0)) {
+        if (c == '?')
+            return RB_EXIT_USAGE;
+        if (c == ':') {
+            rb_cli_error(NULL, NULL, "option '%s' needs %s", g.name,
+                         strcmp(g.name, "-j") == 0 || strcmp(g.name, "--threads") == 0
+                         ? "a number of threads" : "a file name");
+            return RB_EXIT_USAGE;
+        }
+        if (c == 'h') {
             o->command = RB_CMD_HELP;
+            o->help_command = cmd;
             return RB_EXIT_PASS;
         }
-        if (!options_done && strcmp(arg, "--") == 0) {
-            options_done = 1;
-            continue;
-        }
-        if (!options_done && arg[0] == '-' && arg[1] != '\0') {
-            if (!takes_case) {
-                rb_cli_error(NULL, NULL, "unknown option '%s' for 'init' "
-                             "(see rockbolt --help)", arg);
-                return RB_EXIT_USAGE;
-            }
-            e = check_option(argc, argv, &i, o);
+        if (c != 1) {
+            e = take_option(c, &g, o);
         } else if (*positional) {
-            rb_cli_error(NULL, NULL, "unexpected argument '%s' (see rockbolt --help)",
-                         arg);
+            rb_cli_error(NULL, NULL, "unexpected argument '%s' (see 'rockbolt help %s')",
+                         g.arg, cmd);
             return RB_EXIT_USAGE;
         } else {
-            *positional = arg;
+            *positional = g.arg;
         }
         if (e != RB_EXIT_PASS)
             return e;
@@ -178,12 +168,25 @@ rb_exit rb_cli_args_parse(int argc, char **argv, rb_cli_opts *o)
     const char *cmd = argc > 1 ? argv[1] : NULL;
     rb_exit e;
     memset(o, 0, sizeof *o);
+    static const char *const commands[] = {"check", "design", "batch", "merge",
+                                           "init", "help", "version", NULL};
     if (!cmd) {
         rb_cli_error(NULL, NULL, "no command given (see rockbolt --help)");
         return RB_EXIT_USAGE;
     }
-    if (!strcmp(cmd, "--help") || !strcmp(cmd, "-h") || !strcmp(cmd, "help")) {
+    if (!strcmp(cmd, "--help") || !strcmp(cmd, "-h")) {
         o->command = RB_CMD_HELP;
+        return RB_EXIT_PASS;
+    }
+    if (!strcmp(cmd, "help")) {
+        /* "rockbolt help [COMMAND]" */
+        if (argc > 3) {
+            rb_cli_error(NULL, NULL, "unexpected argument '%s' (see 'rockbolt help')",
+                         argv[3]);
+            return RB_EXIT_USAGE;
+        }
+        o->command = RB_CMD_HELP;
+        o->help_command = argc > 2 ? argv[2] : NULL;
         return RB_EXIT_PASS;
     }
     if (!strcmp(cmd, "--version") || !strcmp(cmd, "-V") || !strcmp(cmd, "version")) {
@@ -197,7 +200,7 @@ rb_exit rb_cli_args_parse(int argc, char **argv, rb_cli_opts *o)
     else if (!strcmp(cmd, "init"))
         o->command = RB_CMD_INIT;
     else {
-        rb_cli_error(NULL, NULL, "unknown command '%s' (see rockbolt --help)", cmd);
+        rb_cli_unknown_word("command", cmd, commands, NULL);
         return RB_EXIT_USAGE;
     }
     if ((e = parse_rest(argc, argv, o)) != RB_EXIT_PASS || o->command == RB_CMD_HELP)

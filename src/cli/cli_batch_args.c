@@ -1,33 +1,13 @@
-/* "rockbolt batch" options. Like check's: "--opt VALUE" or "--opt=VALUE",
- * "--" ends the options, every mistake is a usage error (exit 2) found
- * before anything is read or written. */
+/* "rockbolt batch" and "rockbolt merge" options, with getopt_long
+ * (cli_getopt.c). Like check's: "--opt VALUE" or "--opt=VALUE", "--" ends
+ * the options, every mistake is a usage error (exit 2) found before
+ * anything is read or written. Documented in src/cli/help.txt. */
 #include <stdlib.h>
 #include <string.h>
 #include "cli_batch.h"
 
-static int opt_is(const char *arg, const char *name, const char **inline_val)
+static rb_exit take(const char *name, const char *v, const char **dst)
 {
-    size_t n = strlen(name);
-    if (strncmp(arg, name, n) != 0)
-        return 0;
-    if (arg[n] == '\0' || arg[n] == '=') {
-        *inline_val = arg[n] == '=' ? arg + n + 1 : NULL;
-        return 1;
-    }
-    return 0;
-}
-
-static rb_exit take(int argc, char **argv, int *i, const char *name,
-                    const char *inline_val, const char **dst)
-{
-    const char *v = inline_val;
-    if (!v) {
-        if (*i + 1 >= argc) {
-            rb_cli_error(NULL, NULL, "option '%s' needs a value", name);
-            return RB_EXIT_USAGE;
-        }
-        v = argv[++*i];
-    }
     if (!v[0]) {
         rb_cli_error(NULL, NULL, "option '%s' needs a non-empty value", name);
         return RB_EXIT_USAGE;
@@ -72,71 +52,123 @@ static rb_exit parse_shard(const char *v, rb_batch_cli *o)
     return RB_EXIT_USAGE;
 }
 
+enum { OPT_JSON = 256, OPT_CSV, OPT_JUNIT, OPT_REPORTS, OPT_BASE, OPT_SANDBOX,
+       OPT_DESIGN, OPT_SHARD };
+
 /* Options shared by batch and merge are the output files and --quiet. */
+static const struct option merge_longs[] = {
+    {"json", required_argument, NULL, OPT_JSON},
+    {"csv", required_argument, NULL, OPT_CSV},
+    {"junit", required_argument, NULL, OPT_JUNIT},
+    {"quiet", no_argument, NULL, 'q'},
+    {"help", no_argument, NULL, 'h'},
+    {NULL, 0, NULL, 0}
+};
+static const struct option batch_longs[] = {
+    {"json", required_argument, NULL, OPT_JSON},
+    {"csv", required_argument, NULL, OPT_CSV},
+    {"junit", required_argument, NULL, OPT_JUNIT},
+    {"reports", required_argument, NULL, OPT_REPORTS},
+    {"base", required_argument, NULL, OPT_BASE},
+    {"sandbox", required_argument, NULL, OPT_SANDBOX},
+    {"design", no_argument, NULL, OPT_DESIGN},
+    {"shard", required_argument, NULL, OPT_SHARD},
+    {"threads", required_argument, NULL, 'j'},
+    {"quiet", no_argument, NULL, 'q'},
+    {"help", no_argument, NULL, 'h'},
+    {NULL, 0, NULL, 0}
+};
+
+static rb_exit take_option(int c, const rb_cli_getopt *g, rb_batch_cli *o)
+{
+    const char *sv = NULL;
+    long n;
+    rb_exit e;
+    switch (c) {
+    case OPT_JSON:
+        return take(g->name, g->arg, &o->json_path);
+    case OPT_CSV:
+        return take(g->name, g->arg, &o->csv_path);
+    case OPT_JUNIT:
+        return take(g->name, g->arg, &o->junit_path);
+    case OPT_REPORTS:
+        return take(g->name, g->arg, &o->reports_dir);
+    case OPT_BASE:
+        return take(g->name, g->arg, &o->base);
+    case OPT_SANDBOX:
+        return take(g->name, g->arg, &o->sandbox);
+    case OPT_DESIGN:
+        o->design = 1;
+        return RB_EXIT_PASS;
+    case OPT_SHARD:
+        e = take(g->name, g->arg, &sv);
+        return e == RB_EXIT_PASS ? parse_shard(sv, o) : e;
+    case 'j':
+        if (!g->arg[0]) {
+            rb_cli_error(NULL, NULL, "option '-j' needs a non-empty value");
+            return RB_EXIT_USAGE;
+        }
+        if (!whole(g->arg, 1, 1024, &n)) {
+            rb_cli_error(NULL, "-j", "expected a whole number of threads from 1 "
+                         "to 1024, found '%s'", g->arg);
+            return RB_EXIT_USAGE;
+        }
+        o->threads = (int)n;
+        return RB_EXIT_PASS;
+    case 'q':
+        o->quiet = 1;
+        return RB_EXIT_PASS;
+    case 'h':
+        o->help = 1;
+        return RB_EXIT_PASS;
+    default:
+        rb_cli_error(NULL, NULL, "option '%s' is not handled (a bug)", g->name);
+        return RB_EXIT_INTERNAL;
+    }
+}
+
 rb_exit rb_cli_batch_parse(int argc, char **argv, int is_merge, rb_batch_cli *o)
 {
-    int only_inputs = 0;
+    const char *cmd = is_merge ? "merge" : "batch";
+    rb_cli_getopt g;
+    char **av;
+    int c;
+    rb_exit e = RB_EXIT_PASS;
     memset(o, 0, sizeof *o);
     rb_outplan_init(&o->plan);
     o->inputs = calloc((size_t)argc + 1, sizeof *o->inputs);
-    if (!o->inputs) {
+    /* getopt wants the program in argv[0]: the command word stands in */
+    av = calloc((size_t)argc + 2, sizeof *av);
+    if (!o->inputs || !av) {
+        free(av);
         rb_cli_error(NULL, NULL, "out of memory");
         return RB_EXIT_INTERNAL;
     }
-    for (int i = 0; i < argc; i++) {
-        const char *a = argv[i], *v = NULL, *jv = NULL, *sv = NULL;
-        rb_exit e = RB_EXIT_PASS;
-        if (only_inputs || a[0] != '-' || !a[1]) {
-            o->inputs[o->n_inputs++] = a;
-            continue;
-        }
-        if (strcmp(a, "--") == 0)
-            only_inputs = 1;
-        else if (opt_is(a, "--json", &v))
-            e = take(argc, argv, &i, "--json", v, &o->json_path);
-        else if (opt_is(a, "--csv", &v))
-            e = take(argc, argv, &i, "--csv", v, &o->csv_path);
-        else if (opt_is(a, "--junit", &v))
-            e = take(argc, argv, &i, "--junit", v, &o->junit_path);
-        else if (strcmp(a, "-q") == 0 || strcmp(a, "--quiet") == 0)
-            o->quiet = 1;
-        else if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0)
-            o->help = 1;
-        else if (!is_merge && opt_is(a, "--reports", &v))
-            e = take(argc, argv, &i, "--reports", v, &o->reports_dir);
-        else if (!is_merge && opt_is(a, "--base", &v))
-            e = take(argc, argv, &i, "--base", v, &o->base);
-        else if (!is_merge && opt_is(a, "--sandbox", &v))
-            e = take(argc, argv, &i, "--sandbox", v, &o->sandbox);
-        else if (!is_merge && strcmp(a, "--design") == 0)
-            o->design = 1;
-        else if (!is_merge && opt_is(a, "--shard", &v)) {
-            e = take(argc, argv, &i, "--shard", v, &sv);
-            if (e == RB_EXIT_PASS)
-                e = parse_shard(sv, o);
-        } else if (!is_merge && (strncmp(a, "-j", 2) == 0 || opt_is(a, "--threads", &v))) {
-            long n;
-            if (a[1] == 'j' && a[2])
-                v = a + 2;   /* -j4 */
-            e = take(argc, argv, &i, "-j", v, &jv);
-            if (e == RB_EXIT_PASS && !whole(jv, 1, 1024, &n)) {
-                rb_cli_error(NULL, "-j", "expected a whole number of threads from 1 "
-                             "to 1024, found '%s'", jv);
-                e = RB_EXIT_USAGE;
-            }
-            if (e == RB_EXIT_PASS)
-                o->threads = (int)n;
-        } else {
-            rb_cli_error(NULL, NULL, "unknown option '%s' (see 'rockbolt --help')", a);
+    av[0] = (char *)cmd;
+    memcpy(av + 1, argv, (size_t)argc * sizeof *av);
+    if (is_merge)
+        rb_cli_getopt_init(&g, cmd, argc + 1, av, "qh", merge_longs);
+    else
+        rb_cli_getopt_init(&g, cmd, argc + 1, av, "qhj:", batch_longs);
+    while (e == RB_EXIT_PASS && (c = rb_cli_getopt_next(&g)) != -1) {
+        if (c == 1)
+            o->inputs[o->n_inputs++] = g.arg;
+        else if (c == '?')
             e = RB_EXIT_USAGE;
-        }
-        if (e != RB_EXIT_PASS)
-            return e;
+        else if (c == ':') {
+            rb_cli_error(NULL, NULL, "option '%s' needs a value",
+                         strcmp(g.name, "--threads") == 0 ? "-j" : g.name);
+            e = RB_EXIT_USAGE;
+        } else
+            e = take_option(c, &g, o);
     }
+    free(av);
+    if (e != RB_EXIT_PASS)
+        return e;
     if (!o->help && o->n_inputs == 0) {
         rb_cli_error(NULL, NULL, is_merge ? "merge needs the JSON summaries of the "
-                     "shards" : "batch needs case files, directories or equipment "
-                     "lists (see 'rockbolt --help')");
+                     "shards (see 'rockbolt help merge')" : "batch needs case files, "
+                     "directories or equipment lists (see 'rockbolt help batch')");
         return RB_EXIT_USAGE;
     }
     return rb_cli_sandbox(o->sandbox);

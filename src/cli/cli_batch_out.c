@@ -13,7 +13,7 @@ rb_exit rb_cli_batch_begin(int argc, char **argv, int is_merge, rb_batch_cli *o,
     rb_exit e = rb_cli_batch_parse(argc, argv, is_merge, o);
     *done = 0;
     if (e == RB_EXIT_PASS && o->help) {
-        rb_cli_help_print();
+        rb_cli_help_command_print(is_merge ? "merge" : "batch");
         rb_cli_batch_cli_free(o);
         *done = 1;
         return RB_EXIT_PASS;

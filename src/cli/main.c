@@ -19,6 +19,8 @@ int main(int argc, char **argv)
         return (int)e;
     switch (o.command) {
     case RB_CMD_HELP:
+        if (o.help_command)
+            return (int)rb_cli_help_command_print(o.help_command);
         rb_cli_help_print();
         return RB_EXIT_PASS;
     case RB_CMD_VERSION:
