@@ -279,14 +279,48 @@ static void out_free(rb_out *o)
     memset(o, 0, sizeof *o);
 }
 
-/* The directory of a regular output: exists, is a directory, writable;
- * the name and the temporary file's fit the limits. */
+/* Can a file be made in dir? Tried, not guessed: a directory that grants
+ * write access may still refuse new files (/proc, /sys), and finding that
+ * out only when the outputs are written would be an internal error after
+ * the solve rather than a usage error before it. The probe is removed at
+ * once, and the last directory that took one is remembered (a batch's
+ * reports share one). 0 with *err set when not. */
+static int can_create(const char *dir, int *err)
+{
+    static _Thread_local char last_ok[PATH_MAX];
+    size_t nd = strlen(dir);
+    char *p;
+    int fd;
+    if (strcmp(dir, last_ok) == 0)
+        return 1;
+    p = malloc(nd + sizeof "/" RB_TEMP_NAME);
+    if (!p) {
+        *err = ENOMEM;
+        return 0;
+    }
+    memcpy(p, dir, nd);
+    memcpy(p + nd, "/" RB_TEMP_NAME, sizeof "/" RB_TEMP_NAME);
+    fd = mkstemp(p);
+    *err = fd < 0 ? errno : 0;
+    if (fd >= 0) {
+        unlink(p);
+        close(fd);
+        if (nd < sizeof last_ok)
+            memcpy(last_ok, dir, nd + 1);
+    }
+    free(p);
+    return fd >= 0;
+}
+
+/* The directory of a regular output: exists, is a directory, writable and
+ * takes new files; the name and the temporary file's fit the limits. */
 static rb_status check_dir(rb_out *o, rb_diag *d)
 {
     char *dir = dir_of(o->target), *real;
     const char *name = base_of(o->target);
     struct stat sb;
     long name_max;
+    int err = 0;
     rb_status st = RB_OK;
     if (!dir)
         return RB_ERR_NOMEM;
@@ -302,6 +336,9 @@ static rb_status check_dir(rb_out *o, rb_diag *d)
     else if (access(dir, W_OK | X_OK) != 0)
         st = fail(d, RB_ERR_IO, o->path, o->opt, errno,
                   "directory '%.300s' is not writable", dir);
+    else if (strlen(dir) + sizeof "/" RB_TEMP_NAME <= PATH_MAX && !can_create(dir, &err))
+        st = fail(d, RB_ERR_IO, o->path, o->opt, err,
+                  "cannot create files in directory '%.300s'", dir);
     else if (strlen(name) > (size_t)name_max) {
         char lim[96];
         snprintf(lim, sizeof lim, "%zu bytes, over the limit of %ld", strlen(name),

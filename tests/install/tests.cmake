@@ -8,5 +8,9 @@ add_test(NAME install_help
                  ${PROJECT_BINARY_DIR}/completion/rockbolt
                  ${PROJECT_BINARY_DIR}/completion/_rockbolt
                  ${CMAKE_CURRENT_BINARY_DIR}/install-scratch/help)
-set_tests_properties(install_help PROPERTIES LABELS install
+add_test(NAME install_exit_codes
+         COMMAND sh ${PROJECT_SOURCE_DIR}/tests/install/exit_codes.sh
+                 $<TARGET_FILE:rockbolt>
+                 ${CMAKE_CURRENT_BINARY_DIR}/install-scratch/exit-codes)
+set_tests_properties(install_help install_exit_codes PROPERTIES LABELS install
     WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} SKIP_RETURN_CODE 77 TIMEOUT 300)
