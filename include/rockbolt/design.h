@@ -69,8 +69,8 @@ typedef struct {
     long scan_runs, bisect_runs;/* runs = scan_runs + bisect_runs */
     long runs_speculative;      /* runs made ahead by idle threads and not
                                    used; depends on n_threads */
-    char pass_reason[160];      /* criteria verdict at level ("" if level 0) */
-    char fail_reason[160];      /* verdict at fail ("" if no failure) */
+    char pass_reason[256];      /* criteria verdict at level ("" if level 0) */
+    char fail_reason[256];      /* verdict at fail ("" if no failure) */
 } rb_design_factor_result;
 
 /* motion gives the shape: sampled motions are rescaled through
@@ -103,7 +103,7 @@ typedef struct {
     double max_u_over_ustatic;
     double max_theta_over_alpha;
     double usage_max;           /* larger toughness usage of the two rows */
-    char reason[160];           /* criteria verdict */
+    char reason[256];           /* criteria verdict */
 } rb_gap_point;
 
 typedef struct {

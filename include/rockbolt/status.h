@@ -36,4 +36,14 @@ typedef struct {
 /* Clear a diag to "no error". Accepts NULL. */
 void rb_diag_clear(rb_diag *diag);
 
+/* The one way a library call reports a failure: fill diag (may be NULL)
+ * with the place (file and key may be NULL, line and col 0) and the
+ * formatted reason, and return st. */
+rb_status rb_diag_set(rb_diag *diag, rb_status st, const char *file, int line, int col,
+                      const char *key, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 7, 8)))
+#endif
+    ;
+
 #endif

@@ -34,12 +34,8 @@ void rb_result_free(rb_result *r)
 
 static rb_status fail(rb_solver *sv, rb_diag *diag, rb_status st, const char *what)
 {
-    if (diag) {
-        snprintf(diag->key, sizeof diag->key, "solver");
-        snprintf(diag->msg, sizeof diag->msg, "%s at t = %.6f s in stage %d", what,
-                 sv->t, sv->disc.stage);
-    }
-    return st;
+    return rb_diag_set(diag, st, NULL, 0, 0, "solver", "%s at t = %.6f s in stage %d",
+                       what, sv->t, sv->disc.stage);
 }
 
 #define OPT_REQUIRE(cond, k, fmt, v) do { if (!(cond)) { if (diag) { \

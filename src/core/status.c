@@ -1,5 +1,7 @@
 /* Status phrases and diag helpers. The switch has no default so that a new
  * status without a phrase is a compiler warning, not a silent "unknown". */
+#include <stdarg.h>
+#include <stdio.h>
 #include <string.h>
 #include "rockbolt/status.h"
 
@@ -23,4 +25,23 @@ void rb_diag_clear(rb_diag *diag)
 {
     if (diag)
         memset(diag, 0, sizeof *diag);
+}
+
+rb_status rb_diag_set(rb_diag *diag, rb_status st, const char *file, int line, int col,
+                      const char *key, const char *fmt, ...)
+{
+    if (!diag)
+        return st;
+    /* the reason may quote the diag's own fields: format it first */
+    char msg[sizeof diag->msg];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    snprintf(diag->file, sizeof diag->file, "%s", file ? file : "");
+    diag->line = line;
+    diag->col = col;
+    snprintf(diag->key, sizeof diag->key, "%s", key ? key : "");
+    memcpy(diag->msg, msg, sizeof msg);
+    return st;
 }

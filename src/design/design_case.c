@@ -10,14 +10,12 @@
 static rb_status fail_at(rb_diag *diag, const char *motion, const char *what,
                          rb_status st)
 {
-    if (diag) {
-        char msg[sizeof diag->msg];
-        snprintf(msg, sizeof msg, "%s", diag->msg);
-        snprintf(diag->key, sizeof diag->key, "motion '%.60s': %s",
-                 motion ? motion : "?", what);
-        snprintf(diag->msg, sizeof diag->msg, "%s", msg[0] ? msg : rb_status_str(st));
-    }
-    return st;
+    char key[sizeof diag->key];
+    if (!diag)
+        return st;
+    snprintf(key, sizeof key, "motion '%.60s': %s", motion ? motion : "?", what);
+    return rb_diag_set(diag, st, diag->file, diag->line, diag->col, key, "%s",
+                       diag->msg[0] ? diag->msg : rb_status_str(st));
 }
 
 static rb_status design_motion(const rb_case *c, const rb_case_motion *cm, int n_threads,

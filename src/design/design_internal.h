@@ -34,7 +34,7 @@ void rb_design_motion_at(const rb_design_ctx *ctx, double level_mps2, rb_motion 
 typedef struct {
     rb_status status;
     int meets;                   /* 1 / 0; -1 without criteria */
-    char reason[160];
+    char reason[256];            /* rb_verdict.reason */
     rb_result r;                 /* summary (no history) */
 } rb_design_run;
 

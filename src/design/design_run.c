@@ -24,12 +24,7 @@ void rb_design_opts_defaults(rb_design_opts *o)
 
 rb_status rb_design_fail(rb_diag *diag, rb_status st, const char *key, const char *msg)
 {
-    if (diag) {
-        rb_diag_clear(diag);
-        snprintf(diag->key, sizeof diag->key, "%s", key ? key : "");
-        snprintf(diag->msg, sizeof diag->msg, "%s", msg);
-    }
-    return st;
+    return rb_diag_set(diag, st, NULL, 0, 0, key, "%s", msg);
 }
 
 rb_status rb_design_ctx_init(rb_design_ctx *ctx, const rb_model *model,
@@ -92,7 +87,8 @@ void rb_design_run_one(const rb_design_ctx *ctx, const rb_model *model,
         rb_verdict v;
         rb_judge(ctx->criteria, &out->r, &v);
         out->meets = v.pass;
-        snprintf(out->reason, sizeof out->reason, "%s", v.reason);
+        _Static_assert(sizeof out->reason == sizeof v.reason, "one reason, one size");
+        memcpy(out->reason, v.reason, sizeof out->reason);
     }
     else if (out->status != RB_OK)
         snprintf(out->reason, sizeof out->reason, "the run failed: %s",

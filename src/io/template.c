@@ -13,6 +13,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "util/strbuf.h"
 #include "rockbolt/report.h"
 #include "rockbolt/textsafe.h"
 
@@ -44,48 +45,14 @@ typedef struct {
     size_t n, cap;
 } toklist;
 
-typedef struct {
-    char *p;
-    size_t len, cap;
-} strbuf;
 
 static rb_status fail(rb_diag *diag, const tok *t, const char *msg)
 {
-    if (diag) {
-        diag->line = t ? t->line : 0;
-        diag->col = t ? t->col : 0;
-        if (t && t->kind != TOK_TEXT)
-            snprintf(diag->key, sizeof diag->key, "%.*s",
-                     (int)(t->len < 100 ? t->len : 100), t->s);
-        snprintf(diag->msg, sizeof diag->msg, "%s", msg);
-    }
-    return RB_ERR_PARSE;
-}
-
-static int sb_reserve(strbuf *b, size_t more)
-{
-    size_t want = b->len + more + 1, cap = b->cap ? b->cap : 1024;
-    char *p;
-    if (want <= b->cap)
-        return 1;
-    while (cap < want)
-        cap *= 2;
-    p = realloc(b->p, cap);
-    if (!p)
-        return 0;
-    b->p = p;
-    b->cap = cap;
-    return 1;
-}
-
-static int sb_append(strbuf *b, const char *s, size_t n)
-{
-    if (!sb_reserve(b, n))
-        return 0;
-    memcpy(b->p + b->len, s, n);
-    b->len += n;
-    b->p[b->len] = '\0';
-    return 1;
+    char key[128] = "";
+    if (t && t->kind != TOK_TEXT)
+        snprintf(key, sizeof key, "%.*s", (int)(t->len < 100 ? t->len : 100), t->s);
+    return rb_diag_set(diag, RB_ERR_PARSE, diag ? diag->file : NULL, t ? t->line : 0,
+                       t ? t->col : 0, key, "%s", msg);
 }
 
 static tok *toks_push(toklist *l)
@@ -374,7 +341,7 @@ static int format_value(char *dst, size_t cap, const fspec *f, const rb_tvar *v)
 
 /* Strings (names, descriptions, reasons) can carry control characters
  * from the case's YAML escapes: they are shown escaped, never sent. */
-static rb_status emit_var(strbuf *b, const tok *t, const rb_tscope *sc, rb_diag *diag)
+static rb_status emit_var(rb_strbuf *b, const tok *t, const rb_tscope *sc, rb_diag *diag)
 {
     const rb_tvar *v = find_var(sc, t->s, t->len);
     rb_tvar esc;
@@ -394,14 +361,14 @@ static rb_status emit_var(strbuf *b, const tok *t, const rb_tscope *sc, rb_diag 
         free(shown);
         return fail(diag, t, "format does not fit the kind of value");
     }
-    if (!sb_reserve(b, (size_t)n)) {
-        free(shown);
-        return RB_ERR_NOMEM;
+    char *text = malloc((size_t)n + 1);
+    if (text) {
+        format_value(text, (size_t)n + 1, &t->fmt, v);
+        rb_strbuf_putn(b, text, (size_t)n);
     }
-    format_value(b->p + b->len, (size_t)n + 1, &t->fmt, v);
-    b->len += (size_t)n;
+    free(text);
     free(shown);
-    return RB_OK;
+    return text && !b->oom ? RB_OK : RB_ERR_NOMEM;
 }
 
 /* A section over a plain value renders once if the value is "true": a
@@ -417,10 +384,10 @@ static int var_truthy(const rb_tvar *v)
     return 0;
 }
 
-static rb_status render(strbuf *b, const toklist *l, size_t from, size_t to,
+static rb_status render(rb_strbuf *b, const toklist *l, size_t from, size_t to,
                         const rb_tscope *sc, rb_diag *diag);
 
-static rb_status render_section(strbuf *b, const toklist *l, size_t i,
+static rb_status render_section(rb_strbuf *b, const toklist *l, size_t i,
                                 const rb_tscope *sc, rb_diag *diag)
 {
     const tok *t = &l->v[i];
@@ -444,7 +411,7 @@ static rb_status render_section(strbuf *b, const toklist *l, size_t i,
     return st;
 }
 
-static rb_status render(strbuf *b, const toklist *l, size_t from, size_t to,
+static rb_status render(rb_strbuf *b, const toklist *l, size_t from, size_t to,
                         const rb_tscope *sc, rb_diag *diag)
 {
     size_t i;
@@ -453,7 +420,8 @@ static rb_status render(strbuf *b, const toklist *l, size_t from, size_t to,
         const tok *t = &l->v[i];
         switch (t->kind) {
         case TOK_TEXT:
-            if (!sb_append(b, t->s, t->len))
+            rb_strbuf_putn(b, t->s, t->len);
+            if (b->oom)
                 st = RB_ERR_NOMEM;
             break;
         case TOK_VAR:
@@ -476,7 +444,7 @@ rb_status rb_template_render(const char *tmpl, const rb_tscope *scope,
                              char **out, rb_diag *diag)
 {
     toklist l = {0};
-    strbuf b = {0};
+    rb_strbuf b = {0};
     rb_status st;
     *out = NULL;
     st = tokenize(tmpl, &l, diag);
@@ -484,15 +452,14 @@ rb_status rb_template_render(const char *tmpl, const rb_tscope *scope,
         st = match_sections(&l, diag);
     if (st == RB_OK) {
         strip_standalone(&l);
-        st = sb_append(&b, "", 0) ? RB_OK : RB_ERR_NOMEM;
     }
     if (st == RB_OK)
         st = render(&b, &l, 0, l.n, scope, diag);
     free(l.v);
     if (st != RB_OK) {
-        free(b.p);
+        rb_strbuf_free(&b);
         return st;
     }
-    *out = b.p;
-    return RB_OK;
+    *out = rb_strbuf_take(&b);
+    return *out ? RB_OK : RB_ERR_NOMEM;
 }
