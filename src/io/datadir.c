@@ -14,6 +14,12 @@
 #define PATH_MAX 4096
 #endif
 
+/* The data directory relative to the installed binary's directory, as the
+ * build's install layout has it. */
+#ifndef RB_DATA_FROM_BIN
+#define RB_DATA_FROM_BIN "../share/rockbolt"
+#endif
+
 static const rb_shipped_record rb_shipped[] = {
     {"elcentro", "elcentro_1940_ns.at2", "at2", NULL, NULL},
     {"taft", "taft_1952_s69e.txt", "one-column", "0.01 s", "g"},
@@ -52,7 +58,8 @@ static int set_share(const char *dir, const char *origin)
     return set_pair(rec, tmpl, origin);
 }
 
-/* ../share/rockbolt from the directory of the running executable. */
+/* ../share/rockbolt (RB_DATA_FROM_BIN) from the directory of the running
+ * executable. */
 static int from_exe(void)
 {
     char exe[PATH_MAX], share[PATH_MAX], rec[PATH_MAX];
@@ -64,7 +71,7 @@ static int from_exe(void)
     if (!slash)
         return 0;
     *slash = '\0';
-    int a = snprintf(share, sizeof share, "%s/../share/rockbolt", exe);
+    int a = snprintf(share, sizeof share, "%s/%s", exe, RB_DATA_FROM_BIN);
     if (a < 0 || (size_t)a >= sizeof share)
         return 0;
     int b = snprintf(rec, sizeof rec, "%s/records", share);

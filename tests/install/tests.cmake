@@ -14,3 +14,9 @@ add_test(NAME install_exit_codes
                  ${CMAKE_CURRENT_BINARY_DIR}/install-scratch/exit-codes)
 set_tests_properties(install_help install_exit_codes PROPERTIES LABELS install
     WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} SKIP_RETURN_CODE 77 TIMEOUT 300)
+add_test(NAME install_relocated
+         COMMAND sh ${PROJECT_SOURCE_DIR}/tests/install/install_test.sh
+                 ${PROJECT_BINARY_DIR} ${CMAKE_CURRENT_BINARY_DIR}/install-scratch/tree
+                 ${CMAKE_C_COMPILER})
+set_tests_properties(install_relocated PROPERTIES LABELS install
+    SKIP_RETURN_CODE 77 TIMEOUT 300)
