@@ -3,6 +3,7 @@
  * limit and the cabinet must not overturn; beside it, whether the model's
  * own assumptions held (docs/solver.md, Validity). */
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include "rockbolt/criteria.h"
 
@@ -122,12 +123,26 @@ static void validity(const rb_criteria *c, const rb_result *r, rb_verdict *v)
             v->warnings |= 1u << k;
 }
 
+/* v as text with enough digits that it reads back on the same side of
+ * limit as v is: a passing 0.9999996 Fy must not print as "1". */
+static const char *beside(double v, double limit, char *buf, size_t n)
+{
+    for (int prec = 6; prec <= 17; prec++) {
+        snprintf(buf, n, "%.*g", prec, v);
+        double back = strtod(buf, NULL);
+        if ((back < limit) == (v < limit))
+            break;
+    }
+    return buf;
+}
+
 /* A macro so that each message is a literal the compiler checks. */
 #define SAY(v, pass_, ...) \
     ((void)snprintf((v)->reason, sizeof (v)->reason, __VA_ARGS__), (v)->criteria_pass = (pass_))
 
 static void criteria(const rb_criteria *c, const rb_result *r, rb_verdict *v)
 {
+    char num[32];
     double usage = larger(r->usage[0], r->usage[1]);
     double shear = r->weight_n > 0 ? r->max_shear_elastic_n / r->weight_n : 0;
     double force = r->fy_row_n > 0
@@ -142,19 +157,23 @@ static void criteria(const rb_criteria *c, const rb_result *r, rb_verdict *v)
             r->yielded[0] ? r->first_yield_s[0] : r->first_yield_s[1]);
     else if (c->kind == RB_CRIT_NO_YIELD && force >= 1.0)
         /* rows that never yield in the model still must not reach Fy */
-        SAY(v, 0, "a bolt row force reaches Fy (max force / Fy = %.6g; criterion: no yield)",
-            force);
+        SAY(v, 0, "a bolt row force reaches Fy (max force / Fy = %s; criterion: no yield)",
+            beside(force, 1.0, num, sizeof num));
     else if (c->kind == RB_CRIT_NO_BREAK && usage >= c->usage_limit)
-        SAY(v, 0, "bolt toughness usage %.6g reaches the limit %g", usage, c->usage_limit);
+        SAY(v, 0, "bolt toughness usage %s reaches the limit %.17g",
+            beside(usage, c->usage_limit, num, sizeof num), c->usage_limit);
     else if (c->max_shear_over_w > 0 && shear > c->max_shear_over_w)
-        SAY(v, 0, "base shear / W = %.6g exceeds its limit %g", shear, c->max_shear_over_w);
+        SAY(v, 0, "base shear / W = %s exceeds its limit %.17g",
+            beside(shear, c->max_shear_over_w, num, sizeof num), c->max_shear_over_w);
     else if (c->max_theta_over_alpha > 0 && r->max_theta_over_alpha > c->max_theta_over_alpha)
-        SAY(v, 0, "rotation / alpha = %.6g exceeds its limit %g", r->max_theta_over_alpha,
+        SAY(v, 0, "rotation / alpha = %s exceeds its limit %.17g",
+            beside(r->max_theta_over_alpha, c->max_theta_over_alpha, num, sizeof num),
             c->max_theta_over_alpha);
     else if (c->kind == RB_CRIT_NO_YIELD)
-        SAY(v, 1, "bolts stay elastic (max force / Fy = %.6g)", force);
+        SAY(v, 1, "bolts stay elastic (max force / Fy = %s)", beside(force, 1.0, num, sizeof num));
     else
-        SAY(v, 1, "bolt toughness usage %.6g is below the limit %g", usage, c->usage_limit);
+        SAY(v, 1, "bolt toughness usage %s is below the limit %.17g",
+            beside(usage, c->usage_limit, num, sizeof num), c->usage_limit);
 }
 
 void rb_judge(const rb_criteria *c, const rb_result *r, rb_verdict *v)
