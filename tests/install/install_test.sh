@@ -30,7 +30,11 @@ run() {
 unset RB_DATA_DIR RB_TEMPLATE_DIR
 cmake --install "$B" --prefix "$S/prefix" >"$S/out" 2>"$S/err" || fail "cmake --install"
 P=$S/prefix
-LIBDIR=$(cd "$P" && ls -d lib* | head -1)
+# the library directory as the build's layout has it (lib, lib64,
+# lib/x86_64-linux-gnu): where the pkg-config file went
+PC=$(cd "$P" && find . -name rockbolt.pc | head -1)
+[ -n "$PC" ] || fail "not installed: rockbolt.pc"
+LIBDIR=$(dirname "$(dirname "$PC")" | sed 's|^\./||')
 for f in bin/rockbolt "$LIBDIR/librockbolt.a" "$LIBDIR/librockbolt.so" \
          include/rockbolt/rockbolt.h include/rockbolt/version.h include/rockbolt/datadir.h \
          "$LIBDIR/pkgconfig/rockbolt.pc" "$LIBDIR/cmake/rockbolt/rockbolt-config.cmake" \
