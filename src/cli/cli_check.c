@@ -187,7 +187,7 @@ static rb_exit render_figures(const rb_cli_opts *o, check_run *r)
     size_t n_sw = count_sweeps(&r->design), n = r->c.n_motions + n_sw, i;
     rb_status st = RB_OK;
     rb_diag d;
-    char title[256];
+    char title[320];
     if (!o->svg_path && !o->html_path)
         return RB_EXIT_PASS;
     if (!(r->svgs = calloc(n ? n : 1, sizeof *r->svgs))) {
