@@ -128,11 +128,13 @@ struct rb_record_cache;
 rb_status rb_case_load_cached(const char *path, struct rb_record_cache *cache,
                               rb_case *out, rb_diag_list *diags);
 
-/* rb_case_load_cached for a case file rockbolt wrote itself (the temporary
- * file of rb_case_load_overrides): the file is not held to --sandbox
- * (rockbolt/sandbox.h), the bases and records it names are. */
-rb_status rb_case_load_generated(const char *path, struct rb_record_cache *cache,
-                                 rb_case *out, rb_diag_list *diags);
+/* rb_case_load_cached for a case document rockbolt made itself in memory
+ * (rb_case_load_overrides), named name in diagnostics: it is not a file,
+ * so not held to --sandbox (rockbolt/sandbox.h) nor listed among the
+ * inputs; the bases and records it names are. */
+rb_status rb_case_load_text(const char *name, const char *text, size_t len,
+                            struct rb_record_cache *cache, rb_case *out,
+                            rb_diag_list *diags);
 
 /* Free what a case owns; accepts NULL. */
 void rb_case_free(rb_case *c);

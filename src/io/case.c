@@ -164,12 +164,12 @@ static int rb_case_add_input(rb_case *cs, const char *path)
 
 /* The YAML files the loader read (c->files, in reading order) and the
  * record files of the motions. */
-static int rb_case_list_inputs(const rb_cctx *c, rb_case *cs)
+static int rb_case_list_inputs(const rb_cctx *c, rb_case *cs, int first_in_memory)
 {
     cs->input_files = calloc(c->n_files + cs->n_motions + 1, sizeof *cs->input_files);
     if (!cs->input_files)
         return 0;
-    for (size_t i = 0; i < c->n_files; i++)
+    for (size_t i = first_in_memory ? 1 : 0; i < c->n_files; i++)
         if (!rb_case_add_input(cs, c->files[i]))
             return 0;
     for (size_t i = 0; i < cs->n_motions; i++)
@@ -255,14 +255,35 @@ rb_status rb_case_load_cached(const char *path, rb_record_cache *cache, rb_case 
     return rb_case_load_from(path, cache, out, diags, 1);
 }
 
-rb_status rb_case_load_generated(const char *path, rb_record_cache *cache,
-                                 rb_case *out, rb_diag_list *diags)
+static rb_status rb_case_load_any(const char *path, unsigned char *text, size_t len,
+                                  rb_record_cache *cache, rb_case *out,
+                                  rb_diag_list *diags, int confined);
+
+rb_status rb_case_load_text(const char *name, const char *text, size_t len,
+                            rb_record_cache *cache, rb_case *out, rb_diag_list *diags)
 {
-    return rb_case_load_from(path, cache, out, diags, 0);
+    unsigned char *copy = malloc(len + 1);
+    if (!copy) {
+        memset(out, 0, sizeof *out);
+        return RB_ERR_NOMEM;
+    }
+    memcpy(copy, text, len);
+    copy[len] = '\0';
+    return rb_case_load_any(name, copy, len, cache, out, diags, 0);
 }
 
 static rb_status rb_case_load_from(const char *path, rb_record_cache *cache,
                                    rb_case *out, rb_diag_list *diags, int confined)
+{
+    return rb_case_load_any(path, NULL, 0, cache, out, diags, confined);
+}
+
+/* A case file at path, or (text != NULL, taken and freed) a document in
+ * memory named path: a list row's overrides, whose `motion:` applies to
+ * each motion of a base's list and which is not a file to list as read. */
+static rb_status rb_case_load_any(const char *path, unsigned char *text, size_t len,
+                                  rb_record_cache *cache, rb_case *out,
+                                  rb_diag_list *diags, int confined)
 {
     rb_cctx c;
     char why[600];
@@ -270,18 +291,26 @@ static rb_status rb_case_load_from(const char *path, rb_record_cache *cache,
     memset(&c, 0, sizeof c);
     c.diags = diags;
     c.cache = cache;
-    c.overrides = !confined;
+    c.overrides = text != NULL;
     size_t first = diags->n;
     c.first_diag = first;
     if (!rb_case_defaults(out, path)) {
+        free(text);
         rb_case_free(out);
         return RB_ERR_NOMEM;
     }
-    if (confined && path && !rb_sandbox_allows(path, why, sizeof why)) {
+    rb_status read;
+    if (text) {
+        read = rb_case_read_merged_text(&c, path, text, len, &root);
+    } else if (confined && path && !rb_sandbox_allows(path, why, sizeof why)) {
         rb_cctx_error_at(&c, RB_ERR_IO, path, 0, 0, "case", "'%s' lies outside the "
                          "sandbox '%s' (%s)", path, rb_sandbox_dir(), why);
         c.fatal = 1;
-    } else if (rb_case_read_merged(&c, path, &root) == RB_OK && !c.fatal) {
+        read = RB_ERR_IO;
+    } else {
+        read = rb_case_read_merged(&c, path, &root);
+    }
+    if (read == RB_OK && !c.fatal) {
         rb_case_read_schema(&c, root, out);
         if (!c.nomem)
             rb_case_resolve(&c, out, root);
@@ -303,7 +332,7 @@ static rb_status rb_case_load_from(const char *path, rb_record_cache *cache,
     rb_status st = c.nomem ? RB_ERR_NOMEM : c.status;
     if (st == RB_OK && c.n_errors > 0)
         st = RB_ERR_INVALID;
-    if (st == RB_OK && !rb_case_list_inputs(&c, out))
+    if (st == RB_OK && !rb_case_list_inputs(&c, out, text != NULL))
         st = RB_ERR_NOMEM;
     rb_cctx_free(&c);
     if (st != RB_OK)

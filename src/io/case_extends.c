@@ -367,6 +367,29 @@ static rb_status rb_read_chain(rb_cctx *c, const char *file, const rb_ynode *whe
     return st;
 }
 
+rb_status rb_case_read_merged_text(rb_cctx *c, const char *name, unsigned char *text,
+                                   size_t len, rb_ynode **root)
+{
+    rb_chain chain;
+    memset(&chain, 0, sizeof chain);
+    rb_status st = rb_yaml_parse_text(c, name, text, len, root);
+    char *id = st == RB_OK ? strdup(name) : NULL;
+    if (st == RB_OK && !id) {
+        c->nomem = 1;
+        st = RB_ERR_NOMEM;
+    }
+    if (st == RB_OK) {
+        chain.names[0] = name;
+        chain.ids[0] = id;
+        chain.n = 1;
+        rb_follow_extends(c, name, *root, &chain);
+        free(id);
+    }
+    if (st == RB_OK && c->fatal)
+        st = RB_ERR_PARSE;
+    return st;
+}
+
 rb_status rb_case_read_merged(rb_cctx *c, const char *file, rb_ynode **root)
 {
     rb_chain chain;

@@ -183,6 +183,10 @@ void rb_case_keypath(char *dst, const char *path, const char *key);
  * when the file cannot be opened. */
 rb_status rb_yaml_read_tree(rb_cctx *c, const char *file, const rb_ynode *where,
                             const char *where_key, rb_ynode **root);
+/* The same for text already in memory, named file in diagnostics; takes
+ * buf (malloc'ed) and frees it. */
+rb_status rb_yaml_parse_text(rb_cctx *c, const char *file, unsigned char *buf, size_t len,
+                             rb_ynode **root);
 void rb_ynode_free(rb_ynode *n);
 /* The entry for key in map, or NULL. */
 rb_yentry *rb_ymap_find(const rb_ynode *map, const char *key);
@@ -194,6 +198,10 @@ int rb_ynode_is_null(const rb_ynode *n);
 /* --- case_extends.c ----------------------------------------------------- */
 /* Read file and everything it extends, merged; *root is the merged tree. */
 rb_status rb_case_read_merged(rb_cctx *c, const char *file, rb_ynode **root);
+/* The same for a document in memory (a list row's overrides), named name
+ * in diagnostics; takes text (malloc'ed) and frees it. */
+rb_status rb_case_read_merged_text(rb_cctx *c, const char *name, unsigned char *text,
+                                   size_t len, rb_ynode **root);
 
 /* --- case_value.c: typed values ----------------------------------------- */
 /* Look up key in map and mark it used. Missing and required: error at the

@@ -1,76 +1,42 @@
 /* rb_case_load_overrides: a base case plus overriding values.
  *
- * The loader reads case files by path and resolves `extends:` and record
- * files relative to the file that names them. So the overrides are written
- * as a small case file that extends the base (both by absolute path, since
- * the file lives in the temporary directory) and loaded through
- * rb_case_load, which keeps every merge rule and check in one place. The
- * file is removed at once. Diagnostics are then mapped back: positions in
- * the generated file become the origin's line and column of the value, and
+ * The overrides become a small case document in memory that extends the
+ * base (by absolute path, as are the records it names), loaded through
+ * rb_case_load_text, which keeps every merge rule and check in one place:
+ * nothing is written to disk. Diagnostics are then mapped back: positions
+ * in the document become the origin's line and column of the value, and
  * the working-directory prefix the absolute paths brought in is removed, so
- * that paths read as they would in a normal load. When the loader gains an
- * entry point that takes text, only this file changes. */
+ * that paths read as they would in a normal load. */
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 #include "rockbolt/case_overrides.h"
+#include "util/strbuf.h"
 #include "rockbolt/datadir.h"
 
 #define RB_OV_MAX_DEPTH 4
 #define RB_OV_COMP_MAX 64
 
-typedef struct {
-    char *buf;
-    size_t len, cap;
-    int nomem;
-} rb_sbuf;
-
-static void sb_put(rb_sbuf *s, const char *p, size_t n)
-{
-    if (s->nomem)
-        return;
-    if (s->len + n + 1 > s->cap) {
-        size_t cap = s->cap ? s->cap : 256;
-        while (cap < s->len + n + 1)
-            cap *= 2;
-        char *q = realloc(s->buf, cap);
-        if (!q) {
-            s->nomem = 1;
-            return;
-        }
-        s->buf = q;
-        s->cap = cap;
-    }
-    memcpy(s->buf + s->len, p, n);
-    s->len += n;
-    s->buf[s->len] = '\0';
-}
-
-static void sb_str(rb_sbuf *s, const char *p)
-{
-    sb_put(s, p, strlen(p));
-}
-
 /* A double-quoted YAML scalar: no value can change the document's shape. */
-static void sb_quoted(rb_sbuf *s, const char *v)
+static void sb_quoted(rb_strbuf *s, const char *v)
 {
-    sb_put(s, "\"", 1);
+    rb_strbuf_putn(s, "\"", 1);
     for (const unsigned char *p = (const unsigned char *)v; *p; p++) {
         char esc[8];
         if (*p == '"' || *p == '\\') {
             esc[0] = '\\';
             esc[1] = (char)*p;
-            sb_put(s, esc, 2);
+            rb_strbuf_putn(s, esc, 2);
         } else if (*p < 0x20 || *p == 0x7f) {
             snprintf(esc, sizeof esc, "\\x%02x", *p);
-            sb_str(s, esc);
+            rb_strbuf_puts(s, esc);
         } else {
-            sb_put(s, (const char *)p, 1);
+            rb_strbuf_putn(s, (const char *)p, 1);
         }
     }
-    sb_put(s, "\"", 1);
+    rb_strbuf_putn(s, "\"", 1);
 }
 
 /* Component d of a dotted key into out; 0 when there is none. */
@@ -124,7 +90,7 @@ static int same_prefix(const char *key, const char *prefix, int d)
 }
 
 typedef struct {
-    rb_sbuf sb;
+    rb_strbuf sb;
     int line;          /* lines written so far */
     int *line_ov;      /* generated line (1-based) -> override index */
     size_t line_cap;
@@ -135,13 +101,13 @@ typedef struct {
 
 static void gen_line_end(rb_ovgen *g, int ov_index)
 {
-    sb_put(&g->sb, "\n", 1);
+    rb_strbuf_putn(&g->sb, "\n", 1);
     g->line++;
     if ((size_t)g->line >= g->line_cap) {
         size_t cap = g->line_cap ? 2 * g->line_cap : 32;
         int *p = realloc(g->line_ov, cap * sizeof *p);
         if (!p) {
-            g->sb.nomem = 1;
+            g->sb.oom = 1;
             return;
         }
         g->line_ov = p;
@@ -167,17 +133,17 @@ static void gen_map(rb_ovgen *g, size_t first, int d, char *done)
             continue;
         key_comp(key, d, comp);
         for (int k = 0; k < d; k++)
-            sb_str(&g->sb, "  ");
-        sb_str(&g->sb, comp);
-        sb_str(&g->sb, ":");
+            rb_strbuf_puts(&g->sb, "  ");
+        rb_strbuf_puts(&g->sb, comp);
+        rb_strbuf_puts(&g->sb, ":");
         if (key_depth(key) == d + 1) {
             const char *v = g->ov[i].value;
-            sb_str(&g->sb, " ");
+            rb_strbuf_puts(&g->sb, " ");
             if (is_path_key(key) && v[0] && v[0] != '/'
                 && strncmp(v, RB_SHIPPED_PREFIX, strlen(RB_SHIPPED_PREFIX)) != 0) {
                 char *abs = malloc(strlen(g->origin_dir) + strlen(v) + 1);
                 if (!abs) {
-                    g->sb.nomem = 1;
+                    g->sb.oom = 1;
                     return;
                 }
                 strcpy(abs, g->origin_dir);
@@ -269,37 +235,7 @@ static rb_status push_diag(rb_diag_list *l, const char *file, int line, int col,
     return RB_ERR_INVALID;
 }
 
-/* Write text to a new temporary file; its name goes to path. */
-static rb_status write_temp(const char *text, size_t len, char *path, size_t size)
-{
-    const char *dir = getenv("TMPDIR");
-    if (!dir || !dir[0])
-        dir = "/tmp";
-    if ((size_t)snprintf(path, size, "%s/rockbolt-row-XXXXXX", dir) >= size)
-        return RB_ERR_IO;
-    int fd = mkstemp(path);
-    if (fd < 0)
-        return RB_ERR_IO;
-    size_t off = 0;
-    while (off < len) {
-        ssize_t w = write(fd, text + off, len - off);
-        if (w < 0 && errno == EINTR)
-            continue;
-        if (w <= 0) {
-            close(fd);
-            unlink(path);
-            return RB_ERR_IO;
-        }
-        off += (size_t)w;
-    }
-    if (close(fd) != 0) {
-        unlink(path);
-        return RB_ERR_IO;
-    }
-    return RB_OK;
-}
-
-/* Point diagnostics of the generated file at the overrides' origin. */
+/* Point diagnostics of the generated document at the overrides' origin. */
 static void map_diags(rb_diag_list *l, size_t first, const char *tmp,
                       const rb_ovgen *g, const char *origin, int row_line,
                       const char *cwd)
@@ -319,7 +255,7 @@ static void map_diags(rb_diag_list *l, size_t first, const char *tmp,
         }
         char *p;
         while ((p = strstr(d->msg, tmp)) != NULL) {
-            /* messages quoting the generated file name: name the origin */
+            /* messages quoting the generated document: name the origin */
             char rest[sizeof d->msg];
             snprintf(rest, sizeof rest, "%s", p + strlen(tmp));
             snprintf(p, sizeof d->msg - (size_t)(p - d->msg), "%s%s", origin, rest);
@@ -330,18 +266,18 @@ static void map_diags(rb_diag_list *l, size_t first, const char *tmp,
 static rb_status generate(rb_ovgen *g, const char *base_abs, const char *name,
                           char *done)
 {
-    sb_str(&g->sb, "extends: ");
+    rb_strbuf_puts(&g->sb, "extends: ");
     sb_quoted(&g->sb, base_abs);
     gen_line_end(g, -1);
     if (name) {
-        sb_str(&g->sb, "name: ");
+        rb_strbuf_puts(&g->sb, "name: ");
         sb_quoted(&g->sb, name);
         gen_line_end(g, -1);
     }
-    for (size_t i = 0; i < g->n && !g->sb.nomem; i++)
+    for (size_t i = 0; i < g->n && !g->sb.oom; i++)
         if (!done[i])
             gen_map(g, i, 0, done);
-    return g->sb.nomem ? RB_ERR_NOMEM : RB_OK;
+    return g->sb.oom ? RB_ERR_NOMEM : RB_OK;
 }
 
 rb_status rb_case_load_overrides(const char *base_path, const char *origin,
@@ -349,7 +285,7 @@ rb_status rb_case_load_overrides(const char *base_path, const char *origin,
                                  size_t n, struct rb_record_cache *cache, rb_case *out, rb_diag_list *diags)
 {
     rb_ovgen g;
-    char tmp[600];
+    char doc[600];
     rb_status st = RB_OK;
     int row_line = n ? ov[0].line : 0;
     memset(out, 0, sizeof *out);
@@ -382,19 +318,13 @@ rb_status rb_case_load_overrides(const char *base_path, const char *origin,
     g.n = n;
     g.origin_dir = odir;
     st = generate(&g, base_abs, name, done);
-    if (st == RB_OK && write_temp(g.sb.buf, g.sb.len, tmp, sizeof tmp) != RB_OK) {
-        char msg[700];
-        snprintf(msg, sizeof msg, "cannot write a temporary file in %s: %s",
-                 getenv("TMPDIR") ? getenv("TMPDIR") : "/tmp", strerror(errno));
-        st = push_diag(diags, origin, row_line, 1, "case", msg);
-        st = RB_ERR_IO;
-    }
     if (st != RB_OK)
         goto done;
+    /* the document's name in diagnostics until they are mapped to the row */
+    snprintf(doc, sizeof doc, "%.500s (row at line %d)", origin, row_line);
     size_t first = diags->n;
-    st = rb_case_load_generated(tmp, cache, out, diags);
-    unlink(tmp);
-    map_diags(diags, first, tmp, &g, origin, row_line, cwd);
+    st = rb_case_load_text(doc, g.sb.p, g.sb.n, cache, out, diags);
+    map_diags(diags, first, doc, &g, origin, row_line, cwd);
     if (st == RB_OK) {
         char *p = dup_str(origin);
         if (!p) {
@@ -408,7 +338,7 @@ rb_status rb_case_load_overrides(const char *base_path, const char *origin,
             strip_prefix(out->motions[i].source, cwd);
     }
 done:
-    free(g.sb.buf);
+    free(g.sb.p);
     free(g.line_ov);
     free(done);
     free(base_abs);

@@ -495,6 +495,13 @@ rb_status rb_yaml_read_tree(rb_cctx *c, const char *file, const rb_ynode *where,
     rb_status st = rb_yaml_slurp(c, file, where, where_key, &buf, &len);
     if (st != RB_OK)
         return st;
+    return rb_yaml_parse_text(c, file, buf, len, root);
+}
+
+rb_status rb_yaml_parse_text(rb_cctx *c, const char *file, unsigned char *buf, size_t len,
+                             rb_ynode **root)
+{
+    *root = NULL;
     rb_ywalk w;
     memset(&w, 0, sizeof w);
     w.c = c;
