@@ -161,8 +161,11 @@ char *rb_batch_render_json(const rb_batch_summary *s)
         && (cases = cJSON_AddArrayToObject(root, "cases")) != NULL;
     for (size_t i = 0; ok && i < s->n_cases; i++) {
         ok = add_case(cases, &s->cases[i], s->design);
+        /* the case just added is the array's last item, which cJSON keeps
+         * as its first item's prev: finding it by index would make writing
+         * a summary quadratic in the cases */
         if (ok)
-            ok = add_digest(cJSON_GetArrayItem(cases, cJSON_GetArraySize(cases) - 1));
+            ok = add_digest(cases->child->prev);
     }
     char *text = ok ? cJSON_Print(root) : NULL, *out = NULL;
     cJSON_Delete(root);
