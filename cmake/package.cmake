@@ -1,5 +1,5 @@
 # Version header, the installable library, and the install rules.
-# Included from CMakeLists.txt after the targets rb_core, rb_io and rockbolt.
+# Included from CMakeLists.txt after the libraries and rockbolt.
 include(GNUInstallDirs)
 
 # The version, from project(VERSION): one place for --version, the reports
@@ -14,7 +14,7 @@ target_include_directories(rb_core PUBLIC
 # (include/rockbolt/datadir.h).
 file(RELATIVE_PATH RB_DATA_FROM_BIN ${CMAKE_INSTALL_FULL_BINDIR}
      ${CMAKE_INSTALL_FULL_DATADIR}/rockbolt)
-set_property(SOURCE ${PROJECT_SOURCE_DIR}/src/io/datadir.c APPEND PROPERTY
+set_property(SOURCE ${PROJECT_SOURCE_DIR}/src/util/datadir.c APPEND PROPERTY
     COMPILE_DEFINITIONS
     RB_INSTALL_DATADIR="${CMAKE_INSTALL_FULL_DATADIR}/rockbolt"
     RB_DATA_FROM_BIN="${RB_DATA_FROM_BIN}")
@@ -41,14 +41,14 @@ add_custom_command(
 target_sources(rockbolt PRIVATE ${PROJECT_BINARY_DIR}/generated/cli_help_text.c)
 target_include_directories(rockbolt PRIVATE ${PROJECT_SOURCE_DIR}/src/cli)
 
-# librockbolt, static and shared, from the sources of rb_core and rb_io (and
-# what they build on), compiled once more as position-independent code and
-# without link-time optimisation, so that any compiler can link the archive.
-# The tests keep linking rb_core and rb_io.
+# librockbolt, static and shared, from the sources of every library,
+# compiled once more as position-independent code and without link-time
+# optimisation, so that any compiler can link the archive. The tests keep
+# linking the libraries of the build.
 option(RB_LIBRARY "Build and install librockbolt (static and shared)" ON)
 if(RB_LIBRARY)
   set(RB_LIB_SOURCES)
-  foreach(tgt rb_core rb_util rb_io)
+  foreach(tgt rb_util rb_core rb_record rb_case rb_design rb_report rb_run rb_batch)
     if(TARGET ${tgt})
       get_target_property(srcs ${tgt} SOURCES)
       list(APPEND RB_LIB_SOURCES ${srcs})
@@ -67,7 +67,7 @@ if(RB_LIBRARY)
       ${PROJECT_BINARY_DIR}/include ${PROJECT_SOURCE_DIR}/src)
   set(RB_LIB_DEPS PkgConfig::YAML PkgConfig::CJSON PkgConfig::NETTLE Threads::Threads m)
   target_link_libraries(rockbolt_objects PRIVATE ${RB_LIB_DEPS})
-  add_dependencies(rockbolt_objects rb_io)
+  add_dependencies(rockbolt_objects rb_batch)
 
   add_library(rockbolt_shared SHARED $<TARGET_OBJECTS:rockbolt_objects>)
   add_library(rockbolt_static STATIC $<TARGET_OBJECTS:rockbolt_objects>)

@@ -15,7 +15,6 @@
 #define ROCKBOLT_DESIGN_H
 
 #include <stddef.h>
-#include <stdio.h>
 #include "rockbolt/case.h"
 #include "rockbolt/criteria.h"
 #include "rockbolt/model.h"
@@ -193,19 +192,6 @@ rb_status rb_sweep_amplitude(const rb_model *model, const rb_motion *motion,
 /* Free what a sweep owns; accepts NULL. */
 void rb_sweep_free(rb_sweep *s);
 
-/* Writers: one row (CSV, with a header line) or one object (JSON, under
- * "points") per point. The FILE* forms write to an open stream; the path
- * forms write atomically (temporary file, then rename) and report errors in
- * diag. RB_ERR_IO on a write error, RB_ERR_NOMEM. */
-rb_status rb_sweep_write_csv(const rb_sweep *s, FILE *fp);
-rb_status rb_sweep_write_json(const rb_sweep *s, FILE *fp);
-rb_status rb_sweep_save_csv(const rb_sweep *s, const char *path, rb_diag *diag);
-rb_status rb_sweep_save_json(const rb_sweep *s, const char *path, rb_diag *diag);
-
-/* The sweep as a cJSON object (caller owns it: cJSON_Delete), for reports
- * that embed it. NULL on allocation failure. */
-struct cJSON;
-struct cJSON *rb_sweep_to_json(const rb_sweep *s);
 
 /* ---- Code-static comparison --------------------------------------------- */
 

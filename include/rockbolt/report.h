@@ -76,6 +76,23 @@ rb_status rb_report_text_render(const rb_report *r, const char *tmpl,
  * RB_ERR_NONFINITE for a NaN or infinite value. */
 rb_status rb_history_write_csv(FILE *fp, const rb_report *r, rb_diag *diag);
 
+/* ---- Sweeps --------------------------------------------------------------
+ * A design sweep (rockbolt/design.h) written out: the searches keep no I/O. */
+
+/* Writers: one row (CSV, with a header line) or one object (JSON, under
+ * "points") per point. The FILE* forms write to an open stream; the path
+ * forms write atomically (temporary file, then rename) and report errors in
+ * diag. RB_ERR_IO on a write error, RB_ERR_NOMEM. */
+rb_status rb_sweep_write_csv(const rb_sweep *s, FILE *fp);
+rb_status rb_sweep_write_json(const rb_sweep *s, FILE *fp);
+rb_status rb_sweep_save_csv(const rb_sweep *s, const char *path, rb_diag *diag);
+rb_status rb_sweep_save_json(const rb_sweep *s, const char *path, rb_diag *diag);
+
+/* The sweep as a cJSON object (caller owns it: cJSON_Delete), for reports
+ * that embed it. NULL on allocation failure. */
+struct cJSON;
+struct cJSON *rb_sweep_to_json(const rb_sweep *s);
+
 /* ---- Templates ----------------------------------------------------------
  *
  * A template is text with placeholders:

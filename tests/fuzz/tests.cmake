@@ -15,7 +15,7 @@ foreach(h ${RB_FUZZ_HARNESSES})
   add_executable(fuzz_replay_${h} ${RB_FUZZ_DIR}/fuzz_${h}.c
                  ${RB_FUZZ_DIR}/fuzz_common.c ${RB_FUZZ_DIR}/fuzz_driver.c)
   rb_target_defaults(fuzz_replay_${h})
-  target_link_libraries(fuzz_replay_${h} PRIVATE rb_io)
+  target_link_libraries(fuzz_replay_${h} PRIVATE rb_all)
   # The committed seeds too: keeps the driver and the harness invariants
   # honest in every build, even while regressions/<harness>/ is empty.
   if(EXISTS ${RB_FUZZ_DIR}/seeds/${h})

@@ -4,7 +4,7 @@
 # is not blank. Both skip (77) when python3 or chromium is not installed.
 add_executable(plot_sample ${PROJECT_SOURCE_DIR}/tests/plot/plot_sample.c)
 rb_target_defaults(plot_sample)
-target_link_libraries(plot_sample PRIVATE rb_io)
+target_link_libraries(plot_sample PRIVATE rb_all)
 
 add_test(NAME plot_wellformed
          COMMAND sh ${PROJECT_SOURCE_DIR}/tests/plot/check_xml.sh

@@ -14,6 +14,7 @@
 #include "harness.h"
 #include "thesis_block.h"
 #include "rockbolt/design.h"
+#include "rockbolt/report.h"
 #include "rockbolt/record.h"
 
 /* ---- Rigid block, triangular-decreasing pulse, p t1 = 7 ------------------ */

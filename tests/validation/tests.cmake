@@ -7,7 +7,7 @@
 file(GLOB RB_VALIDATE_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/tests/validation/*.c)
 add_executable(rb_validate ${RB_VALIDATE_SOURCES})
 rb_target_defaults(rb_validate)
-target_link_libraries(rb_validate PRIVATE rb_io)
+target_link_libraries(rb_validate PRIVATE rb_all)
 add_test(NAME validation
          COMMAND rb_validate --root ${PROJECT_SOURCE_DIR}
                  --write ${CMAKE_CURRENT_BINARY_DIR}/validation.md)

@@ -10,7 +10,7 @@ foreach(t no_yield validity)
 endforeach()
 add_executable(judge_probe ${PROJECT_SOURCE_DIR}/tests/verdicts/judge_probe.c)
 rb_target_defaults(judge_probe)
-target_link_libraries(judge_probe PRIVATE rb_io PkgConfig::CJSON)
+target_link_libraries(judge_probe PRIVATE rb_all PkgConfig::CJSON)
 find_package(Python3 COMPONENTS Interpreter)
 if(Python3_Interpreter_FOUND)
   add_test(NAME verdict_overrides

@@ -9,7 +9,7 @@
 #include "rockbolt/jsonnum.h"
 #include "rockbolt/report.h"
 #include "rockbolt/textsafe.h"
-#include "design_internal.h"
+#include "rockbolt/design.h"
 
 static const char *x_name(const rb_sweep *s)
 {
@@ -133,11 +133,8 @@ static rb_status save(const rb_sweep *s, const char *path, int json, rb_diag *di
     st = json ? rb_sweep_write_json(s, f.fp) : rb_sweep_write_csv(s, f.fp);
     if (st != RB_OK) {
         rb_outfile_abort(&f);
-        rb_design_fail(diag, st, "", st == RB_ERR_NOMEM ? "out of memory"
-                       : "cannot write the sweep");
-        if (diag)
-            snprintf(diag->file, sizeof diag->file, "%s", path);
-        return st;
+        return rb_diag_set(diag, st, path, 0, 0, "", "%s", st == RB_ERR_NOMEM
+                           ? "out of memory" : "cannot write the sweep");
     }
     return rb_outfile_commit(&f, diag);
 }

@@ -1,6 +1,6 @@
 /* What the JSON and text reports share: the normalised forms of a result
  * and the names of enum values, computed in one place so the two reports
- * cannot disagree. Private to src/io. */
+ * cannot disagree. Private to src/report. */
 #ifndef RB_REPORT_INTERNAL_H
 #define RB_REPORT_INTERNAL_H
 

@@ -1,5 +1,5 @@
 /* The JSON report's tree builders, shared by report_json*.c. Private to
- * src/io. */
+ * src/report. */
 #ifndef RB_REPORT_JSON_BUILD_H
 #define RB_REPORT_JSON_BUILD_H
 

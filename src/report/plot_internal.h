@@ -1,7 +1,7 @@
 /* What the figure renderers share: a growing text buffer that remembers an
  * allocation failure instead of reporting each one, XML escaping, nice
  * axis ticks, panels with their axes, and decimated series. Private to
- * src/plot. */
+ * src/report. */
 #ifndef RB_PLOT_INTERNAL_H
 #define RB_PLOT_INTERNAL_H
 
