@@ -1,4 +1,4 @@
-/* Batch review: many cases, one summary (io layer).
+/* Batch review: many cases, one summary (library rb_batch).
  *
  * A work list is built from case files, directories (their *.yaml files,
  * sorted), glob patterns and equipment lists (CSV files whose rows override

@@ -1,4 +1,4 @@
-/* Case files: the YAML description of one equipment check (io layer).
+/* Case files: the YAML description of one equipment check (library rb_case).
  *
  * rb_case_load parses a case with libyaml, converts every quantity to SI
  * through units.h, validates it, reads the record files it names and builds

@@ -1,4 +1,4 @@
-/* A case made of a base case file and a few overriding values (io layer).
+/* A case made of a base case file and a few overriding values (library rb_case).
  *
  * Equipment lists give one row per cabinet: a base case plus the values
  * that differ (mass, height, bolt size, gap, motion, ...). Each value is

@@ -5,7 +5,7 @@
  * the critical alternating pulses of chapter 3) or as samples at a fixed
  * interval, interpolated linearly. Sampled series are held in an rb_series,
  * which owns its array; filters and scaling make new series. No I/O here:
- * record files are read by the io layer (record.h). */
+ * record files are read by rb_record (record.h). */
 #ifndef ROCKBOLT_MOTION_H
 #define ROCKBOLT_MOTION_H
 

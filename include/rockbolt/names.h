@@ -19,6 +19,7 @@ extern const rb_enum_name rb_validity_mode_names[]; /* rb_validity_mode */
 extern const rb_enum_name rb_motion_type_names[];   /* rb_motion_kind: harmonic,
                                                        pulse, record (sampled) */
 extern const rb_enum_name rb_pulse_shape_names[];   /* rb_pulse_shape */
+extern const rb_enum_name rb_record_format_names[]; /* rb_record_format */
 
 /* The name of value in table t; "unknown" when it has none. */
 const char *rb_enum_str(const rb_enum_name *t, int value);

@@ -1,5 +1,5 @@
 /* Output plans: every file a command writes, known and checked before any
- * work, then written all together or not at all (io layer).
+ * work, then written all together or not at all (library rb_report).
  *
  * A command adds each output it will write (with the option that asked for
  * it) and each file it reads. Every output is resolved to the file it

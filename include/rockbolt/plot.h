@@ -1,4 +1,4 @@
-/* Figures of a check, written as SVG and HTML text (io layer).
+/* Figures of a check, written as SVG and HTML text (library rb_report).
  *
  * The figures follow the thesis's stacked time-history plots (Figs. 5.13 to
  * 6.18) and its response curves (Figs. 5.23 to 6.4). The module draws them

@@ -1,4 +1,4 @@
-/* Reading strong-motion record files into an rb_series (io layer).
+/* Reading strong-motion record files into an rb_series (library rb_record).
  *
  * Formats: PEER AT2 (NGA-West2 header and the older "NPTS= n, DT= dt SEC"
  * one), COSMOS V2 (.V2 corrected acceleration), two columns (time, accel),

@@ -1,5 +1,5 @@
 /* Reports of a case check: JSON, text (through a template), history CSV,
- * and the atomic file writer they all go through (io layer).
+ * and the atomic file writer they all go through (library rb_report).
  *
  * The CLI solves every motion of a case, judges each result, and fills an
  * rb_report that only borrows what it points at. The renderers turn it into

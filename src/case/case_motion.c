@@ -159,10 +159,6 @@ static int rb_read_record_units(rb_cctx *c, const rb_ynode *v, rb_cmotion *cm)
 
 static int rb_read_record(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
 {
-    static const char *const formats[] = {"auto", "at2", "cosmos", "two-column",
-                                          "one-column", NULL};
-    static const rb_record_format fk[] = {RB_REC_AUTO, RB_REC_AT2,
-        RB_REC_COSMOS_V2, RB_REC_TWO_COLUMN, RB_REC_ONE_COLUMN};
     const char *p = cm->key;
     char k[RB_CASE_KEY_MAX];
     int ok = 1, i;
@@ -192,10 +188,8 @@ static int rb_read_record(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
     if (sr) {
         rb_quantity q;
         char msg[200];
-        for (i = 0; formats[i] && strcmp(formats[i], sr->format) != 0; i++)
-            ;
-        if (formats[i])
-            cm->ropts.format = fk[i];
+        if (rb_enum_parse(rb_record_format_names, sr->format, &i))
+            cm->ropts.format = (rb_record_format)i;
         if (sr->dt && rb_unit_parse(sr->dt, RB_DIM_TIME, &q, msg, sizeof msg) == RB_OK)
             cm->ropts.dt_s = q.value;
         if (sr->units) {
@@ -207,8 +201,8 @@ static int rb_read_record(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
     }
     rb_case_keypath(k, p, "format");
     if ((v = rb_cv_get(c, map, p, "format", 0, ""))) {
-        if (rb_cv_enum(c, v, k, formats, &i))
-            cm->ropts.format = fk[i];
+        if (rb_cv_enum_table(c, v, k, rb_record_format_names, 0, &i))
+            cm->ropts.format = (rb_record_format)i;
         else
             ok = 0;
     }

@@ -4,6 +4,7 @@
 #include "rockbolt/model.h"
 #include "rockbolt/motion.h"
 #include "rockbolt/names.h"
+#include "rockbolt/record.h"
 #include "rockbolt/solve.h"
 
 const rb_enum_name rb_bolt_model_names[] = {
@@ -26,6 +27,10 @@ const rb_enum_name rb_pulse_shape_names[] = {
     {"rectangular", RB_PULSE_RECT}, {"triangular-decreasing", RB_PULSE_TRI_DEC},
     {"triangular-increasing", RB_PULSE_TRI_INC}, {"half-sine", RB_PULSE_HALF_SINE},
     {NULL, 0}};
+
+const rb_enum_name rb_record_format_names[] = {
+    {"auto", RB_REC_AUTO}, {"at2", RB_REC_AT2}, {"cosmos", RB_REC_COSMOS_V2},
+    {"two-column", RB_REC_TWO_COLUMN}, {"one-column", RB_REC_ONE_COLUMN}, {NULL, 0}};
 
 const char *rb_enum_str(const rb_enum_name *t, int value)
 {
