@@ -265,15 +265,11 @@ static rb_status rb_read_chain(rb_cctx *c, const char *file, const rb_ynode *whe
  * key in artefacts that may be published. */
 static int rb_plausible_case(const rb_ynode *root)
 {
-    static const char *const keys[] = {
-        "name", "description", "extends", "equipment", "anchorage", "gap",
-        "gap_ratio", "motion", "motions", "criteria", "analysis", "design"};
     if (!root || root->kind != RB_YNODE_MAP || root->n == 0)
         return 1;   /* the schema says what is wrong, quoting nothing */
     for (size_t i = 0; i < root->n; i++)
-        for (size_t k = 0; k < sizeof keys / sizeof keys[0]; k++)
-            if (strcmp(root->entries[i].key, keys[k]) == 0)
-                return 1;
+        if (rb_case_top_key(root->entries[i].key))
+            return 1;
     return 0;
 }
 
@@ -345,8 +341,15 @@ static rb_status rb_read_chain(rb_cctx *c, const char *file, const rb_ynode *whe
     }
     chain->names[chain->n] = file;
     chain->ids[chain->n++] = id;
+    size_t diags_before = c->diags->n, errors_before = c->n_errors,
+           dropped_before = c->n_dropped;
     rb_status st = rb_yaml_read_tree(c, file, where, "extends", root);
     if (st == RB_OK && !rb_plausible_case(*root)) {
+        /* what the walk said about a file that is no case (a duplicate
+         * key, say) would quote its text: only the verdict below stays */
+        c->diags->n = diags_before;
+        c->n_errors = errors_before;
+        c->n_dropped = dropped_before;
         if (where)
             rb_cctx_error(c, where, "extends", "'%s' is not a rockbolt case: none of "
                           "its top-level keys is a case key (name, equipment, "

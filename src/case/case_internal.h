@@ -195,6 +195,10 @@ const char *rb_ynode_kind_str(const rb_ynode *n);
 /* 1 if n is a plain null scalar ("", "~", "null"). */
 int rb_ynode_is_null(const rb_ynode *n);
 
+/* --- case_schema.c ------------------------------------------------------- */
+/* 1 if key is one a case file may give at its top level. */
+int rb_case_top_key(const char *key);
+
 /* --- case_extends.c ----------------------------------------------------- */
 /* Read file and everything it extends, merged; *root is the merged tree. */
 rb_status rb_case_read_merged(rb_cctx *c, const char *file, rb_ynode **root);

@@ -18,6 +18,14 @@
 static const char *const rb_top_keys[] = {
     "name", "description", "extends", "equipment", "anchorage", "gap",
     "gap_ratio", "motion", "motions", "criteria", "analysis", "design", NULL};
+int rb_case_top_key(const char *key)
+{
+    for (size_t k = 0; rb_top_keys[k]; k++)
+        if (strcmp(key, rb_top_keys[k]) == 0)
+            return 1;
+    return 0;
+}
+
 static const char *const rb_equipment_keys[] = {
     "mass", "height", "cm_height", "base_width", "frequency", "damping",
     "restitution", "inertia", "rigid", NULL};

@@ -28,11 +28,14 @@ typedef struct {
     size_t len;
     char path[RB_CASE_KEY_MAX];       /* key being parsed, for messages */
     int stop;                         /* a fatal error was reported */
+    int case_like;                    /* a case key was met at the top: until
+                                         then the file may be of another kind,
+                                         and messages quote none of its text */
 } rb_ywalk;
 
 static const char *rb_ywalk_key(const rb_ywalk *w)
 {
-    return w->path[0] ? w->path : "case";
+    return w->path[0] && w->case_like ? w->path : "case";
 }
 
 static void rb_ywalk_fatal(rb_ywalk *w, rb_status st, int line, int col,
@@ -138,9 +141,9 @@ static int rb_ywalk_anchor(rb_ywalk *w, const yaml_char_t *anchor, yaml_mark_t m
     char msg[300];
     if (!anchor)
         return 0;
-    snprintf(msg, sizeof msg, "YAML anchors ('&%.40s') and aliases are not "
-             "allowed in case files; use 'extends:' to share settings",
-             (const char *)anchor);
+    /* the anchor's name is not quoted: the file may not be a case at all */
+    snprintf(msg, sizeof msg, "YAML anchors ('&') and aliases are not "
+             "allowed in case files; use 'extends:' to share settings");
     rb_ywalk_fatal(w, RB_ERR_PARSE, (int)m.line + 1, (int)m.column + 1, msg);
     return 1;
 }
@@ -238,6 +241,13 @@ static int rb_ywalk_add(rb_ywalk *w, rb_ynode *map, rb_ynode *key, rb_ynode *val
         return 0;
     }
     rb_yentry *old = rb_ymap_find(map, key->text);
+    if (old && !w->case_like) {
+        rb_cctx_error(w->c, key, "case", "duplicate key (first given at line %d)",
+                      old->line);
+        rb_ynode_free(key);
+        rb_ynode_free(val);
+        return 1;
+    }
     if (old) {
         rb_cctx_error(w->c, key, w->path, "duplicate key '%s' (first given at "
                       "line %d)", key->text, old->line);
@@ -292,6 +302,8 @@ static int rb_ywalk_map_entries(rb_ywalk *w, rb_ynode *map, int depth)
             rb_ynode_free(key);
             return 0;
         }
+        if (!base && rb_case_top_key(key->text))
+            w->case_like = 1;
         snprintf(w->path + base, sizeof w->path - base, "%s%s",
                  base ? "." : "", key->text);
         rb_ynode *val = NULL;

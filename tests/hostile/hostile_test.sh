@@ -124,6 +124,10 @@ no_quote)
     # the terminal, JSON, CSV or JUnit
     printf 'root:x:0:0:root:/root:/bin/bash\nhunter2-secret\n' >"$s/passwd"
     printf 'apiVersion: v1\nkind: Secret\ndata:\n  password: hunter2-secret\n' >"$s/secret.yaml"
+    # a duplicate key and an anchor, which the YAML walk meets before it can
+    # tell the file is no case: refused, with none of the file's text
+    printf 'apiVersion: v1\nkind: Secret\ndata:\n  password: hunter2-secret\n  password: hunter2-other\nmore: &hunter2anchor x\n' >"$s/secret2.yaml"
+    printf 'extends: secret2.yaml\nname: ext2\n' >"$s/e2.yaml"
     cat >"$s/r.yaml" <<YAML
 extends: $base
 name: rec
@@ -134,8 +138,8 @@ YAML
     has "$s/err" 'r.yaml:3:.*motion.file: cannot read record'
     run 2 check "$s/e.yaml"
     has "$s/err" "e.yaml:1:10: error: extends: '.*secret.yaml' is not a rockbolt case"
-    run 2 batch "$s/r.yaml" "$s/e.yaml" "$s/secret.yaml" --json "$s/b.json" \
-        --csv "$s/b.csv" --junit "$s/b.xml"
+    run 2 batch "$s/r.yaml" "$s/e.yaml" "$s/secret.yaml" "$s/e2.yaml" "$s/secret2.yaml" \
+        --json "$s/b.json" --csv "$s/b.csv" --junit "$s/b.xml"
     for f in out err b.json b.csv b.xml; do
         for w in root:x /bin/bash hunter2 apiVersion password Secret; do
             lacks "$s/$f" "$w"
