@@ -15,6 +15,7 @@
 #include <cjson/cJSON.h>
 #include "batch_summary.h"
 #include "rockbolt/jsonnum.h"
+#include "util/strbuf.h"
 #include "rockbolt/report.h"
 
 static int add_num(cJSON *o, const char *k, double v)
@@ -159,26 +160,45 @@ char *rb_batch_render_json(const rb_batch_summary *s)
         && add_num(counts, "errors", (double)n.errors)
         && add_num(counts, "runs", (double)n.runs)
         && (cases = cJSON_AddArrayToObject(root, "cases")) != NULL;
-    for (size_t i = 0; ok && i < s->n_cases; i++) {
-        ok = add_case(cases, &s->cases[i], s->design);
-        /* the case just added is the array's last item, which cJSON keeps
-         * as its first item's prev: finding it by index would make writing
-         * a summary quadratic in the cases */
-        if (ok)
-            ok = add_digest(cases->child->prev);
-    }
-    char *text = ok ? cJSON_Print(root) : NULL, *out = NULL;
+    /* the head with an empty list of cases, which comes last; then the
+     * cases one at a time, so that the tree of one case is all that is
+     * ever held besides the text (a whole list's tree took 5 KB a row) */
+    char *head = ok ? cJSON_Print(root) : NULL;
     cJSON_Delete(root);
-    if (text) {
-        size_t len = strlen(text);
-        out = malloc(len + 2);
-        if (out) {
-            memcpy(out, text, len);
-            memcpy(out + len, "\n", 2);
+    size_t hl = head ? strlen(head) : 0;
+    if (!head || hl < 4 || strcmp(head + hl - 4, "[]\n}") != 0) {
+        cJSON_free(head);
+        return NULL;
+    }
+    rb_strbuf b = {0};
+    rb_strbuf_putn(&b, head, hl - 3);
+    cJSON_free(head);
+    for (size_t i = 0; !b.oom && i < s->n_cases; i++) {
+        cJSON *one = cJSON_CreateArray();
+        char *text = one && add_case(one, &s->cases[i], s->design)
+                     && add_digest(one->child) ? cJSON_Print(one->child) : NULL;
+        cJSON_Delete(one);
+        if (!text) {
+            b.oom = 1;
+            break;
+        }
+        /* cJSON's own layout of an array item two levels down: ", "
+         * between items, each line of the item two tabs further in */
+        if (i > 0)
+            rb_strbuf_puts(&b, ", ");
+        for (const char *p = text, *nl; *p; p = nl + 1) {
+            nl = strchr(p, '\n');
+            if (!nl) {
+                rb_strbuf_puts(&b, p);
+                break;
+            }
+            rb_strbuf_putn(&b, p, (size_t)(nl - p) + 1);
+            rb_strbuf_puts(&b, "\t\t");
         }
         cJSON_free(text);
     }
-    return out;
+    rb_strbuf_puts(&b, "]\n}\n");
+    return rb_strbuf_take(&b);
 }
 
 /* ---- Reading --------------------------------------------------------------- */
