@@ -45,5 +45,13 @@ rb_status rb_diag_set(rb_diag *diag, rb_status st, const char *file, int line, i
     __attribute__((format(printf, 7, 8)))
 #endif
     ;
+/* The same with a va_list, for callers that take a format themselves. */
+#include <stdarg.h>
+rb_status rb_diag_vset(rb_diag *diag, rb_status st, const char *file, int line, int col,
+                       const char *key, const char *fmt, va_list ap)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 7, 0)))
+#endif
+    ;
 
 #endif

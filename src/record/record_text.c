@@ -163,15 +163,8 @@ static rb_status rb_rec_vfail(const rb_rec_reader *r, rb_status status, long lin
 static rb_status rb_rec_vfail(const rb_rec_reader *r, rb_status status, long line,
                               int col, const char *fmt, va_list ap)
 {
-    rb_diag *d = r->diag;
-    if (!d)
-        return status;
-    rb_diag_clear(d);
-    snprintf(d->file, sizeof d->file, "%s", r->path ? r->path : "");
-    d->line = line > 0 && line <= 0x7fffffffL ? (int)line : 0;
-    d->col = col > 0 ? col : 0;
-    vsnprintf(d->msg, sizeof d->msg, fmt, ap);
-    return status;
+    return rb_diag_vset(r->diag, status, r->path, line > 0 && line <= 0x7fffffffL
+                        ? (int)line : 0, col > 0 ? col : 0, "", fmt, ap);
 }
 
 rb_status rb_rec_fail_at(const rb_rec_reader *r, rb_status status, long line,

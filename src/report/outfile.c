@@ -20,16 +20,10 @@
 
 static rb_status io_fail(rb_diag *diag, const char *path, const char *what, int err)
 {
-    if (diag) {
-        snprintf(diag->file, sizeof diag->file, "%s", path);
-        diag->line = diag->col = 0;
-        diag->key[0] = '\0';
-        if (err)
-            snprintf(diag->msg, sizeof diag->msg, "%.300s: %.200s", what, strerror(err));
-        else
-            snprintf(diag->msg, sizeof diag->msg, "%.500s", what);
-    }
-    return RB_ERR_IO;
+    if (err)
+        return rb_diag_set(diag, RB_ERR_IO, path, 0, 0, "", "%.300s: %.200s", what,
+                           strerror(err));
+    return rb_diag_set(diag, RB_ERR_IO, path, 0, 0, "", "%.500s", what);
 }
 
 /* The directory part of path ("." when there is none); caller frees. */

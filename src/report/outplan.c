@@ -152,21 +152,16 @@ __attribute__((format(printf, 6, 7)))
 static rb_status fail(rb_diag *d, rb_status st, const char *file, const char *opt,
                       int err, const char *fmt, ...)
 {
-    if (d) {
-        char what[400];
-        va_list ap;
-        snprintf(d->file, sizeof d->file, "%s", file);
-        snprintf(d->key, sizeof d->key, "%s", opt ? opt : "");
-        d->line = d->col = 0;
-        va_start(ap, fmt);
-        vsnprintf(what, sizeof what, fmt, ap);
-        va_end(ap);
-        if (err)
-            snprintf(d->msg, sizeof d->msg, "%.400s: %.100s", what, strerror(err));
-        else
-            snprintf(d->msg, sizeof d->msg, "%.500s", what);
-    }
-    return st;
+    char what[400];
+    va_list ap;
+    if (!d)
+        return st;
+    va_start(ap, fmt);
+    vsnprintf(what, sizeof what, fmt, ap);
+    va_end(ap);
+    if (err)
+        return rb_diag_set(d, st, file, 0, 0, opt, "%.400s: %.100s", what, strerror(err));
+    return rb_diag_set(d, st, file, 0, 0, opt, "%.500s", what);
 }
 
 /* ---- Resolving a name ---------------------------------------------------- */

@@ -30,14 +30,21 @@ void rb_diag_clear(rb_diag *diag)
 rb_status rb_diag_set(rb_diag *diag, rb_status st, const char *file, int line, int col,
                       const char *key, const char *fmt, ...)
 {
+    va_list ap;
+    va_start(ap, fmt);
+    rb_diag_vset(diag, st, file, line, col, key, fmt, ap);
+    va_end(ap);
+    return st;
+}
+
+rb_status rb_diag_vset(rb_diag *diag, rb_status st, const char *file, int line, int col,
+                       const char *key, const char *fmt, va_list ap)
+{
     if (!diag)
         return st;
     /* the reason may quote the diag's own fields: format it first */
     char msg[sizeof diag->msg];
-    va_list ap;
-    va_start(ap, fmt);
     vsnprintf(msg, sizeof msg, fmt, ap);
-    va_end(ap);
     snprintf(diag->file, sizeof diag->file, "%s", file ? file : "");
     diag->line = line;
     diag->col = col;
