@@ -28,6 +28,12 @@ for c in cases/*.yaml; do
     run "check $c" "$build/rockbolt" check "$c" --json "$out/r.json" --text "$out/r.txt"
 done
 run "bad input" "$build/rockbolt" check tests/errors/03-unknown-key.yaml
+# list rows loaded from memory over a base with several motions, and batch's
+# outputs
+run "batch" "$build/rockbolt" batch tests/batch/list.csv tests/batch/cases -j 2 \
+    --json "$out/b.json" --csv "$out/b.csv" --junit "$out/b.xml"
+printf 'tag,base,peak\nrow,%s,0.3 A*\n' "$PWD/tests/verdicts/bases/list-records.yaml" >"$out/l.csv"
+run "batch overrides" "$build/rockbolt" batch "$out/l.csv" --json "$out/l.json"
 run "design" "$build/rockbolt" design cases/reference-design.yaml -j 2 \
     --json "$out/d.json" --html "$out/d.html" --sweep-csv "$out/s.csv"
 for h in case at2 cosmos columns; do
