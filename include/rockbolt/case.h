@@ -11,6 +11,7 @@
 #include "rockbolt/motion.h"
 #include "rockbolt/solve.h"
 #include "rockbolt/criteria.h"
+#include "rockbolt/units.h"
 
 /* One floor motion of a case, ready for rb_solve_run. For records the
  * samples are already filtered, windowed and scaled to target_peak_mps2 in
@@ -94,6 +95,11 @@ typedef struct {
     rb_case_motion *motions;  /* owned array of n_motions (>= 1) */
     size_t n_motions;
     int write_history;        /* analysis.history: true */
+    /* The units of the text report and the figures (the JSON report is
+     * always SI): RB_UNITS_SI or RB_UNITS_US, from output_units:, else US
+     * when more of the case's quantities were written in US customary
+     * units than in SI ones (docs/case-format.md, Output units). */
+    rb_unit_system output_units;
     /* Every file the load read: the case file, its bases, then the records
      * of the motions, each once, as resolved (the paths diagnostics use).
      * Owned. A caller about to write output files compares them with

@@ -27,9 +27,19 @@ typedef enum {
     RB_DIM_COUNT
 } rb_dim;
 
+/* The unit system a quantity was written in. Units that belong to neither
+ * (Hz, s, g, A*, %, a bare number) are RB_UNITS_NEUTRAL; m/s^2, cm/s^2 and
+ * gal are SI, in/s^2 and ft/s^2 are US customary. */
+typedef enum {
+    RB_UNITS_NEUTRAL = 0,
+    RB_UNITS_SI,              /* m, mm, kg, N, kN, MPa, J/m^3, ... */
+    RB_UNITS_US               /* in, ft, lb, lbf, kip, psi, ksi, in-lb/in^3, ... */
+} rb_unit_system;
+
 typedef struct {
     double value;     /* SI value; when relative_a_star, the multiple of A* */
     int relative_a_star; /* 1 when the text was "<x> A*" */
+    rb_unit_system system; /* the system of the unit written */
 } rb_quantity;
 
 /* Parse "<number> [unit]" for dimension dim. The number is a plain decimal
@@ -40,6 +50,21 @@ typedef struct {
  * another dimension, text after the unit. */
 rb_status rb_unit_parse(const char *text, rb_dim dim, rb_quantity *out,
                         char *msg, size_t msg_size);
+
+/* The units a text report and the figures show in one unit system: each
+ * name with the SI value of one such unit (a shown value is SI / factor).
+ * SI: kg, kN, m, mm, mm^2, MPa, J, MN/m; US customary: lb, kip, in, in,
+ * in^2, ksi, ft-lbf, kip/in. Accelerations are shown in g in both. */
+typedef struct {
+    rb_unit_system system;    /* RB_UNITS_SI or RB_UNITS_US */
+    const char *mass, *force, *length, *small_length, *area, *stress,
+               *energy, *stiffness;
+    double mass_f, force_f, length_f, small_length_f, area_f, stress_f,
+           energy_f, stiffness_f;
+} rb_out_units;
+
+/* The output units of system (RB_UNITS_US, else SI); never NULL. */
+const rb_out_units *rb_out_units_of(rb_unit_system system);
 
 /* "a length", "a mass", ...: the dimension as a phrase; never NULL. */
 const char *rb_dim_str(rb_dim dim);

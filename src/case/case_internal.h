@@ -151,6 +151,7 @@ typedef struct {
     rb_record_cache *cache;     /* borrowed; NULL: read every record */
     double history_dt_s;        /* output_interval, or the default */
     const rb_ynode *history_dt_node; /* NULL: not given */
+    size_t n_si_units, n_us_units; /* quantities written in SI / US units */
     int overrides;              /* the root document is a list row's
                                    overrides: its `motion:` applies to each
                                    motion of a base's `motions:` list */

@@ -17,7 +17,8 @@
 
 static const char *const rb_top_keys[] = {
     "name", "description", "extends", "equipment", "anchorage", "gap",
-    "gap_ratio", "motion", "motions", "criteria", "analysis", "design", NULL};
+    "gap_ratio", "motion", "motions", "criteria", "analysis", "design",
+    "output_units", NULL};
 int rb_case_top_key(const char *key)
 {
     for (size_t k = 0; rb_top_keys[k]; k++)
@@ -379,5 +380,15 @@ void rb_case_read_schema(rb_cctx *c, rb_ynode *root, rb_case *cs)
     if ((v = rb_section(c, root, "design", 0, "")))
         rb_case_read_design(c, v, cs);
     rb_case_read_motions(c, root);
+    /* Output units: as asked, else the system most quantities were written
+     * in (SI on a tie, and for a case with no unit of either system). */
+    cs->output_units = c->n_us_units > c->n_si_units ? RB_UNITS_US : RB_UNITS_SI;
+    v = rb_cv_get(c, root, "", "output_units", 0, "");
+    if (v) {
+        static const char *const systems[] = {"si", "us", NULL};
+        int i;
+        if (rb_cv_enum(c, v, "output_units", systems, &i))
+            cs->output_units = i == 1 ? RB_UNITS_US : RB_UNITS_SI;
+    }
     rb_cv_unknown_keys(c, root, "", rb_top_keys);
 }

@@ -49,6 +49,8 @@ int rb_cv_quantity(rb_cctx *c, const rb_ynode *v, const char *key, rb_dim dim,
         rb_cctx_error(c, v, key, "%s", msg);
         return 0;
     }
+    c->n_si_units += out->system == RB_UNITS_SI;
+    c->n_us_units += out->system == RB_UNITS_US;
     return 1;
 }
 

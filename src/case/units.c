@@ -26,6 +26,24 @@ typedef struct {
     double factor;   /* SI value of one unit; 0 marks A* */
 } rb_unit;
 
+/* The system of a unit: US customary names, then the neutral ones; any
+ * other unit of the table is SI. */
+static rb_unit_system rb_unit_system_of(const char *name)
+{
+    static const char *const us[] = {"in", "ft", "lb", "lbm", "kip", "lbf",
+        "psi", "ksi", "in-lb/in^3", "in-lbf/in^3", "in/s^2", "ft/s^2",
+        "in^2", "lb*in^2", "lb*ft^2", "lbf/in", "kip/in", NULL};
+    static const char *const neutral[] = {"%", "g", "A*", "Hz", "rad/s",
+        "s", "ms", NULL};
+    for (size_t i = 0; us[i]; i++)
+        if (strcmp(name, us[i]) == 0)
+            return RB_UNITS_US;
+    for (size_t i = 0; neutral[i]; i++)
+        if (strcmp(name, neutral[i]) == 0)
+            return RB_UNITS_NEUTRAL;
+    return RB_UNITS_SI;
+}
+
 static const rb_unit rb_units[] = {
     {"%", RB_DIM_RATIO, 0.01},
     {"m", RB_DIM_LENGTH, 1.0}, {"mm", RB_DIM_LENGTH, 1e-3},
@@ -92,6 +110,18 @@ static const rb_dim_info rb_dims[RB_DIM_COUNT] = {
     [RB_DIM_STIFFNESS] = {"a stiffness",
         "N/m, kN/m, MN/m, N/mm, kN/mm, lbf/in, kip/in", "520 MN/m", "stiffness"},
 };
+
+const rb_out_units *rb_out_units_of(rb_unit_system system)
+{
+    static const rb_out_units si = {
+        RB_UNITS_SI, "kg", "kN", "m", "mm", "mm^2", "MPa", "J", "MN/m",
+        1.0, 1e3, 1.0, 1e-3, 1e-6, 1e6, 1.0, 1e6 };
+    static const rb_out_units us = {
+        RB_UNITS_US, "lb", "kip", "in", "in", "in^2", "ksi", "ft-lbf", "kip/in",
+        0.45359237, 1e3 * RB_LBF, 0.0254, 0.0254, 0.0254 * 0.0254,
+        1e3 * RB_PSI, 0.3048 * RB_LBF, 1e3 * RB_LBF / 0.0254 };
+    return system == RB_UNITS_US ? &us : &si;
+}
 
 const char *rb_dim_str(rb_dim dim)
 {
@@ -231,6 +261,7 @@ rb_status rb_unit_parse(const char *text, rb_dim dim, rb_quantity *out,
     const rb_dim_info *di = &rb_dims[dim];
     out->value = 0.0;
     out->relative_a_star = 0;
+    out->system = RB_UNITS_NEUTRAL;
     while (isspace((unsigned char)*text))
         text++;
     size_t len = strlen(text);
@@ -270,6 +301,7 @@ rb_status rb_unit_parse(const char *text, rb_dim dim, rb_quantity *out,
     const rb_unit *unit = rb_unit_find(u, ulen, 0);
     if (!unit || unit->dim != dim)
         return rb_unit_explain(u, ulen, dim, msg, msg_size);
+    out->system = rb_unit_system_of(unit->name);
     if (unit->factor == 0.0) {
         out->value = v;
         out->relative_a_star = 1;

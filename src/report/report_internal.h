@@ -42,7 +42,7 @@ typedef struct {
 void rb_report_suite_compute(const rb_report *r, rb_report_suite *s);
 
 /* ---- report_text_vars.c: template variable tables ---------------------- */
-#define RB_TXT_MAX_VARS 96 /* per scope; an assert guards it */
+#define RB_TXT_MAX_VARS 160 /* per scope; an assert guards it */
 
 /* A table being filled; holds at most RB_TXT_MAX_VARS (asserted). */
 typedef struct {

@@ -3,14 +3,64 @@
  * The layout lives in templates/report.txt (and its compiled-in copy);
  * this file only names the values, in engineering units (mm, kN, MPa) next
  * to their normalised forms, so the layout can change without touching C.
+ * Each dimensional value has two names: one with its SI unit in the name
+ * (gap_mm), and a unit-neutral one (gap) in the case's output units
+ * (rb_case.output_units: SI or US customary) with the unit's name beside
+ * it (gap_unit), which the shipped template uses.
  * The normalised forms come from report_common.c, as in the JSON report,
  * so the two agree digit for digit at the precision shown. */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "rockbolt/rockbolt.h"
 #include "rockbolt/names.h"
 #include "report_internal.h"
+
+/* The report's output units (rb_case.output_units). */
+static const rb_out_units *out_units(const rb_report *r)
+{
+    return rb_out_units_of(r->kase->output_units);
+}
+
+/* The unit-neutral names: each value in the case's output units, with the
+ * units' names, so that one template serves SI and US customary cases. */
+static void case_unit_vars(rb_tvars *t, const rb_report *r)
+{
+    const rb_out_units *u = out_units(r);
+    const rb_model *m = &r->kase->model;
+    const rb_derived *d = &r->derived;
+    static const char *const heads[2][4] = {
+        { "max force (kN)", "absorbed (J)", "final gap (mm)", "energy (J)" },
+        { "max force (kip)", "absorbed (ft-lbf)", "final gap (in)", "energy (ft-lbf)" } };
+    int us = u->system == RB_UNITS_US;
+    rb_tv_int(t, "si", !us);
+    rb_tv_int(t, "us", us);
+    rb_tv_str(t, "output_units", us ? "us" : "si");
+    rb_tv_str(t, "mass_unit", u->mass);
+    rb_tv_str(t, "force_unit", u->force);
+    rb_tv_str(t, "length_unit", u->length);
+    rb_tv_str(t, "gap_unit", u->small_length);
+    rb_tv_str(t, "area_unit", u->area);
+    rb_tv_str(t, "stress_unit", u->stress);
+    rb_tv_str(t, "energy_unit", u->energy);
+    rb_tv_str(t, "stiffness_unit", u->stiffness);
+    rb_tv_str(t, "force_head", heads[us][0]);
+    rb_tv_str(t, "absorbed_head", heads[us][1]);
+    rb_tv_str(t, "final_gap_head", heads[us][2]);
+    rb_tv_str(t, "energy_head", heads[us][3]);
+    rb_tv_num(t, "mass", m->mass_kg / u->mass_f);
+    rb_tv_num(t, "h", m->cm_height_m / u->length_f);
+    rb_tv_num(t, "height", 2 * m->cm_height_m / u->length_f);
+    rb_tv_num(t, "width", 2 * m->half_width_m / u->length_f);
+    rb_tv_num(t, "bolt_area", m->bolt_area_m2 / u->area_f);
+    rb_tv_num(t, "yield_stress", m->yield_stress_pa / u->stress_f);
+    rb_tv_num(t, "lever_arm", m->lever_arm_m / u->length_f);
+    rb_tv_num(t, "gap", m->gap_m / u->small_length_f);
+    rb_tv_num(t, "fy_row", d->fy_row_n / u->force_f);
+    rb_tv_num(t, "capacity", d->capacity_j / u->energy_f);
+    rb_tv_num(t, "weight", d->W / u->force_f);
+}
 
 static void case_vars(rb_tvars *t, const rb_report *r)
 {
@@ -57,6 +107,7 @@ static void case_vars(rb_tvars *t, const rb_report *r)
     rb_tv_num(t, "alpha_rad", d->alpha);
     rb_tv_num(t, "theta0_rad", d->theta0_rad);
     rb_tv_num(t, "delta", d->delta);
+    case_unit_vars(t, r);
 }
 
 /* The suite: governing motion and mean / max, for cases of several
@@ -85,14 +136,29 @@ static void suite_vars(rb_tvars *t, const rb_report *r)
     }
 }
 
+/* The source of a motion: the record's path, or the closed form's
+ * description, which the loader writes in m/s^2 and which is restated in g
+ * for a report in US customary units. */
+static const char *motion_source(const rb_report *r, const rb_case_motion *cm,
+                                 char *buf, size_t n)
+{
+    if (r->kase->output_units != RB_UNITS_US || cm->motion.kind == RB_MOTION_SAMPLED
+        || !(r->derived.g > 0))
+        return cm->source;
+    snprintf(buf, n, "%s %g g", cm->motion.kind == RB_MOTION_HARMONIC ? "harmonic" : "pulse",
+             cm->motion.amplitude_mps2 / r->derived.g);
+    return buf;
+}
+
 static void motion_head_vars(rb_tvars *t, const rb_report *r, size_t i,
-                             const rb_report_norms *n, char *rm_headline, size_t hn)
+                             const rb_report_norms *n, char *rm_headline, size_t hn,
+                             char *src, size_t sn)
 {
     const rb_report_motion *rm = &r->motions[i];
     const rb_result *res = rm->result;
     rb_tv_int(t, "index", (long)(i + 1));
     rb_tv_str(t, "name", rm->motion->name);
-    rb_tv_str(t, "source", rm->motion->source);
+    rb_tv_str(t, "source", motion_source(r, rm->motion, src, sn));
     rb_report_headline(rm->verdict.pass, rm->verdict.warnings, rm_headline, hn);
     rb_tv_str(t, "motion_verdict", rm->verdict.pass ? "PASS" : "FAIL");
     rb_tv_str(t, "motion_headline", rm_headline);
@@ -117,11 +183,21 @@ static void motion_head_vars(rb_tvars *t, const rb_report *r, size_t i,
     rb_tv_num(t, "v0_kn", n->v0_n * 1e-3);
     rb_tv_num(t, "friction_demand", res->max_friction_demand);
     rb_tv_num(t, "min_vertical_over_w", n->min_vertical_over_w);
+    const rb_out_units *u = out_units(r);
+    rb_tv_num(t, "max_u", res->max_u_m / u->small_length_f);
+    rb_tv_num(t, "u_static", res->u_static_m / u->small_length_f);
+    rb_tv_num(t, "shear_elastic", res->max_shear_elastic_n / u->force_f);
+    rb_tv_num(t, "shear_total", res->max_shear_total_n / u->force_f);
+    rb_tv_num(t, "v0", n->v0_n / u->force_f);
 }
 
 /* Per-row values as name_left / name_right. */
-static void motion_row_vars(rb_tvars *t, const rb_result *res, const rb_report_norms *n)
+static void motion_row_vars(rb_tvars *t, const rb_result *res, const rb_report_norms *n,
+                            const rb_out_units *u)
 {
+    static const char *const neutral[2][3] = {
+        { "force_left", "absorbed_left", "final_gap_left" },
+        { "force_right", "absorbed_right", "final_gap_right" } };
     static const char *const names[2][10] = {
         { "force_left_kn", "force_left_over_fy", "usage_left", "absorbed_left_j",
           "yielded_left", "first_yield_left_s", "broken_left", "break_left_s",
@@ -143,10 +219,14 @@ static void motion_row_vars(rb_tvars *t, const rb_result *res, const rb_report_n
         rb_tv_opt(t, nm[7], res->broken[s], res->break_s[s]);
         rb_tv_num(t, nm[8], res->final_gap_m[s] * 1e3);
         rb_tv_num(t, nm[9], n->final_gap_ratio[s]);
+        rb_tv_num(t, neutral[s][0], res->max_bolt_force_n[s] / u->force_f);
+        rb_tv_num(t, neutral[s][1], res->absorbed_j[s] / u->energy_f);
+        rb_tv_num(t, neutral[s][2], res->final_gap_m[s] / u->small_length_f);
     }
 }
 
-static void motion_outcome_vars(rb_tvars *t, const rb_result *res)
+static void motion_outcome_vars(rb_tvars *t, const rb_result *res,
+                                const rb_out_units *u)
 {
     rb_tv_num(t, "t_fixed_s", res->stage_time_s[RB_STAGE_FIXED]);
     rb_tv_num(t, "t_uplift_s", res->stage_time_s[RB_STAGE_UPLIFT]);
@@ -163,6 +243,10 @@ static void motion_outcome_vars(rb_tvars *t, const rb_result *res)
     rb_tv_num(t, "e_damping_j", res->e_damping);
     rb_tv_num(t, "e_impact_j", res->e_impact);
     rb_tv_num(t, "e_plastic_j", res->e_plastic);
+    rb_tv_num(t, "e_input", res->e_input / u->energy_f);
+    rb_tv_num(t, "e_damping", res->e_damping / u->energy_f);
+    rb_tv_num(t, "e_impact", res->e_impact / u->energy_f);
+    rb_tv_num(t, "e_plastic", res->e_plastic / u->energy_f);
     rb_tv_int(t, "steps", res->steps);
     rb_tv_int(t, "events", res->events);
 }
@@ -188,6 +272,9 @@ static void motion_validity_vars(rb_tvars *t, const rb_report *r, const rb_repor
     rb_tv_opt(t, "impact_s", res->rigid_bolts && res->max_bolt_impact_n > 0,
               res->max_bolt_impact_s);
     rb_tv_opt(t, "k_row_mn_per_m", res->rigid_bolts, r->derived.k_row_npm * 1e-6);
+    const rb_out_units *u = out_units(r);
+    rb_tv_opt(t, "impact_force", res->rigid_bolts, res->max_bolt_impact_n / u->force_f);
+    rb_tv_opt(t, "k_row", res->rigid_bolts, r->derived.k_row_npm / u->stiffness_f);
 }
 
 rb_status rb_report_text_render(const rb_report *r, const char *tmpl,
@@ -201,10 +288,11 @@ rb_status rb_report_text_render(const rb_report *r, const char *tmpl,
     rb_tscope top = {0};
     rb_tlist lists[2] = { { "motions", NULL, 0 }, { "design", NULL, 0 } };
     char (*heads)[RB_HEADLINE_MAX] = calloc(n ? n : 1, sizeof *heads);
+    char (*srcs)[96] = calloc(n ? n : 1, sizeof *srcs);
     rb_tvars t;
     rb_status st = RB_ERR_NOMEM;
     *out = NULL;
-    if (!vars || !items || !motion_lists || !arena || !heads)
+    if (!vars || !items || !motion_lists || !arena || !heads || !srcs)
         goto done;
     t.v = vars;
     t.n = 0;
@@ -217,9 +305,10 @@ rb_status rb_report_text_render(const rb_report *r, const char *tmpl,
         rb_report_norms_compute(r, &r->motions[i], &norms);
         t.v = vars + (i + 1) * RB_TXT_MAX_VARS;
         t.n = 0;
-        motion_head_vars(&t, r, i, &norms, heads[i], sizeof heads[i]);
-        motion_row_vars(&t, r->motions[i].result, &norms);
-        motion_outcome_vars(&t, r->motions[i].result);
+        motion_head_vars(&t, r, i, &norms, heads[i], sizeof heads[i],
+                         srcs[i], sizeof srcs[i]);
+        motion_row_vars(&t, r->motions[i].result, &norms, out_units(r));
+        motion_outcome_vars(&t, r->motions[i].result, out_units(r));
         motion_validity_vars(&t, r, &r->motions[i]);
         items[i].vars = t.v;
         items[i].n_vars = t.n;
@@ -239,6 +328,7 @@ done:
     rb_txt_arena_free(arena);
     free(motion_lists);
     free(heads);
+    free(srcs);
     free(vars);
     free(items);
     return st;

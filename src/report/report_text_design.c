@@ -166,6 +166,12 @@ static void code_vars(rb_tvars *t, const rb_report *r)
     rb_tv_num(t, "code_phi_nsa_kn", k->phi_nsa_n * 1e-3);
     rb_tv_num(t, "code_ratio", k->ratio);
     rb_tv_str(t, "code_verdict", k->ratio <= 1.0 ? "PASS" : "FAIL");
+    const rb_out_units *u = rb_out_units_of(r->kase->output_units);
+    rb_tv_num(t, "code_fp_formula", k->fp_formula_n / u->force_f);
+    rb_tv_num(t, "code_fp", k->fp_n / u->force_f);
+    rb_tv_num(t, "code_fp_anchor", k->fp_anchor_n / u->force_f);
+    rb_tv_num(t, "code_tension", k->tension_n / u->force_f);
+    rb_tv_num(t, "code_phi_nsa", k->phi_nsa_n / u->force_f);
 }
 
 rb_status rb_report_text_case_design(const rb_report *r, rb_txt_arena *a, rb_tlist *out)

@@ -418,8 +418,69 @@ test_figures() {
     echo "figures: ok"
 }
 
+# Output units: a case written in US customary units reports in kip, in,
+# ksi, ft-lbf and g; output_units: si turns it back to kN, mm, MPa, J; each
+# shown value is the SI one converted, to 1e-9 relative.
+test_units() {
+    US=cases/us-customary.yaml
+    run check "$US"
+    [ "$rc" -eq 0 ] || [ "$rc" -eq 1 ] || fail "exit code $rc"
+    for w in "kip, height 2h = 77.087 in" " in^2 each, fy = 36 ksi" "kip, toughness capacity" \
+        "ft-lbf" "gap = 0.3071 in" "max force (kip)" "final gap (in)" "energy (ft-lbf)" \
+        "kip/in"; do
+        grep -qF -- "$w" "$D/out" || fail "US report lacks '$w'"
+    done
+    grep -q "kN\|MPa\|m/s^2\| mm" "$D/out" && fail "SI units in the US report"
+    grep -q "^A\\*  *[0-9.]* g (uplift" "$D/out" || fail "A* in g"
+    cp "$US" "$D/si.yaml" && echo "output_units: si" >>"$D/si.yaml"
+    run check "$D/si.yaml"
+    for w in "M = 454.0 kg" "kN, height 2h = 1.958 m" "mm^2 each" "MPa" "max force (kN)" \
+        "final gap (mm)" "energy (J)" "m/s^2 ="; do
+        grep -qF -- "$w" "$D/out" || fail "output_units: si report lacks '$w'"
+    done
+    grep -q "kip\|ksi\|ft-lbf" "$D/out" && fail "US units in the SI report"
+    # an SI case asking for US units
+    printf 'extends: %s/%s\noutput_units: us\n' "$(pwd)" "$HARMONIC" >"$D/us.yaml"
+    run check "$D/us.yaml"
+    grep -qF "max force (kip)" "$D/out" || fail "output_units: us on an SI case"
+    # every converted value against its SI name, at full precision
+    mkdir -p "$D/tmpl"
+    cat >"$D/tmpl/report.txt" <<'EOT'
+{{mass:%.17g}} {{mass_kg:%.17g}} 0.45359237
+{{weight:%.17g}} {{weight_kn:%.17g}} 4.4482216152605
+{{height:%.17g}} {{height_m:%.17g}} 0.0254
+{{bolt_area:%.17g}} {{bolt_area_mm2:%.17g}} 645.16
+{{yield_stress:%.17g}} {{yield_stress_mpa:%.17g}} 6.894757293168361
+{{gap:%.17g}} {{gap_mm:%.17g}} 25.4
+{{fy_row:%.17g}} {{fy_row_kn:%.17g}} 4.4482216152605
+{{capacity:%.17g}} {{capacity_j:%.17g}} 1.3558179483314004
+{{#motions}}
+{{max_u:%.17g}} {{max_u_mm:%.17g}} 25.4
+{{shear_elastic:%.17g}} {{shear_elastic_kn:%.17g}} 4.4482216152605
+{{force_left:%.17g}} {{force_left_kn:%.17g}} 4.4482216152605
+{{force_right:%.17g}} {{force_right_kn:%.17g}} 4.4482216152605
+{{absorbed_left:%.17g}} {{absorbed_left_j:%.17g}} 1.3558179483314004
+{{final_gap_right:%.17g}} {{final_gap_right_mm:%.17g}} 25.4
+{{e_input:%.17g}} {{e_input_j:%.17g}} 1.3558179483314004
+{{k_row:%.17g}} {{k_row_mn_per_m:%.17g}} 0.17512683524647637
+{{/motions}}
+EOT
+    RB_TEMPLATE_DIR=$D/tmpl
+    export RB_TEMPLATE_DIR
+    run check "$US"
+    cp "$D/out" "$D/us.txt"
+    run check "$D/si.yaml"
+    unset RB_TEMPLATE_DIR
+    [ "$(wc -l <"$D/us.txt")" -eq 16 ] || fail "16 values in the US report"
+    awk '{ r = $1 * $3 / $2 - 1; if (r < -1e-9 || r > 1e-9 || $2 == 0) { print "line " NR ": " $0; bad = 1 } }
+         END { exit bad }' "$D/us.txt" || fail "US values are not the SI ones converted"
+    awk '{ r = $1 / $2 - 1; if (r < -1e-9 || r > 1e-9) { print "line " NR ": " $0; bad = 1 } }
+         END { exit bad }' "$D/out" || fail "output_units: si values are not the SI ones"
+    echo "units: ok"
+}
+
 case "$T" in
-    help|usage|harmonic|consistency|stdout|elcentro|unwritable|preserved|history|init|template|solver_error|free_standing|design|design_threads|suite|figures)
+    help|usage|harmonic|consistency|stdout|elcentro|unwritable|preserved|history|init|template|solver_error|free_standing|design|design_threads|suite|figures|units)
         "test_$T" ;;
     *) echo "unknown test $T"; exit 1 ;;
 esac

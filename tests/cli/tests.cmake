@@ -7,7 +7,7 @@ target_link_libraries(jsonget PRIVATE PkgConfig::CJSON)
 
 set(RB_CLI_TESTS help usage harmonic consistency stdout elcentro unwritable
     preserved history init template solver_error
-    free_standing design design_threads suite figures)
+    free_standing design design_threads suite figures units)
 foreach(t ${RB_CLI_TESTS})
   add_test(NAME cli_${t}
            COMMAND sh ${PROJECT_SOURCE_DIR}/tests/cli/cli_test.sh ${t}
