@@ -54,11 +54,11 @@ static void hilti_p86_tension_breakout(void)
                                     18313 * LB);
     CHECK_NEAR(to_lb(ncbg_src), 92221, 0.5);
     /* Unrounded, the chain differs from the print by the rounding of
-     * psi_ed,N = 0.97826 to 0.978 (0.03 %). */
+     * psi_ed,N = 0.97826 to 0.978 (0.02 %). */
     double ncbg = rb_aci17_ncbg(16, anc, anco, rb_aci17_psi_ec_n(0, hef), ped,
                                 rb_aci17_psi_c_n(true), 1.0, nb);
     CHECK_REL(to_lb(ncbg), 92221, 5e-4);
-    CHECK_NEAR(to_lb(ncbg), 92243, 1.0);
+    CHECK_NEAR(to_lb(ncbg), 92242.4, 0.1);
 }
 
 /* [H81]: 7/8 in rod (da = 0.875 in), hef = 12 in, f'c = 4500 psi,
