@@ -38,6 +38,9 @@ typedef struct {
 typedef struct {
     rb_batch_item *items; /* owned, in work order */
     size_t n, cap;
+    const char *encoding; /* not owned: the equipment lists' character
+                             encoding, an iconv name ("cp1252"); NULL: UTF-8.
+                             Set it before adding lists. */
 } rb_batch_list;
 
 /* Add what arg names, in this order of checks: a directory (its *.yaml
@@ -51,7 +54,9 @@ rb_status rb_batch_list_add(rb_batch_list *l, const char *arg, const char *defau
 
 void rb_batch_list_free(rb_batch_list *l);
 
-/* Parse an equipment list into l (called by rb_batch_list_add). */
+/* Parse an equipment list into l (called by rb_batch_list_add): UTF-8
+ * (a byte-order mark allowed) unless l->encoding names another, comma- or
+ * semicolon-separated as its header shows. */
 rb_status rb_batch_csv_read(rb_batch_list *l, const char *path, const char *default_base);
 
 /* ---- Summary --------------------------------------------------------------- */

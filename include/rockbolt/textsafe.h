@@ -42,4 +42,13 @@ char *rb_csv_field(const char *s, int always_quote);
 /* The same field written to fp; 0, or -1 on NOMEM or a write error. */
 int rb_csv_field_write(FILE *fp, const char *s, int always_quote);
 
+/* Where the first byte that is not part of valid UTF-8 lies in s[0..len)
+ * (overlong forms and surrogates are invalid); len if there is none. */
+size_t rb_utf8_invalid_at(const char *s, size_t len);
+
+/* s with each byte that is not UTF-8 written as \xHH and nothing else
+ * changed, in a new string (free it); NULL on NOMEM. For outputs that
+ * keep control characters but must be UTF-8 (JSON). s NULL is "". */
+char *rb_utf8_fix(const char *s);
+
 #endif

@@ -6,7 +6,17 @@
  * starting with '#' are skipped; the first other line is the header. An
  * empty cell keeps the base's value. Every column must be known, so that a
  * misspelt header cannot silently leave a field at the base's value. Each
- * value keeps its line and column, and errors in it are reported there. */
+ * value keeps its line and column, and errors in it are reported there.
+ *
+ * Encodings and separators (docs/batch.md): a list is UTF-8, with or
+ * without a byte-order mark, unless the batch declares another encoding
+ * (--encoding cp1252), which iconv turns into UTF-8 first. A row that is
+ * not UTF-8 is unreadable at the first bad byte, with a hint, so no
+ * output ever carries text that is not UTF-8. Fields are separated by
+ * commas, or by semicolons when the header has ';' and no ',' outside
+ * quotes (spreadsheets in locales with a decimal comma write those). */
+#include <errno.h>
+#include <iconv.h>
 #include <search.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -14,6 +24,7 @@
 #include "batch_internal.h"
 #include "rockbolt/datadir.h"
 #include "rockbolt/sandbox.h"
+#include "rockbolt/textsafe.h"
 
 #define RB_CSV_MAX_BYTES (64u * 1024u * 1024u)
 #define RB_CSV_MAX_FIELDS 64
@@ -77,8 +88,8 @@ static void row_clear(csv_row *r)
 
 /* Split one line (without its newline) into fields; returns 0 with msg set
  * on a malformed line, -1 on NOMEM. */
-static int split_line(const char *s, size_t len, csv_row *r, char *msg, size_t msz,
-                      int *bad_col)
+static int split_line(const char *s, size_t len, char sep, csv_row *r, char *msg,
+                      size_t msz, int *bad_col)
 {
     size_t i = 0;
     r->n = 0;
@@ -118,14 +129,14 @@ static int split_line(const char *s, size_t len, csv_row *r, char *msg, size_t m
             }
             while (i < len && (s[i] == ' ' || s[i] == '\t'))
                 i++;
-            if (i < len && s[i] != ',') {
+            if (i < len && s[i] != sep) {
                 free(out);
                 snprintf(msg, msz, "text after a quoted field");
                 *bad_col = (int)i + 1;
                 return 0;
             }
         } else {
-            while (i < len && s[i] != ',')
+            while (i < len && s[i] != sep)
                 out[o++] = s[i++];
             while (o > 0 && (out[o - 1] == ' ' || out[o - 1] == '\t'))
                 o--;
@@ -135,7 +146,7 @@ static int split_line(const char *s, size_t len, csv_row *r, char *msg, size_t m
         r->n++;
         if (i >= len)
             return 1;
-        i++;   /* the comma */
+        i++;   /* the separator */
     }
 }
 
@@ -146,6 +157,7 @@ typedef struct {
     int cols[RB_CSV_MAX_FIELDS];  /* index into rb_csv_cols */
     size_t n_cols;
     int tag_col, base_col;
+    char sep;             /* ',' or ';', from the header */
     void *tags;           /* tag_entry tree (tsearch): the tags seen so far */
 } csv_ctx;
 
@@ -376,7 +388,9 @@ static rb_status read_row(csv_ctx *cx, rb_batch_list *l, const csv_row *r, int l
     return RB_OK;
 }
 
-static char *slurp(const char *path, size_t *len, char *msg, size_t msz)
+/* The whole list; NUL bytes refused unless an encoding (UTF-16) may have
+ * them: its text is checked after transcoding. */
+static char *slurp(const char *path, size_t *len, int allow_nul, char *msg, size_t msz)
 {
     FILE *f = fopen(path, "rb");
     if (!f) {
@@ -399,12 +413,51 @@ static char *slurp(const char *path, size_t *len, char *msg, size_t msz)
         return NULL;
     }
     buf[*len] = '\0';
-    if (memchr(buf, '\0', *len)) {
+    if (!allow_nul && memchr(buf, '\0', *len)) {
         free(buf);
-        snprintf(msg, msz, "the list holds NUL bytes: not a text file");
+        snprintf(msg, msz, "the list holds NUL bytes: not a text file (or saved "
+                 "as UTF-16: pass --encoding utf-16, or save it as UTF-8)");
         return NULL;
     }
     return buf;
+}
+
+/* The separator the header line uses: ';' when it has one and no comma
+ * outside quotes, else ','. */
+static char header_sep(const char *s, size_t n)
+{
+    int quoted = 0, comma = 0, semi = 0;
+    for (size_t i = 0; i < n; i++) {
+        if (s[i] == '"')
+            quoted = !quoted;
+        else if (!quoted && s[i] == ',')
+            comma = 1;
+        else if (!quoted && s[i] == ';')
+            semi = 1;
+    }
+    return semi && !comma ? ';' : ',';
+}
+
+#define RB_CSV_HINT "the list is not UTF-8; save it as UTF-8 or pass --encoding " \
+                    "cp1252 (or the encoding it was saved in)"
+
+/* A row with a byte that is not UTF-8 at column col: unreadable there. Its
+ * tag is shown with that byte as \xHH, so no output carries it raw. */
+static rb_status bad_encoding_row(csv_ctx *cx, rb_batch_list *l, const csv_row *r,
+                                  int line, int col, unsigned char byte)
+{
+    char msg[300];
+    rb_batch_item *it = rb_batch_list_push(l, cx->path);
+    if (!it)
+        return RB_ERR_NOMEM;
+    it->line = line;
+    const char *tag = (size_t)cx->tag_col < r->n ? r->f[cx->tag_col].text : "";
+    snprintf(msg, sizeof msg, "line %d", line);
+    if (!(it->tag = rb_utf8_fix(tag[0] ? tag : msg)))
+        return RB_ERR_NOMEM;
+    snprintf(msg, sizeof msg, "byte 0x%02X is not UTF-8: " RB_CSV_HINT, byte);
+    rb_batch_item_bad(it, line, col, "encoding", msg);
+    return RB_OK;
 }
 
 static rb_status read_lines(csv_ctx *cx, rb_batch_list *l, const char *buf, size_t len,
@@ -432,7 +485,22 @@ static rb_status read_lines(csv_ctx *cx, rb_batch_list *l, const char *buf, size
         if (k == n || s[k] == '#')
             continue;
         int bad_col = 1;
-        int ok = split_line(s, n, &r, msg, sizeof msg, &bad_col);
+        size_t bad_at = rb_utf8_invalid_at(s, n);
+        if (!have_header)
+            cx->sep = header_sep(s, n);
+        int ok = split_line(s, n, cx->sep, &r, msg, sizeof msg, &bad_col);
+        if (ok > 0 && bad_at < n) {
+            if (have_header) {
+                st = bad_encoding_row(cx, l, &r, line, (int)bad_at + 1,
+                                      (unsigned char)s[bad_at]);
+                row_clear(&r);
+                continue;
+            }
+            ok = 0;
+            bad_col = (int)bad_at + 1;
+            snprintf(msg, sizeof msg, "byte 0x%02X is not UTF-8: " RB_CSV_HINT,
+                     (unsigned char)s[bad_at]);
+        }
         if (ok < 0) {
             st = RB_ERR_NOMEM;
         } else if (!ok || !have_header) {
@@ -472,6 +540,72 @@ static rb_status read_lines(csv_ctx *cx, rb_batch_list *l, const char *buf, size
     return st;
 }
 
+/* buf[0..*len) in encoding enc, as UTF-8 in a new buffer (buf is freed).
+ * NULL with msg set and *line, *col at the first byte that is not a
+ * character of enc (or 0 when the whole list is at fault). A list that
+ * starts with a UTF-8 byte-order mark says it is UTF-8, and is kept. */
+static char *transcode(char *buf, size_t *len, const char *enc, char *msg, size_t msz,
+                       int *line, int *col)
+{
+    *line = *col = 0;
+    if (*len >= 3 && memcmp(buf, "\xEF\xBB\xBF", 3) == 0)
+        return buf;
+    iconv_t cd = iconv_open("UTF-8", enc);
+    if (cd == (iconv_t)-1) {
+        snprintf(msg, msz, "unknown encoding '%.60s' (iconv knows no such name; "
+                 "'iconv -l' lists them)", enc);
+        free(buf);
+        return NULL;
+    }
+    /* at most 4 bytes of UTF-8 for each input byte (UTF-16 gives at most
+     * 3 per 2, single-byte encodings at most 3 per 1) */
+    size_t cap = 4 * *len + 1;
+    char *out = *len <= RB_CSV_MAX_BYTES ? malloc(cap) : NULL;
+    if (!out) {
+        iconv_close(cd);
+        free(buf);
+        snprintf(msg, msz, "out of memory");
+        return NULL;
+    }
+    char *in = buf, *o = out;
+    size_t inleft = *len, outleft = cap - 1;
+    size_t r = iconv(cd, &in, &inleft, &o, &outleft);
+    if (r != (size_t)-1)
+        r = iconv(cd, NULL, NULL, &o, &outleft);
+    iconv_close(cd);
+    if (r == (size_t)-1) {
+        size_t at = (size_t)(in - buf);
+        int ln = 1;
+        size_t start = 0;
+        for (size_t i = 0; i < at; i++)
+            if (buf[i] == '\n') {
+                ln++;
+                start = i + 1;
+            }
+        *line = ln;
+        *col = (int)(at - start) + 1;
+        if (errno == EILSEQ)
+            snprintf(msg, msz, "byte 0x%02X is not a character of the encoding "
+                     "'%.60s' given by --encoding", (unsigned char)buf[at], enc);
+        else
+            snprintf(msg, msz, "the list ends inside a character of the encoding "
+                     "'%.60s'", enc);
+        free(out);
+        free(buf);
+        return NULL;
+    }
+    free(buf);
+    *len = (size_t)(o - out);
+    out[*len] = '\0';
+    if (memchr(out, '\0', *len)) {
+        free(out);
+        snprintf(msg, msz, "the list holds NUL characters in the encoding '%.60s': "
+                 "not a text file, or not in that encoding", enc);
+        return NULL;
+    }
+    return out;
+}
+
 rb_status rb_batch_csv_read(rb_batch_list *l, const char *path, const char *default_base)
 {
     csv_ctx cx;
@@ -492,14 +626,18 @@ rb_status rb_batch_csv_read(rb_batch_list *l, const char *path, const char *defa
         snprintf(msg, sizeof msg, "the list lies outside the sandbox '%.*s' (%.*s)",
                  300, rb_sandbox_dir(), 300, why);
     else
-        buf = slurp(path, &len, msg, sizeof msg);
+        buf = slurp(path, &len, l->encoding != NULL, msg, sizeof msg);
+    int bad_line = 0, bad_col = 0;
+    if (buf && l->encoding)
+        buf = transcode(buf, &len, l->encoding, msg, sizeof msg, &bad_line, &bad_col);
     rb_status st = RB_OK;
     if (!buf) {
         rb_batch_item *it = rb_batch_list_push(l, path);
         if (!it)
             st = RB_ERR_NOMEM;
         else
-            rb_batch_item_bad(it, 0, 0, "list", msg);
+            rb_batch_item_bad(it, bad_line, bad_col, bad_line ? "encoding" : "list",
+                              msg);
     } else {
         st = read_lines(&cx, l, buf, len, n_before);
     }

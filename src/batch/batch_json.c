@@ -17,6 +17,22 @@
 #include "rockbolt/jsonnum.h"
 #include "util/strbuf.h"
 #include "rockbolt/report.h"
+#include "rockbolt/textsafe.h"
+
+/* Text from the inputs (tags, paths, motion names, messages): JSON must
+ * be UTF-8, so bytes that are not are written as \xHH, as every other
+ * output shows them (rockbolt/textsafe.h). */
+static cJSON *add_text(cJSON *o, const char *k, const char *v)
+{
+    if (!v)
+        v = "";
+    if (rb_utf8_invalid_at(v, strlen(v)) == strlen(v))
+        return cJSON_AddStringToObject(o, k, v);
+    char *t = rb_utf8_fix(v);
+    cJSON *r = t ? cJSON_AddStringToObject(o, k, t) : NULL;
+    free(t);
+    return r;
+}
 
 static int add_num(cJSON *o, const char *k, double v)
 {
@@ -64,7 +80,7 @@ static int add_run(cJSON *arr, const rb_batch_result *r, int design)
     cJSON *o = cJSON_CreateObject();
     if (!o || !cJSON_AddItemToArray(arr, o))
         return cJSON_Delete(o), 0;
-    int ok = cJSON_AddStringToObject(o, "motion", r->motion) != NULL
+    int ok = add_text(o, "motion", r->motion) != NULL
         && cJSON_AddStringToObject(o, "verdict", r->pass ? "pass" : "fail") != NULL
         && add_num(o, "usage", r->usage)
         && add_num(o, "shear_over_w", r->shear_over_w)
@@ -87,10 +103,10 @@ static int add_error(cJSON *o, const rb_batch_case *c)
         return cJSON_AddNullToObject(o, "error") != NULL;
     cJSON *e = cJSON_AddObjectToObject(o, "error");
     const rb_diag *d = rb_batch_case_error(c);
-    return e && cJSON_AddStringToObject(e, "file", d->file)
+    return e && add_text(e, "file", d->file)
         && add_num(e, "line", d->line) && add_num(e, "col", d->col)
-        && cJSON_AddStringToObject(e, "key", d->key)
-        && cJSON_AddStringToObject(e, "message", d->msg)
+        && add_text(e, "key", d->key)
+        && add_text(e, "message", d->msg)
         && add_num(e, "count", (double)c->n_errors);
 }
 
@@ -101,18 +117,18 @@ static int add_case(cJSON *arr, const rb_batch_case *c, int design)
         return cJSON_Delete(o), 0;
     int solved = c->verdict == RB_BATCH_PASS || c->verdict == RB_BATCH_FAIL;
     int ok = add_num(o, "index", (double)c->index)
-        && cJSON_AddStringToObject(o, "source", c->source)
+        && add_text(o, "source", c->source)
         && add_num(o, "line", c->line)
-        && cJSON_AddStringToObject(o, "tag", c->tag)
+        && add_text(o, "tag", c->tag)
         && cJSON_AddStringToObject(o, "verdict", rb_batch_verdict_str(c->verdict))
-        && cJSON_AddStringToObject(o, "reason", c->reason ? c->reason : "")
+        && add_text(o, "reason", c->reason)
         && add_error(o, c);
     if (!ok)
         return 0;
     if (!solved)
         return cJSON_AddNullToObject(o, "governing_motion") != NULL;
-    if (!cJSON_AddStringToObject(o, "governing_motion",
-                                 c->runs[rb_batch_governing(c)].motion))
+    if (!add_text(o, "governing_motion",
+                  c->runs[rb_batch_governing(c)].motion))
         return 0;
     cJSON *runs = cJSON_AddArrayToObject(o, "runs");
     for (size_t m = 0; ok && runs && m < c->n_runs; m++)

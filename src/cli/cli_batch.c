@@ -235,6 +235,7 @@ rb_exit rb_cli_batch_main(int argc, char **argv)
         e = check_base(o.base);
     if (e == RB_EXIT_PASS && o.reports_dir)
         e = check_reports_dir(o.reports_dir, &made_dir);
+    l.encoding = o.encoding;
     if (e == RB_EXIT_PASS)
         e = build_list(&o, &l);
     if (e == RB_EXIT_PASS)

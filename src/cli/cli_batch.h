@@ -13,6 +13,7 @@ typedef struct {
     const char *reports_dir;  /* batch only */
     const char *base;         /* batch: --base CASE */
     const char *sandbox;      /* batch: --sandbox DIR, or NULL */
+    const char *encoding;     /* batch: --encoding NAME, or NULL (UTF-8) */
     int design;               /* batch: --design */
     int threads;              /* batch: -j N; 0: every processor */
     size_t shard, n_shards;   /* batch: --shard I/N; 0/0: all */

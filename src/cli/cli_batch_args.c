@@ -2,6 +2,7 @@
  * (cli_getopt.c). Like check's: "--opt VALUE" or "--opt=VALUE", "--" ends
  * the options, every mistake is a usage error (exit 2) found before
  * anything is read or written. Documented in src/cli/help.txt. */
+#include <iconv.h>
 #include <stdlib.h>
 #include <string.h>
 #include "cli_batch.h"
@@ -53,7 +54,7 @@ static rb_exit parse_shard(const char *v, rb_batch_cli *o)
 }
 
 enum { OPT_JSON = 256, OPT_CSV, OPT_JUNIT, OPT_REPORTS, OPT_BASE, OPT_SANDBOX,
-       OPT_DESIGN, OPT_SHARD };
+       OPT_DESIGN, OPT_SHARD, OPT_ENCODING };
 
 /* Options shared by batch and merge are the output files and --quiet. */
 static const struct option merge_longs[] = {
@@ -71,6 +72,7 @@ static const struct option batch_longs[] = {
     {"reports", required_argument, NULL, OPT_REPORTS},
     {"base", required_argument, NULL, OPT_BASE},
     {"sandbox", required_argument, NULL, OPT_SANDBOX},
+    {"encoding", required_argument, NULL, OPT_ENCODING},
     {"design", no_argument, NULL, OPT_DESIGN},
     {"shard", required_argument, NULL, OPT_SHARD},
     {"threads", required_argument, NULL, 'j'},
@@ -97,6 +99,20 @@ static rb_exit take_option(int c, const rb_cli_getopt *g, rb_batch_cli *o)
         return take(g->name, g->arg, &o->base);
     case OPT_SANDBOX:
         return take(g->name, g->arg, &o->sandbox);
+    case OPT_ENCODING:
+        e = take(g->name, g->arg, &o->encoding);
+        if (e == RB_EXIT_PASS) {
+            /* a name iconv does not know is a usage error, found now */
+            iconv_t cd = iconv_open("UTF-8", o->encoding);
+            if (cd == (iconv_t)-1) {
+                rb_cli_error(NULL, "--encoding", "unknown encoding '%s' (give an "
+                             "iconv name such as cp1252, latin1 or utf-16; "
+                             "'iconv -l' lists them)", o->encoding);
+                return RB_EXIT_USAGE;
+            }
+            iconv_close(cd);
+        }
+        return e;
     case OPT_DESIGN:
         o->design = 1;
         return RB_EXIT_PASS;

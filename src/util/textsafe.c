@@ -176,3 +176,52 @@ int rb_csv_field_write(FILE *fp, const char *s, int always_quote)
     free(f);
     return bad ? -1 : 0;
 }
+
+size_t rb_utf8_invalid_at(const char *s, size_t len)
+{
+    const unsigned char *p = (const unsigned char *)s;
+    size_t i = 0;
+    while (i < len) {
+        unsigned cp;
+        size_t n = p[i] < 0x80 ? 1 : (len - i >= 4 ? utf8_len(p + i, &cp) : 0);
+        if (n == 0 && p[i] >= 0x80) {
+            /* near the end: check on a copy padded with NULs */
+            unsigned char t[5] = {0};
+            memcpy(t, p + i, len - i < 4 ? len - i : 4);
+            n = utf8_len(t, &cp);
+        }
+        if (n == 0)
+            return i;
+        i += n;
+    }
+    return len;
+}
+
+char *rb_utf8_fix(const char *s)
+{
+    static const char hex[] = "0123456789abcdef";
+    if (!s)
+        s = "";
+    size_t len = strlen(s), bad = 0;
+    for (size_t i = rb_utf8_invalid_at(s, len); i < len;
+         i += 1 + rb_utf8_invalid_at(s + i + 1, len - i - 1))
+        bad++;
+    char *out = malloc(len + 3 * bad + 1), *o = out;
+    if (!out)
+        return NULL;
+    for (size_t i = 0; i < len;) {
+        size_t ok = rb_utf8_invalid_at(s + i, len - i);
+        memcpy(o, s + i, ok);
+        o += ok;
+        i += ok;
+        if (i < len) {
+            unsigned char c = (unsigned char)s[i++];
+            *o++ = '\\';
+            *o++ = 'x';
+            *o++ = hex[c >> 4];
+            *o++ = hex[c & 15];
+        }
+    }
+    *o = '\0';
+    return out;
+}

@@ -73,6 +73,78 @@ assert a[("list.csv", "P-3")][0] == "4" and b[("list.csv", "P-3")][0] == "6"
 assert all(v[0] is None for k, v in b.items() if k[0] != "list.csv")
 PY
     ;;
+encoding)
+    need_python
+    # a list saved by a spreadsheet in cp1252, and a case file whose name
+    # is not UTF-8: every output stays valid UTF-8
+    printf 'tag,mass\nPumpe-\326l-1,454 kg\nP-2,4\265 kg\nP-3,454 kg\n' >l.csv
+    mkdir cases
+    cp "$src/tests/batch/cases/a-pass.yaml" "cases/caf$(printf '\351').yaml"
+    run 2 batch l.csv cases --base "$base" --json b.json --csv b.csv --junit b.xml
+    valid_outputs .
+    has err "^l.csv:2:7: error: encoding: byte 0xD6 is not UTF-8: the list is not UTF-8; save it as UTF-8 or pass --encoding cp1252"
+    has err "^l.csv:3:6: error: encoding: byte 0xB5 is not UTF-8"
+    has out 'Pumpe-\\xd6l-1 .*UNREADABLE'
+    has out "P-3 .*pass"
+    has b.json '"tag":.*"Pumpe-\\\\xd6l-1"'
+    has b.json '"source":.*"cases/caf\\\\xe9.yaml"'
+    # declared: transcoded, so the row runs under its own name
+    mkdir dec && cp l.csv dec/
+    (cd dec && "$rb" batch l.csv --base "$base" --encoding cp1252 \
+        --json b.json --csv b.csv --junit b.xml >out 2>err)
+    [ $? -eq 2 ] || fail "batch --encoding cp1252 did not exit 2"
+    valid_outputs dec
+    python3 - dec <<'PY' || fail "the cp1252 row was not transcoded"
+import sys, json
+j = json.load(open(sys.argv[1] + "/b.json", encoding="utf-8"))
+c = {x["tag"]: x for x in j["cases"]}
+assert c["Pumpe-\u00d6l-1"]["verdict"] == "pass", c.keys()
+assert "\u00b5 kg" in c["P-2"]["error"]["message"], c["P-2"]["error"]
+PY
+    # UTF-16 (a spreadsheet's "Unicode text"), declared
+    python3 -c "import sys; open('u16.csv','wb').write('tag;mass\nP-\u00e9;454 kg\n'.encode('utf-16'))"
+    run 0 batch u16.csv --base "$base" --encoding utf-16 --quiet --json u16.json
+    has u16.json "\"tag\":.*\"P-$(printf '\303\251')\""
+    run 2 batch u16.csv --base "$base" --quiet
+    has err "^u16.csv: error: list: the list holds NUL bytes.*--encoding utf-16"
+    # a byte that is not a character of the declared encoding: its place
+    printf 'tag,mass\nP-1,454 kg\nP-\201,454 kg\n' >bad.csv
+    run 2 batch bad.csv --base "$base" --encoding cp1252 --quiet
+    has err "^bad.csv:3:3: error: encoding: byte 0x81 is not a character of the encoding 'cp1252'"
+    # an encoding iconv does not know is a usage error, before any work
+    run 2 batch l.csv --base "$base" --encoding no-such-code --json never.json
+    has err "unknown encoding 'no-such-code'"
+    [ ! -e never.json ] || fail "an output was written after a usage error"
+    ;;
+separators)
+    need_python
+    # a European spreadsheet: semicolons, decimal commas inside quotes are
+    # not separators, a byte-order mark, CRLF line ends
+    printf '\357\273\277tag;mass;gap_ratio\r\n"P;1";454 kg;\r\nP-2; 454 kg ;0.01\r\n' >semi.csv
+    run 0 batch semi.csv --base "$base" --json b.json --csv b.csv --junit b.xml
+    valid_outputs .
+    has out "P;1 .*pass"
+    has out "P-2 .*pass"
+    python3 - <<'PY' || fail "the semicolon list was not read as the comma list"
+import json
+j = json.load(open("b.json"))
+assert [c["tag"] for c in j["cases"]] == ["P;1", "P-2"], j["cases"]
+assert [c["line"] for c in j["cases"]] == [2, 3]
+PY
+    # the same list with commas gives the same results
+    printf 'tag,mass,gap_ratio\n"P;1",454 kg,\nP-2,454 kg,0.01\n' >comma.csv
+    run 0 batch comma.csv --base "$base" --json c.json
+    python3 - <<'PY' || fail "semicolon and comma lists differ"
+import json
+a = json.load(open("b.json"))["cases"]
+b = json.load(open("c.json"))["cases"]
+for x, y in zip(a, b):
+    assert x["runs"] == y["runs"] and x["tag"] == y["tag"], (x, y)
+PY
+    # a header with commas keeps semicolons inside fields
+    printf 'tag,mass,description\nP-1,454 kg,pump; spare\n' >mixed.csv
+    run 0 batch mixed.csv --base "$base" --quiet
+    ;;
 *)
     fail "unknown test '$t'"
     ;;

@@ -45,6 +45,7 @@ for c in $COMMANDS; do
             *" I/N"*) value=1/2 ;;
             *" N "*|*" N") value=2 ;;
             *" FILE"*|*" CASE"*) value=x ;;
+            *" NAME"*) value=cp1252 ;;
         esac
         for n in $names; do
             case "$n" in -*) ;; *) continue ;; esac

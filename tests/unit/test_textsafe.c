@@ -68,9 +68,33 @@ static void test_csv(void)
     free(q);
 }
 
+static int fix_is(const char *in, const char *want)
+{
+    char *got = rb_utf8_fix(in);
+    int ok = got && strcmp(got, want) == 0;
+    free(got);
+    return ok;
+}
+
+/* JSON keeps control characters but must be UTF-8: only bad bytes change */
+static void test_utf8(void)
+{
+    CHECK(rb_utf8_invalid_at("abc", 3) == 3);
+    CHECK(rb_utf8_invalid_at("P\xc3\xa9", 3) == 3);
+    CHECK(rb_utf8_invalid_at("Pumpe-\xd6l", 9) == 6);       /* cp1252 */
+    CHECK(rb_utf8_invalid_at("ab\xc3", 3) == 2);            /* cut short */
+    CHECK(rb_utf8_invalid_at("\xc0\xaf", 2) == 0);          /* overlong */
+    CHECK(rb_utf8_invalid_at("\xed\xa0\x80", 3) == 0);      /* surrogate */
+    CHECK(rb_utf8_invalid_at("\xf0\x9f\x98\x80", 4) == 4);  /* 4 bytes, at the end */
+    CHECK(fix_is("Pumpe-\xd6l-1", "Pumpe-\\xd6l-1"));
+    CHECK(fix_is("a\x1b\xc3\xa9\xff", "a\x1b\xc3\xa9\\xff"));
+    CHECK(fix_is(NULL, ""));
+}
+
 int main(void)
 {
     test_escape();
     test_csv();
+    test_utf8();
     TEST_MAIN_END();
 }
