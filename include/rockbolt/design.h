@@ -261,6 +261,19 @@ typedef struct {
 rb_status rb_design_case(const rb_case *c, int n_threads, rb_case_design *out,
                          rb_diag *diag);
 
+/* Progress of a case design: called before each search with the number of
+ * searches done, their total and what comes next ("motion 'elcentro':
+ * recommended gap", text of the case, not escaped), and once at the end
+ * with done == total and what NULL. From the calling thread only. */
+typedef void (*rb_design_progress_fn)(void *ctx, size_t done, size_t total,
+                                      const char *what);
+
+/* rb_design_case with a progress callback (may be NULL). The results do
+ * not depend on it. */
+rb_status rb_design_case_progress(const rb_case *c, int n_threads, rb_case_design *out,
+                                  rb_diag *diag, rb_design_progress_fn progress,
+                                  void *ctx);
+
 /* Free what a case design owns; accepts NULL and a zeroed design. */
 void rb_case_design_free(rb_case_design *d);
 

@@ -52,4 +52,8 @@ void rb_cli_progress_update(void *ctx, const rb_batch_progress *bp);
 /* Clear the line; with a summary of the wall time when enabled. */
 void rb_cli_progress_end(rb_cli_progress *p, size_t cases);
 
+/* The same for design's searches (rb_design_progress_fn). */
+void rb_cli_progress_design(void *ctx, size_t done, size_t total, const char *what);
+void rb_cli_progress_design_end(rb_cli_progress *p, size_t searches);
+
 #endif

@@ -1,11 +1,12 @@
-/* The progress line of a batch on stderr, rewritten in place: cases done,
- * failures, time left. Only on a terminal: a log file or a CI console gets
+/* The progress line of a batch (and of design's searches) on stderr,
+ * rewritten in place: cases done, failures, time left. Only on a terminal: a log file or a CI console gets
  * nothing, since carriage returns make a mess there. The wall time stays
  * here too, never in the summary files, which must not depend on it. */
 #include <stdio.h>
 #include <time.h>
 #include <unistd.h>
 #include "cli_batch.h"
+#include "rockbolt/textsafe.h"
 
 #define RB_PROGRESS_INTERVAL_S 0.2
 
@@ -60,4 +61,30 @@ void rb_cli_progress_end(rb_cli_progress *p, size_t cases)
     fmt_time(took, sizeof took, now_s() - p->start_s);
     fprintf(stderr, "%s%zu case%s in %s (%.1f s)\n", p->shown ? "\r\033[K" : "", cases,
             cases == 1 ? "" : "s", took, now_s() - p->start_s);
+}
+
+/* design: one line per search as it starts (searches are few and each can
+ * take seconds, so every start is shown); what it is, of the case's text,
+ * escaped like every name on a terminal. */
+void rb_cli_progress_design(void *ctx, size_t done, size_t total, const char *what)
+{
+    rb_cli_progress *p = ctx;
+    char el[32], w[160];
+    if (!p->enabled || !what)
+        return;
+    fmt_time(el, sizeof el, now_s() - p->start_s);
+    fprintf(stderr, "\rdesign: search %zu/%zu, %s, %s elapsed\033[K", done + 1, total,
+            rb_text_escape_buf(what, w, sizeof w), el);
+    fflush(stderr);
+    p->shown = 1;
+}
+
+void rb_cli_progress_design_end(rb_cli_progress *p, size_t searches)
+{
+    char took[32];
+    if (!p->enabled)
+        return;
+    fmt_time(took, sizeof took, now_s() - p->start_s);
+    fprintf(stderr, "%sdesign: %zu search%s in %s (%.1f s)\n", p->shown ? "\r\033[K" : "",
+            searches, searches == 1 ? "" : "es", took, now_s() - p->start_s);
 }

@@ -2,13 +2,36 @@
 #include <stdio.h>
 #include <string.h>
 #include "cli.h"
+#include "cli_batch.h"
+
+/* The progress line, and the number of searches for its closing line. */
+typedef struct {
+    rb_cli_progress line;
+    size_t total;
+} design_progress;
+
+static void on_progress(void *ctx, size_t done, size_t total, const char *what)
+{
+    design_progress *p = ctx;
+    p->total = total;
+    rb_cli_progress_design(&p->line, done, total, what);
+}
 
 rb_exit rb_cli_design_step(const rb_cli_opts *o, const rb_case *c, rb_case_design *d)
 {
     rb_diag diag;
     rb_status st;
     rb_diag_clear(&diag);
-    st = rb_design_case(c, o->threads, d, &diag);
+    /* on a terminal, unless --quiet: the search under way on stderr; the
+     * outputs are the same with it or without */
+    design_progress p = {0};
+    rb_cli_progress_start(&p.line, o->quiet);
+    st = rb_design_case_progress(c, o->threads, d, &diag,
+                                 p.line.enabled ? on_progress : NULL, &p);
+    if (p.line.enabled && p.line.shown && st != RB_OK)
+        fputs("\r\033[K", stderr);
+    else if (st == RB_OK)
+        rb_cli_progress_design_end(&p.line, p.total);
     if (st == RB_OK)
         return RB_EXIT_PASS;
     rb_cli_error(o->case_path, diag.key, "%s%s%s", rb_status_str(st),

@@ -18,22 +18,44 @@ static rb_status fail_at(rb_diag *diag, const char *motion, const char *what,
                        diag->msg[0] ? diag->msg : rb_status_str(st));
 }
 
+/* The searches done and to do, told to a progress callback. */
+typedef struct {
+    rb_design_progress_fn fn;
+    void *ctx;
+    size_t done, total;
+} progress;
+
+static void step(progress *p, const char *motion, const char *what)
+{
+    char buf[200];
+    if (!p->fn)
+        return;
+    if (motion)
+        snprintf(buf, sizeof buf, "motion '%.100s': %s", motion, what);
+    else
+        snprintf(buf, sizeof buf, "%s", what);
+    p->fn(p->ctx, p->done++, p->total, buf);
+}
+
 static rb_status design_motion(const rb_case *c, const rb_case_motion *cm, int n_threads,
                                const rb_case_design *cd, rb_motion_design *md,
-                               rb_diag *diag)
+                               rb_diag *diag, progress *pg)
 {
     const rb_motion *mo = &cm->motion;
     rb_status st;
     size_t i, n_amp = 0;
+    step(pg, cm->name, "design factor (no yield)");
     st = rb_design_factor(&c->model, mo, &c->solve, &cd->no_yield, &c->design, n_threads,
                           &md->no_yield, diag);
     if (st != RB_OK)
         return fail_at(diag, cm->name, "design factor (no yield)", st);
+    step(pg, cm->name, "design factor (no break)");
     st = rb_design_factor(&c->model, mo, &c->solve, &cd->no_break, &c->design, n_threads,
                           &md->no_break, diag);
     if (st != RB_OK)
         return fail_at(diag, cm->name, "design factor (no break)", st);
     if (c->model.bolt_model != RB_BOLT_NONE) {
+        step(pg, cm->name, "recommended gap");
         st = rb_gap_recommend(&c->model, mo, &c->solve, &cd->gap_criteria, &c->design,
                               n_threads, &md->gap, diag);
         md->has_gap = st == RB_OK;
@@ -47,6 +69,7 @@ static rb_status design_motion(const rb_case *c, const rb_case_motion *cm, int n
     for (i = 0; i < c->n_sweeps; i++) {
         if (c->sweeps[i].kind != RB_SWEEP_AMPLITUDE)
             continue;
+        step(pg, cm->name, "amplitude sweep");
         st = rb_sweep_amplitude(&c->model, mo, &c->solve, &c->criteria, &c->sweeps[i],
                                 n_threads, &md->sweeps[md->n_sweeps++], diag);
         if (st != RB_OK)
@@ -56,7 +79,7 @@ static rb_status design_motion(const rb_case *c, const rb_case_motion *cm, int n
 }
 
 static rb_status design_sweeps(const rb_case *c, int n_threads, rb_case_design *out,
-                               rb_diag *diag)
+                               rb_diag *diag, progress *pg)
 {
     size_t i, n = 0;
     for (i = 0; i < c->n_sweeps; i++)
@@ -69,6 +92,7 @@ static rb_status design_sweeps(const rb_case *c, int n_threads, rb_case_design *
         rb_status st;
         if (c->sweeps[i].kind != RB_SWEEP_FREQUENCY)
             continue;
+        step(pg, NULL, "frequency sweep");
         st = rb_sweep_frequency(&c->model, &c->solve, &c->criteria, &c->sweeps[i],
                                 n_threads, &out->sweeps[out->n_sweeps++], diag);
         if (st != RB_OK) {
@@ -82,8 +106,21 @@ static rb_status design_sweeps(const rb_case *c, int n_threads, rb_case_design *
 rb_status rb_design_case(const rb_case *c, int n_threads, rb_case_design *out,
                          rb_diag *diag)
 {
+    return rb_design_case_progress(c, n_threads, out, diag, NULL, NULL);
+}
+
+rb_status rb_design_case_progress(const rb_case *c, int n_threads, rb_case_design *out,
+                                  rb_diag *diag, rb_design_progress_fn fn, void *ctx)
+{
     rb_status st = RB_OK;
-    size_t i;
+    size_t i, n_amp = 0, n_freq = 0;
+    progress pg = {fn, ctx, 0, 0};
+    for (i = 0; i < c->n_sweeps; i++) {
+        n_amp += c->sweeps[i].kind == RB_SWEEP_AMPLITUDE;
+        n_freq += c->sweeps[i].kind == RB_SWEEP_FREQUENCY;
+    }
+    pg.total = c->n_motions * (2 + (c->model.bolt_model != RB_BOLT_NONE) + n_amp)
+        + n_freq + (c->has_code != 0);
     memset(out, 0, sizeof *out);
     out->no_yield = c->criteria;
     out->no_yield.kind = RB_CRIT_NO_YIELD;
@@ -101,10 +138,12 @@ rb_status rb_design_case(const rb_case *c, int n_threads, rb_case_design *out,
         return RB_ERR_NOMEM;
     out->n_motions = c->n_motions;
     for (i = 0; i < c->n_motions && st == RB_OK; i++)
-        st = design_motion(c, &c->motions[i], n_threads, out, &out->motions[i], diag);
+        st = design_motion(c, &c->motions[i], n_threads, out, &out->motions[i], diag,
+                           &pg);
     if (st == RB_OK)
-        st = design_sweeps(c, n_threads, out, diag);
+        st = design_sweeps(c, n_threads, out, diag, &pg);
     if (st == RB_OK && c->has_code) {
+        step(&pg, NULL, "code-static comparison");
         st = rb_code_static(&c->model, &c->code, &out->code, diag);
         if (st != RB_OK) {
             char key[sizeof diag->key];
@@ -113,6 +152,8 @@ rb_status rb_design_case(const rb_case *c, int n_threads, rb_case_design *out,
         }
         out->has_code = st == RB_OK;
     }
+    if (st == RB_OK && fn)
+        fn(ctx, pg.total, pg.total, NULL);
     return st;
 }
 

@@ -145,6 +145,29 @@ PY
     printf 'tag,mass,description\nP-1,454 kg,pump; spare\n' >mixed.csv
     run 0 batch mixed.csv --base "$base" --quiet
     ;;
+design_progress)
+    # not a terminal: no progress at all, whatever the command prints
+    case=$src/cases/reference-design.yaml
+    run 1 design "$case" -j 2 --json plain.json
+    [ ! -s err ] || { cat err >&2; fail "design wrote to stderr when it is not a terminal"; }
+    cp out plain.txt
+    # on a terminal (a pseudo-terminal made by script(1)): a line per search,
+    # rewritten in place, then the time; the outputs are the same bytes
+    command -v script >/dev/null 2>&1 || { echo "script(1) not found"; exit 77; }
+    script -qec "'$rb' design '$case' -j 2 --json tty.json >tty.txt" /dev/null >tty.log 2>&1
+    rc=$?
+    [ -s tty.txt ] || { echo "script(1) could not run a pseudo-terminal here"; exit 77; }
+    [ "$rc" -eq 1 ] || fail "design on a terminal exited $rc, expected 1"
+    has tty.log "design: search 1/6, motion 'elcentro_1940_ns.at2': design factor (no yield), 0:00 elapsed"
+    has tty.log "design: search 6/6, code-static comparison"
+    has tty.log "design: 6 searches in "
+    cmp -s plain.txt tty.txt || fail "the text report differs on a terminal"
+    cmp -s plain.json tty.json || fail "the JSON report differs on a terminal"
+    # --quiet: nothing, on a terminal too
+    script -qec "'$rb' design '$case' -j 2 --quiet --json quiet.json" /dev/null >quiet.log 2>&1
+    lacks quiet.log "design:"
+    cmp -s plain.json quiet.json || fail "the JSON report differs with --quiet"
+    ;;
 *)
     fail "unknown test '$t'"
     ;;

@@ -13,7 +13,7 @@ endforeach()
 
 # What a CI needs (tests/batch/ci_test.sh): JUnit names stable when a row is
 # inserted, lists in cp1252 or with semicolons, progress on a terminal only.
-set(RB_CI_TESTS junit_names encoding separators)
+set(RB_CI_TESTS junit_names encoding separators design_progress)
 foreach(t ${RB_CI_TESTS})
   add_test(NAME ci_${t}
            COMMAND sh ${PROJECT_SOURCE_DIR}/tests/batch/ci_test.sh ${t}
