@@ -4,6 +4,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include "rockbolt/names.h"
 #include "plot_internal.h"
 
 #define FIG_W 1000.0
@@ -35,9 +36,12 @@ typedef struct {
     const char *y_title;
     series_spec s[2];
     int n;
-    double must_lo, must_hi;   /* always inside the range (a reference) */
+    double must_lo, must_hi;   /* inside the range when the data reach half
+                                  way to them (a reference) */
     double ref[2];             /* dashed reference lines */
     int n_ref;
+    const char *off_scale;     /* said in the panel when must_lo..must_hi is
+                                  left out: the reference is off the axis */
 } panel_spec;
 
 /* Normalised when the normaliser exists, otherwise in engineering units:
@@ -70,6 +74,10 @@ static void build_specs(const rb_report *rep, const rb_result *res,
     const rb_history *h = res->history;
     double g = rep->derived.g > 0 ? rep->derived.g : RB_G0, sc;
     int normed;
+    /* raw panels (no normaliser) in the case's output units */
+    const rb_out_units *ou = rb_out_units_of(rep->kase ? rep->kase->output_units
+                                             : RB_UNITS_SI);
+    int us = ou->system == RB_UNITS_US;
     memset(ps, 0, N_PANELS * sizeof *ps);
 
     set_series(&ps[0].s[0], h->accel, 1 / g, "#444444", "accel", "floor");
@@ -87,13 +95,14 @@ static void build_specs(const rb_report *rep, const rb_result *res,
         ps[1].n_ref = 2;
     }
 
-    sc = norm_scale(res->u_static_m, 1e3, "U / U_static (-)", "U (mm)", &ps[2].y_title);
+    sc = norm_scale(res->u_static_m, 1 / ou->small_length_f, "U / U_static (-)",
+                    us ? "U (in)" : "U (mm)", &ps[2].y_title);
     set_series(&ps[2].s[0], h->u, sc, "#2ca02c", "u", "frame deflection");
     ps[2].n = 1;
 
     normed = res->fy_row_n > 0;
-    sc = norm_scale(res->fy_row_n, 1e-3, "bolt force / Fy (-)", "bolt force (kN)",
-                    &ps[3].y_title);
+    sc = norm_scale(res->fy_row_n, 1 / ou->force_f, "bolt force / Fy (-)",
+                    us ? "bolt force (kip)" : "bolt force (kN)", &ps[3].y_title);
     set_series(&ps[3].s[0], h->bolt_force_left, -sc, "#1f77b4", "bolt_left",
                "left row (-)");
     set_series(&ps[3].s[1], h->bolt_force_right, sc, "#d62728", "bolt_right",
@@ -106,10 +115,11 @@ static void build_specs(const rb_report *rep, const rb_result *res,
         ps[3].ref[0] = -1;
         ps[3].ref[1] = 1;
         ps[3].n_ref = 2;
+        ps[3].off_scale = "yield at \xc2\xb1" "1 Fy: off this scale";
     }
 
-    sc = norm_scale(res->weight_n, 1e-3, "base shear / W (-)", "base shear (kN)",
-                    &ps[4].y_title);
+    sc = norm_scale(res->weight_n, 1 / ou->force_f, "base shear / W (-)",
+                    us ? "base shear (kip)" : "base shear (kN)", &ps[4].y_title);
     set_series(&ps[4].s[0], h->shear_elastic, sc, "#9467bd", "shear_frame",
                "frame GA(\xcf\x80/4h)U");
     set_series(&ps[4].s[1], h->shear_total, sc, "#ff7f0e", "shear_total",
@@ -118,7 +128,8 @@ static void build_specs(const rb_report *rep, const rb_result *res,
     ps[4].n = 2;
 
     normed = res->capacity_j > 0;
-    sc = norm_scale(res->capacity_j, 1, "energy / capacity (-)", "absorbed energy (J)",
+    sc = norm_scale(res->capacity_j, 1 / ou->energy_f, "energy / capacity (-)",
+                    us ? "absorbed energy (ft-lbf)" : "absorbed energy (J)",
                     &ps[5].y_title);
     set_series(&ps[5].s[0], h->energy_left, sc, "#1f77b4", "energy_left", "left row");
     set_series(&ps[5].s[1], h->energy_right, sc, "#d62728", "energy_right",
@@ -128,14 +139,19 @@ static void build_specs(const rb_report *rep, const rb_result *res,
         ps[5].must_hi = 1.1;
         ps[5].ref[0] = 1;
         ps[5].n_ref = 1;
+        ps[5].off_scale = "break at 1: off this scale";
     }
 }
 
-static void layout_panel(rb_panel *p, int k, double top, const panel_spec *ps,
-                         const rb_history *h)
+/* The y range is the data's (with zero), and takes in the reference range
+ * must_lo..must_hi only when the data reach half way to it: a response of
+ * 0.25 Fy fills its panel instead of lying flat under the yield lines.
+ * Returns 1 when the reference range was left out. */
+static int layout_panel(rb_panel *p, int k, double top, const panel_spec *ps,
+                        const rb_history *h)
 {
-    double lo = ps->must_lo, hi = ps->must_hi, a, b;
-    int i;
+    double lo = 0, hi = 0, a, b, reach, must;
+    int i, have = 0, left_out = 0;
     p->x0 = LEFT;
     p->w = FIG_W - LEFT - RIGHT;
     p->y0 = top + k * (PANEL_H + PANEL_GAP);
@@ -145,11 +161,23 @@ static void layout_panel(rb_panel *p, int k, double top, const panel_spec *ps,
         if (rb_series_range(ps->s[i].y, h->n, ps->s[i].scale, &a, &b)) {
             lo = fmin(lo, a);
             hi = fmax(hi, b);
+            have = 1;
+        }
+    }
+    reach = fmax(fabs(lo), fabs(hi));
+    must = fmax(fabs(ps->must_lo), fabs(ps->must_hi));
+    if (must > 0) {
+        if (!have || reach >= 0.5 * must) {
+            lo = fmin(lo, ps->must_lo);
+            hi = fmax(hi, ps->must_hi);
+        } else {
+            left_out = 1;
         }
     }
     /* a little air so that a peak on a tick does not sit on the frame */
     a = 0.01 * (hi - lo);
     rb_axis_nice(&p->ya, lo < 0 ? lo - a : lo, hi > 0 ? hi + a : hi, 5, 1);
+    return left_out;
 }
 
 /* The stage of each pixel column: the highest stage any sample interval
@@ -312,6 +340,33 @@ static void draw_markers(rb_strbuf *b, const marker *m, int n, const rb_panel *t
     }
 }
 
+/* What the motion is, for the title: the record's file name, or the
+ * closed form with its frequency or duration. */
+static const char *motion_what(const rb_report_motion *rm, char *buf, size_t n)
+{
+    const rb_case_motion *cm = rm->motion;
+    const char *src, *slash;
+    if (!cm)
+        return "floor motion";
+    switch (cm->motion.kind) {
+    case RB_MOTION_HARMONIC:
+        snprintf(buf, n, "harmonic, %.4g Hz", cm->motion.freq_hz);
+        return buf;
+    case RB_MOTION_SAMPLED:
+        src = cm->source ? cm->source : "record";
+        slash = strrchr(src, '/');
+        snprintf(buf, n, "record %s", slash ? slash + 1 : src);
+        return buf;
+    case RB_MOTION_PULSE:
+        snprintf(buf, n, "%s pulse, %.4g s",
+                 rb_enum_str(rb_pulse_shape_names, (int)cm->motion.pulse),
+                 cm->motion.pulse_s);
+        return buf;
+    default:
+        return "critical alternating pulses";
+    }
+}
+
 static void draw_titles(rb_strbuf *b, const rb_report *rep, const rb_report_motion *rm)
 {
     const rb_result *res = rm->result;
@@ -323,7 +378,9 @@ static void draw_titles(rb_strbuf *b, const rb_report *rep, const rb_report_moti
     rb_plot_escape(b, case_name);
     rb_strbuf_puts(b, " \xe2\x80\x94 ");
     rb_plot_escape(b, motion_name);
-    rb_strbuf_puts(b, "</text>\n");
+    rb_strbuf_puts(b, " (");
+    rb_plot_escape(b, motion_what(rm, line, sizeof line));
+    rb_strbuf_puts(b, ")</text>\n");
     char head[RB_HEADLINE_MAX];
     rb_report_headline(rm->verdict.pass, rm->verdict.warnings, head, sizeof head);
     rb_strbuf_printf(b, "<text x=\"%.1f\" y=\"44\" font-size=\"12\">%s: ", LEFT, head);
@@ -386,8 +443,9 @@ rb_status rb_plot_history_svg(const rb_report *rep, size_t motion_index,
     n_marks = collect_markers(rm->result, marks);
     rows = place_markers(marks, n_marks, &p[0]);
     top = TITLE_H + MARK_ROW * (rows > 1 ? rows : 1) + 12;
+    int off[N_PANELS];
     for (k = 0; k < N_PANELS; k++)
-        layout_panel(&p[k], k, top, &ps[k], h);
+        off[k] = layout_panel(&p[k], k, top, &ps[k], h);
     bottom = p[N_PANELS - 1].y0 + PANEL_H;
     height = bottom + 80;
 
@@ -408,6 +466,9 @@ rb_status rb_plot_history_svg(const rb_report *rep, size_t motion_index,
         }
         if (ps[k].n > 1)
             rb_panel_legend(&b, &p[k], names, colours, ps[k].n);
+        if (off[k] && ps[k].off_scale)
+            rb_svg_text(&b, p[k].x0 + 6, p[k].y0 + 13, 11, "start", NULL,
+                        ps[k].off_scale);
     }
     draw_markers(&b, marks, n_marks, &p[0], bottom);
     draw_stage_legend(&b, bottom + 50);

@@ -89,6 +89,25 @@ static void layout(rb_panel *p, int k, const rb_axis *xa, const double *const *y
     rb_axis_nice(&p->ya, lo, hi + 0.01 * (hi - lo), 5, 1);
 }
 
+/* An amplitude sweep's levels in g as well as A*: the ticks of the level
+ * axis labelled in g along the top of the upper panel. */
+static void draw_g_axis(rb_strbuf *b, const rb_panel *p, double a_star_mps2)
+{
+    double f = a_star_mps2 / RB_G0;
+    char lab[64];
+    int i;
+    if (!(f > 0) || !isfinite(f))
+        return;
+    rb_svg_text(b, p->x0 - 16, p->y0 - 6, 11, "end", NULL, "a (g)");
+    for (i = 0; i < p->xa.n_ticks; i++) {
+        double g = p->xa.ticks[i] * f;
+        snprintf(lab, sizeof lab, "%.3g", fabs(g) < 1e-12 ? 0.0 : g);
+        rb_strbuf_printf(b, "<text class=\"g-tick\" x=\"%.1f\" y=\"%.1f\" "
+                       "font-size=\"11\" text-anchor=\"middle\">%s</text>\n",
+                       rb_panel_x(p, p->xa.ticks[i]), p->y0 - 6, lab);
+    }
+}
+
 static void draw_key(rb_strbuf *b, double y)
 {
     rb_strbuf_printf(b, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"4\" fill=\"none\" "
@@ -164,13 +183,15 @@ rb_status rb_plot_sweep_svg(const rb_sweep *s, const char *title, char **out,
     rb_svg_text(&b, LEFT, 44, 11, "start", NULL, line);
 
     rb_panel_draw(&b, &p[0], "peak U / U_static (-)", 0, NULL);
+    if (s->kind == RB_SWEEP_AMPLITUDE)
+        draw_g_axis(&b, &p[0], s->a_star_mps2);
     rb_series_path(&b, &p[0], x, u, s->n_points, 1, "#2ca02c", NULL, "u_over_ustatic");
     draw_marks(&b, &p[0], s, x, u, -1);
 
     rb_panel_draw(&b, &p[1], "peak bolt force / Fy (-)", 1,
                   s->kind == RB_SWEEP_FREQUENCY
                   ? "excitation frequency / fixed-base frequency, f / f0 (-)"
-                  : "peak floor acceleration a / A* (-)");
+                  : "peak floor acceleration a / A* (-); in g along the top");
     rb_panel_hline(&b, &p[1], 1, "#777777");
     rb_series_path(&b, &p[1], x, fl, s->n_points, 1, "#1f77b4", NULL, "force_left");
     rb_series_path(&b, &p[1], x, fr, s->n_points, 1, "#d62728", "5 3", "force_right");

@@ -174,6 +174,47 @@ static void test_history_figure(void)
     CHECK(svg && strstr(svg, "absorbed energy (J)") != NULL);
     CHECK(svg && !has_nonfinite(svg));
     free(svg);
+    /* in the case's output units */
+    kase.output_units = RB_UNITS_US;
+    CHECK(rb_plot_history_svg(&rep, 0, &svg, &d) == RB_OK);
+    CHECK(svg && strstr(svg, "bolt force (kip)") != NULL);
+    CHECK(svg && strstr(svg, "absorbed energy (ft-lbf)") != NULL);
+    CHECK(svg && strstr(svg, "base shear / W (-)") != NULL);
+    free(svg);
+    kase.output_units = RB_UNITS_SI;
+}
+
+/* Axes follow the data: a response of 0.25 Fy fills its panel (ticks of
+ * 0.1, not 0.5 up to 1.5), and the panel says the yield lines are off it. */
+static void test_history_scaling(void)
+{
+    char *svg = NULL;
+    rb_diag d;
+    size_t i;
+    rb_diag_clear(&d);
+    CHECK(solve(0.6, 2.0, 0.005) == RB_OK);
+    if (!res.history)
+        return;
+    CHECK(rb_plot_history_svg(&rep, 0, &svg, &d) == RB_OK);
+    CHECK(svg && strstr(svg, "off this scale") == NULL);
+    CHECK(svg && strstr(svg, ">-1.5<") != NULL);   /* the +-1.1 yield range */
+    /* the title names the case and the motion, and what the motion is */
+    CHECK(svg && strstr(svg, "(harmonic, 4 Hz)</text>") != NULL);
+    free(svg);
+    for (i = 0; i < res.history->n; i++) {
+        res.history->bolt_force_left[i] *= 0.25;
+        res.history->bolt_force_right[i] *= 0.25;
+        res.history->energy_left[i] *= 0.1;
+        res.history->energy_right[i] *= 0.1;
+    }
+    CHECK(rb_plot_history_svg(&rep, 0, &svg, &d) == RB_OK);
+    CHECK(svg && strstr(svg, "yield at \xc2\xb1" "1 Fy: off this scale") != NULL);
+    CHECK(svg && strstr(svg, "break at 1: off this scale") != NULL);
+    CHECK(svg && strstr(svg, ">-1.5<") == NULL);
+    CHECK(svg && strstr(svg, ">-0.2<") != NULL);
+    CHECK(svg && strstr(svg, ">0.2<") != NULL);
+    CHECK(svg && !has_nonfinite(svg));
+    free(svg);
 }
 
 static void test_decimation(void)
@@ -275,6 +316,7 @@ static void test_sweep(void)
     CHECK(path_points(svg, "u_over_ustatic", &sub) == 5 && sub == 1);
     CHECK(strstr(svg, "gap &lt;0.01&gt; &amp; more") != NULL);
     CHECK(strstr(svg, "f / f0") != NULL);
+    CHECK(count(svg, "class=\"g-tick\"") == 0);  /* no level axis in g */
     CHECK(strstr(svg, "1 of 6 points have no result") != NULL);
     CHECK(!has_nonfinite(svg));
     free(svg);
@@ -285,6 +327,10 @@ static void test_sweep(void)
     pts[5].overturned = 1;              /* x on all three curves */
     CHECK(rb_plot_sweep_svg(&s, NULL, &svg, &d) == RB_OK);
     CHECK(svg && strstr(svg, "a / A*") != NULL);
+    /* the levels in g as well: 1 A* = 114.77 / 9.80665 g */
+    CHECK(svg && count(svg, "class=\"g-tick\"") >= 3);
+    CHECK(svg && strstr(svg, "class=\"g-tick\"") && strstr(svg, ">11.7</text>") != NULL);
+    CHECK(svg && strstr(svg, ">a (g)<") != NULL);
     CHECK(svg && strstr(svg, "Amplitude response") != NULL);
     CHECK(svg && count(svg, "class=\"mark-fail\"") == 5);
     CHECK(svg && strstr(svg, "have no result") == NULL);
@@ -360,6 +406,7 @@ int main(void)
     setup();
     test_axis();
     test_history_figure();
+    test_history_scaling();
     test_html();
     test_history_errors();
     test_decimation();
