@@ -88,6 +88,13 @@ encoding)
     has out "P-3 .*pass"
     has b.json '"tag":.*"Pumpe-\\\\xd6l-1"'
     has b.json '"source":.*"cases/caf\\\\xe9.yaml"'
+    # the JSON's \xHH reads back: merged shards are the same bytes
+    for i in 1 2; do
+        "$rb" batch l.csv cases --base "$base" -q --shard $i/2 --json s$i.json 2>/dev/null
+    done
+    run 2 merge s1.json s2.json --json m.json --csv m.csv --junit m.xml
+    cmp -s b.json m.json && cmp -s b.csv m.csv && cmp -s b.xml m.xml \
+        || fail "merged shards differ from the single run"
     # declared: transcoded, so the row runs under its own name
     mkdir dec && cp l.csv dec/
     (cd dec && "$rb" batch l.csv --base "$base" --encoding cp1252 \
