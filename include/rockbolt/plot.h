@@ -45,6 +45,15 @@
 rb_status rb_plot_history_svg(const rb_report *rep, size_t motion_index,
                               char **out, rb_diag *diag);
 
+/* Hysteresis of motion motion_index of rep, from its history: each bolt
+ * row's force against its elongation (the plate's travel at the row past
+ * the initial gap; negative while the bolt is slack), and the bolts'
+ * moment about the pivot against the rotation in mrad, in the case's
+ * output units (rb_case.output_units). Series, in <path> order:
+ * force_left, force_right, moment. Errors as rb_plot_history_svg. */
+rb_status rb_plot_hysteresis_svg(const rb_report *rep, size_t motion_index,
+                                 char **out, rb_diag *diag);
+
 /* Response curve of a sweep: peak U / U_static (top) and peak bolt row
  * force / Fy per row (bottom) against x, the excitation frequency over the
  * fixed-base frequency (frequency sweeps) or the peak floor level in A*

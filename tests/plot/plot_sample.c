@@ -103,7 +103,7 @@ int main(int argc, char **argv)
     rb_diag_list_free(&dl);
     res = calloc(c.n_motions, sizeof *res);
     rm = calloc(c.n_motions, sizeof *rm);
-    svgs = calloc(c.n_motions + 2, sizeof *svgs);
+    svgs = calloc(2 * c.n_motions + 2, sizeof *svgs);
     if (!res || !rm || !svgs)
         goto out;
     so = c.solve;
@@ -137,6 +137,14 @@ int main(int argc, char **argv)
             goto out;
         }
         snprintf(name, sizeof name, "history-%zu.svg", i + 1);
+        if (save(dir, name, svgs[n_svgs++]))
+            goto out;
+        st = rb_plot_hysteresis_svg(&rep, i, &svgs[n_svgs], &d);
+        if (st != RB_OK) {
+            fail("hysteresis figure", st, &d);
+            goto out;
+        }
+        snprintf(name, sizeof name, "hysteresis-%zu.svg", i + 1);
         if (save(dir, name, svgs[n_svgs++]))
             goto out;
     }

@@ -184,6 +184,37 @@ static void test_history_figure(void)
     kase.output_units = RB_UNITS_SI;
 }
 
+/* Hysteresis: force against elongation per row, moment against rotation,
+ * in the case's output units. */
+static void test_hysteresis(void)
+{
+    char *svg = NULL;
+    rb_diag d;
+    rb_diag_clear(&d);
+    CHECK(solve(0.6, 2.0, 0.005) == RB_OK);
+    CHECK(rb_plot_hysteresis_svg(&rep, 0, &svg, &d) == RB_OK);
+    CHECK(svg && count(svg, "<path") == 3);
+    CHECK(svg && count(svg, "data-series=\"force_left\"") == 1);
+    CHECK(svg && count(svg, "data-series=\"force_right\"") == 1);
+    CHECK(svg && count(svg, "data-series=\"moment\"") == 1);
+    CHECK(svg && strstr(svg, "bolt row force (kN)") != NULL);
+    CHECK(svg && strstr(svg, "elongation (mm)") != NULL);
+    CHECK(svg && strstr(svg, "(kN-m)") != NULL);
+    CHECK(svg && strstr(svg, "pump &amp; &lt;motor&gt;") != NULL);
+    CHECK(svg && !has_nonfinite(svg));
+    free(svg);
+    kase.output_units = RB_UNITS_US;
+    CHECK(rb_plot_hysteresis_svg(&rep, 0, &svg, &d) == RB_OK);
+    CHECK(svg && strstr(svg, "bolt row force (kip)") != NULL);
+    CHECK(svg && strstr(svg, "elongation (in)") != NULL);
+    CHECK(svg && strstr(svg, "(kip-in)") != NULL);
+    free(svg);
+    kase.output_units = RB_UNITS_SI;
+    svg = (char *)1;
+    CHECK(rb_plot_hysteresis_svg(&rep, 1, &svg, &d) == RB_ERR_INVALID);
+    CHECK(svg == NULL);
+}
+
 /* Axes follow the data: a response of 0.25 Fy fills its panel (ticks of
  * 0.1, not 0.5 up to 1.5), and the panel says the yield lines are off it. */
 static void test_history_scaling(void)
@@ -407,6 +438,7 @@ int main(void)
     test_axis();
     test_history_figure();
     test_history_scaling();
+    test_hysteresis();
     test_html();
     test_history_errors();
     test_decimation();
