@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "case_internal.h"
+#include "util/nearest.h"
 
 rb_ynode *rb_cv_get(rb_cctx *c, rb_ynode *map, const char *path,
                     const char *key, int required, const char *expected)
@@ -151,44 +152,19 @@ int rb_cv_int(rb_cctx *c, const rb_ynode *v, const char *key, long lo,
     return 1;
 }
 
-/* Edit distance between a and b, capped at 9 (enough for hints). */
-static int rb_cv_distance(const char *a, const char *b)
-{
-    size_t la = strlen(a), lb = strlen(b);
-    int row[64];
-    if (la >= 63 || lb >= 63)
-        return 9;
-    for (size_t j = 0; j <= lb; j++)
-        row[j] = (int)j;
-    for (size_t i = 1; i <= la; i++) {
-        int prev = row[0];
-        row[0] = (int)i;
-        for (size_t j = 1; j <= lb; j++) {
-            int cur = row[j];
-            int sub = prev + (tolower((unsigned char)a[i - 1])
-                              != tolower((unsigned char)b[j - 1]));
-            int best = row[j] + 1 < row[j - 1] + 1 ? row[j] + 1 : row[j - 1] + 1;
-            row[j] = sub < best ? sub : best;
-            prev = cur;
-        }
-    }
-    return row[lb] > 9 ? 9 : row[lb];
-}
-
 /* The candidate closest to word when close enough to be a likely typo. */
 static const char *rb_cv_nearest(const char *word, const char *const cand[])
 {
     const char *best = NULL;
     int bestd = 9;
     for (size_t i = 0; cand[i]; i++) {
-        int d = rb_cv_distance(word, cand[i]);
+        int d = rb_edit_distance(word, cand[i]);
         if (d < bestd) {
             bestd = d;
             best = cand[i];
         }
     }
-    int limit = strlen(word) <= 4 ? 1 : (strlen(word) <= 8 ? 2 : 3);
-    return bestd <= limit ? best : NULL;
+    return bestd <= rb_typo_limit(strlen(word)) ? best : NULL;
 }
 
 /* "a, b, c" from a NULL-terminated list. */

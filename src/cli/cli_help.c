@@ -2,9 +2,9 @@
  * unknown option. The texts are generated from src/cli/help.txt, which
  * also makes the man page; the exit codes listed there are the contract
  * scripts rely on (README.md and docs/exit-codes.md repeat them). */
-#include <ctype.h>
 #include <stdio.h>
 #include <string.h>
+#include "util/nearest.h"
 #include "cli.h"
 #include "cli_help.h"
 
@@ -51,30 +51,6 @@ void rb_cli_version_print(void)
            RB_REPORT_FORMAT_VERSION);
 }
 
-/* Edit distance of a and b, capped at 9. */
-static int distance(const char *a, const char *b)
-{
-    size_t la = strlen(a), lb = strlen(b);
-    int row[64];
-    if (la >= 63 || lb >= 63)
-        return 9;
-    for (size_t j = 0; j <= lb; j++)
-        row[j] = (int)j;
-    for (size_t i = 1; i <= la; i++) {
-        int prev = row[0];
-        row[0] = (int)i;
-        for (size_t j = 1; j <= lb; j++) {
-            int cur = row[j];
-            int sub = prev + (tolower((unsigned char)a[i - 1])
-                              != tolower((unsigned char)b[j - 1]));
-            int best = row[j] < row[j - 1] ? row[j] + 1 : row[j - 1] + 1;
-            row[j] = sub < best ? sub : best;
-            prev = cur;
-        }
-    }
-    return row[lb] > 9 ? 9 : row[lb];
-}
-
 const char *rb_cli_nearest(const char *word, const char *const *cands)
 {
     char w[64];
@@ -88,7 +64,7 @@ const char *rb_cli_nearest(const char *word, const char *const *cands)
     if (len - strspn(w, "-") <= 1)
         return NULL;
     for (size_t i = 0; cands[i]; i++) {
-        int d = distance(w, cands[i]);
+        int d = rb_edit_distance(w, cands[i]);
         /* an abbreviation of one option, "--jso" */
         if (len > 3 && strncmp(cands[i], w, len) == 0)
             d = 1;
@@ -97,9 +73,7 @@ const char *rb_cli_nearest(const char *word, const char *const *cands)
             best = cands[i];
         }
     }
-    size_t core = len - strspn(w, "-");
-    int limit = core <= 4 ? 1 : (core <= 8 ? 2 : 3);
-    return bestd <= limit ? best : NULL;
+    return bestd <= rb_typo_limit(len - strspn(w, "-")) ? best : NULL;
 }
 
 void rb_cli_unknown_word(const char *what, const char *word, const char *const *cands,
