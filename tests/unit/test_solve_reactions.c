@@ -7,7 +7,7 @@
 #include <math.h>
 #include <stdio.h>
 #include "harness.h"
-#include "rockbolt/record.h"
+#include "elcentro_floor.h"
 #include "rockbolt/solve.h"
 
 static void held_by_bolts(void)
@@ -59,14 +59,7 @@ static void reactions_two_ways(const rb_series *s, rb_formulation form, rb_bolt_
     rb_motion mo;
     rb_solve_opts o;
     rb_result r;
-    rb_model_reference(&m);
-    m.bolt_model = bolts;
-    rb_model_derive(&m, &d, NULL);
-    rb_motion_init(&mo);
-    mo.kind = RB_MOTION_SAMPLED;
-    mo.series = s;
-    mo.scale = level * d.a_star_mps2 / rb_series_peak(s);
-    mo.duration_s = 15.0;
+    elcentro_run_setup(s, bolts, level, 15.0, &m, &d, &mo);
     rb_solve_opts_init(&o);
     o.formulation = form;
     o.stretch_past_failure = 1;
@@ -99,11 +92,7 @@ static void reactions_two_ways(const rb_series *s, rb_formulation form, rb_bolt_
 static void record_runs(void)
 {
     rb_series s;
-    rb_record_opts ro;
-    rb_diag diag;
-    rb_record_opts_init(&ro);
-    CHECK(rb_record_read("cases/records/elcentro_1940_ns.at2", &ro, &s, &diag) == RB_OK);
-    CHECK(rb_series_building_filter(&s, 5.0, 0.05) == RB_OK);
+    CHECK(elcentro_floor(&s) == 0);
     static const rb_formulation forms[] = {RB_FORM_LARGE, RB_FORM_SMALL, RB_FORM_CONSISTENT};
     for (int f = 0; f < 3; f++)
         reactions_two_ways(&s, forms[f], RB_BOLT_RIGID_PLASTIC, 0.4);

@@ -7,18 +7,10 @@
 #include <math.h>
 #include <stdio.h>
 #include "harness.h"
+#include "elcentro_floor.h"
 #include "rockbolt/record.h"
 #include "rockbolt/solve.h"
 
-static int floor_motion(rb_series *s)
-{
-    rb_record_opts ro;
-    rb_diag diag;
-    rb_record_opts_init(&ro);
-    if (rb_record_read("cases/records/elcentro_1940_ns.at2", &ro, s, &diag) != RB_OK)
-        return -1;
-    return rb_series_building_filter(s, 5.0, 0.05) == RB_OK ? 0 : -1;
-}
 
 static void run_one(const rb_series *s, rb_bolt_model bolts, int polarity)
 {
@@ -27,15 +19,8 @@ static void run_one(const rb_series *s, rb_bolt_model bolts, int polarity)
     rb_motion mo;
     rb_solve_opts o;
     rb_result r;
-    rb_model_reference(&m);
-    m.bolt_model = bolts;
-    rb_model_derive(&m, &d, NULL);
-    rb_motion_init(&mo);
-    mo.kind = RB_MOTION_SAMPLED;
-    mo.series = s;
-    mo.scale = 0.4 * d.a_star_mps2 / rb_series_peak(s);
+    elcentro_run_setup(s, bolts, 0.4, 40.0, &m, &d, &mo);
     mo.polarity = polarity;
-    mo.duration_s = 40.0;
     rb_solve_opts_init(&o);
     o.stretch_past_failure = 1;
     o.history_dt_s = 0.001;
@@ -61,7 +46,7 @@ static void run_one(const rb_series *s, rb_bolt_model bolts, int polarity)
 int main(void)
 {
     rb_series s = {0};
-    CHECK(floor_motion(&s) == 0);
+    CHECK(elcentro_floor(&s) == 0);
     if (s.n) {
         run_one(&s, RB_BOLT_NONYIELDING, 1);
         run_one(&s, RB_BOLT_NONYIELDING, -1);
