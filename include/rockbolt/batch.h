@@ -105,6 +105,11 @@ typedef struct {
 /* "sha256:" and 64 hex digits, with the NUL. */
 #define RB_BATCH_DIGEST_CHARS 72
 
+/* Counts over the cases of a summary (rb_batch_count). */
+typedef struct {
+    size_t cases, passed, failed, unreadable, errors, runs;
+} rb_batch_counts;
+
 typedef struct {
     int design;           /* design factor and gap were asked for */
     size_t total;         /* items in the whole work list */
@@ -114,6 +119,11 @@ typedef struct {
     char inputs_digest[RB_BATCH_DIGEST_CHARS]; /* of the work list and the
                              files it names (rb_batch_list_digest); "" if
                              unknown */
+    int streamed;         /* the cases went to rb_batch_opts.sink as they
+                             were done and are gone: cases is NULL, n_cases
+                             says how many there were, counts what they
+                             were */
+    rb_batch_counts counts; /* only when streamed */
 } rb_batch_summary;
 
 void rb_batch_summary_free(rb_batch_summary *s);
@@ -128,12 +138,10 @@ int rb_batch_case_set_error(rb_batch_case *c, const rb_diag *d);
  * the larger force / Fy, then the earlier motion. 0 when there are none. */
 size_t rb_batch_governing(const rb_batch_case *c);
 
-/* Counts over a summary. */
-typedef struct {
-    size_t cases, passed, failed, unreadable, errors, runs;
-} rb_batch_counts;
-
+/* Counts over a summary: its cases', or what they were when streamed. */
 void rb_batch_count(const rb_batch_summary *s, rb_batch_counts *out);
+/* Add one case to counts: the one rule both ways of counting use. */
+void rb_batch_count_case(rb_batch_counts *n, const rb_batch_case *c);
 
 /* ---- Running ---------------------------------------------------------- */
 
@@ -157,6 +165,14 @@ typedef struct {
      * case is done. May be NULL. */
     void (*progress)(void *ctx, const rb_batch_progress *p);
     void *progress_ctx;
+    /* When set, each chunk of finished cases goes here, in list order,
+     * from the calling thread, and is then freed: the summary keeps only
+     * their counts (streamed), so that memory does not grow with them.
+     * first is the position of cases[0] in the summary. A status other
+     * than RB_OK stops the run with it. */
+    rb_status (*sink)(void *ctx, const rb_batch_summary *s, const rb_batch_case *cases,
+                      size_t first, size_t n);
+    void *sink_ctx;
 } rb_batch_opts;
 
 void rb_batch_opts_init(rb_batch_opts *o);
@@ -184,12 +200,27 @@ rb_status rb_batch_run(const rb_batch_list *l, const rb_batch_opts *o,
 
 /* ---- Output ------------------------------------------------------------- */
 
+typedef enum {
+    RB_BATCH_TEXT,        /* the table for the terminal */
+    RB_BATCH_CSV,         /* one row per case and motion */
+    RB_BATCH_JSON,        /* what merge reads back */
+    RB_BATCH_JUNIT,       /* one testcase per case */
+    RB_BATCH_N_FORMATS
+} rb_batch_format;
+
 /* Each renderer returns a NUL-terminated string the caller frees, or NULL
- * when memory runs out. */
-char *rb_batch_render_text(const rb_batch_summary *s);
-char *rb_batch_render_csv(const rb_batch_summary *s);
-char *rb_batch_render_json(const rb_batch_summary *s);
-char *rb_batch_render_junit(const rb_batch_summary *s);
+ * when memory runs out. rb_batch_render is the whole summary; it is the
+ * head, each case at its position pos (0, 1, ...) and the tail, in that
+ * order, which can also be rendered apart: a streamed summary's cases
+ * are rendered as they come and its head, which holds the counts, at the
+ * end (n from rb_batch_count). */
+char *rb_batch_render(rb_batch_format f, const rb_batch_summary *s);
+char *rb_batch_render_head(rb_batch_format f, const rb_batch_summary *s,
+                           const rb_batch_counts *n);
+char *rb_batch_render_case(rb_batch_format f, const rb_batch_summary *s,
+                           const rb_batch_case *c, size_t pos);
+char *rb_batch_render_tail(rb_batch_format f, const rb_batch_summary *s,
+                           const rb_batch_counts *n);
 
 /* Read a JSON summary written by rb_batch_render_json. RB_ERR_PARSE with
  * the reason in diag->msg (diag->key names the field) when it is not one. */

@@ -7,6 +7,9 @@
 
 char *rb_batch_strdup(const char *s);
 
+/* Free what a case owns and zero it. */
+void rb_batch_case_free(rb_batch_case *c);
+
 /* Append an item for source (copied); NULL on NOMEM. */
 rb_batch_item *rb_batch_list_push(rb_batch_list *l, const char *source);
 

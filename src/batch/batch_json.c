@@ -152,12 +152,13 @@ static int add_digest(cJSON *o)
     return cJSON_AddStringToObject(o, "digest", d) != NULL;
 }
 
-char *rb_batch_render_json(const rb_batch_summary *s)
+/* The head with an empty list of cases, which comes last; then the cases
+ * one at a time, so that the tree of one case is all that is ever held
+ * besides the text (a whole list's tree took 5 KB a row). */
+void rb_batch_json_head(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_counts *n)
 {
-    rb_batch_counts n;
     char shard[64];
-    rb_batch_count(s, &n);
-    cJSON *root = cJSON_CreateObject(), *counts, *cases;
+    cJSON *root = cJSON_CreateObject(), *counts;
     int ok = root && cJSON_AddStringToObject(root, "format", "rockbolt-batch")
         && add_num(root, "format_version", RB_BATCH_FORMAT_VERSION)
         && cJSON_AddBoolToObject(root, "design", s->design)
@@ -169,52 +170,54 @@ char *rb_batch_render_json(const rb_batch_summary *s)
         ok = cJSON_AddStringToObject(root, "shard", shard) != NULL;
     }
     ok = ok && (counts = cJSON_AddObjectToObject(root, "counts")) != NULL
-        && add_num(counts, "cases", (double)n.cases)
-        && add_num(counts, "passed", (double)n.passed)
-        && add_num(counts, "failed", (double)n.failed)
-        && add_num(counts, "unreadable", (double)n.unreadable)
-        && add_num(counts, "errors", (double)n.errors)
-        && add_num(counts, "runs", (double)n.runs)
-        && (cases = cJSON_AddArrayToObject(root, "cases")) != NULL;
-    /* the head with an empty list of cases, which comes last; then the
-     * cases one at a time, so that the tree of one case is all that is
-     * ever held besides the text (a whole list's tree took 5 KB a row) */
+        && add_num(counts, "cases", (double)n->cases)
+        && add_num(counts, "passed", (double)n->passed)
+        && add_num(counts, "failed", (double)n->failed)
+        && add_num(counts, "unreadable", (double)n->unreadable)
+        && add_num(counts, "errors", (double)n->errors)
+        && add_num(counts, "runs", (double)n->runs)
+        && cJSON_AddArrayToObject(root, "cases") != NULL;
     char *head = ok ? cJSON_Print(root) : NULL;
     cJSON_Delete(root);
     size_t hl = head ? strlen(head) : 0;
-    if (!head || hl < 4 || strcmp(head + hl - 4, "[]\n}") != 0) {
-        cJSON_free(head);
-        return NULL;
-    }
-    rb_strbuf b = {0};
-    rb_strbuf_putn(&b, head, hl - 3);
+    if (!head || hl < 4 || strcmp(head + hl - 4, "[]\n}") != 0)
+        b->oom = 1;
+    else
+        rb_strbuf_putn(b, head, hl - 3);
     cJSON_free(head);
-    for (size_t i = 0; !b.oom && i < s->n_cases; i++) {
-        cJSON *one = cJSON_CreateArray();
-        char *text = one && add_case(one, &s->cases[i], s->design)
-                     && add_digest(one->child) ? cJSON_Print(one->child) : NULL;
-        cJSON_Delete(one);
-        if (!text) {
-            b.oom = 1;
+}
+
+void rb_batch_json_case(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_case *c,
+                        size_t pos)
+{
+    cJSON *one = cJSON_CreateArray();
+    char *text = one && add_case(one, c, s->design) && add_digest(one->child)
+                 ? cJSON_Print(one->child) : NULL;
+    cJSON_Delete(one);
+    if (!text) {
+        b->oom = 1;
+        return;
+    }
+    /* cJSON's own layout of an array item two levels down: ", " between
+     * items, each line of the item two tabs further in */
+    if (pos > 0)
+        rb_strbuf_puts(b, ", ");
+    for (const char *p = text, *nl; *p; p = nl + 1) {
+        nl = strchr(p, '\n');
+        if (!nl) {
+            rb_strbuf_puts(b, p);
             break;
         }
-        /* cJSON's own layout of an array item two levels down: ", "
-         * between items, each line of the item two tabs further in */
-        if (i > 0)
-            rb_strbuf_puts(&b, ", ");
-        for (const char *p = text, *nl; *p; p = nl + 1) {
-            nl = strchr(p, '\n');
-            if (!nl) {
-                rb_strbuf_puts(&b, p);
-                break;
-            }
-            rb_strbuf_putn(&b, p, (size_t)(nl - p) + 1);
-            rb_strbuf_puts(&b, "\t\t");
-        }
-        cJSON_free(text);
+        rb_strbuf_putn(b, p, (size_t)(nl - p) + 1);
+        rb_strbuf_puts(b, "\t\t");
     }
-    rb_strbuf_puts(&b, "]\n}\n");
-    return rb_strbuf_take(&b);
+    cJSON_free(text);
+}
+
+void rb_batch_json_tail(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_counts *n)
+{
+    (void)s, (void)n;
+    rb_strbuf_puts(b, "]\n}\n");
 }
 
 /* ---- Reading --------------------------------------------------------------- */

@@ -23,8 +23,7 @@ typedef struct {
     const rb_batch_list *l;
     const rb_batch_opts *o;
     rb_batch_summary *out;
-    const size_t *sel;       /* work index of each summary case */
-    size_t first;            /* first summary case of the chunk */
+    rb_batch_case *cases;    /* the chunk's cases */
     rb_batch_slot *slots;    /* RB_BATCH_CHUNK */
     run_ref *runs;
     rb_record_cache *cache;  /* owned: records shared by the cases */
@@ -61,7 +60,7 @@ static void progress(run_ctx *cx, const rb_batch_case *done_case, int run_done)
 static rb_status load_job(void *arg, size_t i)
 {
     run_ctx *cx = arg;
-    rb_batch_case *bc = &cx->out->cases[cx->first + i];
+    rb_batch_case *bc = &cx->cases[i];
     rb_batch_slot *s = &cx->slots[i];
     s->cache = cx->cache;
     rb_batch_case_load(s, &cx->l->items[bc->index], bc);
@@ -76,7 +75,7 @@ static rb_status run_job(void *arg, size_t k)
 {
     run_ctx *cx = arg;
     const run_ref *r = &cx->runs[k];
-    rb_batch_case *bc = &cx->out->cases[cx->first + r->slot];
+    rb_batch_case *bc = &cx->cases[r->slot];
     rb_batch_slot *s = &cx->slots[r->slot];
     rb_batch_case_solve(s, bc, r->motion, cx->o->design);
     pthread_mutex_lock(&cx->lock);
@@ -125,20 +124,17 @@ static rb_status check_opts(const rb_batch_opts *o, rb_diag *diag)
     return RB_ERR_INVALID;
 }
 
-/* The summary's cases (this shard's items), with what the list knows. */
+/* The summary's cases (this shard's items) from first on, n of them, with
+ * what the list knows; *next is where the search for the next one starts. */
 static rb_status select_cases(const rb_batch_list *l, const rb_batch_opts *o,
-                              rb_batch_summary *out)
+                              size_t *next, rb_batch_case *cases, size_t n)
 {
-    size_t n = 0;
-    for (size_t i = 0; i < l->n; i++)
-        n += (size_t)rb_batch_in_shard(i, o->shard, o->n_shards);
-    out->cases = calloc(n ? n : 1, sizeof *out->cases);
-    if (!out->cases)
-        return RB_ERR_NOMEM;
-    for (size_t i = 0; i < l->n; i++) {
-        if (!rb_batch_in_shard(i, o->shard, o->n_shards))
-            continue;
-        rb_batch_case *bc = &out->cases[out->n_cases++];
+    for (size_t k = 0; k < n; k++) {
+        size_t i = *next;
+        while (!rb_batch_in_shard(i, o->shard, o->n_shards))
+            i++;
+        *next = i + 1;
+        rb_batch_case *bc = &cases[k];
         bc->index = i;
         bc->line = l->items[i].line;
         bc->source = rb_batch_strdup(l->items[i].source);
@@ -147,6 +143,18 @@ static rb_status select_cases(const rb_batch_list *l, const rb_batch_opts *o,
             return RB_ERR_NOMEM;
     }
     return RB_OK;
+}
+
+/* Hand a finished chunk to the sink and keep only its counts. */
+static rb_status stream_chunk(const rb_batch_opts *o, rb_batch_summary *out,
+                              size_t first, size_t n)
+{
+    rb_status st = o->sink(o->sink_ctx, out, out->cases, first, n);
+    for (size_t i = 0; i < n; i++) {
+        rb_batch_count_case(&out->counts, &out->cases[i]);
+        rb_batch_case_free(&out->cases[i]);
+    }
+    return st;
 }
 
 rb_status rb_batch_run(const rb_batch_list *l, const rb_batch_opts *o,
@@ -161,31 +169,49 @@ rb_status rb_batch_run(const rb_batch_list *l, const rb_batch_opts *o,
     out->total = l->n;
     out->shard = o->shard;
     out->n_shards = o->n_shards;
+    out->streamed = o->sink != NULL;
     if ((st = rb_batch_list_digest(l, out->inputs_digest)) != RB_OK)
         return st;
-    if ((st = select_cases(l, o, out)) != RB_OK)
-        return st;
+    size_t n_cases = 0, next = 0;
+    for (size_t i = 0; i < l->n; i++)
+        n_cases += (size_t)rb_batch_in_shard(i, o->shard, o->n_shards);
+    /* streamed: one chunk's cases at a time; else the whole summary */
+    size_t held = out->streamed ? RB_BATCH_CHUNK : n_cases;
+    out->cases = calloc(held ? held : 1, sizeof *out->cases);
     memset(&cx, 0, sizeof cx);
     cx.l = l;
     cx.o = o;
     cx.out = out;
-    cx.prog.cases_total = out->n_cases;
+    cx.prog.cases_total = n_cases;
     cx.slots = calloc(RB_BATCH_CHUNK, sizeof *cx.slots);
     /* an equipment list reads the same few records for every row */
     cx.cache = rb_record_cache_new(0);
-    if (!cx.slots || !cx.cache || pthread_mutex_init(&cx.lock, NULL) != 0) {
+    if (!out->cases || !cx.slots || !cx.cache || pthread_mutex_init(&cx.lock, NULL) != 0) {
         free(cx.slots);
         rb_record_cache_free(cx.cache);
         return RB_ERR_NOMEM;
     }
-    for (size_t first = 0; first < out->n_cases && st == RB_OK; first += RB_BATCH_CHUNK) {
-        size_t n = out->n_cases - first;
+    for (size_t first = 0; first < n_cases && st == RB_OK; first += RB_BATCH_CHUNK) {
+        size_t n = n_cases - first;
         if (n > RB_BATCH_CHUNK)
             n = RB_BATCH_CHUNK;
-        cx.first = first;
-        st = run_chunk(&cx, n);
+        cx.cases = out->streamed ? out->cases : out->cases + first;
+        /* a case counts in the summary (and is freed with it) once selected */
+        out->n_cases = out->streamed ? n : first + n;
+        st = select_cases(l, o, &next, cx.cases, n);
+        if (st == RB_OK)
+            st = run_chunk(&cx, n);
         for (size_t i = 0; i < n; i++)
             rb_batch_slot_free(&cx.slots[i]);
+        if (st == RB_OK && out->streamed)
+            st = stream_chunk(o, out, first, n);
+    }
+    if (out->streamed) {
+        for (size_t i = 0; i < out->n_cases; i++)
+            rb_batch_case_free(&out->cases[i]);
+        free(out->cases);
+        out->cases = NULL;
+        out->n_cases = out->counts.cases;
     }
     pthread_mutex_destroy(&cx.lock);
     free(cx.slots);

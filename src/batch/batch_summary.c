@@ -19,20 +19,24 @@ int rb_batch_case_set_error(rb_batch_case *c, const rb_diag *d)
     return 1;
 }
 
+void rb_batch_case_free(rb_batch_case *c)
+{
+    free(c->source);
+    free(c->tag);
+    free(c->reason);
+    free(c->error);
+    for (size_t m = 0; c->runs && m < c->n_runs; m++)
+        free(c->runs[m].motion);
+    free(c->runs);
+    memset(c, 0, sizeof *c);
+}
+
 void rb_batch_summary_free(rb_batch_summary *s)
 {
     if (!s)
         return;
-    for (size_t i = 0; s->cases && i < s->n_cases; i++) {
-        rb_batch_case *c = &s->cases[i];
-        free(c->source);
-        free(c->tag);
-        free(c->reason);
-        free(c->error);
-        for (size_t m = 0; c->runs && m < c->n_runs; m++)
-            free(c->runs[m].motion);
-        free(c->runs);
-    }
+    for (size_t i = 0; s->cases && i < s->n_cases; i++)
+        rb_batch_case_free(&s->cases[i]);
     free(s->cases);
     memset(s, 0, sizeof *s);
 }
@@ -62,19 +66,26 @@ static int has_results(const rb_batch_case *c)
     return (c->verdict == RB_BATCH_PASS || c->verdict == RB_BATCH_FAIL) && c->n_runs > 0;
 }
 
+void rb_batch_count_case(rb_batch_counts *n, const rb_batch_case *c)
+{
+    n->cases++;
+    n->passed += c->verdict == RB_BATCH_PASS;
+    n->failed += c->verdict == RB_BATCH_FAIL;
+    n->unreadable += c->verdict == RB_BATCH_UNREADABLE;
+    n->errors += c->verdict == RB_BATCH_ERROR;
+    if (has_results(c))
+        n->runs += c->n_runs;
+}
+
 void rb_batch_count(const rb_batch_summary *s, rb_batch_counts *out)
 {
-    memset(out, 0, sizeof *out);
-    for (size_t i = 0; i < s->n_cases; i++) {
-        const rb_batch_case *c = &s->cases[i];
-        out->cases++;
-        out->passed += c->verdict == RB_BATCH_PASS;
-        out->failed += c->verdict == RB_BATCH_FAIL;
-        out->unreadable += c->verdict == RB_BATCH_UNREADABLE;
-        out->errors += c->verdict == RB_BATCH_ERROR;
-        if (has_results(c))
-            out->runs += c->n_runs;
+    if (s->streamed) {
+        *out = s->counts;
+        return;
     }
+    memset(out, 0, sizeof *out);
+    for (size_t i = 0; i < s->n_cases; i++)
+        rb_batch_count_case(out, &s->cases[i]);
 }
 
 const char *rb_batch_verdict_str(rb_batch_verdict v)

@@ -19,6 +19,21 @@ typedef struct {
 /* Zero when the case has no results (unreadable, error). */
 void rb_batch_stats(const rb_batch_case *c, rb_batch_stat *mean, rb_batch_stat *max);
 
+/* Each output format in three pieces (batch_render.c puts them together):
+ * the head, which holds the counts, each case at its position in the
+ * output, and the tail. */
+#define RB_BATCH_PIECES(fmt)                                                       \
+    void rb_batch_##fmt##_head(rb_strbuf *b, const rb_batch_summary *s,             \
+                               const rb_batch_counts *n);                           \
+    void rb_batch_##fmt##_case(rb_strbuf *b, const rb_batch_summary *s,             \
+                               const rb_batch_case *c, size_t pos);                 \
+    void rb_batch_##fmt##_tail(rb_strbuf *b, const rb_batch_summary *s,             \
+                               const rb_batch_counts *n);
+RB_BATCH_PIECES(text)
+RB_BATCH_PIECES(csv)
+RB_BATCH_PIECES(json)
+RB_BATCH_PIECES(junit)
+
 /* "sha256:" and the hex SHA-256 of text (batch_digest.c). */
 void rb_batch_digest_text(const char *text, char out[RB_BATCH_DIGEST_CHARS]);
 

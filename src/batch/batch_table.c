@@ -79,22 +79,29 @@ static void text_case(rb_strbuf *b, const rb_batch_case *c, int design)
     }
 }
 
-char *rb_batch_render_text(const rb_batch_summary *s)
+void rb_batch_text_head(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_counts *n)
 {
-    rb_strbuf b = {0};
-    rb_batch_counts n;
-    rb_strbuf_printf(&b, "%-24s %-18s %-10s %7s %7s %7s %7s", "tag", "motion", "verdict",
+    (void)n;
+    rb_strbuf_printf(b, "%-24s %-18s %-10s %7s %7s %7s %7s", "tag", "motion", "verdict",
                    "usage", "V/W", "F/Fy", "th/alp");
     if (s->design)
-        rb_strbuf_printf(&b, " %8s %8s", "factor", "gap");
-    rb_strbuf_puts(&b, "\n");
-    for (size_t i = 0; i < s->n_cases; i++)
-        text_case(&b, &s->cases[i], s->design);
-    rb_batch_count(s, &n);
-    rb_strbuf_printf(&b, "%zu case%s: %zu passed, %zu failed, %zu unreadable, %zu "
-                   "error%s; %zu runs\n", n.cases, n.cases == 1 ? "" : "s", n.passed,
-                   n.failed, n.unreadable, n.errors, n.errors == 1 ? "" : "s", n.runs);
-    return rb_strbuf_take(&b);
+        rb_strbuf_printf(b, " %8s %8s", "factor", "gap");
+    rb_strbuf_puts(b, "\n");
+}
+
+void rb_batch_text_case(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_case *c,
+                        size_t pos)
+{
+    (void)pos;
+    text_case(b, c, s->design);
+}
+
+void rb_batch_text_tail(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_counts *n)
+{
+    (void)s;
+    rb_strbuf_printf(b, "%zu case%s: %zu passed, %zu failed, %zu unreadable, %zu "
+                   "error%s; %zu runs\n", n->cases, n->cases == 1 ? "" : "s", n->passed,
+                   n->failed, n->unreadable, n->errors, n->errors == 1 ? "" : "s", n->runs);
 }
 
 /* A CSV text field through the shared writer (escaped, formula-guarded). */
@@ -121,52 +128,59 @@ static void csv_head(rb_strbuf *b, const rb_batch_case *c, const char *motion,
     rb_strbuf_printf(b, ",%d,%s,%s", governing, verdict, rb_batch_verdict_str(c->verdict));
 }
 
-char *rb_batch_render_csv(const rb_batch_summary *s)
+void rb_batch_csv_head(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_counts *n)
 {
-    rb_strbuf b = {0};
-    rb_strbuf_puts(&b, "index,source,line,tag,motion,governing,verdict,case_verdict,"
+    (void)n;
+    rb_strbuf_puts(b, "index,source,line,tag,motion,governing,verdict,case_verdict,"
                     "usage,shear_over_w,force_over_fy,theta_over_alpha");
     if (s->design)
-        rb_strbuf_puts(&b, ",design_factor,design_factor_bound,gap_ratio");
-    rb_strbuf_puts(&b, ",validity_warnings,error\n");
-    for (size_t i = 0; i < s->n_cases; i++) {
-        const rb_batch_case *c = &s->cases[i];
-        if (c->verdict != RB_BATCH_PASS && c->verdict != RB_BATCH_FAIL) {
-            char err[1400];
-            const rb_diag *e = rb_batch_case_error(c);
-            csv_head(&b, c, "", 0, rb_batch_verdict_str(c->verdict));
-            rb_strbuf_puts(&b, s->design ? ",,,,,,,,," : ",,,,,,");
-            if (e->line > 0)
-                snprintf(err, sizeof err, "%s:%d:%d: %s: %s", e->file, e->line, e->col,
-                         e->key, e->msg);
-            else
-                snprintf(err, sizeof err, "%s: %s: %s", e->file, e->key, e->msg);
-            csv_field(&b, err);
-            rb_strbuf_puts(&b, "\n");
-            continue;
-        }
-        size_t g = rb_batch_governing(c);
-        for (size_t m = 0; m < c->n_runs; m++) {
-            const rb_batch_result *r = &c->runs[m];
-            csv_head(&b, c, r->motion, m == g, r->pass ? "pass" : "fail");
-            rb_strbuf_printf(&b, ",%.6g,%.6g,%.6g,%.6g", r->usage, r->shear_over_w,
-                           r->force_over_fy, r->theta_over_alpha);
-            if (s->design) {
-                if (r->has_factor)
-                    rb_strbuf_printf(&b, ",%.6g,%d", r->design_factor, r->factor_bound);
-                else
-                    rb_strbuf_puts(&b, ",,");
-                if (r->has_gap)
-                    rb_strbuf_printf(&b, ",%.6g", r->gap_ratio);
-                else
-                    rb_strbuf_puts(&b, ",");
-            }
-            char w[80];
-            rb_warnings_names(r->warnings, w, sizeof w);
-            rb_strbuf_puts(&b, ",");
-            csv_field(&b, w);
-            rb_strbuf_puts(&b, ",\n");
-        }
+        rb_strbuf_puts(b, ",design_factor,design_factor_bound,gap_ratio");
+    rb_strbuf_puts(b, ",validity_warnings,error\n");
+}
+
+void rb_batch_csv_tail(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_counts *n)
+{
+    (void)b, (void)s, (void)n;
+}
+
+void rb_batch_csv_case(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_case *c,
+                       size_t pos)
+{
+    (void)pos;
+    if (c->verdict != RB_BATCH_PASS && c->verdict != RB_BATCH_FAIL) {
+        char err[1400];
+        const rb_diag *e = rb_batch_case_error(c);
+        csv_head(b, c, "", 0, rb_batch_verdict_str(c->verdict));
+        rb_strbuf_puts(b, s->design ? ",,,,,,,,," : ",,,,,,");
+        if (e->line > 0)
+            snprintf(err, sizeof err, "%s:%d:%d: %s: %s", e->file, e->line, e->col,
+                     e->key, e->msg);
+        else
+            snprintf(err, sizeof err, "%s: %s: %s", e->file, e->key, e->msg);
+        csv_field(b, err);
+        rb_strbuf_puts(b, "\n");
+        return;
     }
-    return rb_strbuf_take(&b);
+    size_t g = rb_batch_governing(c);
+    for (size_t m = 0; m < c->n_runs; m++) {
+        const rb_batch_result *r = &c->runs[m];
+        csv_head(b, c, r->motion, m == g, r->pass ? "pass" : "fail");
+        rb_strbuf_printf(b, ",%.6g,%.6g,%.6g,%.6g", r->usage, r->shear_over_w,
+                       r->force_over_fy, r->theta_over_alpha);
+        if (s->design) {
+            if (r->has_factor)
+                rb_strbuf_printf(b, ",%.6g,%d", r->design_factor, r->factor_bound);
+            else
+                rb_strbuf_puts(b, ",,");
+            if (r->has_gap)
+                rb_strbuf_printf(b, ",%.6g", r->gap_ratio);
+            else
+                rb_strbuf_puts(b, ",");
+        }
+        char w[80];
+        rb_warnings_names(r->warnings, w, sizeof w);
+        rb_strbuf_puts(b, ",");
+        csv_field(b, w);
+        rb_strbuf_puts(b, ",\n");
+    }
 }

@@ -121,6 +121,8 @@ int rb_cli_getopt_next(rb_cli_getopt *g);
 /* "FILE:LINE:COL: error: KEY: MESSAGE"; FILE defaults to "rockbolt", the
  * position is left out when unknown, "KEY: " when the key is empty. */
 void rb_cli_diag_print(const rb_diag *d);
+/* The same line to out. */
+void rb_cli_diag_fprint(FILE *out, const rb_diag *d);
 
 /* The same for an error with no position: file (NULL: "rockbolt"), key
  * (NULL or "": none) and a printf-style message. */

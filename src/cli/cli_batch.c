@@ -199,6 +199,8 @@ static rb_exit run(rb_batch_cli *o, const rb_batch_list *l, rb_batch_summary *s)
     rb_cli_progress_start(&prog, o->quiet);
     bo.progress = rb_cli_progress_update;
     bo.progress_ctx = &prog;
+    bo.sink = rb_cli_stream_sink;
+    bo.sink_ctx = o;
     rb_status st = rb_batch_run(l, &bo, s, &d);
     free(tmpl);
     rb_cli_progress_end(&prog, s->n_cases);
@@ -211,14 +213,15 @@ static rb_exit run(rb_batch_cli *o, const rb_batch_list *l, rb_batch_summary *s)
 }
 
 /* Each unreadable case also gets its diagnostic line on stderr, so that an
- * editor or a CI log can jump to it. */
-static void print_errors(const rb_batch_summary *s)
+ * editor or a CI log can jump to it; after the progress line is gone. */
+static void print_errors(rb_batch_cli *o)
 {
-    for (size_t i = 0; i < s->n_cases; i++) {
-        const rb_batch_case *c = &s->cases[i];
-        if (c->verdict == RB_BATCH_UNREADABLE || c->verdict == RB_BATCH_ERROR)
-            rb_cli_diag_print(rb_batch_case_error(c));
-    }
+    char buf[4096];
+    size_t n;
+    fflush(o->error_spool);
+    rewind(o->error_spool);
+    while ((n = fread(buf, 1, sizeof buf, o->error_spool)) > 0)
+        fwrite(buf, 1, n, stderr);
 }
 
 rb_exit rb_cli_batch_main(int argc, char **argv)
@@ -241,12 +244,14 @@ rb_exit rb_cli_batch_main(int argc, char **argv)
     if (e == RB_EXIT_PASS)
         e = plan_items(&o, &l);
     if (e == RB_EXIT_PASS)
+        e = rb_cli_stream_open(&o);
+    if (e == RB_EXIT_PASS)
         e = run(&o, &l, &s);
     /* refused before any work: not even the reports directory is left */
-    if (made_dir && e == RB_EXIT_USAGE && s.n_cases == 0)
+    if (made_dir && e != RB_EXIT_PASS && s.n_cases == 0)
         rmdir(o.reports_dir);
     if (e == RB_EXIT_PASS) {
-        print_errors(&s);
+        print_errors(&o);
         e = rb_cli_batch_finish(&o, &s);
     }
     rb_batch_summary_free(&s);

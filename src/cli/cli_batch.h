@@ -19,6 +19,12 @@ typedef struct {
     size_t shard, n_shards;   /* batch: --shard I/N; 0/0: all */
     int quiet, help;
     rb_outplan plan;          /* every output and input (rockbolt/outplan.h) */
+    /* The summary's cases as they are done, rendered in each format asked
+     * for (NULL: not asked for), and the diagnostics of the cases that
+     * could not be run: copied out between head and tail at the end, so
+     * that memory does not grow with the list (cli_batch_stream.c). */
+    FILE *spool[RB_BATCH_N_FORMATS];
+    FILE *error_spool;
 } rb_batch_cli;
 
 rb_exit rb_cli_batch_parse(int argc, char **argv, int is_merge, rb_batch_cli *o);
@@ -36,8 +42,19 @@ rb_exit rb_cli_plan_error(rb_status st, const rb_diag *d);
 rb_exit rb_cli_batch_begin(int argc, char **argv, int is_merge, rb_batch_cli *o,
                            int *done);
 
+/* Open the spools for the outputs asked for; exit 3 when they cannot be. */
+rb_exit rb_cli_stream_open(rb_batch_cli *o);
+/* An rb_batch_opts sink (ctx: the rb_batch_cli): the cases into the spools. */
+rb_status rb_cli_stream_sink(void *ctx, const rb_batch_summary *s,
+                             const rb_batch_case *cases, size_t first, size_t n);
+/* Write head, spooled cases and tail of format f to out. */
+rb_status rb_cli_stream_copy(rb_batch_cli *o, rb_batch_format f, const rb_batch_summary *s,
+                             FILE *out);
+void rb_cli_stream_close(rb_batch_cli *o);
+
 /* Write the summary outputs asked for, all or none; print the table
- * unless quiet; return the exit code the summary calls for. */
+ * unless quiet; return the exit code the summary calls for. s is streamed
+ * (its cases are in the spools) or whole (they are spooled here first). */
 rb_exit rb_cli_batch_finish(rb_batch_cli *o, const rb_batch_summary *s);
 
 /* The progress line on stderr (cli_batch_progress.c). */

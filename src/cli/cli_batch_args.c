@@ -195,4 +195,5 @@ void rb_cli_batch_cli_free(rb_batch_cli *o)
     free(o->inputs);
     o->inputs = NULL;
     rb_outplan_free(&o->plan);
+    rb_cli_stream_close(o);
 }

@@ -50,34 +50,26 @@ rb_exit rb_cli_batch_check_outputs(rb_batch_cli *o)
     return st == RB_OK ? RB_EXIT_PASS : rb_cli_plan_error(st, &d);
 }
 
-typedef char *(*render_fn)(const rb_batch_summary *s);
-
 static rb_status fill(void *ctx, size_t i, FILE *fp, rb_diag *d)
 {
     const void *const *cx = ctx;
-    const rb_outplan *plan = cx[0];
+    rb_batch_cli *o = (rb_batch_cli *)cx[0];
     const rb_batch_summary *s = cx[1];
-    const char *opt = plan->outs[i].opt;
-    render_fn render = strcmp(opt, "--json") == 0 ? rb_batch_render_json
-                     : strcmp(opt, "--csv") == 0 ? rb_batch_render_csv
-                     : rb_batch_render_junit;
-    char *text = render(s);
-    if (!text) {
-        snprintf(d->msg, sizeof d->msg, "out of memory");
-        return RB_ERR_NOMEM;
-    }
-    size_t n = strlen(text);
-    rb_status st = fwrite(text, 1, n, fp) == n ? RB_OK : RB_ERR_IO;
+    const char *opt = o->plan.outs[i].opt;
+    rb_batch_format f = strcmp(opt, "--json") == 0 ? RB_BATCH_JSON
+                      : strcmp(opt, "--csv") == 0 ? RB_BATCH_CSV
+                      : RB_BATCH_JUNIT;
+    rb_status st = rb_cli_stream_copy(o, f, s, fp);
     if (st != RB_OK)
-        snprintf(d->msg, sizeof d->msg, "cannot write");
-    free(text);
+        snprintf(d->msg, sizeof d->msg, "%s", st == RB_ERR_NOMEM ? "out of memory"
+                                                                  : "cannot write");
     return st;
 }
 
 /* Every summary output and every staged report: all renamed at the end. */
 static rb_exit write_all(rb_batch_cli *o, const rb_batch_summary *s)
 {
-    const void *cx[2] = {&o->plan, s};
+    const void *cx[2] = {o, s};
     rb_diag d;
     rb_diag_clear(&d);
     rb_status st = rb_outplan_write(&o->plan, fill, (void *)cx, &d);
@@ -103,19 +95,21 @@ static rb_exit exit_of(const rb_batch_summary *s)
 
 rb_exit rb_cli_batch_finish(rb_batch_cli *o, const rb_batch_summary *s)
 {
+    if (!o->error_spool) {
+        rb_exit e = rb_cli_stream_open(o);
+        if (e != RB_EXIT_PASS)
+            return e;
+    }
+    if (!s->streamed && rb_cli_stream_sink(o, s, s->cases, 0, s->n_cases) != RB_OK) {
+        rb_cli_error(NULL, NULL, "cannot write the summary to a temporary file");
+        return RB_EXIT_INTERNAL;
+    }
     rb_exit e = write_all(o, s);
     if (e != RB_EXIT_PASS)
         return e;
-    /* an output on standard output is all that goes there */
-    if (!o->quiet && !rb_outplan_uses_stdout(&o->plan)) {
-        char *text = rb_batch_render_text(s);
-        if (!text) {
-            rb_cli_error(NULL, NULL, "out of memory");
-            return RB_EXIT_INTERNAL;
-        }
-        fputs(text, stdout);
-        free(text);
-        if (fflush(stdout) != 0 || ferror(stdout)) {
+    if (o->spool[RB_BATCH_TEXT]) {
+        rb_status st = rb_cli_stream_copy(o, RB_BATCH_TEXT, s, stdout);
+        if (st != RB_OK || fflush(stdout) != 0 || ferror(stdout)) {
             rb_cli_error(NULL, NULL, "cannot write the summary to standard output");
             return RB_EXIT_INTERNAL;
         }

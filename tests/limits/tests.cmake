@@ -2,7 +2,7 @@
 # must never block (FIFOs), record files over the byte limit, and batch
 # memory against the length of the list (docs/robustness.md).
 set(RB_LIMITS_TESTS fifo_batch fifo_check fifo_list fifo_base record_bytes
-    batch_memory)
+    batch_tmpdir batch_memory)
 foreach(t ${RB_LIMITS_TESTS})
   add_test(NAME limits_${t}
            COMMAND sh ${PROJECT_SOURCE_DIR}/tests/limits/limits.sh ${t}
