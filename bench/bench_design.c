@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include "rockbolt/design.h"
 #include "rockbolt/case.h"
+#include "rockbolt/run.h"
 #include "bench_common.h"
 
 static int factor(const char *name, const rb_model *m, const rb_motion *mo,
@@ -67,7 +68,7 @@ static int gap(const rb_model *m, const rb_motion *mo, const rb_design_opts *d, 
     return 0;
 }
 
-/* What `rockbolt design CASE` runs after the check: rb_design_case on the
+/* What `rockbolt design CASE` runs after the check: rb_run_design on the
  * loaded case (both factors, the gap, and any sweeps and code inputs the
  * case carries). The loading is timed apart: it is the record read and
  * the building filter, paid once per command. */
@@ -86,7 +87,7 @@ static int whole_case(const char *case_path, int nt)
     }
     t_load = rb_bench_now_s() - t0;
     t0 = rb_bench_now_s();
-    st = rb_design_case(&c, nt, &cd, &diag);
+    st = rb_run_design(&c, nt, &cd, &diag, NULL, NULL);
     t_design = rb_bench_now_s() - t0;
     if (st == RB_OK)
         printf("rockbolt design %s: load %.3f s, searches %.3f s, total %.3f s "

@@ -15,7 +15,7 @@
 #define ROCKBOLT_DESIGN_H
 
 #include <stddef.h>
-#include "rockbolt/case.h"
+#include "rockbolt/case.h" /* the design settings a case carries */
 #include "rockbolt/criteria.h"
 #include "rockbolt/model.h"
 #include "rockbolt/motion.h"
@@ -252,27 +252,16 @@ typedef struct {
     rb_code_result code;
 } rb_case_design;
 
-/* Run the whole design of a case: for every motion the two design factors,
- * the recommended gap ratio and the amplitude sweeps; once for the case the
- * frequency sweeps and the code-static comparison. Both design factors keep
- * the case's optional limits on shear and rotation. out is owned by the
- * caller (rb_case_design_free, also after an error). Errors as for
- * rb_design_factor; diag->key then names the motion and the search. */
-rb_status rb_design_case(const rb_case *c, int n_threads, rb_case_design *out,
-                         rb_diag *diag);
-
-/* Progress of a case design: called before each search with the number of
- * searches done, their total and what comes next ("motion 'elcentro':
- * recommended gap", text of the case, not escaped), and once at the end
- * with done == total and what NULL. From the calling thread only. */
+/* Progress of a case design (rb_run_design, rockbolt/run.h): called
+ * before each search with the number of searches done, their total and
+ * what comes next ("motion 'elcentro': recommended gap", text of the case,
+ * not escaped), and once at the end with done == total and what NULL.
+ * From the calling thread only. */
 typedef void (*rb_design_progress_fn)(void *ctx, size_t done, size_t total,
                                       const char *what);
 
-/* rb_design_case with a progress callback (may be NULL). The results do
- * not depend on it. */
-rb_status rb_design_case_progress(const rb_case *c, int n_threads, rb_case_design *out,
-                                  rb_diag *diag, rb_design_progress_fn progress,
-                                  void *ctx);
+/* Free what a motion's design owns and zero it; accepts NULL. */
+void rb_motion_design_free(rb_motion_design *md);
 
 /* Free what a case design owns; accepts NULL and a zeroed design. */
 void rb_case_design_free(rb_case_design *d);

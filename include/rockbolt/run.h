@@ -11,6 +11,7 @@
 #define ROCKBOLT_RUN_H
 
 #include "rockbolt/case.h"
+#include "rockbolt/design.h"
 #include "rockbolt/report.h"
 
 /* Interval of a time history when the case names none. */
@@ -28,5 +29,39 @@ rb_status rb_run_motion(const rb_case *c, size_t i, int want_history, rb_result 
 /* The report of c from its judged motions (n = c->n_motions): derived
  * constants, verdict, headline and reason. rep borrows c and rms. */
 void rb_run_conclude(const rb_case *c, const rb_report_motion *rms, rb_report *rep);
+
+/* ---- Design searches ------------------------------------------------------ */
+
+typedef enum {
+    RB_RUN_DESIGN_FULL,   /* both design factors, the recommended gap and the
+                             amplitude sweeps (`design`) */
+    RB_RUN_DESIGN_BRIEF   /* the design factor for the case's own criteria
+                             and the recommended gap (`batch --design`) */
+} rb_run_design_scope;
+
+/* The criteria a case's design judges by: no yield, no break (at the
+ * case's usage limit when it is judged on no break, else the default) and
+ * the case's own for the gap. Sets only those three fields of out. */
+void rb_run_design_criteria(const rb_case *c, rb_case_design *out);
+
+/* The design of motion m of c, the part scope names, against the criteria
+ * in cd (rb_run_design_criteria). md is overwritten; free it with
+ * rb_motion_design_free (also after an error).
+ * Errors as for rb_design_factor; diag->key then names the motion and the
+ * search. */
+rb_status rb_run_motion_design(const rb_case *c, size_t m, rb_run_design_scope scope,
+                               int n_threads, const rb_case_design *cd,
+                               rb_motion_design *md, rb_diag *diag);
+
+/* The design factor against the case's own criteria, out of md. */
+const rb_design_factor_result *rb_run_own_factor(const rb_case *c,
+                                                 const rb_motion_design *md);
+
+/* The whole design of a case: for every motion the full scope; once for
+ * the case the frequency sweeps and the code-static comparison. out is
+ * owned by the caller (rb_case_design_free, also after an error). The
+ * progress callback may be NULL; the results do not depend on it. */
+rb_status rb_run_design(const rb_case *c, int n_threads, rb_case_design *out,
+                        rb_diag *diag, rb_design_progress_fn progress, void *ctx);
 
 #endif

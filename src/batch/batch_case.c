@@ -97,10 +97,8 @@ void rb_batch_case_solve(rb_batch_slot *s, rb_batch_case *bc, size_t m, int desi
     const rb_case_motion *cm = &s->c.motions[m];
     rb_result *r = &s->results[m];
     rb_batch_result *run = &bc->runs[m];
-    rb_solve_opts so = s->c.solve;
     rb_diag *d = &s->run_diag[m];
     rb_report_motion *rm = &s->rms[m];
-    so.history_dt_s = 0;   /* the design searches keep no history */
     rb_diag_clear(d);
     s->run_status[m] = rb_run_motion(&s->c, m, 0, r, rm, d);
     run->motion = rb_batch_strdup(cm->name ? cm->name : "?");
@@ -117,28 +115,22 @@ void rb_batch_case_solve(rb_batch_slot *s, rb_batch_case *bc, size_t m, int desi
     run->theta_over_alpha = r->max_theta_over_alpha;
     if (!design)
         return;
-    rb_design_factor_result f;
-    rb_status st = rb_design_factor(&s->c.model, &cm->motion, &so, &s->c.criteria,
-                                    &s->c.design, 1, &f, d);
-    if (st == RB_OK && f.level_mps2 > 0 && isfinite(f.factor)) {
+    rb_case_design cd;
+    memset(&cd, 0, sizeof cd);
+    rb_run_design_criteria(&s->c, &cd);
+    rb_motion_design md;
+    rb_status st = rb_run_motion_design(&s->c, m, RB_RUN_DESIGN_BRIEF, 1, &cd, &md, d);
+    const rb_design_factor_result *f = rb_run_own_factor(&s->c, &md);
+    if (st == RB_OK && f->level_mps2 > 0 && isfinite(f->factor)) {
         run->has_factor = 1;
-        run->design_factor = f.factor;
-        run->factor_bound = f.no_failure;
-    } else if (st != RB_OK) {
-        s->run_status[m] = st;
-        return;
+        run->design_factor = f->factor;
+        run->factor_bound = f->no_failure;
     }
-    if (s->c.model.bolt_model == RB_BOLT_NONE)
-        return;
-    rb_gap_result g;
-    memset(&g, 0, sizeof g);
-    st = rb_gap_recommend(&s->c.model, &cm->motion, &so, &s->c.criteria,
-                          &s->c.design, 1, &g, d);
-    if (st == RB_OK && g.found) {
+    if (st == RB_OK && md.has_gap && md.gap.found) {
         run->has_gap = 1;
-        run->gap_ratio = g.gap_ratio;
+        run->gap_ratio = md.gap.gap_ratio;
     }
-    rb_gap_result_free(&g);
+    rb_motion_design_free(&md);
     if (st != RB_OK)
         s->run_status[m] = st;
 }

@@ -55,7 +55,7 @@ rb_exit rb_cli_sandbox(const char *dir);
 rb_exit rb_cli_check_run(const rb_cli_opts *o);
 
 /* The design step of `rockbolt design`, between solving and reporting:
- * runs rb_design_case and prints a failure. */
+ * runs rb_run_design and prints a failure. */
 rb_exit rb_cli_design_step(const rb_cli_opts *o, const rb_case *c, rb_case_design *d);
 
 /* The file name of the i-th of n files asked for under one name (sweep

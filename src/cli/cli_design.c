@@ -3,6 +3,7 @@
 #include <string.h>
 #include "cli.h"
 #include "cli_batch.h"
+#include "rockbolt/run.h"
 
 /* The progress line, and the number of searches for its closing line. */
 typedef struct {
@@ -26,8 +27,7 @@ rb_exit rb_cli_design_step(const rb_cli_opts *o, const rb_case *c, rb_case_desig
      * outputs are the same with it or without */
     design_progress p = {0};
     rb_cli_progress_start(&p.line, o->quiet);
-    st = rb_design_case_progress(c, o->threads, d, &diag,
-                                 p.line.enabled ? on_progress : NULL, &p);
+    st = rb_run_design(c, o->threads, d, &diag, p.line.enabled ? on_progress : NULL, &p);
     if (p.line.enabled && p.line.shown && st != RB_OK)
         fputs("\r\033[K", stderr);
     else if (st == RB_OK)

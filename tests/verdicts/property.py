@@ -15,6 +15,9 @@ past yield) and asserts that
     (only the case's name and path, which a list row sets, may differ);
   - the design searches' run at each motion's own level gives the same
     verdict, validity and result as the pipeline (judge_probe);
+  - `rockbolt batch --design` gives every motion of the first 16 cases the
+    design factor (against the case's own criteria), its bound and the
+    recommended gap that `rockbolt design` reports, to the last bit;
   - no verdict contradicts its own numbers: a passing no-yield run has
     every row force below Fy, a passing no-break run usage below its limit.
 The seed is printed so that a failure can be replayed."""
@@ -220,6 +223,39 @@ r = subprocess.run([probe, *paths], capture_output=True, text=True)
 print(r.stdout.strip().splitlines()[-1] if r.stdout.strip() else "judge_probe: no output")
 if r.returncode != 0:
     fail("judge_probe: " + "\n".join(r.stdout.splitlines()[:10]))
+
+# batch --design against design, on the first cases (the searches are slow)
+some = [p for p in paths if p in check_json][:16]
+bj = os.path.join(scratch, "design-batch.json")
+r = subprocess.run([rb, "batch", *some, "--design", "--json", bj, "-q"],
+                   capture_output=True, text=True)
+if r.returncode not in (0, 1):
+    fail(f"batch --design: exit {r.returncode}: {r.stderr.strip()[:300]}")
+batch_runs, compared = {}, 0
+if os.path.exists(bj):
+    for c in json.load(open(bj))["cases"]:
+        batch_runs[c["source"]] = c["runs"]
+for p in some:
+    dj = os.path.join(scratch, os.path.basename(p) + ".design.json")
+    r = subprocess.run([rb, "design", p, "--json", dj, "-q"], capture_output=True, text=True)
+    if r.returncode not in (0, 1) or p not in batch_runs:
+        fail(f"{p}: design exit {r.returncode} or no batch --design row")
+        continue
+    rep = json.load(open(dj))
+    own = "no_yield" if rep["criteria"]["kind"] == "no-yield" else "no_break"
+    for m, run in zip(rep["motions"], batch_runs[p]):
+        f = m["design"]["design_factor"][own]
+        g = m["design"].get("recommended_gap") or {}
+        want = (f["factor"] if f["level_mps2"] > 0 else None,
+                f["no_failure"] if f["level_mps2"] > 0 else None,
+                g.get("gap_ratio") if g.get("found") else None)
+        got = (run.get("design_factor"),
+               run.get("design_factor_bound") if run.get("design_factor") is not None
+               else None, run.get("gap_ratio"))
+        compared += 1
+        if want != got:
+            fail(f"{p}: {m['name']}: batch --design gives {got}, design {want}")
+print(f"batch --design against design: {compared} motions of {len(some)} cases")
 
 print(f"seed {seed}: {n} cases")
 print(f"{n - len(failures)} passed, {len(failures)} failed")

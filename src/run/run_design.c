@@ -1,11 +1,13 @@
-/* The whole design a case asks for, in the order an engineer reads it: per
+/* The design a case asks for, in the order an engineer reads it: per
  * motion the design factors and the recommended gap, then the sweeps and
  * the code-static comparison. Each search already uses every thread it is
- * given, so the searches themselves run one after another. */
+ * given, so the searches themselves run one after another. `design` runs
+ * it all, `batch --design` the brief part of each motion: both through
+ * design_motion, with the criteria of rb_run_design_criteria. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "rockbolt/design.h"
+#include "rockbolt/run.h"
 
 static rb_status fail_at(rb_diag *diag, const char *motion, const char *what,
                          rb_status st)
@@ -37,23 +39,29 @@ static void step(progress *p, const char *motion, const char *what)
     p->fn(p->ctx, p->done++, p->total, buf);
 }
 
-static rb_status design_motion(const rb_case *c, const rb_case_motion *cm, int n_threads,
+static rb_status design_motion(const rb_case *c, const rb_case_motion *cm,
+                               rb_run_design_scope scope, int n_threads,
                                const rb_case_design *cd, rb_motion_design *md,
                                rb_diag *diag, progress *pg)
 {
     const rb_motion *mo = &cm->motion;
     rb_status st;
     size_t i, n_amp = 0;
-    step(pg, cm->name, "design factor (no yield)");
-    st = rb_design_factor(&c->model, mo, &c->solve, &cd->no_yield, &c->design, n_threads,
-                          &md->no_yield, diag);
-    if (st != RB_OK)
-        return fail_at(diag, cm->name, "design factor (no yield)", st);
-    step(pg, cm->name, "design factor (no break)");
-    st = rb_design_factor(&c->model, mo, &c->solve, &cd->no_break, &c->design, n_threads,
-                          &md->no_break, diag);
-    if (st != RB_OK)
-        return fail_at(diag, cm->name, "design factor (no break)", st);
+    int full = scope == RB_RUN_DESIGN_FULL;
+    if (full || c->criteria.kind == RB_CRIT_NO_YIELD) {
+        step(pg, cm->name, "design factor (no yield)");
+        st = rb_design_factor(&c->model, mo, &c->solve, &cd->no_yield, &c->design,
+                              n_threads, &md->no_yield, diag);
+        if (st != RB_OK)
+            return fail_at(diag, cm->name, "design factor (no yield)", st);
+    }
+    if (full || c->criteria.kind == RB_CRIT_NO_BREAK) {
+        step(pg, cm->name, "design factor (no break)");
+        st = rb_design_factor(&c->model, mo, &c->solve, &cd->no_break, &c->design,
+                              n_threads, &md->no_break, diag);
+        if (st != RB_OK)
+            return fail_at(diag, cm->name, "design factor (no break)", st);
+    }
     if (c->model.bolt_model != RB_BOLT_NONE) {
         step(pg, cm->name, "recommended gap");
         st = rb_gap_recommend(&c->model, mo, &c->solve, &cd->gap_criteria, &c->design,
@@ -62,11 +70,11 @@ static rb_status design_motion(const rb_case *c, const rb_case_motion *cm, int n
         if (st != RB_OK)
             return fail_at(diag, cm->name, "recommended gap", st);
     }
-    for (i = 0; i < c->n_sweeps; i++)
+    for (i = 0; full && i < c->n_sweeps; i++)
         n_amp += c->sweeps[i].kind == RB_SWEEP_AMPLITUDE;
     if (n_amp && !(md->sweeps = calloc(n_amp, sizeof *md->sweeps)))
         return RB_ERR_NOMEM;
-    for (i = 0; i < c->n_sweeps; i++) {
+    for (i = 0; n_amp && i < c->n_sweeps; i++) {
         if (c->sweeps[i].kind != RB_SWEEP_AMPLITUDE)
             continue;
         step(pg, cm->name, "amplitude sweep");
@@ -103,25 +111,8 @@ static rb_status design_sweeps(const rb_case *c, int n_threads, rb_case_design *
     return RB_OK;
 }
 
-rb_status rb_design_case(const rb_case *c, int n_threads, rb_case_design *out,
-                         rb_diag *diag)
+void rb_run_design_criteria(const rb_case *c, rb_case_design *out)
 {
-    return rb_design_case_progress(c, n_threads, out, diag, NULL, NULL);
-}
-
-rb_status rb_design_case_progress(const rb_case *c, int n_threads, rb_case_design *out,
-                                  rb_diag *diag, rb_design_progress_fn fn, void *ctx)
-{
-    rb_status st = RB_OK;
-    size_t i, n_amp = 0, n_freq = 0;
-    progress pg = {fn, ctx, 0, 0};
-    for (i = 0; i < c->n_sweeps; i++) {
-        n_amp += c->sweeps[i].kind == RB_SWEEP_AMPLITUDE;
-        n_freq += c->sweeps[i].kind == RB_SWEEP_FREQUENCY;
-    }
-    pg.total = c->n_motions * (2 + (c->model.bolt_model != RB_BOLT_NONE) + n_amp)
-        + n_freq + (c->has_code != 0);
-    memset(out, 0, sizeof *out);
     out->no_yield = c->criteria;
     out->no_yield.kind = RB_CRIT_NO_YIELD;
     out->no_break = c->criteria;
@@ -134,12 +125,43 @@ rb_status rb_design_case_progress(const rb_case *c, int n_threads, rb_case_desig
         out->no_break.usage_limit = def.usage_limit;
     }
     out->gap_criteria = c->criteria;
+}
+
+rb_status rb_run_motion_design(const rb_case *c, size_t m, rb_run_design_scope scope,
+                               int n_threads, const rb_case_design *cd,
+                               rb_motion_design *md, rb_diag *diag)
+{
+    progress none = {0};
+    memset(md, 0, sizeof *md);
+    return design_motion(c, &c->motions[m], scope, n_threads, cd, md, diag, &none);
+}
+
+const rb_design_factor_result *rb_run_own_factor(const rb_case *c,
+                                                 const rb_motion_design *md)
+{
+    return c->criteria.kind == RB_CRIT_NO_YIELD ? &md->no_yield : &md->no_break;
+}
+
+rb_status rb_run_design(const rb_case *c, int n_threads, rb_case_design *out,
+                        rb_diag *diag, rb_design_progress_fn fn, void *ctx)
+{
+    rb_status st = RB_OK;
+    size_t i, n_amp = 0, n_freq = 0;
+    progress pg = {fn, ctx, 0, 0};
+    for (i = 0; i < c->n_sweeps; i++) {
+        n_amp += c->sweeps[i].kind == RB_SWEEP_AMPLITUDE;
+        n_freq += c->sweeps[i].kind == RB_SWEEP_FREQUENCY;
+    }
+    pg.total = c->n_motions * (2 + (c->model.bolt_model != RB_BOLT_NONE) + n_amp)
+        + n_freq + (c->has_code != 0);
+    memset(out, 0, sizeof *out);
+    rb_run_design_criteria(c, out);
     if (!(out->motions = calloc(c->n_motions ? c->n_motions : 1, sizeof *out->motions)))
         return RB_ERR_NOMEM;
     out->n_motions = c->n_motions;
     for (i = 0; i < c->n_motions && st == RB_OK; i++)
-        st = design_motion(c, &c->motions[i], n_threads, out, &out->motions[i], diag,
-                           &pg);
+        st = design_motion(c, &c->motions[i], RB_RUN_DESIGN_FULL, n_threads, out,
+                           &out->motions[i], diag, &pg);
     if (st == RB_OK)
         st = design_sweeps(c, n_threads, out, diag, &pg);
     if (st == RB_OK && c->has_code) {
@@ -155,22 +177,4 @@ rb_status rb_design_case_progress(const rb_case *c, int n_threads, rb_case_desig
     if (st == RB_OK && fn)
         fn(ctx, pg.total, pg.total, NULL);
     return st;
-}
-
-void rb_case_design_free(rb_case_design *d)
-{
-    size_t i, j;
-    if (!d)
-        return;
-    for (i = 0; d->motions && i < d->n_motions; i++) {
-        rb_gap_result_free(&d->motions[i].gap);
-        for (j = 0; j < d->motions[i].n_sweeps; j++)
-            rb_sweep_free(&d->motions[i].sweeps[j]);
-        free(d->motions[i].sweeps);
-    }
-    free(d->motions);
-    for (i = 0; i < d->n_sweeps; i++)
-        rb_sweep_free(&d->sweeps[i]);
-    free(d->sweeps);
-    memset(d, 0, sizeof *d);
 }
