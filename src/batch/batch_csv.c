@@ -37,7 +37,7 @@ typedef struct {
     const char *key;   /* COL_KEY: the case key */
 } col_def;
 
-static const col_def rb_csv_cols[] = {
+static const col_def csv_cols[] = {
     {"tag", COL_TAG, NULL},
     {"base", COL_BASE, NULL},
     {"description", COL_KEY, "description"},
@@ -67,7 +67,7 @@ static const col_def rb_csv_cols[] = {
     {"criterion", COL_KEY, "criteria.kind"},
     {"usage_limit", COL_KEY, "criteria.usage_limit"},
 };
-#define RB_CSV_NCOLS (sizeof rb_csv_cols / sizeof rb_csv_cols[0])
+#define RB_CSV_NCOLS (sizeof csv_cols / sizeof csv_cols[0])
 
 typedef struct {
     char *text;    /* owned */
@@ -154,7 +154,7 @@ typedef struct {
     const char *path;
     char *dir;            /* the list's directory with '/', or "" */
     const char *default_base;
-    int cols[RB_CSV_MAX_FIELDS];  /* index into rb_csv_cols */
+    int cols[RB_CSV_MAX_FIELDS];  /* index into csv_cols */
     size_t n_cols;
     int tag_col, base_col;
     char sep;             /* ',' or ';', from the header */
@@ -230,7 +230,7 @@ static rb_status add_motion(rb_batch_item *it, const char *v, int line, int col)
 static int find_col(const char *name)
 {
     for (size_t k = 0; k < RB_CSV_NCOLS; k++)
-        if (strcmp(rb_csv_cols[k].name, name) == 0)
+        if (strcmp(csv_cols[k].name, name) == 0)
             return (int)k;
     return -1;
 }
@@ -277,9 +277,9 @@ static rb_status read_header(csv_ctx *cx, rb_batch_list *l, const csv_row *r, in
             return RB_ERR_INVALID;
         }
         cx->cols[i] = k;
-        if (rb_csv_cols[k].kind == COL_TAG)
+        if (csv_cols[k].kind == COL_TAG)
             cx->tag_col = (int)i;
-        if (rb_csv_cols[k].kind == COL_BASE)
+        if (csv_cols[k].kind == COL_BASE)
             cx->base_col = (int)i;
     }
     cx->n_cols = r->n;
@@ -371,7 +371,7 @@ static rb_status read_row(csv_ctx *cx, rb_batch_list *l, const csv_row *r, int l
     if (!it->base)
         return RB_ERR_NOMEM;
     for (size_t i = 0; i < r->n; i++) {
-        const col_def *c = &rb_csv_cols[cx->cols[i]];
+        const col_def *c = &csv_cols[cx->cols[i]];
         const char *v = r->f[i].text;
         rb_status st = RB_OK;
         if (!v[0] || c->kind == COL_TAG || c->kind == COL_BASE)

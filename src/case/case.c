@@ -21,7 +21,7 @@ void rb_diag_list_free(rb_diag_list *l)
     l->n = l->cap = 0;
 }
 
-static rb_diag *rb_cctx_push(rb_cctx *c)
+static rb_diag *cctx_push(rb_cctx *c)
 {
     rb_diag_list *l = c->diags;
     if (l->n == l->cap) {
@@ -42,32 +42,32 @@ static rb_diag *rb_cctx_push(rb_cctx *c)
 /* RB_ERR_NOMEM outranks everything; otherwise the first error's status
  * stays, except that a plain PARSE is upgraded to the more specific IO or
  * LIMIT. */
-static void rb_cctx_status(rb_cctx *c, rb_status st)
+static void cctx_status(rb_cctx *c, rb_status st)
 {
     if (c->status == RB_OK || st == RB_ERR_NOMEM
         || (c->status == RB_ERR_PARSE && (st == RB_ERR_IO || st == RB_ERR_LIMIT)))
         c->status = st;
 }
 
-static void rb_cctx_vadd(rb_cctx *c, rb_status st, const char *file, int line,
+static void cctx_vadd(rb_cctx *c, rb_status st, const char *file, int line,
                          int col, const char *key, const char *fmt, va_list ap)
 #if defined(__GNUC__)
     __attribute__((format(printf, 7, 0)))
 #endif
     ;
 
-static void rb_cctx_vadd(rb_cctx *c, rb_status st, const char *file, int line,
+static void cctx_vadd(rb_cctx *c, rb_status st, const char *file, int line,
                          int col, const char *key, const char *fmt, va_list ap)
 {
     c->n_errors++;
-    rb_cctx_status(c, st);
+    cctx_status(c, st);
     rb_diag *d;
     if (c->diags->n - c->first_diag >= RB_CASE_MAX_DIAGS) {
         if (c->n_dropped++ > 0)
             return;
         d = &c->dropped;
         memset(d, 0, sizeof *d);
-    } else if (!(d = rb_cctx_push(c))) {
+    } else if (!(d = cctx_push(c))) {
         return;
     }
     snprintf(d->file, sizeof d->file, "%s", file ? file : "");
@@ -82,7 +82,7 @@ void rb_cctx_error_at(rb_cctx *c, rb_status st, const char *file, int line,
 {
     va_list ap;
     va_start(ap, fmt);
-    rb_cctx_vadd(c, st, file, line, col, key, fmt, ap);
+    cctx_vadd(c, st, file, line, col, key, fmt, ap);
     va_end(ap);
 }
 
@@ -91,7 +91,7 @@ void rb_cctx_error(rb_cctx *c, const rb_ynode *n, const char *key,
 {
     va_list ap;
     va_start(ap, fmt);
-    rb_cctx_vadd(c, RB_ERR_INVALID, n ? n->file : NULL, n ? n->line : 0,
+    cctx_vadd(c, RB_ERR_INVALID, n ? n->file : NULL, n ? n->line : 0,
                  n ? n->col : 0, key, fmt, ap);
     va_end(ap);
 }
@@ -148,7 +148,7 @@ void rb_case_free(rb_case *c)
 }
 
 /* Append a copy of path to cs->input_files unless it is there already. */
-static int rb_case_add_input(rb_case *cs, const char *path)
+static int case_add_input(rb_case *cs, const char *path)
 {
     for (size_t i = 0; i < cs->n_input_files; i++)
         if (strcmp(cs->input_files[i], path) == 0)
@@ -164,22 +164,22 @@ static int rb_case_add_input(rb_case *cs, const char *path)
 
 /* The YAML files the loader read (c->files, in reading order) and the
  * record files of the motions. */
-static int rb_case_list_inputs(const rb_cctx *c, rb_case *cs, int first_in_memory)
+static int case_list_inputs(const rb_cctx *c, rb_case *cs, int first_in_memory)
 {
     cs->input_files = calloc(c->n_files + cs->n_motions + 1, sizeof *cs->input_files);
     if (!cs->input_files)
         return 0;
     for (size_t i = first_in_memory ? 1 : 0; i < c->n_files; i++)
-        if (!rb_case_add_input(cs, c->files[i]))
+        if (!case_add_input(cs, c->files[i]))
             return 0;
     for (size_t i = 0; i < cs->n_motions; i++)
         if (cs->motions[i].motion.kind == RB_MOTION_SAMPLED && cs->motions[i].source
-            && !rb_case_add_input(cs, cs->motions[i].source))
+            && !case_add_input(cs, cs->motions[i].source))
             return 0;
     return 1;
 }
 
-static void rb_cctx_free(rb_cctx *c)
+static void cctx_free(rb_cctx *c)
 {
     for (size_t i = 0; i < c->n_motions; i++)
         rb_cmotion_free(&c->motions[i]);
@@ -189,7 +189,7 @@ static void rb_cctx_free(rb_cctx *c)
 }
 
 /* Defaults of everything a case may leave out. */
-static int rb_case_defaults(rb_case *cs, const char *path)
+static int case_defaults(rb_case *cs, const char *path)
 {
     memset(cs, 0, sizeof *cs);
     rb_model_init(&cs->model);
@@ -210,7 +210,7 @@ static int rb_case_defaults(rb_case *cs, const char *path)
     return 1;
 }
 
-static size_t rb_cctx_file_rank(const rb_cctx *c, const char *file)
+static size_t cctx_file_rank(const rb_cctx *c, const char *file)
 {
     for (size_t i = 0; i < c->n_files; i++)
         if (strcmp(c->files[i], file) == 0)
@@ -222,15 +222,15 @@ static size_t rb_cctx_file_rank(const rb_cctx *c, const char *file)
  * case file before its bases, then by line and column. Insertion sort keeps
  * equal positions in the order they were found; lists are short (at most
  * RB_CASE_MAX_DIAGS). */
-static void rb_cctx_sort(const rb_cctx *c, size_t first)
+static void cctx_sort(const rb_cctx *c, size_t first)
 {
     rb_diag *d = c->diags->items;
     for (size_t i = first + 1; i < c->diags->n; i++) {
         rb_diag tmp = d[i];
-        size_t r = rb_cctx_file_rank(c, tmp.file), j = i;
+        size_t r = cctx_file_rank(c, tmp.file), j = i;
         while (j > first) {
             const rb_diag *p = &d[j - 1];
-            size_t rp = rb_cctx_file_rank(c, p->file);
+            size_t rp = cctx_file_rank(c, p->file);
             if (rp < r || (rp == r && (p->line < tmp.line
                 || (p->line == tmp.line && p->col <= tmp.col))))
                 break;
@@ -246,16 +246,16 @@ rb_status rb_case_load(const char *path, rb_case *out, rb_diag_list *diags)
     return rb_case_load_cached(path, NULL, out, diags);
 }
 
-static rb_status rb_case_load_from(const char *path, rb_record_cache *cache,
+static rb_status case_load_from(const char *path, rb_record_cache *cache,
                                    rb_case *out, rb_diag_list *diags, int confined);
 
 rb_status rb_case_load_cached(const char *path, rb_record_cache *cache, rb_case *out,
                               rb_diag_list *diags)
 {
-    return rb_case_load_from(path, cache, out, diags, 1);
+    return case_load_from(path, cache, out, diags, 1);
 }
 
-static rb_status rb_case_load_any(const char *path, unsigned char *text, size_t len,
+static rb_status case_load_any(const char *path, unsigned char *text, size_t len,
                                   rb_record_cache *cache, rb_case *out,
                                   rb_diag_list *diags, int confined);
 
@@ -269,19 +269,19 @@ rb_status rb_case_load_text(const char *name, const char *text, size_t len,
     }
     memcpy(copy, text, len);
     copy[len] = '\0';
-    return rb_case_load_any(name, copy, len, cache, out, diags, 0);
+    return case_load_any(name, copy, len, cache, out, diags, 0);
 }
 
-static rb_status rb_case_load_from(const char *path, rb_record_cache *cache,
+static rb_status case_load_from(const char *path, rb_record_cache *cache,
                                    rb_case *out, rb_diag_list *diags, int confined)
 {
-    return rb_case_load_any(path, NULL, 0, cache, out, diags, confined);
+    return case_load_any(path, NULL, 0, cache, out, diags, confined);
 }
 
 /* A case file at path, or (text != NULL, taken and freed) a document in
  * memory named path: a list row's overrides, whose `motion:` applies to
  * each motion of a base's list and which is not a file to list as read. */
-static rb_status rb_case_load_any(const char *path, unsigned char *text, size_t len,
+static rb_status case_load_any(const char *path, unsigned char *text, size_t len,
                                   rb_record_cache *cache, rb_case *out,
                                   rb_diag_list *diags, int confined)
 {
@@ -294,7 +294,7 @@ static rb_status rb_case_load_any(const char *path, unsigned char *text, size_t 
     c.overrides = text != NULL;
     size_t first = diags->n;
     c.first_diag = first;
-    if (!rb_case_defaults(out, path)) {
+    if (!case_defaults(out, path)) {
         free(text);
         rb_case_free(out);
         return RB_ERR_NOMEM;
@@ -316,10 +316,10 @@ static rb_status rb_case_load_any(const char *path, unsigned char *text, size_t 
             rb_case_resolve(&c, out, root);
     }
     rb_ynode_free(root);
-    rb_cctx_sort(&c, first);
+    cctx_sort(&c, first);
     if (c.n_dropped > 0) {
         /* After the sort, so that the count comes last. */
-        rb_diag *d = rb_cctx_push(&c);
+        rb_diag *d = cctx_push(&c);
         if (d) {
             *d = c.dropped;
             char msg[sizeof d->msg];
@@ -332,9 +332,9 @@ static rb_status rb_case_load_any(const char *path, unsigned char *text, size_t 
     rb_status st = c.nomem ? RB_ERR_NOMEM : c.status;
     if (st == RB_OK && c.n_errors > 0)
         st = RB_ERR_INVALID;
-    if (st == RB_OK && !rb_case_list_inputs(&c, out, text != NULL))
+    if (st == RB_OK && !case_list_inputs(&c, out, text != NULL))
         st = RB_ERR_NOMEM;
-    rb_cctx_free(&c);
+    cctx_free(&c);
     if (st != RB_OK)
         rb_case_free(out);
     return st;

@@ -12,19 +12,19 @@
 #include "case_internal.h"
 #include "rockbolt/design.h"
 
-static const char *const rb_design_keys[] = {
+static const char *const design_keys[] = {
     "scan_start", "scan_step", "scan_end", "resolution", "gap_ratio_min",
     "gap_ratio_max", "gap_ratio_step", "sweeps", "code", NULL};
-static const char *const rb_sweep_keys[] = {
+static const char *const sweep_keys[] = {
     "type", "from", "to", "points", "amplitude", "duration", "ramp", NULL};
-static const char *const rb_code_keys[] = {
+static const char *const code_keys[] = {
     "edition", "sds", "ip", "z_over_h", "at_or_below_grade", "ap", "rp", "car",
     "rpo", "ta", "r", "ie", "omega0", "anchorage_in_concrete", "omega0p",
     "futa", "ase", NULL};
 
 /* A plain fraction of A* or "<x> A*" (astar_ok), or a plain ratio; > 0, or
  * >= 0 when zero_ok. */
-static void rb_design_value(rb_cctx *c, rb_ynode *map, const char *path,
+static void design_value(rb_cctx *c, rb_ynode *map, const char *path,
                             const char *key, int zero_ok, int astar_ok,
                             double *out)
 {
@@ -46,7 +46,7 @@ static void rb_design_value(rb_cctx *c, rb_ynode *map, const char *path,
     *out = q.value;
 }
 
-static void rb_read_sweep(rb_cctx *c, rb_ynode *m, const char *path,
+static void read_sweep(rb_cctx *c, rb_ynode *m, const char *path,
                           rb_sweep_opts *sw)
 {
     static const char *const kinds[] = {"frequency", "amplitude", NULL};
@@ -62,15 +62,15 @@ static void rb_read_sweep(rb_cctx *c, rb_ynode *m, const char *path,
     rb_sweep_opts_init(sw, kind == 0 ? RB_SWEEP_FREQUENCY : RB_SWEEP_AMPLITUDE);
     int freq = sw->kind == RB_SWEEP_FREQUENCY;
     /* frequency ratios are plain numbers; amplitude levels may say A* */
-    rb_design_value(c, m, path, "from", 0, !freq, &sw->from);
-    rb_design_value(c, m, path, "to", 0, !freq, &sw->to);
+    design_value(c, m, path, "from", 0, !freq, &sw->from);
+    design_value(c, m, path, "to", 0, !freq, &sw->to);
     if ((v = rb_cv_get(c, m, path, "points", 0, ""))) {
         rb_case_keypath(k, path, "points");
         if (rb_cv_int(c, v, k, 1, 10000, &n))
             sw->n_points = (size_t)n;
     }
     if (freq) {
-        rb_design_value(c, m, path, "amplitude", 0, 1, &sw->amplitude_astar);
+        design_value(c, m, path, "amplitude", 0, 1, &sw->amplitude_astar);
         /* the case's own time limits: 1 ms (ramp 0) to one simulated hour */
         const rb_ynode *t = rb_cv_number(c, m, path, "duration", 0, RB_DIM_TIME, 0, 0,
                                          (double)NAN, 0, &sw->duration_s);
@@ -98,10 +98,10 @@ static void rb_read_sweep(rb_cctx *c, rb_ynode *m, const char *path,
         rb_cctx_error(c, m, k, "must not be below 'from' (%g < %g)", sw->to,
                       sw->from);
     }
-    rb_cv_unknown_keys(c, m, path, rb_sweep_keys);
+    rb_cv_unknown_keys(c, m, path, sweep_keys);
 }
 
-static void rb_read_sweeps(rb_cctx *c, rb_ynode *seq, rb_case *cs)
+static void read_sweeps(rb_cctx *c, rb_ynode *seq, rb_case *cs)
 {
     size_t i;
     if (seq->kind != RB_YNODE_SEQ) {
@@ -119,20 +119,20 @@ static void rb_read_sweeps(rb_cctx *c, rb_ynode *seq, rb_case *cs)
         snprintf(path, sizeof path, "design.sweeps[%zu]", i + 1);
         if (!rb_cv_map(c, seq->items[i], path))
             continue;
-        rb_read_sweep(c, seq->items[i], path, &cs->sweeps[cs->n_sweeps++]);
+        read_sweep(c, seq->items[i], path, &cs->sweeps[cs->n_sweeps++]);
     }
 }
 
 /* A dimensionless code factor, > 0; whether it is required depends on the
  * edition. */
-static void rb_code_factor(rb_cctx *c, rb_ynode *m, const char *key, int required,
+static void code_factor(rb_cctx *c, rb_ynode *m, const char *key, int required,
                            double *out)
 {
     rb_cv_number(c, m, "design.code", key, required, RB_DIM_RATIO, 0, 0,
                  1000, 1, out);
 }
 
-static void rb_code_flag(rb_cctx *c, rb_ynode *m, const char *key, int *out)
+static void code_flag(rb_cctx *c, rb_ynode *m, const char *key, int *out)
 {
     char k[RB_CASE_KEY_MAX];
     rb_ynode *v = rb_cv_get(c, m, "design.code", key, 0, "");
@@ -161,7 +161,7 @@ static void reject_other_edition(rb_cctx *c, rb_ynode *m, int e16)
     }
 }
 
-static void rb_read_code(rb_cctx *c, rb_ynode *m, rb_case *cs)
+static void read_code(rb_cctx *c, rb_ynode *m, rb_case *cs)
 {
     static const char *const editions[] = {"ASCE 7-16", "ASCE 7-22", NULL};
     rb_code_inputs *in = &cs->code;
@@ -175,43 +175,43 @@ static void rb_read_code(rb_cctx *c, rb_ynode *m, rb_case *cs)
     if (v && rb_cv_enum(c, v, "design.code.edition", editions, &ed))
         in->edition = ed == 0 ? RB_ASCE7_16 : RB_ASCE7_22;
     int e16 = in->edition == RB_ASCE7_16;
-    rb_code_flag(c, m, "at_or_below_grade", &in->at_or_below_grade);
-    rb_code_flag(c, m, "anchorage_in_concrete", &in->anchorage_in_concrete);
+    code_flag(c, m, "at_or_below_grade", &in->at_or_below_grade);
+    code_flag(c, m, "anchorage_in_concrete", &in->anchorage_in_concrete);
     rb_cv_number(c, m, "design.code", "sds", 1, RB_DIM_RATIO, 0, 0, 10, 1,
                  &in->sds);
-    rb_code_factor(c, m, "ip", 0, &in->ip);
+    code_factor(c, m, "ip", 0, &in->ip);
     rb_cv_number(c, m, "design.code", "z_over_h", 1, RB_DIM_RATIO, 0, 1, 1, 1,
                  &in->z_over_h);
     reject_other_edition(c, m, e16);
-    rb_code_factor(c, m, "ap", e16, &in->ap);
-    rb_code_factor(c, m, "rp", e16, &in->rp);
-    rb_code_factor(c, m, "car", !e16, &in->car);
-    rb_code_factor(c, m, "rpo", !e16, &in->rpo);
+    code_factor(c, m, "ap", e16, &in->ap);
+    code_factor(c, m, "rp", e16, &in->rp);
+    code_factor(c, m, "car", !e16, &in->car);
+    code_factor(c, m, "rpo", !e16, &in->rpo);
     int building = !e16 && !in->at_or_below_grade;
-    rb_code_factor(c, m, "r", building, &in->r);
-    rb_code_factor(c, m, "ie", building, &in->ie);
-    rb_code_factor(c, m, "omega0", building, &in->omega0);
+    code_factor(c, m, "r", building, &in->r);
+    code_factor(c, m, "ie", building, &in->ie);
+    code_factor(c, m, "omega0", building, &in->omega0);
     rb_cv_number(c, m, "design.code", "ta", 0, RB_DIM_TIME, 0, 0, 100, 1,
                  &in->ta_s);
-    rb_code_factor(c, m, "omega0p", 0, &in->omega0p);
+    code_factor(c, m, "omega0p", 0, &in->omega0p);
     rb_cv_number(c, m, "design.code", "futa", 1, RB_DIM_STRESS, 0, 0, (double)NAN, 0,
                  &in->futa_pa);
     rb_cv_number(c, m, "design.code", "ase", 0, RB_DIM_AREA, 0, 0, (double)NAN, 0,
                  &in->ase_m2);
-    rb_cv_unknown_keys(c, m, "design.code", rb_code_keys);
+    rb_cv_unknown_keys(c, m, "design.code", code_keys);
 }
 
 void rb_case_read_design(rb_cctx *c, rb_ynode *d, rb_case *cs)
 {
     rb_design_opts *o = &cs->design;
     rb_ynode *v;
-    rb_design_value(c, d, "design", "scan_start", 0, 1, &o->scan_start);
-    rb_design_value(c, d, "design", "scan_step", 0, 1, &o->scan_step);
-    rb_design_value(c, d, "design", "scan_end", 0, 1, &o->scan_end);
-    rb_design_value(c, d, "design", "resolution", 0, 1, &o->resolution);
-    rb_design_value(c, d, "design", "gap_ratio_min", 1, 0, &o->gap_ratio_min);
-    rb_design_value(c, d, "design", "gap_ratio_max", 1, 0, &o->gap_ratio_max);
-    rb_design_value(c, d, "design", "gap_ratio_step", 0, 0, &o->gap_ratio_step);
+    design_value(c, d, "design", "scan_start", 0, 1, &o->scan_start);
+    design_value(c, d, "design", "scan_step", 0, 1, &o->scan_step);
+    design_value(c, d, "design", "scan_end", 0, 1, &o->scan_end);
+    design_value(c, d, "design", "resolution", 0, 1, &o->resolution);
+    design_value(c, d, "design", "gap_ratio_min", 1, 0, &o->gap_ratio_min);
+    design_value(c, d, "design", "gap_ratio_max", 1, 0, &o->gap_ratio_max);
+    design_value(c, d, "design", "gap_ratio_step", 0, 0, &o->gap_ratio_step);
     rb_yentry *re = rb_ymap_find(d, "resolution");
     double finest = RB_DESIGN_MIN_RESOLUTION * (o->scan_end > 1 ? o->scan_end : 1);
     if (re && o->resolution > 0 && o->resolution < finest)
@@ -227,8 +227,8 @@ void rb_case_read_design(rb_cctx *c, rb_ynode *d, rb_case *cs)
                       "gap_ratio_min (%g < %g)", o->gap_ratio_max,
                       o->gap_ratio_min);
     if ((v = rb_cv_get(c, d, "design", "sweeps", 0, "")))
-        rb_read_sweeps(c, v, cs);
+        read_sweeps(c, v, cs);
     if ((v = rb_cv_get(c, d, "design", "code", 0, "")))
-        rb_read_code(c, v, cs);
-    rb_cv_unknown_keys(c, d, "design", rb_design_keys);
+        read_code(c, v, cs);
+    rb_cv_unknown_keys(c, d, "design", design_keys);
 }

@@ -23,26 +23,26 @@
 
 /* Keys of which a case gives at most one; the case's choice hides the
  * base's alternative. */
-static const char *const rb_alternatives[][2] = {
+static const char *const key_alternatives[][2] = {
     {"height", "cm_height"}, {"diameter", "area"},
     {"lever_arm", "edge_distance"}, {"gap", "gap_ratio"},
     {"motion", "motions"},
 };
 
-static const char *rb_alternative_of(const char *key)
+static const char *alternative_of(const char *key)
 {
-    size_t n = sizeof rb_alternatives / sizeof rb_alternatives[0];
+    size_t n = sizeof key_alternatives / sizeof key_alternatives[0];
     for (size_t i = 0; i < n; i++) {
-        if (strcmp(key, rb_alternatives[i][0]) == 0)
-            return rb_alternatives[i][1];
-        if (strcmp(key, rb_alternatives[i][1]) == 0)
-            return rb_alternatives[i][0];
+        if (strcmp(key, key_alternatives[i][0]) == 0)
+            return key_alternatives[i][1];
+        if (strcmp(key, key_alternatives[i][1]) == 0)
+            return key_alternatives[i][0];
     }
     return NULL;
 }
 
 /* 1 if both maps have a scalar `type:` and they differ. */
-static int rb_types_differ(const rb_ynode *a, const rb_ynode *b)
+static int types_differ(const rb_ynode *a, const rb_ynode *b)
 {
     const rb_yentry *ta = rb_ymap_find(a, "type"), *tb = rb_ymap_find(b, "type");
     return ta && tb && ta->value->kind == RB_YNODE_SCALAR
@@ -50,7 +50,7 @@ static int rb_types_differ(const rb_ynode *a, const rb_ynode *b)
         && strcmp(ta->value->text, tb->value->text) != 0;
 }
 
-static int rb_ymap_append(rb_cctx *c, rb_ynode *map, rb_yentry *e)
+static int ymap_append(rb_cctx *c, rb_ynode *map, rb_yentry *e)
 {
     if (map->n == map->cap) {
         size_t cap = map->cap ? 2 * map->cap : 8;
@@ -69,7 +69,7 @@ static int rb_ymap_append(rb_cctx *c, rb_ynode *map, rb_yentry *e)
 }
 
 /* Merge base under dst (both mappings); moves nodes out of base. */
-static void rb_ymerge(rb_cctx *c, rb_ynode *dst, rb_ynode *base)
+static void ymerge(rb_cctx *c, rb_ynode *dst, rb_ynode *base)
 {
     for (size_t i = 0; i < base->n && !c->nomem; i++) {
         rb_yentry *e = &base->entries[i];
@@ -78,19 +78,19 @@ static void rb_ymerge(rb_cctx *c, rb_ynode *dst, rb_ynode *base)
         rb_yentry *d = rb_ymap_find(dst, e->key);
         if (d) {
             if (d->value->kind == RB_YNODE_MAP && e->value->kind == RB_YNODE_MAP
-                && !rb_types_differ(d->value, e->value))
-                rb_ymerge(c, d->value, e->value);
+                && !types_differ(d->value, e->value))
+                ymerge(c, d->value, e->value);
             continue;
         }
-        const char *alt = rb_alternative_of(e->key);
+        const char *alt = alternative_of(e->key);
         if (alt && rb_ymap_find(dst, alt))
             continue;
-        rb_ymap_append(c, dst, e);
+        ymap_append(c, dst, e);
     }
 }
 
 /* A deep copy of n (positions kept); NULL when memory runs out. */
-static rb_ynode *rb_ynode_copy(rb_cctx *c, const rb_ynode *n)
+static rb_ynode *ynode_copy(rb_cctx *c, const rb_ynode *n)
 {
     rb_ynode *d = calloc(1, sizeof *d);
     if (!d) {
@@ -112,7 +112,7 @@ static rb_ynode *rb_ynode_copy(rb_cctx *c, const rb_ynode *n)
             rb_yentry *e = &d->entries[d->n];
             *e = n->entries[d->n];
             e->key = strdup(e->key);
-            e->value = e->key ? rb_ynode_copy(c, n->entries[d->n].value) : NULL;
+            e->value = e->key ? ynode_copy(c, n->entries[d->n].value) : NULL;
             if (!e->value) {
                 free(e->key);
                 goto oom;
@@ -123,7 +123,7 @@ static rb_ynode *rb_ynode_copy(rb_cctx *c, const rb_ynode *n)
             goto oom;
         d->cap = n->n;
         for (; d->n < n->n; d->n++)
-            if (!(d->items[d->n] = rb_ynode_copy(c, n->items[d->n])))
+            if (!(d->items[d->n] = ynode_copy(c, n->items[d->n])))
                 goto oom;
     }
     return d;
@@ -133,7 +133,7 @@ oom:
     return NULL;
 }
 
-static const char *rb_motion_type(const rb_ynode *m)
+static const char *motion_type(const rb_ynode *m)
 {
     const rb_yentry *t = rb_ymap_find(m, "type");
     return t && t->value->kind == RB_YNODE_SCALAR ? t->value->text : "";
@@ -142,10 +142,10 @@ static const char *rb_motion_type(const rb_ynode *m)
 /* Whether every override key of a row's motion can apply to motion m of a
  * base's list (item k, 1-based); an error at the override if not. The
  * motion column (a `file`) picks one record, so it needs a list of one. */
-static int rb_row_motion_fits(rb_cctx *c, const rb_ynode *row, const rb_ynode *m, size_t k,
+static int row_motion_fits(rb_cctx *c, const rb_ynode *row, const rb_ynode *m, size_t k,
                               size_t n)
 {
-    const char *type = rb_motion_type(m);
+    const char *type = motion_type(m);
     int record = strcmp(type, "record") == 0;
     int ok = 1;
     for (size_t i = 0; i < row->n; i++) {
@@ -176,7 +176,7 @@ static int rb_row_motion_fits(rb_cctx *c, const rb_ynode *row, const rb_ynode *m
  * to each motion of the list, which keeps everything else (building,
  * window, polarity, run time, the other motions). Left alone, `motion`
  * would replace the whole list as its alternative. */
-static void rb_distribute_row_motion(rb_cctx *c, rb_ynode *root, rb_ynode *base)
+static void distribute_row_motion(rb_cctx *c, rb_ynode *root, rb_ynode *base)
 {
     size_t at;
     rb_yentry *me = rb_ymap_find(root, "motion"), *se = rb_ymap_find(base, "motions");
@@ -186,7 +186,7 @@ static void rb_distribute_row_motion(rb_cctx *c, rb_ynode *root, rb_ynode *base)
     int ok = 1;
     for (size_t k = 0; k < list->n; k++)
         if (list->items[k]->kind == RB_YNODE_MAP)
-            ok &= rb_row_motion_fits(c, row, list->items[k], k + 1, list->n);
+            ok &= row_motion_fits(c, row, list->items[k], k + 1, list->n);
     if (!ok) {
         c->fatal = 1;
         return;
@@ -194,11 +194,11 @@ static void rb_distribute_row_motion(rb_cctx *c, rb_ynode *root, rb_ynode *base)
     for (size_t k = 0; k < list->n && !c->nomem; k++) {
         if (list->items[k]->kind != RB_YNODE_MAP)
             continue;
-        rb_ynode *merged = rb_ynode_copy(c, row);
+        rb_ynode *merged = ynode_copy(c, row);
         if (!merged)
             return;
-        if (!rb_types_differ(merged, list->items[k]))
-            rb_ymerge(c, merged, list->items[k]);
+        if (!types_differ(merged, list->items[k]))
+            ymerge(c, merged, list->items[k]);
         rb_ynode_free(list->items[k]);
         list->items[k] = merged;
     }
@@ -213,7 +213,7 @@ static void rb_distribute_row_motion(rb_cctx *c, rb_ynode *root, rb_ynode *base)
 
 /* dir of including + "/" + rel, unless rel is absolute or including has no
  * directory part. */
-static char *rb_extends_path(const char *including, const char *rel)
+static char *extends_path(const char *including, const char *rel)
 {
     const char *slash = strrchr(including, '/');
     size_t dlen = (rel[0] == '/' || !slash) ? 0 : (size_t)(slash - including + 1);
@@ -233,7 +233,7 @@ typedef struct {
 } rb_chain;
 
 /* "a.yaml -> b.yaml -> a.yaml" from chain entry first on, then last. */
-static void rb_chain_str(const rb_chain *chain, size_t first, const char *last,
+static void chain_str(const rb_chain *chain, size_t first, const char *last,
                          char *buf, size_t size)
 {
     size_t n = 0;
@@ -244,7 +244,7 @@ static void rb_chain_str(const rb_chain *chain, size_t first, const char *last,
         snprintf(buf + n, size - n, "%s", last);
 }
 
-static char *rb_canonical(const char *path)
+static char *canonical_key(const char *path)
 {
     char buf[PATH_MAX];
     const char *src = realpath(path, buf) ? buf : path;
@@ -255,7 +255,7 @@ static char *rb_canonical(const char *path)
     return p;
 }
 
-static rb_status rb_read_chain(rb_cctx *c, const char *file, const rb_ynode *where,
+static rb_status read_chain(rb_cctx *c, const char *file, const rb_ynode *where,
                                rb_chain *chain, rb_ynode **root);
 
 /* A YAML file is taken for a case only if at least one of its top-level
@@ -263,7 +263,7 @@ static rb_status rb_read_chain(rb_cctx *c, const char *file, const rb_ynode *whe
  * YAML file (a CI configuration, a secret) gets one diagnostic that quotes
  * none of its keys or values, instead of one "unknown key 'password'" per
  * key in artefacts that may be published. */
-static int rb_plausible_case(const rb_ynode *root)
+static int plausible_case(const rb_ynode *root)
 {
     if (!root || root->kind != RB_YNODE_MAP || root->n == 0)
         return 1;   /* the schema says what is wrong, quoting nothing */
@@ -274,7 +274,7 @@ static int rb_plausible_case(const rb_ynode *root)
 }
 
 /* Follow root's `extends:` (if any) and merge the base under root. */
-static void rb_follow_extends(rb_cctx *c, const char *file, rb_ynode *root,
+static void follow_extends(rb_cctx *c, const char *file, rb_ynode *root,
                               rb_chain *chain)
 {
     rb_yentry *e = rb_ymap_find(root, "extends");
@@ -288,7 +288,7 @@ static void rb_follow_extends(rb_cctx *c, const char *file, rb_ynode *root,
         c->fatal = 1;
         return;
     }
-    char *path = rb_extends_path(file, v->text);
+    char *path = extends_path(file, v->text);
     if (!path) {
         c->nomem = 1;
         return;
@@ -296,11 +296,11 @@ static void rb_follow_extends(rb_cctx *c, const char *file, rb_ynode *root,
     rb_ynode *base = NULL;
     /* Without its base a case is missing so much that listing each missing
      * key would bury the one real problem: stop here. */
-    if (rb_read_chain(c, path, v, chain, &base) == RB_OK && base) {
+    if (read_chain(c, path, v, chain, &base) == RB_OK && base) {
         if (c->overrides && chain->n == 1)
-            rb_distribute_row_motion(c, root, base);
+            distribute_row_motion(c, root, base);
         if (!c->fatal)
-            rb_ymerge(c, root, base);
+            ymerge(c, root, base);
     }
     else
         c->fatal = 1;
@@ -308,11 +308,11 @@ static void rb_follow_extends(rb_cctx *c, const char *file, rb_ynode *root,
     free(path);
 }
 
-static rb_status rb_read_chain(rb_cctx *c, const char *file, const rb_ynode *where,
+static rb_status read_chain(rb_cctx *c, const char *file, const rb_ynode *where,
                                rb_chain *chain, rb_ynode **root)
 {
     *root = NULL;
-    char *id = rb_canonical(file);
+    char *id = canonical_key(file);
     if (!id) {
         c->nomem = 1;
         return RB_ERR_NOMEM;
@@ -320,7 +320,7 @@ static rb_status rb_read_chain(rb_cctx *c, const char *file, const rb_ynode *whe
     for (size_t i = 0; i < chain->n; i++) {
         if (strcmp(chain->ids[i], id) == 0) {
             char cycle[400];
-            rb_chain_str(chain, i, file, cycle, sizeof cycle);
+            chain_str(chain, i, file, cycle, sizeof cycle);
             rb_cctx_error(c, where, "extends", "extends cycle: %s", cycle);
             free(id);
             return RB_ERR_INVALID;
@@ -344,7 +344,7 @@ static rb_status rb_read_chain(rb_cctx *c, const char *file, const rb_ynode *whe
     size_t diags_before = c->diags->n, errors_before = c->n_errors,
            dropped_before = c->n_dropped;
     rb_status st = rb_yaml_read_tree(c, file, where, "extends", root);
-    if (st == RB_OK && !rb_plausible_case(*root)) {
+    if (st == RB_OK && !plausible_case(*root)) {
         /* what the walk said about a file that is no case (a duplicate
          * key, say) would quote its text: only the verdict below stays */
         c->diags->n = diags_before;
@@ -365,7 +365,7 @@ static rb_status rb_read_chain(rb_cctx *c, const char *file, const rb_ynode *whe
         st = RB_ERR_PARSE;
     }
     if (st == RB_OK)
-        rb_follow_extends(c, file, *root, chain);
+        follow_extends(c, file, *root, chain);
     free(chain->ids[--chain->n]);
     return st;
 }
@@ -385,7 +385,7 @@ rb_status rb_case_read_merged_text(rb_cctx *c, const char *name, unsigned char *
         chain.names[0] = name;
         chain.ids[0] = id;
         chain.n = 1;
-        rb_follow_extends(c, name, *root, &chain);
+        follow_extends(c, name, *root, &chain);
         free(id);
     }
     if (st == RB_OK && c->fatal)
@@ -397,7 +397,7 @@ rb_status rb_case_read_merged(rb_cctx *c, const char *file, rb_ynode **root)
 {
     rb_chain chain;
     memset(&chain, 0, sizeof chain);
-    rb_status st = rb_read_chain(c, file, NULL, &chain, root);
+    rb_status st = read_chain(c, file, NULL, &chain, root);
     if (st == RB_OK && c->fatal)
         st = RB_ERR_PARSE;
     return st;

@@ -12,17 +12,17 @@
 #include "case_internal.h"
 #include "rockbolt/datadir.h"
 
-static const char *const rb_harmonic_keys[] = {
+static const char *const harmonic_keys[] = {
     "type", "name", "polarity", "amplitude", "frequency", "duration", "ramp", NULL};
-static const char *const rb_pulse_keys[] = {
+static const char *const pulse_keys[] = {
     "type", "name", "polarity", "shape", "amplitude", "duration", "run_time", NULL};
-static const char *const rb_record_keys[] = {
+static const char *const record_keys[] = {
     "type", "name", "polarity", "file", "format", "units", "dt", "building",
     "peak", "window", "run_time", NULL};
 
 /* A time > 0 within the case's time limits (rb_cv_time_range); 1 if it is,
  * also when it is absent and not required. */
-static int rb_cmotion_time(rb_cctx *c, rb_ynode *map, const char *path,
+static int cmotion_time(rb_cctx *c, rb_ynode *map, const char *path,
                            const char *key, int required, int zero_ok, double *out)
 {
     char k[RB_CASE_KEY_MAX];
@@ -35,7 +35,7 @@ static int rb_cmotion_time(rb_cctx *c, rb_ynode *map, const char *path,
 }
 
 /* A floor acceleration > 0, possibly in A*; returns the node or NULL. */
-static const rb_ynode *rb_cmotion_accel(rb_cctx *c, rb_ynode *map,
+static const rb_ynode *cmotion_accel(rb_cctx *c, rb_ynode *map,
                                         const char *path, const char *key,
                                         int required, rb_quantity *q)
 {
@@ -54,23 +54,23 @@ static const rb_ynode *rb_cmotion_accel(rb_cctx *c, rb_ynode *map,
     return v;
 }
 
-static int rb_read_harmonic(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
+static int read_harmonic(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
 {
     const char *p = cm->key;
     rb_motion *m = &cm->motion;
     int ok = 1;
     m->kind = RB_MOTION_HARMONIC;
-    cm->amplitude_node = rb_cmotion_accel(c, map, p, "amplitude", 1, &cm->amplitude);
+    cm->amplitude_node = cmotion_accel(c, map, p, "amplitude", 1, &cm->amplitude);
     ok &= cm->amplitude_node != NULL;
     ok &= rb_cv_number(c, map, p, "frequency", 1, RB_DIM_FREQUENCY, 0, 0,
                        RB_CASE_MAX_MOTION_FREQ_HZ, 1, &m->freq_hz) != NULL;
-    ok &= rb_cmotion_time(c, map, p, "duration", 1, 0, &m->duration_s);
-    ok &= rb_cmotion_time(c, map, p, "ramp", 0, 1, &m->ramp_s);
-    rb_cv_unknown_keys(c, map, p, rb_harmonic_keys);
+    ok &= cmotion_time(c, map, p, "duration", 1, 0, &m->duration_s);
+    ok &= cmotion_time(c, map, p, "ramp", 0, 1, &m->ramp_s);
+    rb_cv_unknown_keys(c, map, p, harmonic_keys);
     return ok;
 }
 
-static int rb_read_pulse(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
+static int read_pulse(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
 {
     const char *p = cm->key;
     char k[RB_CASE_KEY_MAX];
@@ -84,16 +84,16 @@ static int rb_read_pulse(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
         m->pulse = (rb_pulse_shape)i;
     else
         ok = 0;
-    cm->amplitude_node = rb_cmotion_accel(c, map, p, "amplitude", 1, &cm->amplitude);
+    cm->amplitude_node = cmotion_accel(c, map, p, "amplitude", 1, &cm->amplitude);
     ok &= cm->amplitude_node != NULL;
-    ok &= rb_cmotion_time(c, map, p, "duration", 1, 0, &m->pulse_s);
-    ok &= rb_cmotion_time(c, map, p, "run_time", 1, 0, &m->duration_s);
-    rb_cv_unknown_keys(c, map, p, rb_pulse_keys);
+    ok &= cmotion_time(c, map, p, "duration", 1, 0, &m->pulse_s);
+    ok &= cmotion_time(c, map, p, "run_time", 1, 0, &m->duration_s);
+    rb_cv_unknown_keys(c, map, p, pulse_keys);
     return ok;
 }
 
 /* window: [start, end] in seconds of the record, start >= 0, end > start. */
-static int rb_read_window(rb_cctx *c, const rb_ynode *v, rb_cmotion *cm)
+static int read_window(rb_cctx *c, const rb_ynode *v, rb_cmotion *cm)
 {
     char k[RB_CASE_KEY_MAX];
     rb_quantity q[2];
@@ -118,7 +118,7 @@ static int rb_read_window(rb_cctx *c, const rb_ynode *v, rb_cmotion *cm)
     return 1;
 }
 
-static int rb_read_building(rb_cctx *c, rb_ynode *v, rb_cmotion *cm)
+static int read_building(rb_cctx *c, rb_ynode *v, rb_cmotion *cm)
 {
     static const char *const keys[] = {"frequency", "damping", NULL};
     char k[RB_CASE_KEY_MAX];
@@ -135,7 +135,7 @@ static int rb_read_building(rb_cctx *c, rb_ynode *v, rb_cmotion *cm)
 }
 
 /* units: the acceleration unit of the record's numbers ("g", "cm/s^2"). */
-static int rb_read_record_units(rb_cctx *c, const rb_ynode *v, rb_cmotion *cm)
+static int read_record_units(rb_cctx *c, const rb_ynode *v, rb_cmotion *cm)
 {
     char k[RB_CASE_KEY_MAX], text[64], msg[300];
     rb_quantity q;
@@ -157,7 +157,7 @@ static int rb_read_record_units(rb_cctx *c, const rb_ynode *v, rb_cmotion *cm)
     return 1;
 }
 
-static int rb_read_record(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
+static int read_record(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
 {
     const char *p = cm->key;
     char k[RB_CASE_KEY_MAX];
@@ -207,7 +207,7 @@ static int rb_read_record(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
             ok = 0;
     }
     if ((v = rb_cv_get(c, map, p, "units", 0, "")))
-        ok &= rb_read_record_units(c, v, cm);
+        ok &= read_record_units(c, v, cm);
     if (rb_ymap_find(map, "dt")) {
         const rb_ynode *dv = rb_cv_number(c, map, p, "dt", 0, RB_DIM_TIME, 0, 0,
                                           (double)NAN, 0, &cm->ropts.dt_s);
@@ -220,23 +220,23 @@ static int rb_read_record(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
         ok &= dv != NULL;
     }
     if ((v = rb_cv_get(c, map, p, "building", 0, "")))
-        ok &= rb_read_building(c, v, cm);
+        ok &= read_building(c, v, cm);
     if (rb_ymap_find(map, "peak")) {
-        cm->peak_node = rb_cmotion_accel(c, map, p, "peak", 0, &cm->peak);
+        cm->peak_node = cmotion_accel(c, map, p, "peak", 0, &cm->peak);
         ok &= cm->peak_node != NULL;
     }
     if ((v = rb_cv_get(c, map, p, "window", 0, "")))
-        ok &= rb_read_window(c, v, cm);
+        ok &= read_window(c, v, cm);
     if (rb_ymap_find(map, "run_time")) {
         cm->has_duration = 1;
-        ok &= rb_cmotion_time(c, map, p, "run_time", 0, 0, &m->duration_s);
+        ok &= cmotion_time(c, map, p, "run_time", 0, 0, &m->duration_s);
     }
-    rb_cv_unknown_keys(c, map, p, rb_record_keys);
+    rb_cv_unknown_keys(c, map, p, record_keys);
     return ok;
 }
 
 /* polarity: +1 (as recorded) or -1 (reversed). */
-static void rb_read_polarity(rb_cctx *c, const rb_ynode *v, const char *key,
+static void read_polarity(rb_cctx *c, const rb_ynode *v, const char *key,
                              int *out)
 {
     if (v->kind == RB_YNODE_SCALAR && (strcmp(v->text, "1") == 0
@@ -252,7 +252,7 @@ static void rb_read_polarity(rb_cctx *c, const rb_ynode *v, const char *key,
     }
 }
 
-static void rb_read_motion(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
+static void read_motion(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
 {
     char k[RB_CASE_KEY_MAX];
     int t;
@@ -267,7 +267,7 @@ static void rb_read_motion(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
     v = rb_cv_get(c, map, cm->key, "polarity", 0, "");
     rb_case_keypath(k, cm->key, "polarity");
     if (v)
-        rb_read_polarity(c, v, k, &cm->motion.polarity);
+        read_polarity(c, v, k, &cm->motion.polarity);
     v = rb_cv_get(c, map, cm->key, "type", 1, "harmonic, pulse or record");
     rb_case_keypath(k, cm->key, "type");
     /* the critical excitation (last in the table) is built by tests only */
@@ -277,11 +277,11 @@ static void rb_read_motion(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
         return;
     }
     if (t == RB_MOTION_HARMONIC)
-        cm->ok = rb_read_harmonic(c, map, cm);
+        cm->ok = read_harmonic(c, map, cm);
     else if (t == RB_MOTION_PULSE)
-        cm->ok = rb_read_pulse(c, map, cm);
+        cm->ok = read_pulse(c, map, cm);
     else
-        cm->ok = rb_read_record(c, map, cm);
+        cm->ok = read_record(c, map, cm);
 }
 
 void rb_case_read_motions(rb_cctx *c, rb_ynode *root)
@@ -332,6 +332,6 @@ void rb_case_read_motions(rb_cctx *c, rb_ynode *root)
             snprintf(cm->key, sizeof cm->key, "motions[%zu]", i + 1);
         else
             snprintf(cm->key, sizeof cm->key, "motion");
-        rb_read_motion(c, which ? v->items[i] : v, cm);
+        read_motion(c, which ? v->items[i] : v, cm);
     }
 }

@@ -15,34 +15,34 @@
 
 #define RB_PI 3.14159265358979323846
 
-static const char *const rb_top_keys[] = {
+static const char *const top_keys[] = {
     "name", "description", "extends", "equipment", "anchorage", "gap",
     "gap_ratio", "motion", "motions", "criteria", "analysis", "design",
     "output_units", NULL};
 int rb_case_top_key(const char *key)
 {
-    for (size_t k = 0; rb_top_keys[k]; k++)
-        if (strcmp(key, rb_top_keys[k]) == 0)
+    for (size_t k = 0; top_keys[k]; k++)
+        if (strcmp(key, top_keys[k]) == 0)
             return 1;
     return 0;
 }
 
-static const char *const rb_equipment_keys[] = {
+static const char *const equipment_keys[] = {
     "mass", "height", "cm_height", "base_width", "frequency", "damping",
     "restitution", "inertia", "rigid", NULL};
-static const char *const rb_anchorage_keys[] = {
+static const char *const anchorage_keys[] = {
     "model", "bolts_per_row", "diameter", "area", "yield_stress", "toughness",
     "deformable_length", "lever_arm", "edge_distance", "elastic_modulus", NULL};
-static const char *const rb_criteria_keys[] = {
+static const char *const criteria_keys[] = {
     "kind", "usage_limit", "max_shear_over_w", "max_rotation_over_alpha",
     "friction_coefficient", "validity", NULL};
-static const char *const rb_analysis_keys[] = {
+static const char *const analysis_keys[] = {
     "formulation", "integrator", "tolerance", "output_interval", "history",
     "stretch_past_failure", NULL};
 
 /* Which of two alternative keys the map gives: 0 for a, 1 for b, -1 when
  * neither (an error if required) or both (always an error). */
-static int rb_one_of(rb_cctx *c, rb_ynode *map, const char *path, const char *a,
+static int one_of(rb_cctx *c, rb_ynode *map, const char *path, const char *a,
                      const char *b, int required, const char *expected)
 {
     rb_yentry *ea = rb_ymap_find(map, a), *eb = rb_ymap_find(map, b);
@@ -67,7 +67,7 @@ static int rb_one_of(rb_cctx *c, rb_ynode *map, const char *path, const char *a,
 }
 
 /* A section that must be a mapping; NULL if absent or not a mapping. */
-static rb_ynode *rb_section(rb_cctx *c, rb_ynode *root, const char *name,
+static rb_ynode *schema_section(rb_cctx *c, rb_ynode *root, const char *name,
                             int required, const char *expected)
 {
     rb_ynode *v = rb_cv_get(c, root, "", name, required, expected);
@@ -78,7 +78,7 @@ static rb_ynode *rb_section(rb_cctx *c, rb_ynode *root, const char *name,
 
 /* A value outside [lo, hi] (what the solver takes, docs/robustness.md) is
  * an error at its node v, if v is set; range says the bounds in units. */
-static void rb_within(rb_cctx *c, const rb_ynode *v, const char *key, double x,
+static void within(rb_cctx *c, const rb_ynode *v, const char *key, double x,
                       double lo, double hi, const char *range)
 {
     if (!v || (x >= lo && x <= hi))
@@ -88,7 +88,7 @@ static void rb_within(rb_cctx *c, const rb_ynode *v, const char *key, double x,
 }
 
 /* A quantity that is also a model field (see rb_cv_note_field). */
-static const rb_ynode *rb_field(rb_cctx *c, rb_ynode *map, const char *path,
+static const rb_ynode *schema_field(rb_cctx *c, rb_ynode *map, const char *path,
                                 const char *key, const char *field, int required,
                                 rb_dim dim, double lo, int lo_incl, double hi,
                                 int hi_incl, double *out)
@@ -104,28 +104,28 @@ static const rb_ynode *rb_field(rb_cctx *c, rb_ynode *map, const char *path,
     return v;
 }
 
-static void rb_read_equipment(rb_cctx *c, rb_ynode *eq, rb_model *m)
+static void read_equipment(rb_cctx *c, rb_ynode *eq, rb_model *m)
 {
     const char *p = "equipment";
     double x;
-    const rb_ynode *mv = rb_field(c, eq, p, "mass", "mass", 1, RB_DIM_MASS, 0, 0,
+    const rb_ynode *mv = schema_field(c, eq, p, "mass", "mass", 1, RB_DIM_MASS, 0, 0,
                                   (double)NAN, 0, &m->mass_kg);
-    rb_within(c, mv, "equipment.mass", m->mass_kg, RB_CASE_MIN_MASS_KG,
+    within(c, mv, "equipment.mass", m->mass_kg, RB_CASE_MIN_MASS_KG,
               RB_CASE_MAX_MASS_KG, "1 kg and 1e9 kg");
-    int which = rb_one_of(c, eq, p, "height", "cm_height", 1,
+    int which = one_of(c, eq, p, "height", "cm_height", 1,
                           "the total height, or the height of the centre of mass");
     if (which < 0)
         c->model_errors++;
-    else if (rb_field(c, eq, p, which ? "cm_height" : "height", "cm_height", 1,
+    else if (schema_field(c, eq, p, which ? "cm_height" : "height", "cm_height", 1,
                       RB_DIM_LENGTH, 0, 0, (double)NAN, 0, &x))
         m->cm_height_m = which ? x : x / 2;
-    if (rb_field(c, eq, p, "base_width", "half_width", 1, RB_DIM_LENGTH, 0, 0,
+    if (schema_field(c, eq, p, "base_width", "half_width", 1, RB_DIM_LENGTH, 0, 0,
                  (double)NAN, 0, &x))
         m->half_width_m = x / 2;
     rb_ynode *v = rb_cv_get(c, eq, p, "rigid", 0, "");
     if (v && !rb_cv_bool(c, v, "equipment.rigid", &m->rigid))
         c->model_errors++;
-    const rb_ynode *f = rb_field(c, eq, p, "frequency", "frequency", !m->rigid,
+    const rb_ynode *f = schema_field(c, eq, p, "frequency", "frequency", !m->rigid,
                                  RB_DIM_FREQUENCY, 0, 0, (double)NAN, 0, &m->freq_hz);
     if (f && m->freq_hz < RB_CASE_MIN_FREQ_HZ) {
         rb_cctx_error(c, f, "equipment.frequency", "must be at least %g Hz (got "
@@ -133,25 +133,25 @@ static void rb_read_equipment(rb_cctx *c, rb_ynode *eq, rb_model *m)
                       "the model can hold", RB_CASE_MIN_FREQ_HZ, f->text);
         c->model_errors++;
     }
-    rb_field(c, eq, p, "damping", "damping", !m->rigid, RB_DIM_RATIO, 0, 1, 1,
+    schema_field(c, eq, p, "damping", "damping", !m->rigid, RB_DIM_RATIO, 0, 1, 1,
              0, &m->damping);
     v = rb_cv_get(c, eq, p, "restitution", 0, "");
     if (v && v->kind == RB_YNODE_SCALAR && strcmp(v->text, "housner") == 0)
         m->restitution = -1.0;
     else if (v)
-        rb_field(c, eq, p, "restitution", "restitution", 0, RB_DIM_RATIO, 0, 0,
+        schema_field(c, eq, p, "restitution", "restitution", 0, RB_DIM_RATIO, 0, 0,
                  1, 1, &m->restitution);
-    rb_field(c, eq, p, "inertia", "inertia", 0, RB_DIM_INERTIA, 0, 0, (double)NAN, 0,
+    schema_field(c, eq, p, "inertia", "inertia", 0, RB_DIM_INERTIA, 0, 0, (double)NAN, 0,
              &m->inertia_kgm2);
-    rb_cv_unknown_keys(c, eq, p, rb_equipment_keys);
+    rb_cv_unknown_keys(c, eq, p, equipment_keys);
 }
 
 /* The lever arm, given directly or as the bolt's distance from the plate
  * edge (l = 2b - e), checked against the plate. */
-static void rb_read_lever_arm(rb_cctx *c, rb_ynode *an, rb_model *m)
+static void read_lever_arm(rb_cctx *c, rb_ynode *an, rb_model *m)
 {
     const char *p = "anchorage";
-    int which = rb_one_of(c, an, p, "lever_arm", "edge_distance", 1,
+    int which = one_of(c, an, p, "lever_arm", "edge_distance", 1,
                           "the bolt's distance from the far edge, or from its own edge");
     double x, width = 2 * m->half_width_m;
     if (which < 0) {
@@ -159,7 +159,7 @@ static void rb_read_lever_arm(rb_cctx *c, rb_ynode *an, rb_model *m)
         return;
     }
     const char *key = which ? "edge_distance" : "lever_arm";
-    const rb_ynode *v = rb_field(c, an, p, key, "lever_arm", 1, RB_DIM_LENGTH,
+    const rb_ynode *v = schema_field(c, an, p, key, "lever_arm", 1, RB_DIM_LENGTH,
                                  which ? 0 : (double)NAN, 0, (double)NAN, 0, &x);
     if (!v)
         return;
@@ -180,7 +180,7 @@ static void rb_read_lever_arm(rb_cctx *c, rb_ynode *an, rb_model *m)
     }
 }
 
-static void rb_read_anchorage(rb_cctx *c, rb_ynode *an, rb_model *m)
+static void read_anchorage(rb_cctx *c, rb_ynode *an, rb_model *m)
 {
     const char *p = "anchorage";
     int i = RB_BOLT_RIGID_PLASTIC;
@@ -201,33 +201,33 @@ static void rb_read_anchorage(rb_cctx *c, rb_ynode *an, rb_model *m)
         m->bolts_per_row = (int)n;
     else
         c->model_errors++;
-    int which = rb_one_of(c, an, p, "diameter", "area", 1,
+    int which = one_of(c, an, p, "diameter", "area", 1,
                           "the bolt diameter, or its tensile area");
     const rb_ynode *bv;
-    if (which == 0 && (bv = rb_field(c, an, p, "diameter", "bolt_area", 1,
+    if (which == 0 && (bv = schema_field(c, an, p, "diameter", "bolt_area", 1,
                                      RB_DIM_LENGTH, 0, 0, (double)NAN, 0, &x))) {
         m->bolt_area_m2 = RB_PI * x * x / 4;
-        rb_within(c, bv, "anchorage.diameter", x, RB_CASE_MIN_DIAMETER_M,
+        within(c, bv, "anchorage.diameter", x, RB_CASE_MIN_DIAMETER_M,
                   RB_CASE_MAX_DIAMETER_M, "1 mm and 200 mm");
     } else if (which == 1) {
-        bv = rb_field(c, an, p, "area", "bolt_area", 1, RB_DIM_AREA, 0, 0, (double)NAN, 0,
+        bv = schema_field(c, an, p, "area", "bolt_area", 1, RB_DIM_AREA, 0, 0, (double)NAN, 0,
                       &m->bolt_area_m2);
-        rb_within(c, bv, "anchorage.area", m->bolt_area_m2,
+        within(c, bv, "anchorage.area", m->bolt_area_m2,
                   RB_PI * RB_CASE_MIN_DIAMETER_M * RB_CASE_MIN_DIAMETER_M / 4,
                   RB_PI * RB_CASE_MAX_DIAMETER_M * RB_CASE_MAX_DIAMETER_M / 4,
                   "0.785 mm^2 and 31 416 mm^2 (a bolt of 1 mm to 200 mm)");
     }
     else if (which < 0)
         c->model_errors++;
-    bv = rb_field(c, an, p, "yield_stress", "yield_stress", 1, RB_DIM_STRESS, 0, 0,
+    bv = schema_field(c, an, p, "yield_stress", "yield_stress", 1, RB_DIM_STRESS, 0, 0,
                   (double)NAN, 0, &m->yield_stress_pa);
-    rb_within(c, bv, "anchorage.yield_stress", m->yield_stress_pa, RB_CASE_MIN_YIELD_PA,
+    within(c, bv, "anchorage.yield_stress", m->yield_stress_pa, RB_CASE_MIN_YIELD_PA,
               RB_CASE_MAX_YIELD_PA, "1 MPa and 10 GPa");
-    bv = rb_field(c, an, p, "toughness", "toughness", 1, RB_DIM_ENERGY_DENSITY, 0,
+    bv = schema_field(c, an, p, "toughness", "toughness", 1, RB_DIM_ENERGY_DENSITY, 0,
                   0, (double)NAN, 0, &m->toughness_jpm3);
-    rb_within(c, bv, "anchorage.toughness", m->toughness_jpm3, RB_CASE_MIN_TOUGHNESS,
+    within(c, bv, "anchorage.toughness", m->toughness_jpm3, RB_CASE_MIN_TOUGHNESS,
               RB_CASE_MAX_TOUGHNESS, "1 kJ/m^3 and 1e7 kJ/m^3");
-    v = (rb_ynode *)rb_field(c, an, p, "deformable_length", "deformable_length", 1,
+    v = (rb_ynode *)schema_field(c, an, p, "deformable_length", "deformable_length", 1,
                              RB_DIM_LENGTH, 0, 0, (double)NAN, 0,
                              &m->deformable_length_m);
     if (v && (m->deformable_length_m < RB_CASE_MIN_BOLT_LENGTH_M
@@ -237,23 +237,23 @@ static void rb_read_anchorage(rb_cctx *c, rb_ynode *an, rb_model *m)
                       RB_CASE_MAX_BOLT_LENGTH_M, v->text);
         c->model_errors++;
     }
-    bv = rb_field(c, an, p, "elastic_modulus", "elastic_modulus", 0, RB_DIM_STRESS,
+    bv = schema_field(c, an, p, "elastic_modulus", "elastic_modulus", 0, RB_DIM_STRESS,
                   0, 0, (double)NAN, 0, &m->elastic_modulus_pa);
-    rb_within(c, bv, "anchorage.elastic_modulus", m->elastic_modulus_pa,
+    within(c, bv, "anchorage.elastic_modulus", m->elastic_modulus_pa,
               RB_CASE_MIN_MODULUS_PA, RB_CASE_MAX_MODULUS_PA, "1 GPa and 1000 GPa");
-    rb_read_lever_arm(c, an, m);
-    rb_cv_unknown_keys(c, an, p, rb_anchorage_keys);
+    read_lever_arm(c, an, m);
+    rb_cv_unknown_keys(c, an, p, anchorage_keys);
 }
 
 /* gap (a length) or gap_ratio (of the lever arm), both rows alike. */
-static void rb_read_gap(rb_cctx *c, rb_ynode *root, rb_model *m)
+static void read_gap(rb_cctx *c, rb_ynode *root, rb_model *m)
 {
     if (m->bolt_model == RB_BOLT_NONE) {
         rb_cv_get(c, root, "", "gap", 0, "");
         rb_cv_get(c, root, "", "gap_ratio", 0, "");
         return;
     }
-    int which = rb_one_of(c, root, "", "gap", "gap_ratio", 1,
+    int which = one_of(c, root, "", "gap", "gap_ratio", 1,
                           "the gap under the bolt heads, e.g. 'gap: 7.8 mm' "
                           "or 'gap_ratio: 0.01'");
     if (which < 0) {
@@ -262,9 +262,9 @@ static void rb_read_gap(rb_cctx *c, rb_ynode *root, rb_model *m)
     }
     const rb_ynode *v;
     if (which == 0) {
-        v = rb_field(c, root, "", "gap", "gap", 1, RB_DIM_LENGTH, 0, 1, (double)NAN, 0,
+        v = schema_field(c, root, "", "gap", "gap", 1, RB_DIM_LENGTH, 0, 1, (double)NAN, 0,
                      &m->gap_m);
-    } else if ((v = rb_field(c, root, "", "gap_ratio", "gap", 1, RB_DIM_RATIO, 0, 1,
+    } else if ((v = schema_field(c, root, "", "gap_ratio", "gap", 1, RB_DIM_RATIO, 0, 1,
                              1, 0, &c->gap_ratio))) {
         c->gap_is_ratio = 1;
         m->gap_m = c->gap_ratio * m->lever_arm_m;
@@ -280,7 +280,7 @@ static void rb_read_gap(rb_cctx *c, rb_ynode *root, rb_model *m)
     }
 }
 
-static void rb_read_criteria(rb_cctx *c, rb_ynode *cr, rb_criteria *k)
+static void read_criteria(rb_cctx *c, rb_ynode *cr, rb_criteria *k)
 {
     const char *p = "criteria";
     int i;
@@ -298,10 +298,10 @@ static void rb_read_criteria(rb_cctx *c, rb_ynode *cr, rb_criteria *k)
     v = rb_cv_get(c, cr, p, "validity", 0, "");
     if (v && rb_cv_enum_table(c, v, "criteria.validity", rb_validity_mode_names, 0, &i))
         k->validity = (rb_validity_mode)i;
-    rb_cv_unknown_keys(c, cr, p, rb_criteria_keys);
+    rb_cv_unknown_keys(c, cr, p, criteria_keys);
 }
 
-static void rb_read_analysis(rb_cctx *c, rb_ynode *an, rb_case *cs)
+static void read_analysis(rb_cctx *c, rb_ynode *an, rb_case *cs)
 {
     const char *p = "analysis";
     int i, b;
@@ -328,11 +328,11 @@ static void rb_read_analysis(rb_cctx *c, rb_ynode *an, rb_case *cs)
     v = rb_cv_get(c, an, p, "stretch_past_failure", 0, "");
     if (v && rb_cv_bool(c, v, "analysis.stretch_past_failure", &b))
         cs->solve.stretch_past_failure = b;
-    rb_cv_unknown_keys(c, an, p, rb_analysis_keys);
+    rb_cv_unknown_keys(c, an, p, analysis_keys);
 }
 
 /* The case name defaults to the file name without directory and extension. */
-static void rb_default_name(rb_cctx *c, rb_case *cs)
+static void default_name(rb_cctx *c, rb_case *cs)
 {
     const char *base = strrchr(cs->path, '/');
     base = base ? base + 1 : cs->path;
@@ -351,33 +351,33 @@ void rb_case_read_schema(rb_cctx *c, rb_ynode *root, rb_case *cs)
 {
     rb_ynode *v = rb_cv_get(c, root, "", "name", 0, "");
     if (!v || !rb_cv_string(c, v, "name", &cs->name))
-        rb_default_name(c, cs);
+        default_name(c, cs);
     v = rb_cv_get(c, root, "", "description", 0, "");
     if (v)
         rb_cv_string(c, v, "description", &cs->description);
-    rb_ynode *eq = rb_section(c, root, "equipment", 1,
+    rb_ynode *eq = schema_section(c, root, "equipment", 1,
                               "the cabinet: mass, height, base_width, ...");
     if (eq)
-        rb_read_equipment(c, eq, &cs->model);
+        read_equipment(c, eq, &cs->model);
     else
         c->model_errors++;
-    rb_ynode *an = rb_section(c, root, "anchorage", 1,
+    rb_ynode *an = schema_section(c, root, "anchorage", 1,
                               "the bolts, or 'model: none' for free-standing");
     if (an)
-        rb_read_anchorage(c, an, &cs->model);
+        read_anchorage(c, an, &cs->model);
     else
         c->model_errors++;
     if (an) {
-        rb_read_gap(c, root, &cs->model);
+        read_gap(c, root, &cs->model);
     } else {
         rb_cv_get(c, root, "", "gap", 0, "");   /* judged with the anchorage */
         rb_cv_get(c, root, "", "gap_ratio", 0, "");
     }
-    if ((v = rb_section(c, root, "criteria", 0, "")))
-        rb_read_criteria(c, v, &cs->criteria);
-    if ((v = rb_section(c, root, "analysis", 0, "")))
-        rb_read_analysis(c, v, cs);
-    if ((v = rb_section(c, root, "design", 0, "")))
+    if ((v = schema_section(c, root, "criteria", 0, "")))
+        read_criteria(c, v, &cs->criteria);
+    if ((v = schema_section(c, root, "analysis", 0, "")))
+        read_analysis(c, v, cs);
+    if ((v = schema_section(c, root, "design", 0, "")))
         rb_case_read_design(c, v, cs);
     rb_case_read_motions(c, root);
     /* Output units: as asked, else the system most quantities were written
@@ -390,5 +390,5 @@ void rb_case_read_schema(rb_cctx *c, rb_ynode *root, rb_case *cs)
         if (rb_cv_enum(c, v, "output_units", systems, &i))
             cs->output_units = i == 1 ? RB_UNITS_US : RB_UNITS_SI;
     }
-    rb_cv_unknown_keys(c, root, "", rb_top_keys);
+    rb_cv_unknown_keys(c, root, "", top_keys);
 }

@@ -18,7 +18,7 @@
 
 #define RB_DEG (180.0 / 3.14159265358979323846)
 
-static const rb_cfield *rb_field_of(const rb_cctx *c, const char *field)
+static const rb_cfield *field_of(const rb_cctx *c, const char *field)
 {
     for (size_t i = 0; i < c->n_fields; i++)
         if (strcmp(c->fields[i].field, field) == 0)
@@ -28,9 +28,9 @@ static const rb_cfield *rb_field_of(const rb_cctx *c, const char *field)
 
 /* theta0 >= alpha: the plate would tip past its overturning angle before
  * the bolts could hold it. */
-static int rb_check_gap_angle(rb_cctx *c, const rb_model *m)
+static int check_gap_angle(rb_cctx *c, const rb_model *m)
 {
-    const rb_cfield *f = rb_field_of(c, "gap");
+    const rb_cfield *f = field_of(c, "gap");
     double l = m->lever_arm_m, g = m->gap_m;
     if (!f || m->bolt_model == RB_BOLT_NONE || !(l > 0))
         return 1;
@@ -46,16 +46,16 @@ static int rb_check_gap_angle(rb_cctx *c, const rb_model *m)
 }
 
 /* Run rb_model_derive and report its complaint against the case. */
-static int rb_check_model(rb_cctx *c, rb_case *cs, const rb_ynode *root,
+static int check_model(rb_cctx *c, rb_case *cs, const rb_ynode *root,
                           rb_derived *d)
 {
     rb_diag diag;
     memset(&diag, 0, sizeof diag);
-    if (c->model_errors > 0 || !rb_check_gap_angle(c, &cs->model))
+    if (c->model_errors > 0 || !check_gap_angle(c, &cs->model))
         return 0;
     if (rb_model_derive(&cs->model, d, &diag) == RB_OK)
         return 1;
-    const rb_cfield *f = rb_field_of(c, diag.key);
+    const rb_cfield *f = field_of(c, diag.key);
     if (f)
         rb_cctx_error(c, f->node, f->key, "%s", diag.msg);
     else
@@ -64,7 +64,7 @@ static int rb_check_model(rb_cctx *c, rb_case *cs, const rb_ynode *root,
 }
 
 /* A floor acceleration at most 1000 g, once A* is multiplied out. */
-static int rb_check_accel(rb_cctx *c, const rb_cmotion *cm, const rb_ynode *v,
+static int check_accel(rb_cctx *c, const rb_cmotion *cm, const rb_ynode *v,
                           const char *key, double a)
 {
     char k[RB_CASE_KEY_MAX];
@@ -78,14 +78,14 @@ static int rb_check_accel(rb_cctx *c, const rb_cmotion *cm, const rb_ynode *v,
 }
 
 /* Resolve an amplitude that may be in A*; 0 after an error. */
-static int rb_resolve_accel(rb_cctx *c, const rb_cmotion *cm, const rb_ynode *v,
+static int resolve_accel(rb_cctx *c, const rb_cmotion *cm, const rb_ynode *v,
                             const char *key, rb_quantity q, const rb_derived *d,
                             int have_model, double *out)
 {
     char k[RB_CASE_KEY_MAX];
     if (!q.relative_a_star) {
         *out = q.value;
-        return rb_check_accel(c, cm, v, key, *out);
+        return check_accel(c, cm, v, key, *out);
     }
     if (!have_model)
         return 0;   /* the model's own errors say why */
@@ -97,12 +97,12 @@ static int rb_resolve_accel(rb_cctx *c, const rb_cmotion *cm, const rb_ynode *v,
         return 0;
     }
     *out = q.value * d->a_star_mps2;
-    return rb_check_accel(c, cm, v, key, *out);
+    return check_accel(c, cm, v, key, *out);
 }
 
 /* The record's path: relative to the directory of the file that named it,
  * or "shipped:NAME" in the data directory (rockbolt/datadir.h). */
-static char *rb_record_path(const rb_ynode *v)
+static char *record_path(const rb_ynode *v)
 {
     size_t sl = strlen(RB_SHIPPED_PREFIX);
     if (strncmp(v->text, RB_SHIPPED_PREFIX, sl) == 0) {
@@ -124,7 +124,7 @@ static char *rb_record_path(const rb_ynode *v)
     return p;
 }
 
-static char *rb_strdup(rb_cctx *c, const char *s)
+static char *ctx_strdup(rb_cctx *c, const char *s)
 {
     size_t len = strlen(s) + 1;
     char *p = malloc(len);
@@ -137,7 +137,7 @@ static char *rb_strdup(rb_cctx *c, const char *s)
 
 /* Report an unreadable record at its `file:` value, with the reader's own
  * diagnostic (which names the line of the record when it has one). */
-static void rb_record_fail(rb_cctx *c, const rb_cmotion *cm, const char *key,
+static void record_fail(rb_cctx *c, const rb_cmotion *cm, const char *key,
                            const char *path, rb_status st, const rb_diag *rd)
 {
     const rb_ynode *v = cm->file_node;
@@ -152,14 +152,14 @@ static void rb_record_fail(rb_cctx *c, const rb_cmotion *cm, const char *key,
 }
 
 /* Read, filter, window and scale one record into out->series. */
-static int rb_load_record(rb_cctx *c, const rb_cmotion *cm, rb_case_motion *out,
+static int load_record(rb_cctx *c, const rb_cmotion *cm, rb_case_motion *out,
                           double peak_mps2)
 {
     char k[RB_CASE_KEY_MAX];
     rb_diag rd;
     memset(&rd, 0, sizeof rd);
     rb_case_keypath(k, cm->key, "file");
-    out->source = rb_record_path(cm->file_node);
+    out->source = record_path(cm->file_node);
     if (!out->source) {
         c->nomem = 1;
         return 0;
@@ -189,7 +189,7 @@ static int rb_load_record(rb_cctx *c, const rb_cmotion *cm, rb_case_motion *out,
         return 0;
     }
     if (st != RB_OK) {
-        rb_record_fail(c, cm, k, out->source, st, &rd);
+        record_fail(c, cm, k, out->source, st, &rd);
         return 0;
     }
     c->n_samples += out->series.n;
@@ -261,31 +261,31 @@ static int rb_load_record(rb_cctx *c, const rb_cmotion *cm, rb_case_motion *out,
 }
 
 /* Finish one motion into out; 0 after an error. */
-static int rb_build_motion(rb_cctx *c, const rb_cmotion *cm, rb_case_motion *out,
+static int build_motion(rb_cctx *c, const rb_cmotion *cm, rb_case_motion *out,
                            const rb_derived *d, int have_model)
 {
     char desc[160];
     out->motion = cm->motion;
     double peak = 0;
     if (cm->motion.kind != RB_MOTION_SAMPLED) {
-        if (!rb_resolve_accel(c, cm, cm->amplitude_node, "amplitude",
+        if (!resolve_accel(c, cm, cm->amplitude_node, "amplitude",
                               cm->amplitude, d, have_model,
                               &out->motion.amplitude_mps2))
             return 0;
         snprintf(desc, sizeof desc, "%s %g m/s^2",
                  cm->motion.kind == RB_MOTION_HARMONIC ? "harmonic" : "pulse",
                  out->motion.amplitude_mps2);
-        out->source = rb_strdup(c, desc);
-        out->name = rb_strdup(c, cm->name ? cm->name : cm->key);
+        out->source = ctx_strdup(c, desc);
+        out->name = ctx_strdup(c, cm->name ? cm->name : cm->key);
         return out->source && out->name;
     }
-    if (cm->peak_node && !rb_resolve_accel(c, cm, cm->peak_node, "peak",
+    if (cm->peak_node && !resolve_accel(c, cm, cm->peak_node, "peak",
                                            cm->peak, d, have_model, &peak))
         return 0;
-    if (!rb_load_record(c, cm, out, peak))
+    if (!load_record(c, cm, out, peak))
         return 0;
     const char *base = strrchr(out->source, '/');
-    out->name = rb_strdup(c, cm->name ? cm->name : (base ? base + 1 : out->source));
+    out->name = ctx_strdup(c, cm->name ? cm->name : (base ? base + 1 : out->source));
     out->motion.series = &out->series;
     out->motion.scale = 1.0;
     if (!cm->has_duration) {
@@ -318,7 +318,7 @@ void rb_case_resolve(rb_cctx *c, rb_case *cs, const rb_ynode *root)
 {
     rb_derived d;
     memset(&d, 0, sizeof d);
-    int have_model = rb_check_model(c, cs, root, &d);
+    int have_model = check_model(c, cs, root, &d);
     if (c->n_motions == 0)
         return;
     cs->motions = calloc(c->n_motions, sizeof *cs->motions);
@@ -332,7 +332,7 @@ void rb_case_resolve(rb_cctx *c, rb_case *cs, const rb_ynode *root)
     int over = 0;
     for (size_t i = 0; i < c->n_motions && !c->nomem; i++) {
         const rb_cmotion *cm = &c->motions[i];
-        if (!cm->ok || !rb_build_motion(c, cm, &cs->motions[i], &d, have_model))
+        if (!cm->ok || !build_motion(c, cm, &cs->motions[i], &d, have_model))
             continue;
         /* the history a run would record, asked for or not: whether a case
          * is refused must not depend on the outputs requested */

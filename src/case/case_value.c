@@ -28,7 +28,7 @@ rb_ynode *rb_cv_get(rb_cctx *c, rb_ynode *map, const char *path,
 }
 
 /* Error unless v is a non-null scalar. */
-static int rb_cv_scalar(rb_cctx *c, const rb_ynode *v, const char *key,
+static int cv_scalar(rb_cctx *c, const rb_ynode *v, const char *key,
                         const char *expected)
 {
     if (v->kind == RB_YNODE_SCALAR && !rb_ynode_is_null(v))
@@ -44,7 +44,7 @@ int rb_cv_quantity(rb_cctx *c, const rb_ynode *v, const char *key, rb_dim dim,
     char expected[160], msg[300];
     snprintf(expected, sizeof expected, "%s (%s)", rb_dim_str(dim),
              rb_dim_units(dim));
-    if (!rb_cv_scalar(c, v, key, expected))
+    if (!cv_scalar(c, v, key, expected))
         return 0;
     if (rb_unit_parse(v->text, dim, out, msg, sizeof msg) != RB_OK) {
         rb_cctx_error(c, v, key, "%s", msg);
@@ -56,7 +56,7 @@ int rb_cv_quantity(rb_cctx *c, const rb_ynode *v, const char *key, rb_dim dim,
 }
 
 /* "> 0", ">= 0 and < 1", ... for a range message. */
-static void rb_cv_range_str(char *buf, size_t size, double lo, int lo_incl,
+static void cv_range_str(char *buf, size_t size, double lo, int lo_incl,
                             double hi, int hi_incl)
 {
     int n = 0;
@@ -90,7 +90,7 @@ const rb_ynode *rb_cv_number(rb_cctx *c, rb_ynode *map, const char *path,
            || (!isnan(hi) && (hi_incl ? q.value > hi : q.value >= hi));
     if (bad) {
         range[0] = '\0';
-        rb_cv_range_str(range, sizeof range, lo, lo_incl, hi, hi_incl);
+        cv_range_str(range, sizeof range, lo, lo_incl, hi, hi_incl);
         rb_cctx_error(c, v, k, "must be %s (got '%s')", range, v->text);
         return NULL;
     }
@@ -118,7 +118,7 @@ int rb_cv_bool(rb_cctx *c, const rb_ynode *v, const char *key, int *out)
 {
     static const char *const yes[] = {"true", "True", "TRUE"};
     static const char *const no[] = {"false", "False", "FALSE"};
-    if (!rb_cv_scalar(c, v, key, "true or false"))
+    if (!cv_scalar(c, v, key, "true or false"))
         return 0;
     for (int i = 0; i < 3; i++) {
         if (strcmp(v->text, yes[i]) == 0) {
@@ -139,7 +139,7 @@ int rb_cv_int(rb_cctx *c, const rb_ynode *v, const char *key, long lo,
 {
     char expected[80], *end;
     snprintf(expected, sizeof expected, "a whole number from %ld to %ld", lo, hi);
-    if (!rb_cv_scalar(c, v, key, expected))
+    if (!cv_scalar(c, v, key, expected))
         return 0;
     errno = 0;
     long x = strtol(v->text, &end, 10);
@@ -153,7 +153,7 @@ int rb_cv_int(rb_cctx *c, const rb_ynode *v, const char *key, long lo,
 }
 
 /* The candidate closest to word when close enough to be a likely typo. */
-static const char *rb_cv_nearest(const char *word, const char *const cand[])
+static const char *cv_nearest(const char *word, const char *const cand[])
 {
     const char *best = NULL;
     int bestd = 9;
@@ -168,7 +168,7 @@ static const char *rb_cv_nearest(const char *word, const char *const cand[])
 }
 
 /* "a, b, c" from a NULL-terminated list. */
-static void rb_cv_join(char *buf, size_t size, const char *const names[])
+static void cv_join(char *buf, size_t size, const char *const names[])
 {
     size_t n = 0;
     buf[0] = '\0';
@@ -180,9 +180,9 @@ int rb_cv_enum(rb_cctx *c, const rb_ynode *v, const char *key,
                const char *const names[], int *out)
 {
     char list[300], expected[340];
-    rb_cv_join(list, sizeof list, names);
+    cv_join(list, sizeof list, names);
     snprintf(expected, sizeof expected, "one of %s", list);
-    if (!rb_cv_scalar(c, v, key, expected))
+    if (!cv_scalar(c, v, key, expected))
         return 0;
     for (int i = 0; names[i]; i++) {
         if (strcmp(v->text, names[i]) == 0) {
@@ -190,7 +190,7 @@ int rb_cv_enum(rb_cctx *c, const rb_ynode *v, const char *key,
             return 1;
         }
     }
-    const char *near = rb_cv_nearest(v->text, names);
+    const char *near = cv_nearest(v->text, names);
     if (near)
         rb_cctx_error(c, v, key, "unknown value '%s' (did you mean '%s'?)",
                       v->text, near);
@@ -216,7 +216,7 @@ int rb_cv_enum_table(rb_cctx *c, const rb_ynode *v, const char *key,
 
 int rb_cv_string(rb_cctx *c, const rb_ynode *v, const char *key, char **out)
 {
-    if (!rb_cv_scalar(c, v, key, "text"))
+    if (!cv_scalar(c, v, key, "text"))
         return 0;
     size_t len = strlen(v->text) + 1;
     char *p = malloc(len);
@@ -248,13 +248,13 @@ void rb_cv_unknown_keys(rb_cctx *c, const rb_ynode *map, const char *path,
         if (e->used)
             continue;
         rb_case_keypath(k, path, e->key);
-        const char *near = rb_cv_nearest(e->key, valid);
+        const char *near = cv_nearest(e->key, valid);
         if (near) {
             rb_cctx_error_at(c, RB_ERR_INVALID, e->value->file, e->line, e->col,
                              k, "unknown key '%s' (did you mean '%s'?)",
                              e->key, near);
         } else {
-            rb_cv_join(list, sizeof list, valid);
+            cv_join(list, sizeof list, valid);
             rb_cctx_error_at(c, RB_ERR_INVALID, e->value->file, e->line, e->col,
                              k, "unknown key '%s' (expected one of: %s)",
                              e->key, list);

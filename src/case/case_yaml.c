@@ -33,22 +33,22 @@ typedef struct {
                                          and messages quote none of its text */
 } rb_ywalk;
 
-static const char *rb_ywalk_key(const rb_ywalk *w)
+static const char *ywalk_key(const rb_ywalk *w)
 {
     return w->path[0] && w->case_like ? w->path : "case";
 }
 
-static void rb_ywalk_fatal(rb_ywalk *w, rb_status st, int line, int col,
+static void ywalk_fatal(rb_ywalk *w, rb_status st, int line, int col,
                            const char *msg)
 {
-    rb_cctx_error_at(w->c, st, w->file, line, col, rb_ywalk_key(w), "%s", msg);
+    rb_cctx_error_at(w->c, st, w->file, line, col, ywalk_key(w), "%s", msg);
     w->c->fatal = 1;
     w->stop = 1;
 }
 
 /* 1-based line and column of a byte offset (for reader errors, which carry
  * an offset but no mark). */
-static void rb_ywalk_locate(const rb_ywalk *w, size_t off, int *line, int *col)
+static void ywalk_locate(const rb_ywalk *w, size_t off, int *line, int *col)
 {
     *line = 1;
     *col = 1;
@@ -62,18 +62,18 @@ static void rb_ywalk_locate(const rb_ywalk *w, size_t off, int *line, int *col)
     }
 }
 
-static void rb_ywalk_syntax(rb_ywalk *w)
+static void ywalk_syntax(rb_ywalk *w)
 {
     yaml_parser_t *p = &w->parser;
     char msg[400];
     int line = (int)p->problem_mark.line + 1, col = (int)p->problem_mark.column + 1;
     if (p->error == YAML_MEMORY_ERROR) {
         w->c->nomem = 1;
-        rb_ywalk_fatal(w, RB_ERR_NOMEM, 0, 0, "out of memory while parsing");
+        ywalk_fatal(w, RB_ERR_NOMEM, 0, 0, "out of memory while parsing");
         return;
     }
     if (p->error == YAML_READER_ERROR) {
-        rb_ywalk_locate(w, p->problem_offset, &line, &col);
+        ywalk_locate(w, p->problem_offset, &line, &col);
         snprintf(msg, sizeof msg, "not a readable text file: %s",
                  p->problem ? p->problem : "bad byte");
     } else if (p->context) {
@@ -84,32 +84,32 @@ static void rb_ywalk_syntax(rb_ywalk *w)
         snprintf(msg, sizeof msg, "YAML syntax error: %s",
                  p->problem ? p->problem : "unknown problem");
     }
-    rb_ywalk_fatal(w, RB_ERR_PARSE, line, col, msg);
+    ywalk_fatal(w, RB_ERR_PARSE, line, col, msg);
 }
 
 /* Next event into ev; 0 (after reporting) on a syntax error. */
-static int rb_ywalk_next(rb_ywalk *w, yaml_event_t *ev)
+static int ywalk_next(rb_ywalk *w, yaml_event_t *ev)
 {
     if (!yaml_parser_parse(&w->parser, ev)) {
-        rb_ywalk_syntax(w);
+        ywalk_syntax(w);
         return 0;
     }
     return 1;
 }
 
-static rb_ynode *rb_ynode_new(rb_ywalk *w, rb_ynode_kind kind, yaml_mark_t m)
+static rb_ynode *ynode_new(rb_ywalk *w, rb_ynode_kind kind, yaml_mark_t m)
 {
     if (++w->c->n_nodes > RB_CASE_MAX_NODES) {
         char msg[160];
         snprintf(msg, sizeof msg, "more than %d keys, values and lists in the "
                  "case (the limit)", RB_CASE_MAX_NODES);
-        rb_ywalk_fatal(w, RB_ERR_LIMIT, (int)m.line + 1, (int)m.column + 1, msg);
+        ywalk_fatal(w, RB_ERR_LIMIT, (int)m.line + 1, (int)m.column + 1, msg);
         return NULL;
     }
     rb_ynode *n = calloc(1, sizeof *n);
     if (!n) {
         w->c->nomem = 1;
-        rb_ywalk_fatal(w, RB_ERR_NOMEM, 0, 0, "out of memory");
+        ywalk_fatal(w, RB_ERR_NOMEM, 0, 0, "out of memory");
         return NULL;
     }
     n->kind = kind;
@@ -136,7 +136,7 @@ void rb_ynode_free(rb_ynode *n)
 }
 
 /* Refuse anchors: see the file comment. */
-static int rb_ywalk_anchor(rb_ywalk *w, const yaml_char_t *anchor, yaml_mark_t m)
+static int ywalk_anchor(rb_ywalk *w, const yaml_char_t *anchor, yaml_mark_t m)
 {
     char msg[300];
     if (!anchor)
@@ -144,36 +144,36 @@ static int rb_ywalk_anchor(rb_ywalk *w, const yaml_char_t *anchor, yaml_mark_t m
     /* the anchor's name is not quoted: the file may not be a case at all */
     snprintf(msg, sizeof msg, "YAML anchors ('&') and aliases are not "
              "allowed in case files; use 'extends:' to share settings");
-    rb_ywalk_fatal(w, RB_ERR_PARSE, (int)m.line + 1, (int)m.column + 1, msg);
+    ywalk_fatal(w, RB_ERR_PARSE, (int)m.line + 1, (int)m.column + 1, msg);
     return 1;
 }
 
-static rb_ynode *rb_ywalk_scalar(rb_ywalk *w, yaml_event_t *ev)
+static rb_ynode *ywalk_scalar(rb_ywalk *w, yaml_event_t *ev)
 {
     char msg[200];
     size_t len = ev->data.scalar.length;
     yaml_mark_t m = ev->start_mark;
-    if (rb_ywalk_anchor(w, ev->data.scalar.anchor, m))
+    if (ywalk_anchor(w, ev->data.scalar.anchor, m))
         return NULL;
     if (len > RB_CASE_MAX_SCALAR) {
         snprintf(msg, sizeof msg, "value is %zu bytes long; the limit is %d "
                  "bytes per value", len, RB_CASE_MAX_SCALAR);
-        rb_ywalk_fatal(w, RB_ERR_LIMIT, (int)m.line + 1, (int)m.column + 1, msg);
+        ywalk_fatal(w, RB_ERR_LIMIT, (int)m.line + 1, (int)m.column + 1, msg);
         return NULL;
     }
     if (memchr(ev->data.scalar.value, '\0', len)) {
-        rb_ywalk_fatal(w, RB_ERR_PARSE, (int)m.line + 1, (int)m.column + 1,
+        ywalk_fatal(w, RB_ERR_PARSE, (int)m.line + 1, (int)m.column + 1,
                        "value contains a NUL character");
         return NULL;
     }
-    rb_ynode *n = rb_ynode_new(w, RB_YNODE_SCALAR, m);
+    rb_ynode *n = ynode_new(w, RB_YNODE_SCALAR, m);
     if (!n)
         return NULL;
     n->text = malloc(len + 1);
     if (!n->text) {
         free(n);
         w->c->nomem = 1;
-        rb_ywalk_fatal(w, RB_ERR_NOMEM, 0, 0, "out of memory");
+        ywalk_fatal(w, RB_ERR_NOMEM, 0, 0, "out of memory");
         return NULL;
     }
     memcpy(n->text, ev->data.scalar.value, len);
@@ -183,7 +183,7 @@ static rb_ynode *rb_ywalk_scalar(rb_ywalk *w, yaml_event_t *ev)
 }
 
 /* Grow a node's entries or items array to hold one more. */
-static int rb_ynode_grow(rb_ywalk *w, rb_ynode *n)
+static int ynode_grow(rb_ywalk *w, rb_ynode *n)
 {
     if (n->n < n->cap)
         return 1;
@@ -193,7 +193,7 @@ static int rb_ynode_grow(rb_ywalk *w, rb_ynode *n)
         : realloc(n->items, cap * sizeof *n->items);
     if (!p) {
         w->c->nomem = 1;
-        rb_ywalk_fatal(w, RB_ERR_NOMEM, 0, 0, "out of memory");
+        ywalk_fatal(w, RB_ERR_NOMEM, 0, 0, "out of memory");
         return 0;
     }
     if (n->kind == RB_YNODE_MAP)
@@ -204,23 +204,23 @@ static int rb_ynode_grow(rb_ywalk *w, rb_ynode *n)
     return 1;
 }
 
-static rb_ynode *rb_ywalk_node(rb_ywalk *w, yaml_event_t *ev, int depth);
+static rb_ynode *ywalk_node(rb_ywalk *w, yaml_event_t *ev, int depth);
 
-static int rb_ywalk_seq_items(rb_ywalk *w, rb_ynode *seq, int depth)
+static int ywalk_seq_items(rb_ywalk *w, rb_ynode *seq, int depth)
 {
     size_t base = strlen(w->path);
     for (;;) {
         yaml_event_t ev;
-        if (!rb_ywalk_next(w, &ev))
+        if (!ywalk_next(w, &ev))
             return 0;
         if (ev.type == YAML_SEQUENCE_END_EVENT) {
             yaml_event_delete(&ev);
             return 1;
         }
         snprintf(w->path + base, sizeof w->path - base, "[%zu]", seq->n + 1);
-        rb_ynode *item = rb_ywalk_node(w, &ev, depth + 1);
+        rb_ynode *item = ywalk_node(w, &ev, depth + 1);
         w->path[base] = '\0';
-        if (!item || !rb_ynode_grow(w, seq)) {
+        if (!item || !ynode_grow(w, seq)) {
             rb_ynode_free(item);
             return 0;
         }
@@ -229,13 +229,13 @@ static int rb_ywalk_seq_items(rb_ywalk *w, rb_ynode *seq, int depth)
 }
 
 /* Add key -> value to map, or report a duplicate (and drop the value). */
-static int rb_ywalk_add(rb_ywalk *w, rb_ynode *map, rb_ynode *key, rb_ynode *val)
+static int ywalk_add(rb_ywalk *w, rb_ynode *map, rb_ynode *key, rb_ynode *val)
 {
     if (map->n == RB_CASE_MAX_KEYS) {
         char msg[160];
         snprintf(msg, sizeof msg, "more than %d keys in one mapping (the limit)",
                  RB_CASE_MAX_KEYS);
-        rb_ywalk_fatal(w, RB_ERR_LIMIT, key->line, key->col, msg);
+        ywalk_fatal(w, RB_ERR_LIMIT, key->line, key->col, msg);
         rb_ynode_free(key);
         rb_ynode_free(val);
         return 0;
@@ -255,7 +255,7 @@ static int rb_ywalk_add(rb_ywalk *w, rb_ynode *map, rb_ynode *key, rb_ynode *val
         rb_ynode_free(val);
         return 1;
     }
-    if (!rb_ynode_grow(w, map)) {
+    if (!ynode_grow(w, map)) {
         rb_ynode_free(key);
         rb_ynode_free(val);
         return 0;
@@ -271,12 +271,12 @@ static int rb_ywalk_add(rb_ywalk *w, rb_ynode *map, rb_ynode *key, rb_ynode *val
     return 1;
 }
 
-static int rb_ywalk_map_entries(rb_ywalk *w, rb_ynode *map, int depth)
+static int ywalk_map_entries(rb_ywalk *w, rb_ynode *map, int depth)
 {
     size_t base = strlen(w->path);
     for (;;) {
         yaml_event_t ev;
-        if (!rb_ywalk_next(w, &ev))
+        if (!ywalk_next(w, &ev))
             return 0;
         if (ev.type == YAML_MAPPING_END_EVENT) {
             yaml_event_delete(&ev);
@@ -285,19 +285,19 @@ static int rb_ywalk_map_entries(rb_ywalk *w, rb_ynode *map, int depth)
         if (ev.type != YAML_SCALAR_EVENT) {
             yaml_mark_t m = ev.start_mark;
             yaml_event_delete(&ev);
-            rb_ywalk_fatal(w, RB_ERR_PARSE, (int)m.line + 1, (int)m.column + 1,
+            ywalk_fatal(w, RB_ERR_PARSE, (int)m.line + 1, (int)m.column + 1,
                            "a key must be a plain word, not a mapping, "
                            "sequence or alias");
             return 0;
         }
-        rb_ynode *key = rb_ywalk_scalar(w, &ev);
+        rb_ynode *key = ywalk_scalar(w, &ev);
         yaml_event_delete(&ev);
         if (!key)
             return 0;
         /* An empty key ("? " or '""') has no dotted name to report
          * anything against, and no key of the schema is empty. */
         if (!key->text[0]) {
-            rb_ywalk_fatal(w, RB_ERR_PARSE, key->line, key->col, "a key must be "
+            ywalk_fatal(w, RB_ERR_PARSE, key->line, key->col, "a key must be "
                            "a plain word, found an empty key");
             rb_ynode_free(key);
             return 0;
@@ -307,13 +307,13 @@ static int rb_ywalk_map_entries(rb_ywalk *w, rb_ynode *map, int depth)
         snprintf(w->path + base, sizeof w->path - base, "%s%s",
                  base ? "." : "", key->text);
         rb_ynode *val = NULL;
-        if (rb_ywalk_next(w, &ev))
-            val = rb_ywalk_node(w, &ev, depth + 1);
+        if (ywalk_next(w, &ev))
+            val = ywalk_node(w, &ev, depth + 1);
         if (!val) {
             rb_ynode_free(key);
             return 0;
         }
-        int ok = rb_ywalk_add(w, map, key, val);
+        int ok = ywalk_add(w, map, key, val);
         w->path[base] = '\0';
         if (!ok)
             return 0;
@@ -322,19 +322,19 @@ static int rb_ywalk_map_entries(rb_ywalk *w, rb_ynode *map, int depth)
 
 /* Build the node that starts with ev, consuming ev and everything up to the
  * node's end. Returns NULL after a fatal error. */
-static rb_ynode *rb_ywalk_node(rb_ywalk *w, yaml_event_t *ev, int depth)
+static rb_ynode *ywalk_node(rb_ywalk *w, yaml_event_t *ev, int depth)
 {
     rb_ynode *n = NULL;
     yaml_mark_t m = ev->start_mark;
     char msg[120];
     if (ev->type == YAML_SCALAR_EVENT) {
-        n = rb_ywalk_scalar(w, ev);
+        n = ywalk_scalar(w, ev);
         yaml_event_delete(ev);
         return n;
     }
     if (ev->type == YAML_ALIAS_EVENT) {
         yaml_event_delete(ev);
-        rb_ywalk_fatal(w, RB_ERR_PARSE, (int)m.line + 1, (int)m.column + 1,
+        ywalk_fatal(w, RB_ERR_PARSE, (int)m.line + 1, (int)m.column + 1,
                        "YAML aliases ('*name') are not allowed in case files; "
                        "use 'extends:' to share settings");
         return NULL;
@@ -342,21 +342,21 @@ static rb_ynode *rb_ywalk_node(rb_ywalk *w, yaml_event_t *ev, int depth)
     int is_map = ev->type == YAML_MAPPING_START_EVENT;
     const yaml_char_t *anchor = is_map ? ev->data.mapping_start.anchor
                                        : ev->data.sequence_start.anchor;
-    int bad = rb_ywalk_anchor(w, anchor, m);
+    int bad = ywalk_anchor(w, anchor, m);
     yaml_event_delete(ev);
     if (bad)
         return NULL;
     if (depth > RB_CASE_MAX_DEPTH) {
         snprintf(msg, sizeof msg, "nesting is deeper than %d levels",
                  RB_CASE_MAX_DEPTH);
-        rb_ywalk_fatal(w, RB_ERR_LIMIT, (int)m.line + 1, (int)m.column + 1, msg);
+        ywalk_fatal(w, RB_ERR_LIMIT, (int)m.line + 1, (int)m.column + 1, msg);
         return NULL;
     }
-    n = rb_ynode_new(w, is_map ? RB_YNODE_MAP : RB_YNODE_SEQ, m);
+    n = ynode_new(w, is_map ? RB_YNODE_MAP : RB_YNODE_SEQ, m);
     if (!n)
         return NULL;
-    int ok = is_map ? rb_ywalk_map_entries(w, n, depth)
-                    : rb_ywalk_seq_items(w, n, depth);
+    int ok = is_map ? ywalk_map_entries(w, n, depth)
+                    : ywalk_seq_items(w, n, depth);
     if (!ok) {
         rb_ynode_free(n);
         return NULL;
@@ -365,11 +365,11 @@ static rb_ynode *rb_ywalk_node(rb_ywalk *w, yaml_event_t *ev, int depth)
 }
 
 /* Stream start, document start, the root node, document end, stream end. */
-static rb_ynode *rb_ywalk_stream(rb_ywalk *w)
+static rb_ynode *ywalk_stream(rb_ywalk *w)
 {
     yaml_event_t ev;
     rb_ynode *root = NULL;
-    while (!w->stop && rb_ywalk_next(w, &ev)) {
+    while (!w->stop && ywalk_next(w, &ev)) {
         yaml_event_type_t t = ev.type;
         yaml_mark_t m = ev.start_mark;
         if (t == YAML_STREAM_END_EVENT) {
@@ -378,7 +378,7 @@ static rb_ynode *rb_ywalk_stream(rb_ywalk *w)
         }
         if (t == YAML_DOCUMENT_START_EVENT && root) {
             yaml_event_delete(&ev);
-            rb_ywalk_fatal(w, RB_ERR_PARSE, (int)m.line + 1, (int)m.column + 1,
+            ywalk_fatal(w, RB_ERR_PARSE, (int)m.line + 1, (int)m.column + 1,
                            "a case file holds one YAML document; found a "
                            "second one");
             break;
@@ -388,7 +388,7 @@ static rb_ynode *rb_ywalk_stream(rb_ywalk *w)
             yaml_event_delete(&ev);
             continue;
         }
-        root = rb_ywalk_node(w, &ev, 1);
+        root = ywalk_node(w, &ev, 1);
     }
     if (w->stop) {
         rb_ynode_free(root);
@@ -402,7 +402,7 @@ static rb_ynode *rb_ywalk_stream(rb_ywalk *w)
  * and stall the run. O_NONBLOCK keeps the open itself from waiting on a
  * FIFO; it is cleared again before reading. NULL with errno, or with
  * *not_regular set. */
-static FILE *rb_yaml_open_base(const char *file, int *not_regular)
+static FILE *yaml_open_base(const char *file, int *not_regular)
 {
     struct stat sb;
     *not_regular = 0;
@@ -427,7 +427,7 @@ static FILE *rb_yaml_open_base(const char *file, int *not_regular)
  * process writes to would block for ever. O_NONBLOCK makes the open return
  * at once and is cleared before reading, so a pipe with a writer is read
  * to its end and one without reads as empty. NULL with errno. */
-static FILE *rb_yaml_open_case(const char *file)
+static FILE *yaml_open_case(const char *file)
 {
     int fd = open(file, O_RDONLY | O_NONBLOCK);
     if (fd < 0)
@@ -451,13 +451,13 @@ static FILE *rb_yaml_open_case(const char *file)
 /* Read the whole file, refusing more than the size limit. The case file
  * itself may be anything readable (`rockbolt check <(gen-case)`); bases
  * must be regular files. */
-static rb_status rb_yaml_slurp(rb_cctx *c, const char *file, const rb_ynode *where,
+static rb_status yaml_slurp(rb_cctx *c, const char *file, const rb_ynode *where,
                                const char *where_key, unsigned char **buf,
                                size_t *len)
 {
     int not_regular = 0;
     errno = 0;
-    FILE *f = where ? rb_yaml_open_base(file, &not_regular) : rb_yaml_open_case(file);
+    FILE *f = where ? yaml_open_base(file, &not_regular) : yaml_open_case(file);
     const char *dfile = where ? where->file : file;
     int line = where ? where->line : 0, col = where ? where->col : 0;
     const char *key = where ? where_key : "case";
@@ -504,7 +504,7 @@ rb_status rb_yaml_read_tree(rb_cctx *c, const char *file, const rb_ynode *where,
     unsigned char *buf = NULL;
     size_t len = 0;
     *root = NULL;
-    rb_status st = rb_yaml_slurp(c, file, where, where_key, &buf, &len);
+    rb_status st = yaml_slurp(c, file, where, where_key, &buf, &len);
     if (st != RB_OK)
         return st;
     return rb_yaml_parse_text(c, file, buf, len, root);
@@ -526,7 +526,7 @@ rb_status rb_yaml_parse_text(rb_cctx *c, const char *file, unsigned char *buf, s
         return RB_ERR_NOMEM;
     }
     yaml_parser_set_input_string(&w.parser, buf, len);
-    rb_ynode *n = rb_ywalk_stream(&w);
+    rb_ynode *n = ywalk_stream(&w);
     yaml_parser_delete(&w.parser);
     free(buf);
     if (w.stop)

@@ -28,7 +28,7 @@ typedef struct {
 
 /* The system of a unit: US customary names, then the neutral ones; any
  * other unit of the table is SI. */
-static rb_unit_system rb_unit_system_of(const char *name)
+static rb_unit_system unit_system_of(const char *name)
 {
     static const char *const us[] = {"in", "ft", "lb", "lbm", "kip", "lbf",
         "psi", "ksi", "in-lb/in^3", "in-lbf/in^3", "in/s^2", "ft/s^2",
@@ -44,7 +44,7 @@ static rb_unit_system rb_unit_system_of(const char *name)
     return RB_UNITS_SI;
 }
 
-static const rb_unit rb_units[] = {
+static const rb_unit unit_table[] = {
     {"%", RB_DIM_RATIO, 0.01},
     {"m", RB_DIM_LENGTH, 1.0}, {"mm", RB_DIM_LENGTH, 1e-3},
     {"cm", RB_DIM_LENGTH, 1e-2}, {"in", RB_DIM_LENGTH, 0.0254},
@@ -83,7 +83,7 @@ static const rb_unit rb_units[] = {
     {"lbf/in", RB_DIM_STIFFNESS, RB_LBF / 0.0254},
     {"kip/in", RB_DIM_STIFFNESS, 1e3 * RB_LBF / 0.0254},
 };
-#define RB_N_UNITS (sizeof rb_units / sizeof rb_units[0])
+#define RB_N_UNITS (sizeof unit_table / sizeof unit_table[0])
 
 typedef struct {
     const char *phrase;   /* "a length" */
@@ -92,7 +92,7 @@ typedef struct {
     const char *noun;     /* "length", for "a unit of length" */
 } rb_dim_info;
 
-static const rb_dim_info rb_dims[RB_DIM_COUNT] = {
+static const rb_dim_info dims[RB_DIM_COUNT] = {
     [RB_DIM_RATIO] = {"a dimensionless number", "no unit, or %", "0.01", "a dimensionless number"},
     [RB_DIM_LENGTH] = {"a length", "m, mm, cm, in, ft", "7.8 mm", "length"},
     [RB_DIM_MASS] = {"a mass", "kg, lb", "454 kg", "mass"},
@@ -125,19 +125,19 @@ const rb_out_units *rb_out_units_of(rb_unit_system system)
 
 const char *rb_dim_str(rb_dim dim)
 {
-    return dim < RB_DIM_COUNT ? rb_dims[dim].phrase : "a quantity";
+    return dim < RB_DIM_COUNT ? dims[dim].phrase : "a quantity";
 }
 
 const char *rb_dim_units(rb_dim dim)
 {
-    return dim < RB_DIM_COUNT ? rb_dims[dim].units : "";
+    return dim < RB_DIM_COUNT ? dims[dim].units : "";
 }
 
 /* A message in msg (if any), always RB_ERR_PARSE. */
-static rb_status rb_unit_fail(char *msg, size_t size, const char *fmt, ...)
+static rb_status unit_fail(char *msg, size_t size, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 
-static rb_status rb_unit_fail(char *msg, size_t size, const char *fmt, ...)
+static rb_status unit_fail(char *msg, size_t size, const char *fmt, ...)
 {
     if (msg && size) {
         va_list ap;
@@ -150,7 +150,7 @@ static rb_status rb_unit_fail(char *msg, size_t size, const char *fmt, ...)
 
 /* ASCII case-insensitive comparison of n bytes (strncasecmp is POSIX,
  * not C11). */
-static int rb_unit_casecmp(const char *a, const char *b, size_t n)
+static int unit_casecmp(const char *a, const char *b, size_t n)
 {
     for (size_t i = 0; i < n; i++) {
         int ca = tolower((unsigned char)a[i]), cb = tolower((unsigned char)b[i]);
@@ -161,14 +161,14 @@ static int rb_unit_casecmp(const char *a, const char *b, size_t n)
 }
 
 /* The unit named by the len bytes at name, or NULL. fold: ignore case. */
-static const rb_unit *rb_unit_find(const char *name, size_t len, int fold)
+static const rb_unit *unit_find(const char *name, size_t len, int fold)
 {
     for (size_t i = 0; i < RB_N_UNITS; i++) {
-        const char *u = rb_units[i].name;
+        const char *u = unit_table[i].name;
         if (strlen(u) != len)
             continue;
-        if (fold ? rb_unit_casecmp(u, name, len) == 0 : strncmp(u, name, len) == 0)
-            return &rb_units[i];
+        if (fold ? unit_casecmp(u, name, len) == 0 : strncmp(u, name, len) == 0)
+            return &unit_table[i];
     }
     return NULL;
 }
@@ -176,7 +176,7 @@ static const rb_unit *rb_unit_find(const char *name, size_t len, int fold)
 /* Length of the decimal number at s (sign, digits, point, exponent), or 0
  * when there is none. Scanning ourselves keeps strtod from accepting hex,
  * "inf" or "nan". */
-static size_t rb_unit_scan_number(const char *s)
+static size_t unit_scan_number(const char *s)
 {
     size_t i = 0, digits = 0;
     if (s[i] == '+' || s[i] == '-')
@@ -209,47 +209,47 @@ static size_t rb_unit_scan_number(const char *s)
 
 /* 1 if s (after an optional sign) spells NaN or infinity in any case, in
  * C's spelling or YAML's (".nan", ".inf"). */
-static int rb_unit_is_nonfinite_word(const char *s)
+static int unit_is_nonfinite_word(const char *s)
 {
     if (*s == '+' || *s == '-')
         s++;
     if (*s == '.')
         s++;
-    return rb_unit_casecmp(s, "nan", 3) == 0 || rb_unit_casecmp(s, "inf", 3) == 0;
+    return unit_casecmp(s, "nan", 3) == 0 || unit_casecmp(s, "inf", 3) == 0;
 }
 
 /* Report why the unit text u (len bytes, trimmed) is not a unit of dim. */
-static rb_status rb_unit_explain(const char *u, size_t len, rb_dim dim,
+static rb_status unit_explain(const char *u, size_t len, rb_dim dim,
                                  char *msg, size_t size)
 {
-    const rb_dim_info *di = &rb_dims[dim];
-    const rb_unit *other = rb_unit_find(u, len, 0);
+    const rb_dim_info *di = &dims[dim];
+    const rb_unit *other = unit_find(u, len, 0);
     if (other && other->factor == 0.0)
-        return rb_unit_fail(msg, size, "'A*' is only for floor accelerations "
+        return unit_fail(msg, size, "'A*' is only for floor accelerations "
                             "(expected %s: %s)", di->phrase, di->units);
     if (other)
-        return rb_unit_fail(msg, size, "'%.*s' is a unit of %s, not of %s "
+        return unit_fail(msg, size, "'%.*s' is a unit of %s, not of %s "
                             "(expected %s)", (int)len, u,
-                            rb_dims[other->dim].noun, di->noun, di->units);
+                            dims[other->dim].noun, di->noun, di->units);
     /* A known unit followed by more words: the unit is fine, the rest is not. */
     size_t word = 0;
     while (word < len && !isspace((unsigned char)u[word]))
         word++;
-    if (word < len && rb_unit_find(u, word, 0)) {
+    if (word < len && unit_find(u, word, 0)) {
         size_t rest = word;
         while (isspace((unsigned char)u[rest]))
             rest++;
-        return rb_unit_fail(msg, size, "unexpected text '%.*s' after the unit '%.*s'",
+        return unit_fail(msg, size, "unexpected text '%.*s' after the unit '%.*s'",
                             (int)(len - rest), u + rest, (int)word, u);
     }
     if (!isalpha((unsigned char)u[0]) && u[0] != '%')
-        return rb_unit_fail(msg, size, "unexpected text '%.*s' after the number",
+        return unit_fail(msg, size, "unexpected text '%.*s' after the number",
                             (int)len, u);
-    const rb_unit *near = rb_unit_find(u, len, 1);
+    const rb_unit *near = unit_find(u, len, 1);
     if (near && near->dim == dim)
-        return rb_unit_fail(msg, size, "unknown unit '%.*s' (did you mean '%s'? "
+        return unit_fail(msg, size, "unknown unit '%.*s' (did you mean '%s'? "
                             "units are case-sensitive)", (int)len, u, near->name);
-    return rb_unit_fail(msg, size, "unknown unit '%.*s' (expected %s: %s)",
+    return unit_fail(msg, size, "unknown unit '%.*s' (expected %s: %s)",
                         (int)len, u, di->phrase, di->units);
 }
 
@@ -258,7 +258,7 @@ rb_status rb_unit_parse(const char *text, rb_dim dim, rb_quantity *out,
 {
     if (dim >= RB_DIM_COUNT)
         dim = RB_DIM_RATIO;
-    const rb_dim_info *di = &rb_dims[dim];
+    const rb_dim_info *di = &dims[dim];
     out->value = 0.0;
     out->relative_a_star = 0;
     out->system = RB_UNITS_NEUTRAL;
@@ -268,24 +268,24 @@ rb_status rb_unit_parse(const char *text, rb_dim dim, rb_quantity *out,
     while (len > 0 && isspace((unsigned char)text[len - 1]))
         len--;
     if (len == 0)
-        return rb_unit_fail(msg, msg_size, "empty value (expected %s such as '%s')",
+        return unit_fail(msg, msg_size, "empty value (expected %s such as '%s')",
                             di->phrase, di->example);
-    if (rb_unit_is_nonfinite_word(text))
-        return rb_unit_fail(msg, msg_size, "'%.*s' is not a finite number",
+    if (unit_is_nonfinite_word(text))
+        return unit_fail(msg, msg_size, "'%.*s' is not a finite number",
                             (int)len, text);
-    size_t nlen = rb_unit_scan_number(text);
+    size_t nlen = unit_scan_number(text);
     if (nlen == 0)
-        return rb_unit_fail(msg, msg_size, "'%.*s' is not a number (expected %s "
+        return unit_fail(msg, msg_size, "'%.*s' is not a number (expected %s "
                             "such as '%s')", (int)len, text, di->phrase, di->example);
     char num[64];
     if (nlen >= sizeof num)
-        return rb_unit_fail(msg, msg_size, "number '%.*s...' is too long", 20, text);
+        return unit_fail(msg, msg_size, "number '%.*s...' is too long", 20, text);
     memcpy(num, text, nlen);
     num[nlen] = '\0';
     errno = 0;
     double v = strtod(num, NULL);
     if (errno == ERANGE && fabs(v) > 1.0)
-        return rb_unit_fail(msg, msg_size, "number '%s' is out of range", num);
+        return unit_fail(msg, msg_size, "number '%s' is out of range", num);
     const char *u = text + nlen;
     while (u < text + len && isspace((unsigned char)*u))
         u++;
@@ -295,13 +295,13 @@ rb_status rb_unit_parse(const char *text, rb_dim dim, rb_quantity *out,
             out->value = v;
             return RB_OK;
         }
-        return rb_unit_fail(msg, msg_size, "missing unit on '%s' (expected %s: %s)",
+        return unit_fail(msg, msg_size, "missing unit on '%s' (expected %s: %s)",
                             num, di->phrase, di->units);
     }
-    const rb_unit *unit = rb_unit_find(u, ulen, 0);
+    const rb_unit *unit = unit_find(u, ulen, 0);
     if (!unit || unit->dim != dim)
-        return rb_unit_explain(u, ulen, dim, msg, msg_size);
-    out->system = rb_unit_system_of(unit->name);
+        return unit_explain(u, ulen, dim, msg, msg_size);
+    out->system = unit_system_of(unit->name);
     if (unit->factor == 0.0) {
         out->value = v;
         out->relative_a_star = 1;
@@ -309,6 +309,6 @@ rb_status rb_unit_parse(const char *text, rb_dim dim, rb_quantity *out,
     }
     out->value = v * unit->factor;
     if (!isfinite(out->value))
-        return rb_unit_fail(msg, msg_size, "'%.*s' is out of range", (int)len, text);
+        return unit_fail(msg, msg_size, "'%.*s' is out of range", (int)len, text);
     return RB_OK;
 }

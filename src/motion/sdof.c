@@ -25,7 +25,7 @@ typedef struct {
 } rb_mat4;
 
 /* out = a b; out may alias a or b. */
-static void rb_mat4_mul(const rb_mat4 *a, const rb_mat4 *b, rb_mat4 *out)
+static void mat4_mul(const rb_mat4 *a, const rb_mat4 *b, rb_mat4 *out)
 {
     rb_mat4 r;
     for (int i = 0; i < RB_SDOF_N; i++)
@@ -38,7 +38,7 @@ static void rb_mat4_mul(const rb_mat4 *a, const rb_mat4 *b, rb_mat4 *out)
     *out = r;
 }
 
-static double rb_mat4_norm_inf(const rb_mat4 *a)
+static double mat4_norm_inf(const rb_mat4 *a)
 {
     double best = 0.0;
     for (int i = 0; i < RB_SDOF_N; i++) {
@@ -52,10 +52,10 @@ static double rb_mat4_norm_inf(const rb_mat4 *a)
 }
 
 /* e = exp(a) by scaling, Taylor series and squaring. */
-static void rb_mat4_exp(const rb_mat4 *a, rb_mat4 *e)
+static void mat4_exp(const rb_mat4 *a, rb_mat4 *e)
 {
     int squarings = 0;
-    double norm = rb_mat4_norm_inf(a);
+    double norm = mat4_norm_inf(a);
     while (norm > 0.5) {
         norm *= 0.5;
         squarings++;
@@ -69,7 +69,7 @@ static void rb_mat4_exp(const rb_mat4 *a, rb_mat4 *e)
             e->m[i][j] = term.m[i][j];
         }
     for (int k = 1; k <= RB_SDOF_TAYLOR_TERMS; k++) {
-        rb_mat4_mul(&term, &x, &term);
+        mat4_mul(&term, &x, &term);
         for (int i = 0; i < RB_SDOF_N; i++)
             for (int j = 0; j < RB_SDOF_N; j++) {
                 term.m[i][j] /= k;
@@ -77,7 +77,7 @@ static void rb_mat4_exp(const rb_mat4 *a, rb_mat4 *e)
             }
     }
     for (int s = 0; s < squarings; s++)
-        rb_mat4_mul(e, e, e);
+        mat4_mul(e, e, e);
 }
 
 rb_status rb_sdof_step_init(rb_sdof_step *st, double omega, double xi, double dt)
@@ -95,7 +95,7 @@ rb_status rb_sdof_step_init(rb_sdof_step *st, double omega, double xi, double dt
                   {0.0, 0.0, 0.0, h},
                   {0.0, 0.0, 0.0, 0.0}}};
     rb_mat4 ex;
-    rb_mat4_exp(&a, &ex);
+    mat4_exp(&a, &ex);
     double (*e)[RB_SDOF_N] = ex.m;
     /* Back to (u, v, p0, p1): u_t = v / w, q = p / w^2, and
      * q_t = (p1 - p0) / (w^2 h). */

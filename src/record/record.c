@@ -18,14 +18,14 @@ void rb_record_opts_init(rb_record_opts *o)
     o->format = RB_REC_AUTO;
 }
 
-static int rb_record_ext_is(const char *path, const char *ext)
+static int record_ext_is(const char *path, const char *ext)
 {
     size_t n = strlen(path), e = strlen(ext);
     return n >= e && rb_rec_find(path + n - e, e, ext) == 0;
 }
 
 /* A line that holds data for a column file: not blank, not a comment. */
-static int rb_record_is_data_line(const rb_rec_reader *r, size_t *ntok, rb_rec_token *first)
+static int record_is_data_line(const rb_rec_reader *r, size_t *ntok, rb_rec_token *first)
 {
     size_t pos = 0, n = 0;
     rb_rec_token tok;
@@ -38,7 +38,7 @@ static int rb_record_is_data_line(const rb_rec_reader *r, size_t *ntok, rb_rec_t
     return n > 0 && first->s[0] != '#';
 }
 
-static rb_status rb_record_guess_columns(const rb_rec_reader *r, size_t ntok,
+static rb_status record_guess_columns(const rb_rec_reader *r, size_t ntok,
                                          const rb_rec_token *first,
                                          rb_record_format *fmt)
 {
@@ -57,7 +57,7 @@ static rb_status rb_record_guess_columns(const rb_rec_reader *r, size_t ntok,
 }
 
 /* A header format recognised from lines 1-4, or RB_REC_AUTO. */
-static rb_status rb_record_guess_header(rb_rec_reader *r, rb_record_format *fmt)
+static rb_status record_guess_header(rb_rec_reader *r, rb_record_format *fmt)
 {
     int got = 0;
     rb_status st;
@@ -77,7 +77,7 @@ static rb_status rb_record_guess_header(rb_rec_reader *r, rb_record_format *fmt)
 }
 
 /* No header: the first data row tells one column from two. */
-static rb_status rb_record_guess_body(rb_rec_reader *r, rb_record_format *fmt)
+static rb_status record_guess_body(rb_rec_reader *r, rb_record_format *fmt)
 {
     size_t ntok = 0;
     rb_rec_token first = {0};
@@ -85,8 +85,8 @@ static rb_status rb_record_guess_body(rb_rec_reader *r, rb_record_format *fmt)
     rb_status st;
     while ((st = rb_rec_reader_next(r, &got)) == RB_OK && got
            && r->lineno <= RB_REC_SNIFF_LINES)
-        if (rb_record_is_data_line(r, &ntok, &first))
-            return rb_record_guess_columns(r, ntok, &first, fmt);
+        if (record_is_data_line(r, &ntok, &first))
+            return record_guess_columns(r, ntok, &first, fmt);
     if (st != RB_OK)
         return st;
     if (got)
@@ -96,23 +96,23 @@ static rb_status rb_record_guess_body(rb_rec_reader *r, rb_record_format *fmt)
                            "found no data");
 }
 
-static rb_status rb_record_guess(rb_rec_reader *r, rb_record_format *fmt)
+static rb_status record_guess(rb_rec_reader *r, rb_record_format *fmt)
 {
-    rb_status st = rb_record_guess_header(r, fmt);
+    rb_status st = record_guess_header(r, fmt);
     if (st == RB_OK && *fmt == RB_REC_AUTO) {
-        if (rb_record_ext_is(r->path, ".at2"))
+        if (record_ext_is(r->path, ".at2"))
             *fmt = RB_REC_AT2;
-        else if (rb_record_ext_is(r->path, ".v2") || rb_record_ext_is(r->path, ".v2c"))
+        else if (record_ext_is(r->path, ".v2") || record_ext_is(r->path, ".v2c"))
             *fmt = RB_REC_COSMOS_V2;
     }
     if (st == RB_OK && *fmt == RB_REC_AUTO && (st = rb_rec_reader_rewind(r)) == RB_OK)
-        st = rb_record_guess_body(r, fmt);
+        st = record_guess_body(r, fmt);
     if (st != RB_OK)
         return st;
     return rb_rec_reader_rewind(r);
 }
 
-static rb_status rb_record_check_opts(const rb_rec_reader *r, const rb_record_opts *o)
+static rb_status record_check_opts(const rb_rec_reader *r, const rb_record_opts *o)
 {
     if (o->format < RB_REC_AUTO || o->format > RB_REC_ONE_COLUMN)
         return rb_rec_fail_at(r, RB_ERR_INVALID, 0, 0, "unknown record format %d",
@@ -126,13 +126,13 @@ static rb_status rb_record_check_opts(const rb_rec_reader *r, const rb_record_op
     return RB_OK;
 }
 
-static rb_status rb_record_dispatch(rb_rec_reader *r, const rb_record_opts *o,
+static rb_status record_dispatch(rb_rec_reader *r, const rb_record_opts *o,
                                     rb_series *out)
 {
     rb_record_format fmt = o->format;
     rb_status st = RB_OK;
     if (fmt == RB_REC_AUTO)
-        st = rb_record_guess(r, &fmt);
+        st = record_guess(r, &fmt);
     if (st != RB_OK)
         return st;
     switch (fmt) {
@@ -162,7 +162,7 @@ rb_status rb_record_read(const char *path, const rb_record_opts *opts,
     r.diag = diag;
     if (!path || !out)
         return rb_rec_fail_at(&r, RB_ERR_INVALID, 0, 0, "no file name or no output");
-    rb_status st = rb_record_check_opts(&r, opts);
+    rb_status st = record_check_opts(&r, opts);
     char why[600];
     if (st == RB_OK && !rb_sandbox_allows(path, why, sizeof why))
         st = rb_rec_fail_at(&r, RB_ERR_IO, 0, 0, "it lies outside the sandbox '%s' "
@@ -170,7 +170,7 @@ rb_status rb_record_read(const char *path, const rb_record_opts *opts,
     if (st == RB_OK)
         st = rb_rec_reader_open(&r, path, diag);
     if (st == RB_OK)
-        st = rb_record_dispatch(&r, opts, out);
+        st = record_dispatch(&r, opts, out);
     rb_rec_reader_close(&r);
     if (st != RB_OK)
         rb_series_free(out);

@@ -21,7 +21,7 @@ typedef struct {
     double to_mps2;
 } rb_at2_header;
 
-static size_t rb_at2_skip_blanks(const char *s, size_t i)
+static size_t at2_skip_blanks(const char *s, size_t i)
 {
     while (s[i] == ' ' || s[i] == '\t')
         i++;
@@ -29,12 +29,12 @@ static size_t rb_at2_skip_blanks(const char *s, size_t i)
 }
 
 /* Past "UNITS", its joining word ("OF", "ARE", "IN", "=") and blanks. */
-static size_t rb_at2_units_start(const rb_rec_reader *r, size_t i)
+static size_t at2_units_start(const rb_rec_reader *r, size_t i)
 {
     static const char *const joins[] = {"of ", "are ", "in ", "is "};
     for (int again = 1; again;) {
         again = 0;
-        i = rb_at2_skip_blanks(r->line, i);
+        i = at2_skip_blanks(r->line, i);
         if (r->line[i] == '=' || r->line[i] == ':') {
             i++;
             again = 1;
@@ -48,7 +48,7 @@ static size_t rb_at2_units_start(const rb_rec_reader *r, size_t i)
     return i;
 }
 
-static rb_status rb_at2_units(const rb_rec_reader *r, const rb_record_opts *o,
+static rb_status at2_units(const rb_rec_reader *r, const rb_record_opts *o,
                               double *to_mps2)
 {
     static const char *const others[] = {"velocity", "displacement"};
@@ -66,7 +66,7 @@ static rb_status rb_at2_units(const rb_rec_reader *r, const rb_record_opts *o,
         return rb_rec_fail(r, RB_ERR_INVALID, 1, "expected the units on line 3 "
                            "(e.g. 'UNITS OF G'), found none; give units_to_mps2");
     }
-    size_t start = rb_at2_units_start(r, (size_t)at + 5), end = start;
+    size_t start = at2_units_start(r, (size_t)at + 5), end = start;
     while (r->line[end] && r->line[end] != ' ' && r->line[end] != '\t'
            && r->line[end] != ',' && r->line[end] != ';')
         end++;
@@ -78,7 +78,7 @@ static rb_status rb_at2_units(const rb_rec_reader *r, const rb_record_opts *o,
                        "other text");
 }
 
-static rb_status rb_at2_dt_value(const rb_rec_reader *r, const rb_rec_token *tok,
+static rb_status at2_dt_value(const rb_rec_reader *r, const rb_rec_token *tok,
                                  double *dt)
 {
     rb_status st = rb_rec_token_number(r, tok, "the time step DT in seconds", dt);
@@ -91,7 +91,7 @@ static rb_status rb_at2_dt_value(const rb_rec_reader *r, const rb_rec_token *tok
 }
 
 /* The number of points from tok, within 1..limit. */
-static rb_status rb_at2_count(const rb_rec_reader *r, const rb_rec_token *tok,
+static rb_status at2_count(const rb_rec_reader *r, const rb_rec_token *tok,
                               size_t limit, rb_at2_header *h)
 {
     rb_status st = rb_rec_token_count(r, tok, "the number of points NPTS", limit,
@@ -107,12 +107,12 @@ static rb_status rb_at2_count(const rb_rec_reader *r, const rb_rec_token *tok,
 }
 
 /* "NPTS= n, DT= dt": returns RB_OK with found = 0 if the line is not keyed. */
-static rb_status rb_at2_keyed(const rb_rec_reader *r, size_t limit, rb_at2_header *h,
+static rb_status at2_keyed(const rb_rec_reader *r, size_t limit, rb_at2_header *h,
                               int *found)
 {
     rb_rec_token tok;
     long at = rb_rec_find(r->line, r->len, "npts");
-    size_t pos = at < 0 ? 0 : rb_at2_skip_blanks(r->line, (size_t)at + 4);
+    size_t pos = at < 0 ? 0 : at2_skip_blanks(r->line, (size_t)at + 4);
     *found = at >= 0 && (r->line[pos] == '=' || r->line[pos] == ':');
     if (!*found)
         return RB_OK;
@@ -120,11 +120,11 @@ static rb_status rb_at2_keyed(const rb_rec_reader *r, size_t limit, rb_at2_heade
     if (!rb_rec_token_next(r->line, &pos, 1, &tok))
         return rb_rec_fail(r, RB_ERR_PARSE, (int)pos + 1, "expected the number of "
                            "points after 'NPTS=', found the end of the line");
-    rb_status st = rb_at2_count(r, &tok, limit, h);
+    rb_status st = at2_count(r, &tok, limit, h);
     if (st != RB_OK)
         return st;
     long dt_at = rb_rec_find(r->line + pos, r->len - pos, "dt");
-    size_t dpos = dt_at < 0 ? r->len : rb_at2_skip_blanks(r->line, pos + (size_t)dt_at + 2);
+    size_t dpos = dt_at < 0 ? r->len : at2_skip_blanks(r->line, pos + (size_t)dt_at + 2);
     if (dt_at < 0 || (r->line[dpos] != '=' && r->line[dpos] != ':'))
         return rb_rec_fail(r, RB_ERR_PARSE, (int)pos + 1, "expected 'DT= <step> SEC' "
                            "after the number of points, found none");
@@ -132,11 +132,11 @@ static rb_status rb_at2_keyed(const rb_rec_reader *r, size_t limit, rb_at2_heade
     if (!rb_rec_token_next(r->line, &dpos, 1, &tok))
         return rb_rec_fail(r, RB_ERR_PARSE, (int)dpos + 1, "expected the time step "
                            "after 'DT=', found the end of the line");
-    return rb_at2_dt_value(r, &tok, &h->dt_s);
+    return at2_dt_value(r, &tok, &h->dt_s);
 }
 
 /* "n dt ..." as the first two tokens. */
-static rb_status rb_at2_positional(const rb_rec_reader *r, size_t limit, rb_at2_header *h)
+static rb_status at2_positional(const rb_rec_reader *r, size_t limit, rb_at2_header *h)
 {
     rb_rec_token tok;
     size_t pos = 0;
@@ -148,29 +148,29 @@ static rb_status rb_at2_positional(const rb_rec_reader *r, size_t limit, rb_at2_
         return rb_rec_fail(r, RB_ERR_PARSE, tok.col, "expected 'NPTS= <n>, DT= <step> "
                            "SEC' on line 4, found other text");
     }
-    rb_status st = rb_at2_count(r, &tok, limit, h);
+    rb_status st = at2_count(r, &tok, limit, h);
     if (st != RB_OK)
         return st;
     if (!rb_rec_token_next(r->line, &pos, 1, &tok))
         return rb_rec_fail(r, RB_ERR_PARSE, (int)pos + 1, "expected the time step "
                            "after the number of points, found the end of the line");
-    return rb_at2_dt_value(r, &tok, &h->dt_s);
+    return at2_dt_value(r, &tok, &h->dt_s);
 }
 
-static rb_status rb_at2_npts_dt(const rb_rec_reader *r, const rb_record_opts *o,
+static rb_status at2_npts_dt(const rb_rec_reader *r, const rb_record_opts *o,
                                 rb_at2_header *h)
 {
     size_t limit = rb_rec_max_points(o);
     int keyed = 0;
-    rb_status st = rb_at2_keyed(r, limit, h, &keyed);
+    rb_status st = at2_keyed(r, limit, h, &keyed);
     if (st == RB_OK && !keyed)
-        st = rb_at2_positional(r, limit, h);
+        st = at2_positional(r, limit, h);
     if (st != RB_OK)
         return st;
     return rb_rec_check_dt(r, o, h->dt_s, RB_AT2_DT_REL_TOL, r->lineno, 1);
 }
 
-static rb_status rb_at2_header_read(rb_rec_reader *r, const rb_record_opts *o,
+static rb_status at2_header_read(rb_rec_reader *r, const rb_record_opts *o,
                                     rb_at2_header *h)
 {
     for (long k = 1; k <= 4; k++) {
@@ -181,15 +181,15 @@ static rb_status rb_at2_header_read(rb_rec_reader *r, const rb_record_opts *o,
         if (!got)
             return rb_rec_fail_eof(r, RB_ERR_PARSE, "expected the 4 header lines of "
                                    "a PEER AT2 record, found the end of the file");
-        if (k == 3 && (st = rb_at2_units(r, o, &h->to_mps2)) != RB_OK)
+        if (k == 3 && (st = at2_units(r, o, &h->to_mps2)) != RB_OK)
             return st;
-        if (k == 4 && (st = rb_at2_npts_dt(r, o, h)) != RB_OK)
+        if (k == 4 && (st = at2_npts_dt(r, o, h)) != RB_OK)
             return st;
     }
     return RB_OK;
 }
 
-static rb_status rb_at2_values(rb_rec_reader *r, const rb_at2_header *h, rb_rec_values *b)
+static rb_status at2_values(rb_rec_reader *r, const rb_at2_header *h, rb_rec_values *b)
 {
     int got = 0;
     rb_status st;
@@ -216,11 +216,11 @@ rb_status rb_record_read_at2(rb_rec_reader *r, const rb_record_opts *o, rb_serie
 {
     rb_at2_header h = {0, 0.0, 0.0};
     rb_rec_values b;
-    rb_status st = rb_at2_header_read(r, o, &h);
+    rb_status st = at2_header_read(r, o, &h);
     if (st != RB_OK)
         return st;
     rb_rec_values_init(&b, h.npts);
-    st = rb_at2_values(r, &h, &b);
+    st = at2_values(r, &h, &b);
     if (st == RB_OK)
         rb_rec_values_move(&b, h.dt_s, 0.0, out);
     rb_rec_values_free(&b);

@@ -20,7 +20,7 @@ typedef struct {
     size_t rows;
 } rb_cols_clock;
 
-static rb_status rb_cols_need_units(const rb_rec_reader *r, const rb_record_opts *o)
+static rb_status cols_need_units(const rb_rec_reader *r, const rb_record_opts *o)
 {
     if (o->units_to_mps2 > 0.0)
         return RB_OK;
@@ -30,7 +30,7 @@ static rb_status rb_cols_need_units(const rb_rec_reader *r, const rb_record_opts
 
 /* The values of a data row into tok[]; *n is 0 for a blank or comment line.
  * More than want values is an error at the first extra one. */
-static rb_status rb_cols_split(const rb_rec_reader *r, size_t want, rb_rec_token *tok,
+static rb_status cols_split(const rb_rec_reader *r, size_t want, rb_rec_token *tok,
                                size_t *n)
 {
     size_t pos = 0;
@@ -54,7 +54,7 @@ static rb_status rb_cols_split(const rb_rec_reader *r, size_t want, rb_rec_token
     return RB_OK;
 }
 
-static rb_status rb_cols_tick(const rb_rec_reader *r, rb_cols_clock *c,
+static rb_status cols_tick(const rb_rec_reader *r, rb_cols_clock *c,
                               const rb_rec_token *tok, double t)
 {
     if (c->rows == 0) {
@@ -76,7 +76,7 @@ static rb_status rb_cols_tick(const rb_rec_reader *r, rb_cols_clock *c,
 }
 
 /* Every data row of the file; clock is NULL for one-column records. */
-static rb_status rb_cols_rows(rb_rec_reader *r, double to_mps2, rb_cols_clock *clock,
+static rb_status cols_rows(rb_rec_reader *r, double to_mps2, rb_cols_clock *clock,
                               rb_rec_values *b)
 {
     size_t want = clock ? 2 : 1, n = 0;
@@ -85,12 +85,12 @@ static rb_status rb_cols_rows(rb_rec_reader *r, double to_mps2, rb_cols_clock *c
     rb_status st;
     while ((st = rb_rec_reader_next(r, &got)) == RB_OK && got) {
         double t = 0.0, a = 0.0;
-        if ((st = rb_cols_split(r, want, tok, &n)) != RB_OK)
+        if ((st = cols_split(r, want, tok, &n)) != RB_OK)
             return st;
         if (n == 0)
             continue;
         if (clock && ((st = rb_rec_token_number(r, &tok[0], "a time in seconds", &t))
-                      != RB_OK || (st = rb_cols_tick(r, clock, &tok[0], t)) != RB_OK))
+                      != RB_OK || (st = cols_tick(r, clock, &tok[0], t)) != RB_OK))
             return st;
         if ((st = rb_rec_token_number(r, &tok[want - 1], "an acceleration value", &a))
             != RB_OK || (st = rb_rec_values_push(b, r, &tok[want - 1], a, to_mps2)) != RB_OK)
@@ -106,11 +106,11 @@ rb_status rb_record_read_two_column(rb_rec_reader *r, const rb_record_opts *o,
 {
     rb_cols_clock clock = {0.0, 0.0, 0};
     rb_rec_values b;
-    rb_status st = rb_cols_need_units(r, o);
+    rb_status st = cols_need_units(r, o);
     if (st != RB_OK)
         return st;
     rb_rec_values_init(&b, rb_rec_max_points(o));
-    st = rb_cols_rows(r, o->units_to_mps2, &clock, &b);
+    st = cols_rows(r, o->units_to_mps2, &clock, &b);
     double dt = o->dt_s;
     if (st == RB_OK && clock.rows > 1) {
         dt = (clock.t_prev - clock.t0) / (double)(clock.rows - 1);
@@ -132,11 +132,11 @@ rb_status rb_record_read_one_column(rb_rec_reader *r, const rb_record_opts *o,
     if (!(o->dt_s > 0.0))
         return rb_rec_fail_at(r, RB_ERR_INVALID, 0, 0, "one-column records do not "
                               "state their time step: give dt_s > 0");
-    rb_status st = rb_cols_need_units(r, o);
+    rb_status st = cols_need_units(r, o);
     if (st != RB_OK)
         return st;
     rb_rec_values_init(&b, rb_rec_max_points(o));
-    st = rb_cols_rows(r, o->units_to_mps2, NULL, &b);
+    st = cols_rows(r, o->units_to_mps2, NULL, &b);
     if (st == RB_OK)
         rb_rec_values_move(&b, o->dt_s, 0.0, out);
     rb_rec_values_free(&b);

@@ -44,7 +44,7 @@ typedef struct {
     long data_line;
 } rb_cosmos;
 
-static rb_status rb_cosmos_next(rb_rec_reader *r, const char *what)
+static rb_status cosmos_next(rb_rec_reader *r, const char *what)
 {
     int got = 0;
     rb_status st = rb_rec_reader_next(r, &got);
@@ -55,7 +55,7 @@ static rb_status rb_cosmos_next(rb_rec_reader *r, const char *what)
 }
 
 /* Width of the fields of "Format= (8F10.5)" on the current line. */
-static rb_cosmos_fmt rb_cosmos_format(const rb_rec_reader *r)
+static rb_cosmos_fmt cosmos_format(const rb_rec_reader *r)
 {
     rb_cosmos_fmt f = {0};
     long at = rb_rec_find(r->line, r->len, "format");
@@ -77,7 +77,7 @@ static rb_cosmos_fmt rb_cosmos_format(const rb_rec_reader *r)
 
 /* The next field of the current line; 0 at the end. A blank field with
  * more text after it comes back empty, so that parsing it fails. */
-static int rb_cosmos_field(const rb_rec_reader *r, const rb_cosmos_fmt *f, size_t *pos,
+static int cosmos_field(const rb_rec_reader *r, const rb_cosmos_fmt *f, size_t *pos,
                            rb_rec_token *tok)
 {
     if (f->width == 0)
@@ -94,9 +94,9 @@ static int rb_cosmos_field(const rb_rec_reader *r, const rb_cosmos_fmt *f, size_
     return rb_rec_token_next(r->line, &rest, 0, &later);
 }
 
-static rb_status rb_cosmos_text_header(rb_rec_reader *r, rb_cosmos *c)
+static rb_status cosmos_text_header(rb_rec_reader *r, rb_cosmos *c)
 {
-    rb_status st = rb_cosmos_next(r, "a COSMOS text header");
+    rb_status st = cosmos_next(r, "a COSMOS text header");
     if (st != RB_OK)
         return st;
     long at = rb_rec_find(r->line, r->len, "(format v");
@@ -116,7 +116,7 @@ static rb_status rb_cosmos_text_header(rb_rec_reader *r, rb_cosmos *c)
                                "found %zu", RB_COSMOS_MAX_TEXT_LINES, c->text_lines);
     }
     while ((size_t)r->lineno < c->text_lines) {
-        if ((st = rb_cosmos_next(r, "the rest of the COSMOS text header")) != RB_OK)
+        if ((st = cosmos_next(r, "the rest of the COSMOS text header")) != RB_OK)
             return st;
         long colon = rb_rec_find(r->line, r->len, "unspecified:");
         pos = colon < 0 ? 0 : (size_t)colon + 12;
@@ -129,12 +129,12 @@ static rb_status rb_cosmos_text_header(rb_rec_reader *r, rb_cosmos *c)
 }
 
 /* "<n> <what> values follow on <k> lines, Format= (...)". */
-static rb_status rb_cosmos_block_head(rb_rec_reader *r, const char *what, size_t *n,
+static rb_status cosmos_block_head(rb_rec_reader *r, const char *what, size_t *n,
                                       size_t *lines, rb_cosmos_fmt *f)
 {
     rb_rec_token tok;
     size_t pos = 0;
-    rb_status st = rb_cosmos_next(r, what);
+    rb_status st = cosmos_next(r, what);
     if (st != RB_OK)
         return st;
     long on = rb_rec_find(r->line, r->len, "follow on");
@@ -156,23 +156,23 @@ static rb_status rb_cosmos_block_head(rb_rec_reader *r, const char *what, size_t
     if (*n > RB_COSMOS_MAX_HEADER_VALUES || *lines > RB_COSMOS_MAX_HEADER_VALUES)
         return rb_rec_fail(r, RB_ERR_LIMIT, 1, "more than %d header values or lines",
                            RB_COSMOS_MAX_HEADER_VALUES);
-    *f = rb_cosmos_format(r);
+    *f = cosmos_format(r);
     return RB_OK;
 }
 
 /* An integer or real header; the first RB_COSMOS_KEPT values go to keep. */
-static rb_status rb_cosmos_header(rb_rec_reader *r, const char *what, double *keep,
+static rb_status cosmos_header(rb_rec_reader *r, const char *what, double *keep,
                                   size_t *kept)
 {
     size_t n = 0, lines = 0, seen = 0;
     rb_cosmos_fmt f;
-    rb_status st = rb_cosmos_block_head(r, what, &n, &lines, &f);
+    rb_status st = cosmos_block_head(r, what, &n, &lines, &f);
     for (size_t k = 0; st == RB_OK && k < lines; k++) {
-        if ((st = rb_cosmos_next(r, "header values")) != RB_OK)
+        if ((st = cosmos_next(r, "header values")) != RB_OK)
             return st;
         size_t pos = 0;
         rb_rec_token tok;
-        while (st == RB_OK && rb_cosmos_field(r, &f, &pos, &tok)) {
+        while (st == RB_OK && cosmos_field(r, &f, &pos, &tok)) {
             double x = 0.0;
             if ((st = rb_rec_token_number(r, &tok, "a header value", &x)) == RB_OK
                 && seen < RB_COSMOS_KEPT)
@@ -187,16 +187,16 @@ static rb_status rb_cosmos_header(rb_rec_reader *r, const char *what, double *ke
     return st;
 }
 
-static int rb_cosmos_known(const rb_cosmos *c, double x, double null)
+static int cosmos_known(const rb_cosmos *c, double x, double null)
 {
     return x != null && x != c->int_null && x != c->real_null;
 }
 
 /* Skip "<m> Comment line(s) follow ..." and its lines, if present, and
  * leave the data line current. */
-static rb_status rb_cosmos_skip_comments(rb_rec_reader *r)
+static rb_status cosmos_skip_comments(rb_rec_reader *r)
 {
-    rb_status st = rb_cosmos_next(r, "the comment or data line");
+    rb_status st = cosmos_next(r, "the comment or data line");
     if (st != RB_OK || rb_rec_find(r->line, r->len, "comment") < 0)
         return st;
     size_t pos = 0, n = 0;
@@ -207,13 +207,13 @@ static rb_status rb_cosmos_skip_comments(rb_rec_reader *r)
                                  RB_COSMOS_MAX_HEADER_VALUES, &n)) != RB_OK)
         return st;
     for (size_t k = 0; k < n; k++)
-        if ((st = rb_cosmos_next(r, "a comment line")) != RB_OK)
+        if ((st = cosmos_next(r, "a comment line")) != RB_OK)
             return st;
-    return rb_cosmos_next(r, "the data line ('<n> acceleration pts, ...')");
+    return cosmos_next(r, "the data line ('<n> acceleration pts, ...')");
 }
 
 /* "<npts> acceleration pts, approx <s> secs, units=<u> (<code>), Format=(...)" */
-static rb_status rb_cosmos_data_line(rb_rec_reader *r, const rb_record_opts *o,
+static rb_status cosmos_data_line(rb_rec_reader *r, const rb_record_opts *o,
                                      rb_cosmos *c, double *text_units)
 {
     rb_rec_token tok;
@@ -240,13 +240,13 @@ static rb_status rb_cosmos_data_line(rb_rec_reader *r, const rb_record_opts *o,
             end++;
         *text_units = rb_rec_units_lookup(r->line + start, end - start);
     }
-    c->data_fmt = rb_cosmos_format(r);
+    c->data_fmt = cosmos_format(r);
     c->data_line = r->lineno;
     return RB_OK;
 }
 
 /* Physical-units codes of COSMOS Table 2 that are accelerations. */
-static double rb_cosmos_units_code(double code)
+static double cosmos_units_code(double code)
 {
     static const struct { int code; double to_mps2; } table[] = {
         {2, RB_G0}, {4, 1e-2}, {7, 0.0254}, {10, 1e-2}, {11, 1e-3 * RB_G0}};
@@ -256,11 +256,11 @@ static double rb_cosmos_units_code(double code)
     return 0.0;
 }
 
-static rb_status rb_cosmos_resolve(const rb_rec_reader *r, const rb_record_opts *o,
+static rb_status cosmos_resolve(const rb_rec_reader *r, const rb_record_opts *o,
                                    rb_cosmos *c, double text_units)
 {
     if (c->n_ints > RB_COSMOS_INT_UNITS)
-        c->to_mps2 = rb_cosmos_units_code(c->ints[RB_COSMOS_INT_UNITS]);
+        c->to_mps2 = cosmos_units_code(c->ints[RB_COSMOS_INT_UNITS]);
     if (c->to_mps2 == 0.0)
         c->to_mps2 = text_units > 0.0 ? text_units : o->units_to_mps2;
     if (!(c->to_mps2 > 0.0))
@@ -269,10 +269,10 @@ static rb_status rb_cosmos_resolve(const rb_rec_reader *r, const rb_record_opts 
                               "found neither; give units_to_mps2");
     c->dt_s = 0.0;
     if (c->n_reals > RB_COSMOS_REAL_DT_MS
-        && rb_cosmos_known(c, c->reals[RB_COSMOS_REAL_DT_MS], -999.0))
+        && cosmos_known(c, c->reals[RB_COSMOS_REAL_DT_MS], -999.0))
         c->dt_s = c->reals[RB_COSMOS_REAL_DT_MS] * 1e-3;
     else if (c->n_reals > RB_COSMOS_REAL_DT_S
-             && rb_cosmos_known(c, c->reals[RB_COSMOS_REAL_DT_S], -999.0))
+             && cosmos_known(c, c->reals[RB_COSMOS_REAL_DT_S], -999.0))
         c->dt_s = c->reals[RB_COSMOS_REAL_DT_S];
     if (!(c->dt_s > 0.0))
         return rb_rec_fail_at(r, RB_ERR_INVALID, c->data_line, 1, "expected the time "
@@ -283,12 +283,12 @@ static rb_status rb_cosmos_resolve(const rb_rec_reader *r, const rb_record_opts 
 
 /* After the last value: the rest of the line and the next line must not
  * hold more values (the next line is "End-of-data ..." or another block). */
-static rb_status rb_cosmos_no_more(rb_rec_reader *r, const rb_cosmos *c, size_t pos)
+static rb_status cosmos_no_more(rb_rec_reader *r, const rb_cosmos *c, size_t pos)
 {
     rb_rec_token tok;
     double x;
     int got = 0;
-    if (rb_cosmos_field(r, &c->data_fmt, &pos, &tok))
+    if (cosmos_field(r, &c->data_fmt, &pos, &tok))
         return rb_rec_fail(r, RB_ERR_PARSE, tok.col, "the data line says %zu points, "
                            "found more values than that", c->npts);
     rb_status st = rb_rec_reader_next(r, &got);
@@ -301,7 +301,7 @@ static rb_status rb_cosmos_no_more(rb_rec_reader *r, const rb_cosmos *c, size_t 
     return RB_OK;
 }
 
-static rb_status rb_cosmos_values(rb_rec_reader *r, const rb_cosmos *c, rb_rec_values *b)
+static rb_status cosmos_values(rb_rec_reader *r, const rb_cosmos *c, rb_rec_values *b)
 {
     rb_status st = RB_OK;
     while (b->n < c->npts) {
@@ -317,14 +317,14 @@ static rb_status rb_cosmos_values(rb_rec_reader *r, const rb_cosmos *c, rb_rec_v
                                "found the end of the block after %zu", c->npts, b->n);
         size_t pos = 0;
         rb_rec_token tok;
-        while (b->n < c->npts && rb_cosmos_field(r, &c->data_fmt, &pos, &tok)) {
+        while (b->n < c->npts && cosmos_field(r, &c->data_fmt, &pos, &tok)) {
             double x;
             if ((st = rb_rec_token_number(r, &tok, "an acceleration value", &x)) != RB_OK
                 || (st = rb_rec_values_push(b, r, &tok, x, c->to_mps2)) != RB_OK)
                 return st;
         }
         if (b->n == c->npts)
-            return rb_cosmos_no_more(r, c, pos);
+            return cosmos_no_more(r, c, pos);
     }
     return st;
 }
@@ -336,22 +336,22 @@ rb_status rb_record_read_cosmos(rb_rec_reader *r, const rb_record_opts *o, rb_se
     memset(&c, 0, sizeof c);
     c.int_null = -999.0;
     c.real_null = -999.0;
-    rb_status st = rb_cosmos_text_header(r, &c);
+    rb_status st = cosmos_text_header(r, &c);
     if (st == RB_OK)
-        st = rb_cosmos_header(r, "Integer-header", c.ints, &c.n_ints);
+        st = cosmos_header(r, "Integer-header", c.ints, &c.n_ints);
     if (st == RB_OK)
-        st = rb_cosmos_header(r, "Real-header", c.reals, &c.n_reals);
+        st = cosmos_header(r, "Real-header", c.reals, &c.n_reals);
     if (st == RB_OK)
-        st = rb_cosmos_skip_comments(r);
+        st = cosmos_skip_comments(r);
     if (st == RB_OK)
-        st = rb_cosmos_data_line(r, o, &c, &text_units);
+        st = cosmos_data_line(r, o, &c, &text_units);
     if (st == RB_OK)
-        st = rb_cosmos_resolve(r, o, &c, text_units);
+        st = cosmos_resolve(r, o, &c, text_units);
     if (st != RB_OK)
         return st;
     rb_rec_values b;
     rb_rec_values_init(&b, c.npts);
-    st = rb_cosmos_values(r, &c, &b);
+    st = cosmos_values(r, &c, &b);
     if (st == RB_OK)
         rb_rec_values_move(&b, c.dt_s, 0.0, out);
     rb_rec_values_free(&b);

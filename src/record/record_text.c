@@ -21,17 +21,17 @@
  * much longer is not a number a record would hold. */
 #define RB_REC_NUMBER_MAX 64
 
-static int rb_rec_is_blank(int c)
+static int rec_is_blank(int c)
 {
     return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
 }
 
-static int rb_rec_is_digit(int c)
+static int rec_is_digit(int c)
 {
     return c >= '0' && c <= '9';
 }
 
-static int rb_rec_lower(int c)
+static int rec_lower(int c)
 {
     return (c >= 'A' && c <= 'Z') ? c - 'A' + 'a' : c;
 }
@@ -97,7 +97,7 @@ rb_status rb_rec_reader_rewind(rb_rec_reader *r)
 }
 
 /* Room for one more character and the terminating NUL. */
-static rb_status rb_rec_reader_grow(rb_rec_reader *r)
+static rb_status rec_reader_grow(rb_rec_reader *r)
 {
     if (r->len + 2 <= r->cap)
         return RB_OK;
@@ -116,7 +116,7 @@ rb_status rb_rec_reader_next(rb_rec_reader *r, int *got)
 {
     int c;
     *got = 0;
-    if (!r->line && rb_rec_reader_grow(r) != RB_OK)
+    if (!r->line && rec_reader_grow(r) != RB_OK)
         return RB_ERR_NOMEM;
     c = getc(r->fp);
     /* At the end the last line stays, so that an error can point just
@@ -144,7 +144,7 @@ rb_status rb_rec_reader_next(rb_rec_reader *r, int *got)
             return rb_rec_fail_at(r, RB_ERR_LIMIT, r->lineno, RB_REC_LINE_MAX + 1,
                                   "line longer than %d characters (the limit)",
                                   RB_REC_LINE_MAX);
-        if (rb_rec_reader_grow(r) != RB_OK)
+        if (rec_reader_grow(r) != RB_OK)
             return RB_ERR_NOMEM;
         r->line[r->len++] = (char)c;
     }
@@ -156,11 +156,11 @@ rb_status rb_rec_reader_next(rb_rec_reader *r, int *got)
     return RB_OK;
 }
 
-static rb_status rb_rec_vfail(const rb_rec_reader *r, rb_status status, long line,
+static rb_status rec_vfail(const rb_rec_reader *r, rb_status status, long line,
                               int col, const char *fmt, va_list ap)
     RB_REC_PRINTF(5, 0);
 
-static rb_status rb_rec_vfail(const rb_rec_reader *r, rb_status status, long line,
+static rb_status rec_vfail(const rb_rec_reader *r, rb_status status, long line,
                               int col, const char *fmt, va_list ap)
 {
     return rb_diag_vset(r->diag, status, r->path, line > 0 && line <= 0x7fffffffL
@@ -172,7 +172,7 @@ rb_status rb_rec_fail_at(const rb_rec_reader *r, rb_status status, long line,
 {
     va_list ap;
     va_start(ap, fmt);
-    rb_rec_vfail(r, status, line, col, fmt, ap);
+    rec_vfail(r, status, line, col, fmt, ap);
     va_end(ap);
     return status;
 }
@@ -182,7 +182,7 @@ rb_status rb_rec_fail(const rb_rec_reader *r, rb_status status, int col,
 {
     va_list ap;
     va_start(ap, fmt);
-    rb_rec_vfail(r, status, r->lineno, col, fmt, ap);
+    rec_vfail(r, status, r->lineno, col, fmt, ap);
     va_end(ap);
     return status;
 }
@@ -194,7 +194,7 @@ rb_status rb_rec_fail_eof(const rb_rec_reader *r, rb_status status,
     long line = r->lineno > 0 ? r->lineno : 1;
     int col = r->lineno > 0 ? (int)r->len + 1 : 1;
     va_start(ap, fmt);
-    rb_rec_vfail(r, status, line, col, fmt, ap);
+    rec_vfail(r, status, line, col, fmt, ap);
     va_end(ap);
     return status;
 }
@@ -202,7 +202,7 @@ rb_status rb_rec_fail_eof(const rb_rec_reader *r, rb_status status,
 int rb_rec_token_next(const char *line, size_t *pos, int commas, rb_rec_token *tok)
 {
     size_t i = *pos;
-    while (line[i] && (rb_rec_is_blank((unsigned char)line[i])
+    while (line[i] && (rec_is_blank((unsigned char)line[i])
                        || (commas && line[i] == ',')))
         i++;
     if (!line[i]) {
@@ -210,7 +210,7 @@ int rb_rec_token_next(const char *line, size_t *pos, int commas, rb_rec_token *t
         return 0;
     }
     size_t start = i;
-    while (line[i] && !rb_rec_is_blank((unsigned char)line[i])
+    while (line[i] && !rec_is_blank((unsigned char)line[i])
            && !(commas && line[i] == ','))
         i++;
     tok->s = line + start;
@@ -226,9 +226,9 @@ int rb_rec_token_field(const rb_rec_reader *r, size_t start, size_t width,
     if (start >= r->len)
         return 0;
     size_t end = start + width < r->len ? start + width : r->len, field = start;
-    while (start < end && rb_rec_is_blank((unsigned char)r->line[start]))
+    while (start < end && rec_is_blank((unsigned char)r->line[start]))
         start++;
-    while (end > start && rb_rec_is_blank((unsigned char)r->line[end - 1]))
+    while (end > start && rec_is_blank((unsigned char)r->line[end - 1]))
         end--;
     tok->s = r->line + start;
     tok->len = end - start;
@@ -241,8 +241,8 @@ long rb_rec_find(const char *s, size_t len, const char *word)
     size_t w = strlen(word);
     for (size_t i = 0; w <= len && i <= len - w; i++) {
         size_t k = 0;
-        while (k < w && rb_rec_lower((unsigned char)s[i + k])
-                            == rb_rec_lower((unsigned char)word[k]))
+        while (k < w && rec_lower((unsigned char)s[i + k])
+                            == rec_lower((unsigned char)word[k]))
             k++;
         if (k == w)
             return (long)i;
@@ -252,25 +252,25 @@ long rb_rec_find(const char *s, size_t len, const char *word)
 
 /* Length of the decimal number at the start of s (len bytes): sign,
  * digits, point, exponent with E or D; 0 when s does not start with one. */
-static size_t rb_rec_scan_number(const char *s, size_t len)
+static size_t rec_scan_number(const char *s, size_t len)
 {
     size_t i = 0, digits = 0;
     if (i < len && (s[i] == '+' || s[i] == '-'))
         i++;
-    for (; i < len && rb_rec_is_digit((unsigned char)s[i]); i++)
+    for (; i < len && rec_is_digit((unsigned char)s[i]); i++)
         digits++;
     if (i < len && s[i] == '.')
-        for (i++; i < len && rb_rec_is_digit((unsigned char)s[i]); i++)
+        for (i++; i < len && rec_is_digit((unsigned char)s[i]); i++)
             digits++;
     if (digits == 0)
         return 0;
-    if (i < len && (rb_rec_lower((unsigned char)s[i]) == 'e'
-                    || rb_rec_lower((unsigned char)s[i]) == 'd')) {
+    if (i < len && (rec_lower((unsigned char)s[i]) == 'e'
+                    || rec_lower((unsigned char)s[i]) == 'd')) {
         size_t j = i + 1;
         if (j < len && (s[j] == '+' || s[j] == '-'))
             j++;
-        if (j < len && rb_rec_is_digit((unsigned char)s[j])) {
-            while (j < len && rb_rec_is_digit((unsigned char)s[j]))
+        if (j < len && rec_is_digit((unsigned char)s[j])) {
+            while (j < len && rec_is_digit((unsigned char)s[j]))
                 j++;
             i = j;
         }
@@ -278,7 +278,7 @@ static size_t rb_rec_scan_number(const char *s, size_t len)
     return i;
 }
 
-static int rb_rec_is_nonfinite_word(const char *s, size_t len)
+static int rec_is_nonfinite_word(const char *s, size_t len)
 {
     if (len > 0 && (*s == '+' || *s == '-')) {
         s++;
@@ -291,9 +291,9 @@ static int rb_rec_is_nonfinite_word(const char *s, size_t len)
 rb_status rb_rec_number_parse(const char *s, size_t len, double *out)
 {
     char buf[RB_REC_NUMBER_MAX + 1];
-    if (rb_rec_is_nonfinite_word(s, len))
+    if (rec_is_nonfinite_word(s, len))
         return RB_ERR_INVALID;
-    if (len == 0 || len > RB_REC_NUMBER_MAX || rb_rec_scan_number(s, len) != len)
+    if (len == 0 || len > RB_REC_NUMBER_MAX || rec_scan_number(s, len) != len)
         return RB_ERR_PARSE;
     for (size_t i = 0; i < len; i++)
         buf[i] = (s[i] == 'd' || s[i] == 'D') ? 'e' : s[i];
@@ -324,7 +324,7 @@ rb_status rb_rec_token_number(const rb_rec_reader *r, const rb_rec_token *tok,
                        "not a number", what);
 }
 
-static rb_status rb_rec_count_fail(const rb_rec_reader *r, const rb_rec_token *tok,
+static rb_status rec_count_fail(const rb_rec_reader *r, const rb_rec_token *tok,
                                    const char *what)
 {
     return rb_rec_fail(r, RB_ERR_PARSE, tok->col,
@@ -336,10 +336,10 @@ rb_status rb_rec_token_count(const rb_rec_reader *r, const rb_rec_token *tok,
 {
     size_t n = 0, i = (tok->len > 0 && tok->s[0] == '+') ? 1 : 0;
     if (i == tok->len)
-        return rb_rec_count_fail(r, tok, what);
+        return rec_count_fail(r, tok, what);
     for (; i < tok->len; i++) {
-        if (!rb_rec_is_digit((unsigned char)tok->s[i]))
-            return rb_rec_count_fail(r, tok, what);
+        if (!rec_is_digit((unsigned char)tok->s[i]))
+            return rec_count_fail(r, tok, what);
         /* limit is far below SIZE_MAX / 10, so this cannot wrap. */
         if (n <= limit)
             n = n * 10 + (size_t)(tok->s[i] - '0');

@@ -14,23 +14,23 @@ typedef struct {
     double to_mps2;
 } rb_rec_unit;
 
-static const rb_rec_unit rb_rec_whole_units[] = {
+static const rb_rec_unit rec_whole_units[] = {
     {"g", RB_G0}, {"gs", RB_G0}, {"mg", 1e-3 * RB_G0},
     {"gal", 1e-2}, {"gals", 1e-2},
 };
 
-static const rb_rec_unit rb_rec_lengths[] = {
+static const rb_rec_unit rec_lengths[] = {
     {"m", 1.0}, {"cm", 1e-2}, {"mm", 1e-3},
     {"in", 0.0254}, {"inch", 0.0254}, {"ft", 0.3048},
 };
 
-static const char *const rb_rec_squares[] = {"s^2", "s2", "s/s", "s**2", "s\xc2\xb2"};
+static const char *const rec_squares[] = {"s^2", "s2", "s/s", "s**2", "s\xc2\xb2"};
 
 #define RB_REC_COUNT(a) (sizeof(a) / sizeof((a)[0]))
 
 /* Lower-case, without blanks or enclosing brackets, "sec" as "s". 0 if
  * the result does not fit. */
-static int rb_rec_units_normalise(const char *name, size_t len, char *out)
+static int rec_units_normalise(const char *name, size_t len, char *out)
 {
     size_t j = 0;
     while (len > 0 && strchr(" \t([", name[0])) {
@@ -55,19 +55,19 @@ static int rb_rec_units_normalise(const char *name, size_t len, char *out)
     return j > 0;
 }
 
-static double rb_rec_units_per_square(const char *u)
+static double rec_units_per_square(const char *u)
 {
     const char *slash = strchr(u, '/');
     if (!slash)
         return 0.0;
     size_t len_part = (size_t)(slash - u);
-    for (size_t i = 0; i < RB_REC_COUNT(rb_rec_squares); i++) {
-        if (strcmp(slash + 1, rb_rec_squares[i]) != 0)
+    for (size_t i = 0; i < RB_REC_COUNT(rec_squares); i++) {
+        if (strcmp(slash + 1, rec_squares[i]) != 0)
             continue;
-        for (size_t k = 0; k < RB_REC_COUNT(rb_rec_lengths); k++)
-            if (strlen(rb_rec_lengths[k].name) == len_part
-                && memcmp(u, rb_rec_lengths[k].name, len_part) == 0)
-                return rb_rec_lengths[k].to_mps2;
+        for (size_t k = 0; k < RB_REC_COUNT(rec_lengths); k++)
+            if (strlen(rec_lengths[k].name) == len_part
+                && memcmp(u, rec_lengths[k].name, len_part) == 0)
+                return rec_lengths[k].to_mps2;
     }
     return 0.0;
 }
@@ -75,12 +75,12 @@ static double rb_rec_units_per_square(const char *u)
 double rb_rec_units_lookup(const char *name, size_t len)
 {
     char u[RB_REC_UNIT_MAX];
-    if (!rb_rec_units_normalise(name, len, u))
+    if (!rec_units_normalise(name, len, u))
         return 0.0;
-    for (size_t i = 0; i < RB_REC_COUNT(rb_rec_whole_units); i++)
-        if (strcmp(u, rb_rec_whole_units[i].name) == 0)
-            return rb_rec_whole_units[i].to_mps2;
-    return rb_rec_units_per_square(u);
+    for (size_t i = 0; i < RB_REC_COUNT(rec_whole_units); i++)
+        if (strcmp(u, rec_whole_units[i].name) == 0)
+            return rec_whole_units[i].to_mps2;
+    return rec_units_per_square(u);
 }
 
 rb_status rb_record_units_parse(const char *name, double *to_mps2)

@@ -22,7 +22,7 @@ void rb_rec_values_free(rb_rec_values *b)
     memset(b, 0, sizeof *b);
 }
 
-static rb_status rb_rec_values_grow(rb_rec_values *b, const rb_rec_reader *r, int col)
+static rb_status rec_values_grow(rb_rec_values *b, const rb_rec_reader *r, int col)
 {
     size_t cap = b->cap ? b->cap * 2 : RB_REC_FIRST_CAPACITY;
     if (cap > b->max)
@@ -42,7 +42,7 @@ rb_status rb_rec_values_push(rb_rec_values *b, const rb_rec_reader *r,
     if (b->n >= b->max)
         return rb_rec_fail(r, RB_ERR_LIMIT, tok->col,
                            "more than %zu values (the point limit)", b->max);
-    if (b->n == b->cap && rb_rec_values_grow(b, r, tok->col) != RB_OK)
+    if (b->n == b->cap && rec_values_grow(b, r, tok->col) != RB_OK)
         return RB_ERR_NOMEM;
     double x = raw * factor;
     if (!isfinite(x)) {

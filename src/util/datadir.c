@@ -20,15 +20,15 @@
 #define RB_DATA_FROM_BIN "../share/rockbolt"
 #endif
 
-static const rb_shipped_record rb_shipped[] = {
+static const rb_shipped_record shipped[] = {
     {"elcentro", "elcentro_1940_ns.at2", "at2", NULL, NULL},
     {"taft", "taft_1952_s69e.txt", "one-column", "0.01 s", "g"},
 };
 
-static char rb_records[PATH_MAX];
-static char rb_templates[PATH_MAX];
-static const char *rb_origin;
-static pthread_mutex_t rb_data_lock = PTHREAD_MUTEX_INITIALIZER;
+static char records_dir[PATH_MAX];
+static char templates_dir[PATH_MAX];
+static const char *data_origin;
+static pthread_mutex_t data_lock = PTHREAD_MUTEX_INITIALIZER;
 
 static int is_dir(const char *p)
 {
@@ -38,12 +38,12 @@ static int is_dir(const char *p)
 
 static int set_pair(const char *rec, const char *tmpl, const char *origin)
 {
-    int a = snprintf(rb_records, sizeof rb_records, "%s", rec);
-    int b = snprintf(rb_templates, sizeof rb_templates, "%s", tmpl);
-    if (a < 0 || (size_t)a >= sizeof rb_records || b < 0
-        || (size_t)b >= sizeof rb_templates)
+    int a = snprintf(records_dir, sizeof records_dir, "%s", rec);
+    int b = snprintf(templates_dir, sizeof templates_dir, "%s", tmpl);
+    if (a < 0 || (size_t)a >= sizeof records_dir || b < 0
+        || (size_t)b >= sizeof templates_dir)
         return 0;
-    rb_origin = origin;
+    data_origin = origin;
     return 1;
 }
 
@@ -104,42 +104,42 @@ static void find(void)
 
 static void ensure(void)
 {
-    pthread_mutex_lock(&rb_data_lock);
-    if (!rb_origin)
+    pthread_mutex_lock(&data_lock);
+    if (!data_origin)
         find();
-    pthread_mutex_unlock(&rb_data_lock);
+    pthread_mutex_unlock(&data_lock);
 }
 
 const char *rb_data_records_dir(void)
 {
     ensure();
-    return rb_records;
+    return records_dir;
 }
 
 const char *rb_data_templates_dir(void)
 {
     ensure();
-    return rb_templates;
+    return templates_dir;
 }
 
 const char *rb_data_origin(void)
 {
     ensure();
-    return rb_origin;
+    return data_origin;
 }
 
 void rb_data_reset(void)
 {
-    pthread_mutex_lock(&rb_data_lock);
-    rb_origin = NULL;
-    pthread_mutex_unlock(&rb_data_lock);
+    pthread_mutex_lock(&data_lock);
+    data_origin = NULL;
+    pthread_mutex_unlock(&data_lock);
 }
 
 const rb_shipped_record *rb_shipped_find(const char *name)
 {
-    for (size_t k = 0; k < sizeof rb_shipped / sizeof rb_shipped[0]; k++)
-        if (strcmp(rb_shipped[k].name, name) == 0)
-            return &rb_shipped[k];
+    for (size_t k = 0; k < sizeof shipped / sizeof shipped[0]; k++)
+        if (strcmp(shipped[k].name, name) == 0)
+            return &shipped[k];
     return NULL;
 }
 

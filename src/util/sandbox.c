@@ -13,17 +13,17 @@
 #define PATH_MAX 4096
 #endif
 
-static char rb_sandbox_root[PATH_MAX];
-static char rb_sandbox_shipped[PATH_MAX];
-static int rb_sandbox_on;
+static char sandbox_root[PATH_MAX];
+static char sandbox_shipped[PATH_MAX];
+static int sandbox_on;
 
 rb_status rb_sandbox_set(const char *dir, rb_diag *diag)
 {
     struct stat sb;
-    rb_sandbox_on = 0;
+    sandbox_on = 0;
     if (!dir)
         return RB_OK;
-    if (!realpath(dir, rb_sandbox_root) || stat(rb_sandbox_root, &sb) != 0
+    if (!realpath(dir, sandbox_root) || stat(sandbox_root, &sb) != 0
         || !S_ISDIR(sb.st_mode)) {
         if (diag) {
             rb_diag_clear(diag);
@@ -34,15 +34,15 @@ rb_status rb_sandbox_set(const char *dir, rb_diag *diag)
         }
         return RB_ERR_IO;
     }
-    if (!realpath(rb_data_records_dir(), rb_sandbox_shipped))
-        rb_sandbox_shipped[0] = '\0';
-    rb_sandbox_on = 1;
+    if (!realpath(rb_data_records_dir(), sandbox_shipped))
+        sandbox_shipped[0] = '\0';
+    sandbox_on = 1;
     return RB_OK;
 }
 
 const char *rb_sandbox_dir(void)
 {
-    return rb_sandbox_on ? rb_sandbox_root : NULL;
+    return sandbox_on ? sandbox_root : NULL;
 }
 
 static int under(const char *real, const char *root)
@@ -58,7 +58,7 @@ static int under(const char *real, const char *root)
 int rb_sandbox_allows(const char *path, char *why, size_t why_size)
 {
     char real[PATH_MAX];
-    if (!rb_sandbox_on)
+    if (!sandbox_on)
         return 1;
     errno = 0;
     if (!realpath(path, real)) {
@@ -72,7 +72,7 @@ int rb_sandbox_allows(const char *path, char *why, size_t why_size)
                      strerror(errno));
         return 0;
     }
-    if (under(real, rb_sandbox_root) || under(real, rb_sandbox_shipped))
+    if (under(real, sandbox_root) || under(real, sandbox_shipped))
         return 1;
     if (why && why_size)
         snprintf(why, why_size, "it resolves to '%s'", real);
