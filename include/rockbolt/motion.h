@@ -12,11 +12,25 @@
 #include <stddef.h>
 #include "rockbolt/status.h"
 
+/* The building a floor series came through (eqs. 5.27-5.28): the ground
+ * acceleration and the building's state at every sample. Between two
+ * samples the ground is linear and the floor is the building's exact
+ * response to it: the ground plus a damped oscillation, not a straight
+ * line between the floor samples. */
 typedef struct {
-    double *accel_mps2; /* owned; n values at t = t0 + i dt */
+    double omega_rps, xi;   /* the building's circular frequency and damping */
+    double *ground_mps2;    /* owned, n: NULL when there is no building */
+    double *u_m, *v_mps;    /* owned, n: relative displacement and velocity */
+    double peak_mps2;       /* largest |floor| between samples as well */
+} rb_series_building;
+
+typedef struct {
+    double *accel_mps2; /* owned; n values at t = t0 + i dt: the floor */
     size_t n;
     double dt_s;
     double t0_s;
+    rb_series_building bld; /* zeroed: the samples are the floor motion
+                               itself, linear between */
 } rb_series;
 
 /* Allocate n zeroed samples. Returns RB_ERR_NOMEM or RB_ERR_INVALID (n == 0,
@@ -24,16 +38,29 @@ typedef struct {
 rb_status rb_series_alloc(rb_series *s, size_t n, double dt_s);
 /* Free the samples; accepts NULL and an already freed series. */
 void rb_series_free(rb_series *s);
-/* Largest |a| over the samples. */
+/* A deep copy of from into to (free with rb_series_free): RB_ERR_NOMEM. */
+rb_status rb_series_copy(const rb_series *from, rb_series *to);
+/* The largest |a| of the motion the series describes: over the samples;
+ * through a building, over the continuous floor motion between samples as
+ * well (the floor peaks between samples). Non-finite samples are left out. */
 double rb_series_peak(const rb_series *s);
-/* Multiply every sample by factor. */
+/* Multiply the motion by factor (samples, and the building's ground and
+ * state, which are linear in it). */
 void rb_series_scale(rb_series *s, double factor);
 /* Replace s by the floor total acceleration of a linear SDOF building with
- * frequency f_hz and damping xi under ground acceleration s (eqs. 5.27-5.28),
- * integrated exactly for piecewise-linear input. */
+ * frequency f_hz and damping 0 <= xi <= 1 under ground acceleration s
+ * (eqs. 5.27-5.28), integrated exactly for piecewise-linear input; the
+ * building is kept in s->bld, so that the floor is exact between samples. */
 rb_status rb_series_building_filter(rb_series *s, double f_hz, double xi);
 /* Keep only samples with t in [t_start, t_end]; t0 is reset to 0. */
 rb_status rb_series_window(rb_series *s, double t_start_s, double t_end_s);
+/* The motion at time t (0 outside the samples): linear between samples, or
+ * the building's exact response. */
+double rb_series_at(const rb_series *s, double t);
+/* Taylor coefficients coef[0..n] of the motion at t0 + tau, for tau up to
+ * the next sample; returns the degree (1 for a straight line, n through a
+ * building). */
+int rb_series_taylor(const rb_series *s, double t0, int n, double *coef);
 
 typedef enum {
     RB_MOTION_HARMONIC = 0, /* a sin(2 pi f t), optional linear ramp */

@@ -1,8 +1,9 @@
 /* Evaluation of a floor motion x''(t) for the solver.
  *
  * Closed forms are evaluated directly; sampled records are interpolated
- * linearly, which is the usual reading of a digitised accelerogram and the
- * one the exact building filter assumes. The solver asks for the next kink
+ * linearly, which is the usual reading of a digitised accelerogram, and a
+ * record through a building is the building's exact response between
+ * samples (floor.c). The solver asks for the next kink
  * so that no Runge-Kutta step straddles one: a step across a kink would drop
  * the method to first order there. */
 #include <math.h>
@@ -38,17 +39,7 @@ static double pulse(const rb_motion *m, double t)
 
 static double sampled(const rb_motion *m, double t)
 {
-    const rb_series *s = m->series;
-    if (!s || s->n == 0)
-        return 0.0;
-    double x = (t - s->t0_s) / s->dt_s;
-    if (x < 0 || x > (double)(s->n - 1))
-        return 0.0;
-    size_t i = (size_t)x;
-    if (i >= s->n - 1)
-        return m->scale * s->accel_mps2[s->n - 1];
-    double f = x - (double)i;
-    return m->scale * (s->accel_mps2[i] + f * (s->accel_mps2[i + 1] - s->accel_mps2[i]));
+    return m->series ? m->scale * rb_series_at(m->series, t) : 0.0;
 }
 
 double rb_motion_accel(const rb_motion *m, double t, double theta_dot)
@@ -97,15 +88,8 @@ double rb_motion_peak(const rb_motion *m)
     case RB_MOTION_PULSE:
     case RB_MOTION_CRITICAL:
         return fabs(m->amplitude_mps2);
-    case RB_MOTION_SAMPLED: {
-        const rb_series *s = m->series;
-        double p = 0;
-        /* a non-finite sample is the solver's to report, at its time */
-        for (size_t i = 0; s && i < s->n; i++)
-            if (isfinite(s->accel_mps2[i]))
-                p = fmax(p, fabs(s->accel_mps2[i]));
-        return p * fabs(m->scale);
-    }
+    case RB_MOTION_SAMPLED:
+        return rb_series_peak(m->series) * fabs(m->scale);
     }
     return 0.0;
 }
@@ -126,26 +110,6 @@ static void times_linear(double e0, double e1, int n, double *coef)
 {
     for (int k = n; k >= 0; k--)
         coef[k] = e0 * coef[k] + (k > 0 ? e1 * coef[k - 1] : 0.0);
-}
-
-static int sampled_series(const rb_motion *m, double t0, double *coef)
-{
-    const rb_series *s = m->series;
-    coef[0] = coef[1] = 0.0;
-    if (!s || s->n < 2)
-        return 0;
-    double x = (t0 - s->t0_s) / s->dt_s;
-    /* the interval that starts at or just before t0, as rb_motion_next_break
-     * reads it: a step from a sample time belongs to the interval after it */
-    double k = floor(x + 1e-9);
-    if (k < 0 || k > (double)(s->n - 2))
-        return 0;
-    size_t i = (size_t)k;
-    double a0 = s->accel_mps2[i], a1 = s->accel_mps2[i + 1];
-    double slope = (a1 - a0) / s->dt_s;
-    coef[0] = m->scale * (a0 + slope * (t0 - (s->t0_s + k * s->dt_s)));
-    coef[1] = m->scale * slope;
-    return 1;
 }
 
 int rb_motion_taylor(const rb_motion *m, double t0, int n, double *coef)
@@ -173,7 +137,9 @@ int rb_motion_taylor(const rb_motion *m, double t0, int n, double *coef)
         break;
     }
     case RB_MOTION_SAMPLED:
-        deg = n >= 1 ? sampled_series(m, t0, coef) : 0;
+        deg = rb_series_taylor(m->series, t0, n, coef);
+        for (int k = 0; k <= deg; k++)
+            coef[k] *= m->scale;
         break;
     case RB_MOTION_CRITICAL:
         return -1;

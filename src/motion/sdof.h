@@ -10,6 +10,7 @@
 #define RB_MOTION_SDOF_H
 
 #include <stddef.h>
+#include "rockbolt/motion.h"
 #include "rockbolt/status.h"
 
 /* One step of length dt from (u, v) with load p0 at the start and p1 at
@@ -45,5 +46,9 @@ double rb_sdof_run(const rb_sdof_step *st, const double *p, size_t n,
  * that by k^2. RB_ERR_INVALID for k = 0 or as rb_sdof_step_init. */
 rb_status rb_sdof_peak_within(double omega, double xi, double dt, unsigned k,
                              const double *p, size_t n, double *peak);
+
+/* floor.c: the largest |floor| of a series through a building, between
+ * samples as well. */
+double rb_series_floor_peak(const rb_series *s);
 
 #endif

@@ -1,6 +1,6 @@
-/* Sampled accelerations (rb_series): allocation, peak, scaling, windowing
- * and the linear building of eqs. 5.27-5.28 that turns a ground record
- * into a floor motion. */
+/* Sampled accelerations (rb_series): allocation, copy, peak, scaling,
+ * windowing and the linear building of eqs. 5.27-5.28 that turns a ground
+ * record into a floor motion (its motion between samples: floor.c). */
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -31,6 +31,14 @@ rb_status rb_series_alloc(rb_series *s, size_t n, double dt_s)
     return RB_OK;
 }
 
+static void building_free(rb_series_building *b)
+{
+    free(b->ground_mps2);
+    free(b->u_m);
+    free(b->v_mps);
+    memset(b, 0, sizeof *b);
+}
+
 void rb_series_free(rb_series *s)
 {
     if (!s)
@@ -38,6 +46,36 @@ void rb_series_free(rb_series *s)
     free(s->accel_mps2);
     s->accel_mps2 = NULL;
     s->n = 0;
+    building_free(&s->bld);
+}
+
+static double *dup_array(const double *a, size_t n)
+{
+    double *p = a ? malloc(n * sizeof *p) : NULL;
+    if (p)
+        memcpy(p, a, n * sizeof *p);
+    return p;
+}
+
+rb_status rb_series_copy(const rb_series *from, rb_series *to)
+{
+    rb_series s = *from;
+    memset(&s.bld, 0, sizeof s.bld);
+    s.accel_mps2 = dup_array(from->accel_mps2, from->n);
+    int ok = s.accel_mps2 != NULL;
+    if (ok && from->bld.ground_mps2) {
+        s.bld = from->bld;
+        s.bld.ground_mps2 = dup_array(from->bld.ground_mps2, from->n);
+        s.bld.u_m = dup_array(from->bld.u_m, from->n);
+        s.bld.v_mps = dup_array(from->bld.v_mps, from->n);
+        ok = s.bld.ground_mps2 && s.bld.u_m && s.bld.v_mps;
+    }
+    if (!ok) {
+        rb_series_free(&s);
+        return RB_ERR_NOMEM;
+    }
+    *to = s;
+    return RB_OK;
 }
 
 double rb_series_peak(const rb_series *s)
@@ -45,8 +83,11 @@ double rb_series_peak(const rb_series *s)
     double peak = 0.0;
     if (!s || !s->accel_mps2)
         return 0.0;
+    if (s->bld.ground_mps2)
+        return s->bld.peak_mps2;
+    /* a non-finite sample is the solver's to report, at its time */
     for (size_t i = 0; i < s->n; i++)
-        if (fabs(s->accel_mps2[i]) > peak)
+        if (isfinite(s->accel_mps2[i]) && fabs(s->accel_mps2[i]) > peak)
             peak = fabs(s->accel_mps2[i]);
     return peak;
 }
@@ -57,6 +98,14 @@ void rb_series_scale(rb_series *s, double factor)
         return;
     for (size_t i = 0; i < s->n; i++)
         s->accel_mps2[i] *= factor;
+    if (!s->bld.ground_mps2)
+        return;
+    for (size_t i = 0; i < s->n; i++) {
+        s->bld.ground_mps2[i] *= factor;
+        s->bld.u_m[i] *= factor;
+        s->bld.v_mps[i] *= factor;
+    }
+    s->bld.peak_mps2 *= fabs(factor);
 }
 
 rb_status rb_series_building_filter(rb_series *s, double f_hz, double xi)
@@ -65,22 +114,34 @@ rb_status rb_series_building_filter(rb_series *s, double f_hz, double xi)
         return RB_ERR_INVALID;
     rb_sdof_step st;
     double omega = RB_TWO_PI * f_hz;
+    if (!(xi <= 1.0))
+        return RB_ERR_INVALID;
     rb_status rc = rb_sdof_step_init(&st, omega, xi, s->dt_s);
     if (rc != RB_OK)
         return rc;
+    rb_series_building b = {omega, xi, malloc(s->n * sizeof(double)),
+                            malloc(s->n * sizeof(double)), malloc(s->n * sizeof(double)), 0};
+    if (!b.ground_mps2 || !b.u_m || !b.v_mps) {
+        building_free(&b);
+        return RB_ERR_NOMEM;
+    }
     /* The building starts at rest, so x_r = x_r' = 0 at the first sample.
      * Floor total acceleration x_r'' + x_g'' equals -(2 xi w x_r' + w^2 x_r)
      * by eq. 5.27; taking it from the state avoids subtracting the two
      * nearly equal accelerations. */
     double *a = s->accel_mps2;
-    double u = 0.0, v = 0.0, p_prev = -a[0];
-    a[0] = 0.0;
-    for (size_t i = 1; i < s->n; i++) {
-        double p = -a[i];
-        rb_sdof_step_apply(&st, &u, &v, p_prev, p);
+    double u = 0.0, v = 0.0;
+    memcpy(b.ground_mps2, a, s->n * sizeof *a);
+    for (size_t i = 0; i < s->n; i++) {
+        if (i > 0)
+            rb_sdof_step_apply(&st, &u, &v, -b.ground_mps2[i - 1], -b.ground_mps2[i]);
+        b.u_m[i] = u;
+        b.v_mps[i] = v;
         a[i] = -(2.0 * xi * omega * v + omega * omega * u);
-        p_prev = p;
     }
+    building_free(&s->bld);
+    s->bld = b;
+    s->bld.peak_mps2 = rb_series_floor_peak(s);
     return RB_OK;
 }
 
@@ -98,13 +159,20 @@ rb_status rb_series_window(rb_series *s, double t_start_s, double t_end_s)
     if (last < first)
         return RB_ERR_INVALID;
     size_t i0 = (size_t)first, count = (size_t)last - i0 + 1;
-    memmove(s->accel_mps2, s->accel_mps2 + i0, count * sizeof(double));
-    /* Shrinking cannot lose data; if realloc declines, the larger block
-     * is still ours and still valid. */
-    double *shrunk = realloc(s->accel_mps2, count * sizeof(double));
-    if (shrunk)
-        s->accel_mps2 = shrunk;
+    double **arrays[4] = {&s->accel_mps2, &s->bld.ground_mps2, &s->bld.u_m, &s->bld.v_mps};
+    for (int k = 0; k < 4; k++) {
+        if (!*arrays[k])
+            continue;
+        memmove(*arrays[k], *arrays[k] + i0, count * sizeof(double));
+        /* Shrinking cannot lose data; if realloc declines, the larger
+         * block is still ours and still valid. */
+        double *shrunk = realloc(*arrays[k], count * sizeof(double));
+        if (shrunk)
+            *arrays[k] = shrunk;
+    }
     s->n = count;
     s->t0_s = 0.0;
+    if (s->bld.ground_mps2)
+        s->bld.peak_mps2 = rb_series_floor_peak(s);
     return RB_OK;
 }

@@ -61,13 +61,7 @@ static int same_key(const entry *e, const char *path, const rb_record_opts *o,
 
 static int copy_series(const rb_series *from, rb_series *to)
 {
-    rb_series s = *from;
-    s.accel_mps2 = malloc(from->n * sizeof *s.accel_mps2);
-    if (!s.accel_mps2)
-        return 0;
-    memcpy(s.accel_mps2, from->accel_mps2, from->n * sizeof *s.accel_mps2);
-    *to = s;
-    return 1;
+    return rb_series_copy(from, to) == RB_OK;
 }
 
 int rb_record_cache_get(rb_record_cache *c, const char *path, const rb_record_opts *opts,

@@ -58,6 +58,7 @@ void rb_rec_values_move(rb_rec_values *b, double dt_s, double t0_s, rb_series *o
 {
     /* Trimming the slack is optional; a refused realloc keeps the block. */
     double *p = b->n ? realloc(b->v, b->n * sizeof *p) : NULL;
+    memset(out, 0, sizeof *out);
     out->accel_mps2 = p ? p : b->v;
     out->n = b->n;
     out->dt_s = dt_s;
