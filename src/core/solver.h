@@ -54,6 +54,10 @@ typedef struct {
     /* the last point's floor reaction, for the time spent at or below 0 */
     double lift_t, lift_v;
     int lift_have;
+    /* the last point's shear and floor reaction, for where the reaction
+     * crosses the friction floor (reset at every transition) */
+    double fric_t, fric_h, fric_v;
+    int fric_have;
     int done;
 } rb_solver;
 

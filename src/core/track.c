@@ -80,6 +80,30 @@ static void note_liftoff(rb_solver *sv, double t, double v)
 void rb_track_reset(rb_solver *sv)
 {
     sv->win_shear.n = sv->win_friction.n = sv->win_bolt.n = sv->win_vertical.n = 0;
+    sv->fric_have = 0;
+}
+
+/* The friction demand |H| / V where V > floor. Near the floor it is large
+ * and steep, so its largest value is often where V crosses the floor: that
+ * point is found between two points (both linear there), or the largest
+ * value would be whichever point happened to fall just past the crossing. */
+static void note_friction(rb_solver *sv, double t, double H, double v, double floor)
+{
+    rb_result *r = sv->res;
+    if (sv->fric_have && t > sv->fric_t && (sv->fric_v > floor) != (v > floor)) {
+        double f = (floor - sv->fric_v) / (v - sv->fric_v);
+        double h = fabs(sv->fric_h + f * (H - sv->fric_h));
+        r->max_friction_demand = fmax(r->max_friction_demand, h / floor);
+    }
+    sv->fric_have = 1;
+    sv->fric_t = t;
+    sv->fric_h = H;
+    sv->fric_v = v;
+    if (v > floor)
+        r->max_friction_demand = fmax(r->max_friction_demand,
+                                      peak_push(&sv->win_friction, t, fabs(H) / v));
+    else
+        sv->win_friction.n = 0;
 }
 
 void rb_track_aux(rb_solver *sv, double t, const double *y, const rb_aux *a)
@@ -109,11 +133,7 @@ void rb_track_aux(rb_solver *sv, double t, const double *y, const rb_aux *a)
     r->min_vertical_reaction_n = fmin(r->min_vertical_reaction_n,
                                       -peak_push(&sv->win_vertical, t, -floor_v));
     note_liftoff(sv, t, floor_v);
-    if (floor_v > RB_FRICTION_FLOOR * S->d.W)
-        r->max_friction_demand = fmax(r->max_friction_demand,
-                                      peak_push(&sv->win_friction, t, fabs(H) / floor_v));
-    else
-        sv->win_friction.n = 0;
+    note_friction(sv, t, H, floor_v, RB_FRICTION_FLOOR * S->d.W);
 }
 
 void rb_track_point(rb_solver *sv, double t, const double *y)
