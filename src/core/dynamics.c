@@ -19,7 +19,7 @@
  *               U-equation's share of these terms but not the moment
  *               equation's; their difference is the "coupling" work. */
 #include <math.h>
-#include "dynamics.h"
+#include "bolt.h"
 
 
 double rb_dyn_contact_angle(const rb_sys *S, double g)
@@ -113,7 +113,7 @@ static double floor_accel(const rb_sys *S, double t, const double *y)
 static int rocking(const rb_sys *S, const rb_disc *D)
 {
     return D->stage == RB_STAGE_UPLIFT || D->stage == RB_STAGE_YIELD
-           || (D->stage == RB_STAGE_HELD && S->elastic_bolts);
+           || (D->stage == RB_STAGE_HELD && !S->bolt->rigid_stop);
 }
 
 /* Bolt moment about the pivot for a rocking stage, and the row tension. */
@@ -122,10 +122,8 @@ static double bolt_moment(const rb_sys *S, const rb_disc *D, double th, double *
     *force = 0;
     if (D->stage == RB_STAGE_YIELD)
         *force = S->d.fy_row_n;
-    else if (D->stage == RB_STAGE_HELD && S->elastic_bolts) {
-        double ext = rb_dyn_chord(S, th) - D->gap[rb_row_of_side(D->side)];
-        *force = ext > 0 ? S->d.k_row_npm * ext : 0;
-    }
+    else if (D->stage == RB_STAGE_HELD && !S->bolt->rigid_stop)
+        *force = S->bolt->tension(S, D, th);
     /* slack rows (all of stage 2) need no lever arm and its cosine */
     return *force != 0 ? *force * rb_dyn_lever(S, th) : 0;
 }
@@ -190,7 +188,7 @@ void rb_dyn_rhs(const rb_sys *S, const rb_disc *D, double t, const double *y,
     rb_aux a;
     mirror(D, y, m);
     a.x = floor_accel(S, t, y);
-    if (D->stage == RB_STAGE_HELD && !S->elastic_bolts)
+    if (D->stage == RB_STAGE_HELD && S->bolt->rigid_stop)
         m[2] = D->theta_hold;
     if (rocking(S, D))
         solve_rocking(S, D, s * a.x, m, &a);
@@ -266,14 +264,8 @@ double rb_dyn_potential(const rb_sys *S, const rb_disc *D, const double *y)
         V = d->W * d->R * cos(d->alpha - th) - d->W * S->h;
         break;
     }
-    if (S->elastic_bolts && D->side != 0 && D->stage != RB_STAGE_FIXED) {
-        /* while the row yields its elastic stretch stays at Fy / k; the rest
-         * of the chord's growth is plastic, booked as absorbed energy */
-        double ext = D->stage == RB_STAGE_YIELD ? d->fy_row_n / d->k_row_npm
-                     : rb_dyn_chord(S, th) - D->gap[rb_row_of_side(D->side)];
-        if (ext > 0)
-            V += 0.5 * d->k_row_npm * ext * ext;
-    }
+    if (S->bolt->stored && D->side != 0 && D->stage != RB_STAGE_FIXED)
+        V += S->bolt->stored(S, D, th);
     return V;
 }
 

@@ -15,12 +15,14 @@
 
 enum { RB_Y_U, RB_Y_UD, RB_Y_TH, RB_Y_THD, RB_Y_WDAMP, RB_Y_WIN, RB_Y_WCPL, RB_NY };
 
+typedef struct rb_bolt_ops rb_bolt_ops; /* bolt.h */
+
 typedef struct {
     const rb_model *model;
     rb_derived d;
     rb_formulation form;
     const rb_motion *motion;
-    int has_bolts, elastic_bolts, yielding_bolts;
+    const rb_bolt_ops *bolt;    /* the bolt model's operations (bolt.h) */
     double l, b, h, M;
 } rb_sys;
 

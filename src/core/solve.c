@@ -11,6 +11,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "bolt.h"
 #include "solver.h"
 
 void rb_solve_opts_init(rb_solve_opts *o)
@@ -78,8 +79,8 @@ static double highest_frequency(const rb_solver *sv)
         f = fmax(f, m->freq_hz);
     if (m->kind == RB_MOTION_PULSE && m->pulse_s > 0)
         f = fmax(f, 1 / m->pulse_s);
-    if (S->elastic_bolts)
-        f = fmax(f, sqrt(S->d.k_row_npm * S->l * S->l / S->d.Io) / (2 * M_PI));
+    if (S->bolt->frequency_hz)
+        f = fmax(f, S->bolt->frequency_hz(S));
     return f;
 }
 
@@ -101,7 +102,7 @@ static void set_tolerances(rb_solver *sv)
     const rb_sys *S = &sv->sys;
     double a = fmax(sv->res->peak_floor_mps2, 0.01 * S->d.g);
     double p = sqrt(S->d.W * S->d.R / S->d.Io);
-    double th = fmin(S->d.alpha, S->has_bolts ? fmax(S->d.theta0_rad, 1e-3 * S->d.alpha)
+    double th = fmin(S->d.alpha, S->bolt->rows ? fmax(S->d.theta0_rad, 1e-3 * S->d.alpha)
                                               : S->d.alpha);
     double w = S->model->rigid ? p : S->d.omega;
     double u = S->model->rigid ? 1 : 4 * a / (M_PI * w * w);
@@ -127,7 +128,7 @@ static void fill_constants(rb_solver *sv, const rb_motion *motion)
     r->alpha_rad = S->d.alpha;
     r->theta0_rad = S->d.theta0_rad;
     r->fy_row_n = S->d.fy_row_n;
-    r->rigid_bolts = S->has_bolts && !S->elastic_bolts;
+    r->rigid_bolts = S->bolt->rows && S->bolt->rigid_stop;
     r->capacity_j = S->d.capacity_j;
     r->weight_n = S->d.W;
     r->delta = S->d.delta;
@@ -152,9 +153,7 @@ static rb_status setup(rb_solver *sv, const rb_model *model, const rb_motion *mo
     S->model = model;
     S->motion = motion;
     S->form = sv->opts.formulation;
-    S->has_bolts = model->bolt_model != RB_BOLT_NONE;
-    S->elastic_bolts = model->bolt_model == RB_BOLT_ELASTIC_PLASTIC;
-    S->yielding_bolts = S->has_bolts && model->bolt_model != RB_BOLT_NONYIELDING;
+    S->bolt = rb_bolt_ops_of(model->bolt_model);
     S->l = model->lever_arm_m;
     S->b = model->half_width_m;
     S->h = model->cm_height_m;
@@ -176,7 +175,7 @@ static rb_status setup(rb_solver *sv, const rb_model *model, const rb_motion *mo
                                         : 0.1 / highest_frequency(sv);
     sv->h = fmin(sv->h_max, 1e-3);
     sv->check_spacing = 1 / (8 * fastest_mode(sv));
-    double th0 = S->has_bolts ? rb_dyn_contact_angle(S, model->gap_m) : HUGE_VAL;
+    double th0 = S->bolt->rows ? rb_dyn_contact_angle(S, model->gap_m) : HUGE_VAL;
     sv->rest_theta = sv->opts.rest_fraction * fmin(S->d.alpha, th0 > 0 ? th0 : S->d.alpha);
     if (sv->opts.theta_init_rad != 0) {
         double a0 = fabs(sv->opts.theta_init_rad);

@@ -4,6 +4,7 @@
  * edge), with the same equations as rb_dyn_rhs, and the series are stored
  * in the physical frame, so that the mirror of a run is exact. */
 #include <math.h>
+#include "bolt.h"
 #include "taylor.h"
 
 enum { NT = RB_TAYLOR_MAX + 2 };
@@ -18,7 +19,7 @@ static const double inv[NT + 2] = {
 
 int rb_taylor_applies(const rb_sys *S, const rb_disc *D)
 {
-    if (S->form == RB_FORM_CONSISTENT || S->elastic_bolts
+    if (S->form == RB_FORM_CONSISTENT || !S->bolt->taylor
         || S->motion->kind == RB_MOTION_CRITICAL)
         return 0;
     return D->stage == RB_STAGE_FIXED || D->stage == RB_STAGE_UPLIFT

@@ -10,6 +10,7 @@
  * state on the wrong side of the boundary it just crossed. */
 #include <float.h>
 #include <math.h>
+#include "bolt.h"
 #include "solver.h"
 
 static const int guard_dir[G_COUNT] = {
@@ -58,7 +59,7 @@ void rb_guard_nudge(double *g)
 
 static int row_intact(const rb_solver *sv, int side)
 {
-    return sv->sys.has_bolts && !sv->disc.broken[rb_row_of_side(side)];
+    return sv->sys.bolt->rows && !sv->disc.broken[rb_row_of_side(side)];
 }
 
 unsigned rb_guard_mask(const rb_solver *sv)
@@ -76,7 +77,7 @@ unsigned rb_guard_mask(const rb_solver *sv)
         break;
     case RB_STAGE_HELD:
         m = 1u << G_SLACK;
-        if (sv->sys.yielding_bolts)
+        if (sv->sys.bolt->yields)
             m |= 1u << G_YIELD;
         break;
     case RB_STAGE_YIELD:
@@ -120,8 +121,8 @@ double rb_guard_one(const rb_solver *sv, int guard, double t, const double *y)
     case G_SLACK:
     case G_YIELD: {
         rb_aux a;
-        if (guard == G_SLACK && S->elastic_bolts)
-            return rb_dyn_chord(S, th) - D->gap[rb_row_of_side(D->side)];
+        if (guard == G_SLACK && !S->bolt->rigid_stop)
+            return S->bolt->taut(S, D, th);
         rb_dyn_rhs(S, D, t, y, NULL, &a);
         return guard == G_YIELD ? a.bolt_force - S->d.fy_row_n : a.bolt_force;
     }
@@ -150,7 +151,7 @@ void rb_guard_eval(const rb_solver *sv, double t, const double *y, double *g)
     for (int k = 0; k < G_COUNT; k++)
         g[k] = 0; /* inactive guards are never read as crossings, but are copied */
     /* the rigid bolt's force serves both of stage 4's guards */
-    if ((mask & 1u << G_YIELD) && !sv->sys.elastic_bolts) {
+    if ((mask & 1u << G_YIELD) && sv->sys.bolt->rigid_stop) {
         rb_aux a;
         rb_dyn_rhs(&sv->sys, &sv->disc, t, y, NULL, &a);
         g[G_SLACK] = a.bolt_force;
@@ -250,7 +251,7 @@ static void bolt_impact(rb_solver *sv)
     int row = rb_row_of_side(D->side);
     sv->res->bolt_impacts++;
     D->stage = RB_STAGE_HELD;
-    if (S->elastic_bolts)
+    if (!S->bolt->rigid_stop)
         return;
     double ke = rb_dyn_kinetic(S, D, sv->y);
     double th0 = D->contact[row];
@@ -267,7 +268,7 @@ static void release(rb_solver *sv)
 {
     rb_disc *D = &sv->disc;
     int row = rb_row_of_side(D->side);
-    if (!sv->sys.elastic_bolts) {
+    if (sv->sys.bolt->rigid_stop) {
         sv->y[RB_Y_TH] = D->side * D->theta_hold;
         sv->y[RB_Y_THD] = 0;
     }
@@ -281,7 +282,7 @@ static void start_yield(rb_solver *sv)
 {
     rb_disc *D = &sv->disc;
     int row = rb_row_of_side(D->side);
-    if (!sv->sys.elastic_bolts) {
+    if (sv->sys.bolt->rigid_stop) {
         sv->y[RB_Y_TH] = D->side * D->theta_hold;
         sv->y[RB_Y_THD] = 0;
     }
@@ -304,8 +305,8 @@ static void stop_yield(rb_solver *sv)
     sv->y[RB_Y_THD] = 0;
     D->gap[row] = rb_dyn_chord(S, th);
     D->contact[row] = th;
-    if (S->elastic_bolts) {
-        D->gap[row] -= S->d.fy_row_n / S->d.k_row_npm;
+    if (!S->bolt->rigid_stop) {
+        D->gap[row] -= S->bolt->yield_stretch(S);
         D->contact[row] = rb_dyn_contact_angle(S, D->gap[row]);
     }
     D->theta_hold = th;
@@ -367,14 +368,14 @@ int rb_transition_immediate(rb_solver *sv)
         }
         return 0;
     }
-    if (D->stage == RB_STAGE_HELD && !S->elastic_bolts) {
+    if (D->stage == RB_STAGE_HELD && S->bolt->rigid_stop) {
         rb_aux a;
         rb_dyn_rhs(S, D, sv->t, sv->y, NULL, &a);
         if (a.bolt_force <= 0) {
             rb_transition(sv, G_SLACK);
             return 1;
         }
-        if (S->yielding_bolts && a.bolt_force >= S->d.fy_row_n) {
+        if (S->bolt->yields && a.bolt_force >= S->d.fy_row_n) {
             rb_transition(sv, G_YIELD);
             return 1;
         }
