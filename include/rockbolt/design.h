@@ -89,7 +89,8 @@ rb_status rb_design_factor(const rb_model *model, const rb_motion *motion,
  * criteria up to 0.2422 A* (27.81 m/s^2); fails at 0.2430 A* (first failing
  * scan level 0.25 A*); resolution 0.001 A*; 11 runs", or, when nothing
  * fails, one that says "no failing level up to scan_end (1.5 A*)". */
-void rb_design_factor_describe(const rb_design_factor_result *f, char *buf, size_t n);
+void rb_design_factor_describe(const rb_design_factor_result *f, const rb_out_units *u,
+                               double g_mps2, char *buf, size_t n);
 
 /* ---- Recommended gap ratio ---------------------------------------------- */
 
@@ -138,7 +139,7 @@ rb_status rb_gap_recommend(const rb_model *model, const rb_motion *motion,
 
 /* One English sentence: the recommended gap ratio and the range it holds
  * over, or "no gap ratio in [min, max] meets the criteria". */
-void rb_gap_describe(const rb_gap_result *g, char *buf, size_t n);
+void rb_gap_describe(const rb_gap_result *g, const rb_out_units *u, char *buf, size_t n);
 
 /* Free what a gap result owns; accepts NULL. */
 void rb_gap_result_free(rb_gap_result *r);

@@ -65,16 +65,20 @@ rb_status rb_plot_hysteresis_svg(const rb_report *rep, size_t motion_index,
 rb_status rb_plot_sweep_svg(const rb_sweep *s, const char *title, char **out,
                             rb_diag *diag);
 
-/* A self-contained page: title as <title> and heading, text_report (may be
- * NULL) escaped in a <pre>, then each of the n_svgs figures inline, in
- * order. The page is XHTML-compatible (it parses as XML as well as HTML)
+/* A self-contained page: title as <title> and heading; with rep (may be
+ * NULL) the summary of a calculation package: the verdict and its reason,
+ * a table of each motion's verdict and validity checks, one of its peaks
+ * and one of the cabinet and anchorage, in the case's output units; then
+ * each of the n_svgs figures inline, in order; then text_report (may be
+ * NULL) escaped in a <pre>. Readable on a phone, and printed the summary
+ * is the first page. The page is XHTML-compatible (it parses as XML as well as HTML)
  * and refers to nothing outside itself. Each svgs[i] must be an <svg>
  * element as the renderers above produce; a leading XML declaration is
  * dropped. RB_ERR_INVALID if one is NULL or does not start with <svg,
  * RB_ERR_NOMEM. */
-rb_status rb_plot_html_page(const char *title, const char *text_report,
-                            const char *const *svgs, size_t n_svgs,
-                            char **out, rb_diag *diag);
+rb_status rb_plot_html_page(const rb_report *rep, const char *title,
+                            const char *text_report, const char *const *svgs,
+                            size_t n_svgs, char **out, rb_diag *diag);
 
 /* The page of a whole check: the text report and the time-history figure of
  * every motion that has a history, titled after the case and its verdict.

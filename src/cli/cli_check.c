@@ -180,11 +180,19 @@ static const rb_sweep *sweep_at(const rb_case_design *d, size_t k)
     return NULL;
 }
 
-/* The figures (--svg, --html): every motion's time history, then every
- * sweep, so the numbering of --svg files follows the report's order. */
+/* Figures per motion: its time history, and with bolts its hysteresis. */
+static size_t figures_per_motion(const rb_case *c)
+{
+    return c->model.bolt_model == RB_BOLT_NONE ? 1 : 2;
+}
+
+/* The figures (--svg, --html): every motion's time history (and
+ * hysteresis), then every sweep, so the numbering of --svg files follows
+ * the report's order. */
 static rb_exit render_figures(const rb_cli_opts *o, check_run *r)
 {
-    size_t n_sw = count_sweeps(&r->design), n = r->c.n_motions + n_sw, i;
+    size_t per = figures_per_motion(&r->c), n_mf = r->c.n_motions * per;
+    size_t n_sw = count_sweeps(&r->design), n = n_mf + n_sw, i;
     rb_status st = RB_OK;
     rb_diag d;
     char title[320];
@@ -196,11 +204,12 @@ static rb_exit render_figures(const rb_cli_opts *o, check_run *r)
     }
     rb_diag_clear(&d);
     for (i = 0; i < n && st == RB_OK; i++, r->n_svgs++) {
-        if (i < r->c.n_motions) {
-            st = rb_plot_history_svg(&r->rep, i, &r->svgs[i], &d);
+        if (i < n_mf) {
+            st = i % per == 0 ? rb_plot_history_svg(&r->rep, i / per, &r->svgs[i], &d)
+                              : rb_plot_hysteresis_svg(&r->rep, i / per, &r->svgs[i], &d);
             continue;
         }
-        const rb_sweep *sw = sweep_at(&r->design, i - r->c.n_motions);
+        const rb_sweep *sw = sweep_at(&r->design, i - n_mf);
         snprintf(title, sizeof title, "%.150s: %s sweep", r->c.name ? r->c.name : "case",
                  sw->kind == RB_SWEEP_FREQUENCY ? "frequency" : "amplitude");
         st = rb_plot_sweep_svg(sw, title, &r->svgs[i], &d);
@@ -209,8 +218,8 @@ static rb_exit render_figures(const rb_cli_opts *o, check_run *r)
         snprintf(title, sizeof title, "rockbolt %s: %.150s, %s",
                  o->command == RB_CMD_DESIGN ? "design" : "check",
                  r->c.name ? r->c.name : "case", r->rep.headline);
-        st = rb_plot_html_page(title, r->text, (const char *const *)r->svgs, r->n_svgs,
-                               &r->html, &d);
+        st = rb_plot_html_page(&r->rep, title, r->text, (const char *const *)r->svgs,
+                               r->n_svgs, &r->html, &d);
     }
     if (st != RB_OK) {
         rb_cli_error(NULL, d.key[0] ? d.key : NULL, "cannot draw the figures: %s%s%s",
@@ -294,7 +303,8 @@ static size_t planned_sweeps(const rb_cli_opts *o, const rb_case *c)
  * sweep and figure files, whose count the case fixes. All before solving. */
 static rb_exit plan_loaded(const rb_cli_opts *o, check_run *r)
 {
-    size_t n_sw = planned_sweeps(o, &r->c), n_fig = r->c.n_motions + n_sw, k;
+    size_t n_sw = planned_sweeps(o, &r->c), k;
+    size_t n_fig = r->c.n_motions * figures_per_motion(&r->c) + n_sw;
     char name[4096];
     rb_exit e = RB_EXIT_PASS;
     for (k = 0; k < r->c.n_input_files && e == RB_EXIT_PASS; k++)

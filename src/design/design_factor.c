@@ -218,22 +218,28 @@ rb_status rb_design_factor(const rb_model *model, const rb_motion *motion,
     return st;
 }
 
-void rb_design_factor_describe(const rb_design_factor_result *f, char *buf, size_t n)
+void rb_design_factor_describe(const rb_design_factor_result *f, const rb_out_units *u,
+                               double g_mps2, char *buf, size_t n)
 {
+    /* US customary reports show accelerations in g alone */
+    int in_g = u && u->system == RB_UNITS_US && g_mps2 > 0;
+    double k = in_g ? 1 / g_mps2 : 1;
+    const char *unit = in_g ? "g" : "m/s^2";
     if (!buf || n == 0)
         return;
     if (f->no_failure)
         snprintf(buf, n, "no failing level up to scan_end (%.4g A*): the criteria are met "
-                 "up to %.4f A* (%.4g m/s^2) at least, so the design factor is at most "
-                 "%.3g; %ld runs", f->scan_end_astar, f->level_astar, f->level_mps2,
-                 f->factor, f->runs);
+                 "up to %.4f A* (%.4g %s) at least, so the design factor is at most "
+                 "%.3g; %ld runs", f->scan_end_astar, f->level_astar, k * f->level_mps2,
+                 unit, f->factor, f->runs);
     else if (!(f->level_astar > 0))
-        snprintf(buf, n, "no level meets the criteria: fails at %.4f A* (%.4g m/s^2) "
-                 "already; resolution %.4g A*; %ld runs", f->fail_astar, f->fail_mps2,
-                 f->resolution_astar, f->runs);
+        snprintf(buf, n, "no level meets the criteria: fails at %.4f A* (%.4g %s) "
+                 "already; resolution %.4g A*; %ld runs", f->fail_astar, k * f->fail_mps2,
+                 unit, f->resolution_astar, f->runs);
     else
         snprintf(buf, n, "design factor %.3g: meets the criteria up to %.4f A* "
-                 "(%.4g m/s^2); fails at %.4f A* (first failing scan level %.4g A*); "
-                 "resolution %.4g A*; %ld runs", f->factor, f->level_astar, f->level_mps2,
-                 f->fail_astar, f->first_fail_astar, f->resolution_astar, f->runs);
+                 "(%.4g %s); fails at %.4f A* (first failing scan level %.4g A*); "
+                 "resolution %.4g A*; %ld runs", f->factor, f->level_astar,
+                 k * f->level_mps2, unit, f->fail_astar, f->first_fail_astar,
+                 f->resolution_astar, f->runs);
 }

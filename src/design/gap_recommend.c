@@ -185,8 +185,10 @@ void rb_gap_result_free(rb_gap_result *r)
     r->n_points = 0;
 }
 
-void rb_gap_describe(const rb_gap_result *g, char *buf, size_t n)
+void rb_gap_describe(const rb_gap_result *g, const rb_out_units *u, char *buf, size_t n)
 {
+    double gap = u ? g->gap_m / u->small_length_f : 1e3 * g->gap_m;
+    const char *unit = u ? u->small_length : "mm";
     if (!buf || n == 0)
         return;
     if (g->n_points == 0)
@@ -195,7 +197,7 @@ void rb_gap_describe(const rb_gap_result *g, char *buf, size_t n)
         snprintf(buf, n, "no gap ratio in [%.4g, %.4g] meets the criteria: the largest "
                  "fails", g->points[0].gap_ratio, g->points[g->n_points - 1].gap_ratio);
     else
-        snprintf(buf, n, "recommended gap ratio %.4g (gap %.4g mm): every grid gap ratio "
-                 "from there to %.4g meets the criteria", g->gap_ratio, 1e3 * g->gap_m,
+        snprintf(buf, n, "recommended gap ratio %.4g (gap %.4g %s): every grid gap ratio "
+                 "from there to %.4g meets the criteria", g->gap_ratio, gap, unit,
                  g->points[g->n_points - 1].gap_ratio);
 }

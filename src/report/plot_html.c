@@ -1,5 +1,5 @@
-/* The HTML page of a check: the text report and the figures inline, so the
- * page can be mailed or archived as one file. It is written as XHTML-
+/* The HTML page of a check: the summary tables, the figures inline and the
+ * text report, so the page can be mailed or archived as one file. It is written as XHTML-
  * compatible markup (closed empty elements, only the XML entities) so that
  * an XML parser accepts it as well as a browser. */
 #include <stdio.h>
@@ -7,14 +7,31 @@
 #include <string.h>
 #include "plot_internal.h"
 
+/* Readable on a phone (the tables scroll sideways, the figures shrink)
+ * and on paper: the summary is the first page, each figure stays whole. */
 static const char style[] =
     "body{font-family:\"DejaVu Sans\",Helvetica,Arial,sans-serif;margin:24px;"
     "color:#222222;background:#ffffff}\n"
-    "h1{font-size:20px}\n"
+    "h1{font-size:20px}\nh2{font-size:16px;margin-top:28px}\n"
     "pre{font-family:\"DejaVu Sans Mono\",Menlo,Consolas,monospace;font-size:12px;"
     "background:#f7f7f7;border:1px solid #dddddd;padding:12px;overflow-x:auto}\n"
     "figure{margin:24px 0}\n"
-    "svg{max-width:100%;height:auto;border:1px solid #eeeeee}\n";
+    "svg{max-width:100%;height:auto;border:1px solid #eeeeee}\n"
+    ".verdict{font-size:18px;font-weight:bold;padding:8px 12px;display:inline-block}\n"
+    ".verdict.pass{background:#e3f4e3;color:#1b5e20}\n"
+    ".verdict.fail{background:#fbe4e4;color:#b71c1c}\n"
+    ".scroll{overflow-x:auto;margin:16px 0}\n"
+    "table{border-collapse:collapse;font-size:13px}\n"
+    "caption{text-align:left;font-weight:bold;padding:4px 0}\n"
+    "th,td{border:1px solid #cccccc;padding:4px 8px;text-align:left;vertical-align:top}\n"
+    "th{background:#f0f0f0;font-weight:normal}\n"
+    "td.num{text-align:right;font-variant-numeric:tabular-nums;white-space:nowrap}\n"
+    "td.pass{color:#1b5e20;font-weight:bold}\ntd.fail{color:#b71c1c;font-weight:bold}\n"
+    "td.warn{background:#fff4d6}\n"
+    "@media (max-width:600px){body{margin:8px}table{font-size:11px}}\n"
+    "@media print{body{margin:0}.scroll{overflow:visible}"
+    "section.summary{page-break-after:always}"
+    "figure{page-break-inside:avoid}pre{white-space:pre-wrap;border:none}}\n";
 
 /* The <svg> element of a figure, past any XML declaration and whitespace. */
 static const char *svg_start(const char *s)
@@ -30,9 +47,9 @@ static const char *svg_start(const char *s)
     return strncmp(s, "<svg", 4) == 0 ? s : NULL;
 }
 
-rb_status rb_plot_html_page(const char *title, const char *text_report,
-                            const char *const *svgs, size_t n_svgs,
-                            char **out, rb_diag *diag)
+rb_status rb_plot_html_page(const rb_report *rep, const char *title,
+                            const char *text_report, const char *const *svgs,
+                            size_t n_svgs, char **out, rb_diag *diag)
 {
     rb_strbuf b = {0};
     size_t i;
@@ -48,22 +65,29 @@ rb_status rb_plot_html_page(const char *title, const char *text_report,
     if (!title)
         title = "rockbolt";
     rb_strbuf_puts(&b, "<!DOCTYPE html>\n<html xmlns=\"http://www.w3.org/1999/xhtml\" "
-                 "lang=\"en\">\n<head>\n<meta charset=\"utf-8\"/>\n<title>");
+                 "lang=\"en\">\n<head>\n<meta charset=\"utf-8\"/>\n"
+                 "<meta name=\"viewport\" content=\"width=device-width, "
+                 "initial-scale=1\"/>\n<title>");
     rb_plot_escape(&b, title);
     rb_strbuf_puts(&b, "</title>\n<style>\n");
     rb_strbuf_puts(&b, style);
     rb_strbuf_puts(&b, "</style>\n</head>\n<body>\n<h1>");
     rb_plot_escape(&b, title);
     rb_strbuf_puts(&b, "</h1>\n");
-    if (text_report) {
-        rb_strbuf_puts(&b, "<pre class=\"report\">");
-        rb_plot_escape(&b, text_report);
-        rb_strbuf_puts(&b, "</pre>\n");
-    }
+    rb_plot_summary_tables(&b, rep);
+    if (n_svgs && rep)
+        rb_strbuf_puts(&b, "<h2>Figures</h2>\n");
     for (i = 0; i < n_svgs; i++) {
         rb_strbuf_printf(&b, "<figure class=\"figure\" data-figure=\"%zu\">\n", i + 1);
         rb_strbuf_puts(&b, svg_start(svgs[i]));
         rb_strbuf_puts(&b, "</figure>\n");
+    }
+    if (text_report) {
+        if (rep)
+            rb_strbuf_puts(&b, "<h2>Full report</h2>\n");
+        rb_strbuf_puts(&b, "<pre class=\"report\">");
+        rb_plot_escape(&b, text_report);
+        rb_strbuf_puts(&b, "</pre>\n");
     }
     rb_strbuf_puts(&b, "</body>\n</html>\n");
     return rb_plot_finish(&b, out, diag);
@@ -100,7 +124,7 @@ rb_status rb_plot_report_html(const rb_report *rep, const char *text_report,
     if (st == RB_OK) {
         snprintf(title, sizeof title, "%s: %.200s", rep->headline,
                  rep->kase && rep->kase->name ? rep->kase->name : "rockbolt check");
-        st = rb_plot_html_page(title, text_report, (const char *const *)svgs, n, out,
+        st = rb_plot_html_page(rep, title, text_report, (const char *const *)svgs, n, out,
                                diag);
     }
     for (i = 0; i < n; i++)

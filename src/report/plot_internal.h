@@ -20,6 +20,8 @@ void rb_plot_escape(rb_strbuf *b, const char *s);
 /* Hand the text over: *out gets it (RB_OK) or NULL (RB_ERR_NOMEM, with
  * diag->msg set). The buffer is empty afterwards either way. */
 rb_status rb_plot_finish(rb_strbuf *b, char **out, rb_diag *diag);
+/* The HTML page's summary tables of rep (plot_summary.c); nothing for NULL. */
+void rb_plot_summary_tables(rb_strbuf *b, const rb_report *rep);
 
 /* ---- Axes ------------------------------------------------------------------ */
 

@@ -23,7 +23,7 @@ static void add_factor(rb_jctx *cx, cJSON *parent, const char *key,
 {
     char sentence[320];
     cJSON *o = rb_j_obj(cx, parent, key);
-    rb_design_factor_describe(f, sentence, sizeof sentence);
+    rb_design_factor_describe(f, NULL, 0, sentence, sizeof sentence);
     rb_j_str(cx, o, "criterion", rb_enum_str(rb_criterion_names, (int)crit->kind));
     rb_j_num(cx, o, "usage_limit", crit->usage_limit);
     j_level(cx, o, "factor", f->factor);
@@ -82,7 +82,7 @@ static void add_gap(rb_jctx *cx, cJSON *parent, const rb_motion_design *md,
         return;
     }
     o = rb_j_obj(cx, parent, "recommended_gap");
-    rb_gap_describe(g, sentence, sizeof sentence);
+    rb_gap_describe(g, NULL, sentence, sizeof sentence);
     rb_j_str(cx, o, "criterion", rb_enum_str(rb_criterion_names, (int)crit->kind));
     rb_j_bool(cx, o, "found", g->found);
     rb_j_opt(cx, o, "gap_ratio", g->found, g->gap_ratio);

@@ -205,10 +205,11 @@ rb_status rb_report_text_case_design(const rb_report *r, rb_txt_arena *a, rb_tli
     return RB_OK;
 }
 
-static void factor_vars(rb_tvars *t, const char *num, const char *text,
+static void factor_vars(const rb_report *r, rb_tvars *t, const char *num, const char *text,
                         const rb_design_factor_result *f, char *buf, size_t n)
 {
-    rb_design_factor_describe(f, buf, n);
+    rb_design_factor_describe(f, rb_out_units_of(r->kase->output_units), r->derived.g,
+                              buf, n);
     rb_tv_opt(t, num, isfinite(f->factor), f->factor);
     rb_tv_str(t, text, buf);
 }
@@ -231,13 +232,13 @@ rb_status rb_report_text_motion_design(const rb_report *r, size_t i, rb_txt_aren
     g = &md->gap;
     if (!(sc = new_scope(a, &t, 1)) || !(text = arena_alloc(a, 3, 320)))
         return RB_ERR_NOMEM;
-    factor_vars(&t, "factor_no_yield", "factor_no_yield_text", &md->no_yield, text, 320);
-    factor_vars(&t, "factor_no_break", "factor_no_break_text", &md->no_break,
+    factor_vars(r, &t, "factor_no_yield", "factor_no_yield_text", &md->no_yield, text, 320);
+    factor_vars(r, &t, "factor_no_break", "factor_no_break_text", &md->no_break,
                 text + 320, 320);
     rb_tv_num(&t, "no_break_usage_limit", d->no_break.usage_limit);
     rb_tv_str(&t, "gap_criterion", rb_enum_str(rb_criterion_names, (int)d->gap_criteria.kind));
     if (md->has_gap)
-        rb_gap_describe(g, text + 640, 320);
+        rb_gap_describe(g, rb_out_units_of(r->kase->output_units), text + 640, 320);
     rb_tv_str(&t, "gap_text", md->has_gap ? text + 640 : NULL);
     rb_tv_int(&t, "has_yield_run", md->has_gap && g->yield_run);
     rb_tv_num(&t, "yield_initial_gap_ratio", g->yield_initial_gap_ratio);

@@ -400,19 +400,26 @@ test_suite() {
     echo "suite: ok (governing motion $bi)"
 }
 
-# --svg and --html: one figure per motion, then one per sweep; the page
-# holds the text report and every figure. (XML well-formedness and the
-# browser render are the plot tests' business.)
+# --svg and --html: per motion its time history and, with bolts, its
+# hysteresis, then one figure per sweep; the page holds the summary tables,
+# every figure and the text report. (XML well-formedness and the browser
+# render are the plot tests' business.)
 test_figures() {
     run check "$HARMONIC" --svg "$D/h.svg" --quiet
     [ "$rc" -eq 0 ] || [ "$rc" -eq 1 ] || fail "exit code $rc"
-    [ "$(grep -o '<path' "$D/h.svg" | wc -l)" -eq 9 ] || fail "9 series in h.svg"
+    [ "$(grep -o '<path' "$D/h-1.svg" | wc -l)" -eq 9 ] || fail "9 series in h-1.svg"
+    [ "$(grep -o '<path' "$D/h-2.svg" | wc -l)" -eq 3 ] || fail "3 loops in h-2.svg"
+    grep -q "elongation" "$D/h-2.svg" || fail "h-2.svg is not the hysteresis"
     run design "$DESIGN" --svg "$D/f.svg" --html "$D/p.html" --text "$D/p.txt"
     [ "$rc" -eq 0 ] || [ "$rc" -eq 1 ] || fail "exit code $rc"
-    for f in f-1.svg f-2.svg f-3.svg p.html; do [ -s "$D/$f" ] || fail "$f missing"; done
-    [ -e "$D/f-4.svg" ] && fail "one history and two sweeps make three figures"
-    [ "$(grep -o '<svg' "$D/p.html" | wc -l)" -eq 3 ] || fail "three figures in the page"
+    for f in f-1.svg f-2.svg f-3.svg f-4.svg p.html; do [ -s "$D/$f" ] || fail "$f missing"; done
+    [ -e "$D/f-5.svg" ] && fail "history, hysteresis and two sweeps make four figures"
+    [ "$(grep -o '<svg' "$D/p.html" | wc -l)" -eq 4 ] || fail "four figures in the page"
     grep -q "design factor, no yield" "$D/p.html" || fail "text report not in the page"
+    for w in "Verdict of each motion" "Peaks of each motion" "Cabinet and anchorage" \
+        'name="viewport"' "@media print"; do
+        grep -qF "$w" "$D/p.html" || fail "the page lacks '$w'"
+    done
     run check "$HARMONIC" --svg "$D/same" --html "$D/same"; expect_rc 2 "--svg and --html on one file"
     no_temp_files "$D"
     echo "figures: ok"
@@ -432,6 +439,13 @@ test_units() {
     done
     grep -q "kN\|MPa\|m/s^2\| mm" "$D/out" && fail "SI units in the US report"
     grep -q "^A\\*  *[0-9.]* g (uplift" "$D/out" || fail "A* in g"
+    run check "$US" --html "$D/us.html" --quiet
+    grep -qF "largest bolt force (kip)" "$D/us.html" || fail "the page's peaks not in kip"
+    grep -qF "<td>in</td>" "$D/us.html" || fail "the page's anchorage not in inches"
+    run design "$US" --text "$D/usd.txt" --quiet
+    grep -q "up to [0-9.]* A\* ([0-9.]* g)" "$D/usd.txt" || fail "design levels not in g"
+    grep -q "(gap [0-9.]* in)" "$D/usd.txt" || fail "recommended gap not in inches"
+    grep -q "m/s^2\| mm)" "$D/usd.txt" && fail "SI units in the US design report"
     cp "$US" "$D/si.yaml" && echo "output_units: si" >>"$D/si.yaml"
     run check "$D/si.yaml"
     for w in "M = 454.0 kg" "kN, height 2h = 1.958 m" "mm^2 each" "MPa" "max force (kN)" \

@@ -156,7 +156,8 @@ int main(int argc, char **argv)
     {
         char title[256];
         snprintf(title, sizeof title, "%s: %.200s", rep.pass ? "PASS" : "FAIL", c.name);
-        st = rb_plot_html_page(title, text, (const char *const *)svgs, n_svgs, &html, &d);
+        st = rb_plot_html_page(&rep, title, text, (const char *const *)svgs, n_svgs, &html,
+                               &d);
     }
     if (st != RB_OK) {
         fail("html page", st, &d);

@@ -74,9 +74,15 @@ static void factor_finds_overturn_threshold(void)
     CHECK(f.no_failure && f.level_astar == 0.5 && f.factor == 2.0);
     CHECK(f.fail_astar == HUGE_VAL && f.first_fail_astar == HUGE_VAL && f.runs == 10);
     char line[400];
-    rb_design_factor_describe(&f, line, sizeof line);
+    rb_design_factor_describe(&f, NULL, 0, line, sizeof line);
     printf("%s\n", line);
     CHECK(strstr(line, "no failing level up to scan_end (0.5 A*)") != NULL);
+    CHECK(strstr(line, " m/s^2) at least") != NULL);
+    /* a report in US customary units gives the level in g */
+    rb_design_factor_describe(&f, rb_out_units_of(RB_UNITS_US), RB_G0, line, sizeof line);
+    char want[80];
+    snprintf(want, sizeof want, "(%.4g g) at least", f.level_mps2 / RB_G0);
+    CHECK(strstr(line, want) != NULL);
 }
 
 /* ---- Stiff cabinet: uplift at W b / (M h) ---------------------------------- */
@@ -249,15 +255,17 @@ static void gap_search_known_rotation(void)
     }
     CHECK(g.runs == 14 && g.yield_run);
     char line[300];
-    rb_gap_describe(&g, line, sizeof line);
-    CHECK(strstr(line, "recommended gap ratio 0 ") != NULL);
+    rb_gap_describe(&g, NULL, line, sizeof line);
+    CHECK(strstr(line, "recommended gap ratio 0 (gap 0 mm)") != NULL);
+    rb_gap_describe(&g, rb_out_units_of(RB_UNITS_US), line, sizeof line);
+    CHECK(strstr(line, "recommended gap ratio 0 (gap 0 in)") != NULL);
     rb_gap_result_free(&g);
     /* wider range: the largest gaps rotate too far, so no gap works */
     d.gap_ratio_max = 0.06;
     CHECK(rb_gap_recommend(&m, &mo, NULL, &c, &d, 1, &g, NULL) == RB_OK);
     CHECK(!g.found && g.fail_index == 24 && g.runs == 2 && g.points[24].evaluated);
     CHECK(!g.points[24].meets && !g.points[23].evaluated);
-    rb_gap_describe(&g, line, sizeof line);
+    rb_gap_describe(&g, NULL, line, sizeof line);
     printf("%s\n", line);
     CHECK(strstr(line, "no gap ratio in [0, 0.06]") != NULL);
     rb_gap_result_free(&g);

@@ -381,7 +381,7 @@ static void test_html(void)
     char *html = NULL;
     rb_diag d;
     rb_diag_clear(&d);
-    CHECK(rb_plot_html_page("a<b> & \"c\"", "x < y && z\n\tw\x01\xff", svgs, 2, &html,
+    CHECK(rb_plot_html_page(NULL, "a<b> & \"c\"", "x < y && z\n\tw\x01\xff", svgs, 2, &html,
                             &d) == RB_OK);
     if (!html)
         return;
@@ -396,7 +396,7 @@ static void test_html(void)
           && strstr(html, "url(") == NULL && strstr(html, "<script") == NULL);
     free(html);
     html = (char *)1;
-    CHECK(rb_plot_html_page("t", NULL, bad, 1, &html, &d) == RB_ERR_INVALID);
+    CHECK(rb_plot_html_page(NULL, "t", NULL, bad, 1, &html, &d) == RB_ERR_INVALID);
     CHECK(html == NULL && strstr(d.msg, "figure 1") != NULL);
 
     /* the whole check: one figure per motion with a history */

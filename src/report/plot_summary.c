@@ -1,0 +1,168 @@
+/* The summary tables at the head of the HTML page: the verdict, each
+ * motion's verdict and checks, its results, and the anchorage it was
+ * judged on, in the case's output units. What a calculation package
+ * prints on its first page; the figures and the full text follow. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include "plot_internal.h"
+#include "rockbolt/names.h"
+
+static void cell_text(rb_strbuf *b, const char *tag, const char *cls, const char *s)
+{
+    if (cls)
+        rb_strbuf_printf(b, "<%s class=\"%s\">", tag, cls);
+    else
+        rb_strbuf_printf(b, "<%s>", tag);
+    rb_plot_escape(b, s ? s : "");
+    rb_strbuf_printf(b, "</%s>", tag);
+}
+
+/* v with 3 decimals, or "-" when there is no number */
+static void fixed3(double v, char *buf, size_t n)
+{
+    if (isfinite(v))
+        snprintf(buf, n, "%.3f", v);
+    else
+        snprintf(buf, n, "-");
+}
+
+static void cell_num(rb_strbuf *b, double v)
+{
+    char buf[64];
+    fixed3(v, buf, sizeof buf);
+    rb_strbuf_printf(b, "<td class=\"num\">%s</td>", buf);
+}
+
+static void cell_pair(rb_strbuf *b, double l, double r)
+{
+    char a[32], c[32];
+    fixed3(l, a, sizeof a);
+    fixed3(r, c, sizeof c);
+    rb_strbuf_printf(b, "<td class=\"num\">%s / %s</td>", a, c);
+}
+
+static void cell_sig(rb_strbuf *b, double v)
+{
+    rb_strbuf_printf(b, "<td class=\"num\">%.4g</td>", v);
+}
+
+static double ratio(double a, double b)
+{
+    return b > 0 ? a / b : (double)NAN;
+}
+
+static const char *motion_name(const rb_report_motion *m, size_t i, char *buf, size_t n)
+{
+    if (m->motion && m->motion->name)
+        return m->motion->name;
+    snprintf(buf, n, "motion %zu", i + 1);
+    return buf;
+}
+
+static void verdicts(rb_strbuf *b, const rb_report *rep)
+{
+    char name[32];
+    rb_strbuf_puts(b, "<div class=\"scroll\"><table class=\"checks\">\n<caption>Verdict of "
+                      "each motion</caption>\n<tr><th>motion</th><th>verdict</th>"
+                      "<th>criteria</th>");
+    for (int k = 0; k < RB_N_CHECKS; k++)
+        cell_text(b, "th", NULL, rb_check_name((rb_check)k));
+    rb_strbuf_puts(b, "<th>what governed</th></tr>\n");
+    for (size_t i = 0; i < rep->n_motions; i++) {
+        const rb_report_motion *m = &rep->motions[i];
+        const rb_verdict *v = &m->verdict;
+        rb_strbuf_puts(b, "<tr>");
+        cell_text(b, "td", NULL, motion_name(m, i, name, sizeof name));
+        cell_text(b, "td", v->pass ? "pass" : "fail", v->pass ? "PASS" : "FAIL");
+        cell_text(b, "td", v->criteria_pass ? "pass" : "fail",
+                  v->criteria_pass ? "met" : "not met");
+        for (int k = 0; k < RB_N_CHECKS; k++)
+            cell_text(b, "td", v->check[k] == RB_CHECK_WARNING ? "warn" : NULL,
+                      rb_check_status_str(v->check[k]));
+        cell_text(b, "td", "reason", v->reason);
+        rb_strbuf_puts(b, "</tr>\n");
+    }
+    rb_strbuf_puts(b, "</table></div>\n");
+}
+
+static void results(rb_strbuf *b, const rb_report *rep, const rb_out_units *u)
+{
+    char name[32];
+    rb_strbuf_printf(b, "<div class=\"scroll\"><table class=\"results\">\n<caption>Peaks of "
+                        "each motion</caption>\n<tr><th>motion</th><th>peak floor (g)</th>"
+                        "<th>&#952; / &#945;</th><th>U / U<sub>static</sub></th>"
+                        "<th>frame shear / W</th><th>bolt force / Fy, left / right</th>"
+                        "<th>largest bolt force (%s)</th><th>usage, left / right</th>"
+                        "</tr>\n", u->force);
+    for (size_t i = 0; i < rep->n_motions; i++) {
+        const rb_report_motion *m = &rep->motions[i];
+        const rb_result *r = m->result;
+        rb_strbuf_puts(b, "<tr>");
+        cell_text(b, "td", NULL, motion_name(m, i, name, sizeof name));
+        if (!r) {
+            rb_strbuf_puts(b, "<td colspan=\"7\">no result</td></tr>\n");
+            continue;
+        }
+        cell_num(b, r->peak_floor_mps2 / rep->derived.g);
+        cell_num(b, r->max_theta_over_alpha);
+        cell_num(b, r->max_u_over_ustatic);
+        cell_num(b, ratio(r->max_shear_elastic_n, r->weight_n));
+        cell_pair(b, ratio(r->max_bolt_force_n[RB_LEFT], r->fy_row_n),
+                  ratio(r->max_bolt_force_n[RB_RIGHT], r->fy_row_n));
+        cell_sig(b, fmax(r->max_bolt_force_n[RB_LEFT], r->max_bolt_force_n[RB_RIGHT])
+                        / u->force_f);
+        cell_pair(b, r->usage[RB_LEFT], r->usage[RB_RIGHT]);
+        rb_strbuf_puts(b, "</tr>\n");
+    }
+    rb_strbuf_puts(b, "</table></div>\n");
+}
+
+static void row_num(rb_strbuf *b, const char *what, double v, const char *unit)
+{
+    char buf[64];
+    snprintf(buf, sizeof buf, "%.4g", v);
+    rb_strbuf_puts(b, "<tr>");
+    cell_text(b, "th", NULL, what);
+    rb_strbuf_printf(b, "<td class=\"num\">%s</td>", buf);
+    cell_text(b, "td", NULL, unit);
+    rb_strbuf_puts(b, "</tr>\n");
+}
+
+static void anchorage(rb_strbuf *b, const rb_report *rep, const rb_out_units *u)
+{
+    const rb_model *m = &rep->kase->model;
+    const rb_derived *d = &rep->derived;
+    rb_strbuf_puts(b, "<div class=\"scroll\"><table class=\"model\">\n<caption>Cabinet "
+                      "and anchorage</caption>\n<tr><th>bolt model</th>");
+    cell_text(b, "td", NULL, rb_enum_str(rb_bolt_model_names, (int)m->bolt_model));
+    rb_strbuf_puts(b, "<td></td></tr>\n");
+    row_num(b, "mass", m->mass_kg / u->mass_f, u->mass);
+    row_num(b, "centre of mass above the plate, h", m->cm_height_m / u->length_f, u->length);
+    row_num(b, "half width of the plate, b", m->half_width_m / u->length_f, u->length);
+    if (m->bolt_model != RB_BOLT_NONE) {
+        row_num(b, "bolts per row", m->bolts_per_row, "");
+        row_num(b, "pivot to bolt row, l", m->lever_arm_m / u->length_f, u->length);
+        row_num(b, "gap", m->gap_m / u->small_length_f, u->small_length);
+        row_num(b, "yield force of a row, Fy", d->fy_row_n / u->force_f, u->force);
+        row_num(b, "A*", d->a_star_mps2 / d->g, "g");
+    }
+    rb_strbuf_puts(b, "</table></div>\n");
+}
+
+void rb_plot_summary_tables(rb_strbuf *b, const rb_report *rep)
+{
+    if (!rep || !rep->kase)
+        return;
+    const rb_out_units *u = rb_out_units_of(rep->kase->output_units);
+    rb_strbuf_printf(b, "<section class=\"summary\">\n<p class=\"verdict %s\">",
+                     rep->pass ? "pass" : "fail");
+    rb_plot_escape(b, rep->headline);
+    rb_strbuf_puts(b, "</p>\n<p class=\"reason\">");
+    rb_plot_escape(b, rep->reason);
+    rb_strbuf_puts(b, "</p>\n");
+    verdicts(b, rep);
+    results(b, rep, u);
+    anchorage(b, rep, u);
+    rb_strbuf_puts(b, "</section>\n");
+}
