@@ -83,6 +83,13 @@ typedef struct {
     int factor_bound;     /* 1: no failing level up to the scan's end */
     int has_gap;
     double gap_ratio;     /* recommended */
+    /* the concrete check (a case with concrete:): the largest 17.8
+     * utilization and the mode that governs it (rb_anchor_mode: the
+     * governing tension mode when tension's share is the larger, else the
+     * governing shear mode); has_anchor 0 without one */
+    int has_anchor;
+    double anchor_utilization;
+    int anchor_mode;
 } rb_batch_result;
 
 typedef struct {

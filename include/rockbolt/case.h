@@ -12,6 +12,7 @@
 #include "rockbolt/solve.h"
 #include "rockbolt/criteria.h"
 #include "rockbolt/units.h"
+#include "rockbolt/anchor.h"
 
 /* One floor motion of a case, ready for rb_solve_run. For records the
  * samples are already filtered, windowed and scaled to target_peak_mps2 in
@@ -92,6 +93,11 @@ typedef struct {
     size_t n_sweeps;
     int has_code;             /* design.code given */
     rb_code_inputs code;
+    /* concrete: given (ACI 318-19 Chapter 17, rockbolt/anchor.h): the slab
+     * and anchors, and their strengths, computed at load */
+    int has_concrete;
+    rb_anchor_inputs anchor_in;
+    rb_anchor_strength anchor;
     rb_case_motion *motions;  /* owned array of n_motions (>= 1) */
     size_t n_motions;
     int write_history;        /* analysis.history: true */

@@ -24,6 +24,13 @@ typedef struct {
     double max_theta_over_alpha;   /* <= 0: no limit */
     double friction_coefficient;   /* <= 0: sliding is not checked */
     rb_validity_mode validity;     /* default RB_VALIDITY_WARN */
+    /* The concrete check (ACI 318-19 Chapter 17, rockbolt/anchor.h): set by
+     * a case with concrete: (criteria: concrete: false clears it). A run
+     * then fails when the 17.8 utilization of its concurrent tension and
+     * shear reaches 1, or, before that, when the anchorage is not ductile
+     * where 17.10 asks it to be (anchor_ductile 0). Default 0 and 1. */
+    int concrete;
+    int anchor_ductile;
 } rb_criteria;
 
 void rb_criteria_init(rb_criteria *c);

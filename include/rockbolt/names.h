@@ -20,6 +20,9 @@ extern const rb_enum_name rb_motion_type_names[];   /* rb_motion_kind: harmonic,
                                                        pulse, record (sampled) */
 extern const rb_enum_name rb_pulse_shape_names[];   /* rb_pulse_shape */
 extern const rb_enum_name rb_record_format_names[]; /* rb_record_format */
+extern const rb_enum_name rb_anchor_type_names[];   /* rb_anchor_type */
+extern const rb_enum_name rb_anchor_mode_names[];   /* rb_anchor_mode */
+extern const rb_enum_name rb_aci17_coef_names[];    /* rb_aci17_coef: si, in-lb */
 
 /* The name of value in table t; "unknown" when it has none. */
 const char *rb_enum_str(const rb_enum_name *t, int value);

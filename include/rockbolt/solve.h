@@ -49,6 +49,11 @@ typedef struct {
     double theta_init_rad;   /* start rocking at this angle (sign = side), at rest */
     int check_reactions;     /* 1: also sum the reactions over mass points and
                                 report the largest mismatch (tests) */
+    /* > 0: the design tension strength of a row and the design shear
+     * strength of the anchorage (rockbolt/anchor.h); the run then follows
+     * the 17.8 utilization of the loaded row's tension and the horizontal
+     * floor reaction, taken together at each instant */
+    double anchor_phi_nn_n, anchor_phi_vn_n;
 } rb_solve_opts;
 
 /* Fraction of W the floor's vertical reaction must exceed for a friction
@@ -100,6 +105,13 @@ typedef struct {
     /* check_reactions only: the largest difference between the vertical
      * reaction in closed form and summed over the frame's mass points */
     double reaction_mismatch_n;
+    /* with the anchorage's strengths (anchor_phi_*): the largest 17.8
+     * utilization of concurrent tension and shear, its time, the two
+     * demands then, and the clause that gave it (1, 2, 3: 17.8.1-17.8.3);
+     * anchor_checked 0 and the rest 0 otherwise */
+    int anchor_checked;
+    double anchor_max_ratio, anchor_max_s, anchor_tension_n, anchor_shear_n;
+    int anchor_clause;
     double max_bolt_force_n[2];   /* [RB_LEFT], [RB_RIGHT] */
     /* per bolt row */
     double final_gap_m[2];

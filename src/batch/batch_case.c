@@ -113,6 +113,14 @@ void rb_batch_case_solve(rb_batch_slot *s, rb_batch_case *bc, size_t m, int desi
     run->force_over_fy = ratio(fmax(r->max_bolt_force_n[0], r->max_bolt_force_n[1]),
                                r->fy_row_n);
     run->theta_over_alpha = r->max_theta_over_alpha;
+    if (s->c.has_concrete && r->anchor_checked) {
+        const rb_anchor_strength *a = &s->c.anchor;
+        run->has_anchor = 1;
+        run->anchor_utilization = r->anchor_max_ratio;
+        run->anchor_mode = (int)(r->anchor_tension_n / a->phi_nn_n
+                                 >= r->anchor_shear_n / a->phi_vn_n
+                                 ? a->tension_mode : a->shear_mode);
+    }
     if (!design)
         return;
     rb_case_design cd;

@@ -14,6 +14,7 @@
 #include <string.h>
 #include <cjson/cJSON.h>
 #include "batch_summary.h"
+#include "rockbolt/names.h"
 #include "rockbolt/jsonnum.h"
 #include "util/strbuf.h"
 #include "rockbolt/report.h"
@@ -87,6 +88,11 @@ static int add_run(cJSON *arr, const rb_batch_result *r, int design)
         && add_num(o, "force_over_fy", r->force_over_fy)
         && add_num(o, "theta_over_alpha", r->theta_over_alpha)
         && add_warnings(o, r->warnings);
+    /* only with a concrete check, so that other summaries keep their bytes */
+    if (ok && r->has_anchor)
+        ok = cJSON_AddStringToObject(o, "anchor_mode",
+                                     rb_enum_str(rb_anchor_mode_names, r->anchor_mode)) != NULL
+             && add_num(o, "anchor_utilization", r->anchor_utilization);
     if (ok && design) {
         ok = (r->has_factor ? add_num(o, "design_factor", r->design_factor)
                             : cJSON_AddNullToObject(o, "design_factor") != NULL)
@@ -319,6 +325,14 @@ static void rd_run(rd_ctx *r, const cJSON *o, rb_batch_result *run, int design)
     run->force_over_fy = rd_num(r, o, "force_over_fy");
     run->theta_over_alpha = rd_num(r, o, "theta_over_alpha");
     rd_warnings(r, o, &run->warnings);
+    const cJSON *am = cJSON_GetObjectItemCaseSensitive(o, "anchor_mode");
+    if (am) {
+        run->has_anchor = 1;
+        if (!cJSON_IsString(am)
+            || !rb_enum_parse(rb_anchor_mode_names, am->valuestring, &run->anchor_mode))
+            rd_fail(r, "anchor_mode", "expected a mode of the concrete check");
+        run->anchor_utilization = rd_num(r, o, "anchor_utilization");
+    }
     if (!design)
         return;
     run->design_factor = rd_opt(r, o, "design_factor", &run->has_factor);

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "batch_summary.h"
+#include "rockbolt/names.h"
 #include "rockbolt/report.h"
 #include "rockbolt/textsafe.h"
 
@@ -135,7 +136,7 @@ void rb_batch_csv_head(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_c
                     "usage,shear_over_w,force_over_fy,theta_over_alpha");
     if (s->design)
         rb_strbuf_puts(b, ",design_factor,design_factor_bound,gap_ratio");
-    rb_strbuf_puts(b, ",validity_warnings,error\n");
+    rb_strbuf_puts(b, ",validity_warnings,anchor_mode,anchor_utilization,error\n");
 }
 
 void rb_batch_csv_tail(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_counts *n)
@@ -151,7 +152,7 @@ void rb_batch_csv_case(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_c
         char err[1400];
         const rb_diag *e = rb_batch_case_error(c);
         csv_head(b, c, "", 0, rb_batch_verdict_str(c->verdict));
-        rb_strbuf_puts(b, s->design ? ",,,,,,,,," : ",,,,,,");
+        rb_strbuf_puts(b, s->design ? ",,,,,,,,,,," : ",,,,,,,,");
         if (e->line > 0)
             snprintf(err, sizeof err, "%s:%d:%d: %s: %s", e->file, e->line, e->col,
                      e->key, e->msg);
@@ -181,6 +182,11 @@ void rb_batch_csv_case(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_c
         rb_warnings_names(r->warnings, w, sizeof w);
         rb_strbuf_puts(b, ",");
         csv_field(b, w);
+        if (r->has_anchor)
+            rb_strbuf_printf(b, ",%s,%.6g", rb_enum_str(rb_anchor_mode_names, r->anchor_mode),
+                             r->anchor_utilization);
+        else
+            rb_strbuf_puts(b, ",,");
         rb_strbuf_puts(b, ",\n");
     }
 }

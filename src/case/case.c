@@ -289,6 +289,7 @@ static rb_status case_load_any(const char *path, unsigned char *text, size_t len
     char why[600];
     rb_ynode *root = NULL;
     memset(&c, 0, sizeof c);
+    c.judge_concrete = -1;
     c.diags = diags;
     c.cache = cache;
     c.overrides = text != NULL;

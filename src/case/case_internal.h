@@ -155,7 +155,19 @@ typedef struct {
     int overrides;              /* the root document is a list row's
                                    overrides: its `motion:` applies to each
                                    motion of a base's `motions:` list */
+    /* criteria: concrete: -1 not given, else 0 or 1 */
+    int judge_concrete;
+    rb_ynode *concrete_node;        /* concrete: and anchorage:, for the */
+    rb_ynode *anchorage_node;       /* check's errors */
+    int anchor_coef_given;          /* concrete: coefficients: was given */
 } rb_cctx;
+
+/* --- case_concrete.c --------------------------------------------------- */
+/* concrete: and the anchorage keys of the concrete check (an: anchorage:,
+ * may be NULL); the strengths are computed by rb_case_resolve_concrete
+ * once the model is whole. */
+void rb_case_read_concrete(rb_cctx *c, rb_ynode *root, rb_ynode *an, rb_case *cs);
+void rb_case_resolve_concrete(rb_cctx *c, rb_case *cs);
 
 /* --- case.c: diagnostics ------------------------------------------------ */
 /* Append an error at file:line:col under key (may be ""). */

@@ -18,7 +18,7 @@
 static const char *const top_keys[] = {
     "name", "description", "extends", "equipment", "anchorage", "gap",
     "gap_ratio", "motion", "motions", "criteria", "analysis", "design",
-    "output_units", NULL};
+    "output_units", "concrete", NULL};
 int rb_case_top_key(const char *key)
 {
     for (size_t k = 0; top_keys[k]; k++)
@@ -32,10 +32,13 @@ static const char *const equipment_keys[] = {
     "restitution", "inertia", "rigid", NULL};
 static const char *const anchorage_keys[] = {
     "model", "bolts_per_row", "diameter", "area", "yield_stress", "toughness",
-    "deformable_length", "lever_arm", "edge_distance", "elastic_modulus", NULL};
+    "deformable_length", "lever_arm", "edge_distance", "elastic_modulus",
+    /* the concrete check's (case_concrete.c) */
+    "type", "embedment", "spacing", "ultimate_stress", "head_bearing_area", "grout_pad",
+    NULL};
 static const char *const criteria_keys[] = {
     "kind", "usage_limit", "max_shear_over_w", "max_rotation_over_alpha",
-    "friction_coefficient", "validity", NULL};
+    "friction_coefficient", "validity", "concrete", NULL};
 static const char *const analysis_keys[] = {
     "formulation", "integrator", "tolerance", "output_interval", "history",
     "stretch_past_failure", NULL};
@@ -242,7 +245,7 @@ static void read_anchorage(rb_cctx *c, rb_ynode *an, rb_model *m)
     within(c, bv, "anchorage.elastic_modulus", m->elastic_modulus_pa,
               RB_CASE_MIN_MODULUS_PA, RB_CASE_MAX_MODULUS_PA, "1 GPa and 1000 GPa");
     read_lever_arm(c, an, m);
-    rb_cv_unknown_keys(c, an, p, anchorage_keys);
+    /* unknown keys once the concrete check has read its own */
 }
 
 /* gap (a length) or gap_ratio (of the lever arm), both rows alike. */
@@ -298,6 +301,9 @@ static void read_criteria(rb_cctx *c, rb_ynode *cr, rb_criteria *k)
     v = rb_cv_get(c, cr, p, "validity", 0, "");
     if (v && rb_cv_enum_table(c, v, "criteria.validity", rb_validity_mode_names, 0, &i))
         k->validity = (rb_validity_mode)i;
+    v = rb_cv_get(c, cr, p, "concrete", 0, "");
+    if (v && rb_cv_bool(c, v, "criteria.concrete", &i))
+        c->judge_concrete = i;
     rb_cv_unknown_keys(c, cr, p, criteria_keys);
 }
 
@@ -367,6 +373,9 @@ void rb_case_read_schema(rb_cctx *c, rb_ynode *root, rb_case *cs)
         read_anchorage(c, an, &cs->model);
     else
         c->model_errors++;
+    rb_case_read_concrete(c, root, an, cs);
+    if (an && cs->model.bolt_model != RB_BOLT_NONE)
+        rb_cv_unknown_keys(c, an, "anchorage", anchorage_keys);
     if (an) {
         read_gap(c, root, &cs->model);
     } else {

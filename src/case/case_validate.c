@@ -319,6 +319,8 @@ void rb_case_resolve(rb_cctx *c, rb_case *cs, const rb_ynode *root)
     rb_derived d;
     memset(&d, 0, sizeof d);
     int have_model = check_model(c, cs, root, &d);
+    if (have_model)
+        rb_case_resolve_concrete(c, cs);
     if (c->n_motions == 0)
         return;
     cs->motions = calloc(c->n_motions, sizeof *cs->motions);

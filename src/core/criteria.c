@@ -13,6 +13,7 @@ void rb_criteria_init(rb_criteria *c)
     c->usage_limit = 1.0;
     c->max_shear_over_w = 0;
     c->max_theta_over_alpha = 0;
+    c->anchor_ductile = 1;
     c->friction_coefficient = 0;
     c->validity = RB_VALIDITY_WARN;
 }
@@ -169,6 +170,14 @@ static void criteria(const rb_criteria *c, const rb_result *r, rb_verdict *v)
         SAY(v, 0, "rotation / alpha = %s exceeds its limit %.17g",
             beside(r->max_theta_over_alpha, c->max_theta_over_alpha, num, sizeof num),
             c->max_theta_over_alpha);
+    else if (c->concrete && !c->anchor_ductile)
+        SAY(v, 0, "the anchorage is not ductile: the concrete lets go before the bolts "
+            "yield, or the stretch length is below 8 da (ACI 318-19 17.10.5.3)");
+    else if (c->concrete && r->anchor_checked && r->anchor_max_ratio >= 1.0)
+        SAY(v, 0, "the anchorage reaches its design strength: 17.8.%d utilization %s at "
+            "t = %.3f s (tension %.4g kN, shear %.4g kN)", r->anchor_clause,
+            beside(r->anchor_max_ratio, 1.0, num, sizeof num), r->anchor_max_s,
+            r->anchor_tension_n / 1e3, r->anchor_shear_n / 1e3);
     else if (c->kind == RB_CRIT_NO_YIELD)
         SAY(v, 1, "bolts stay elastic (max force / Fy = %s)", beside(force, 1.0, num, sizeof num));
     else

@@ -4,6 +4,7 @@
 #include "rockbolt/model.h"
 #include "rockbolt/motion.h"
 #include "rockbolt/names.h"
+#include "rockbolt/anchor.h"
 #include "rockbolt/record.h"
 #include "rockbolt/solve.h"
 
@@ -31,6 +32,18 @@ const rb_enum_name rb_pulse_shape_names[] = {
 const rb_enum_name rb_record_format_names[] = {
     {"auto", RB_REC_AUTO}, {"at2", RB_REC_AT2}, {"cosmos", RB_REC_COSMOS_V2},
     {"two-column", RB_REC_TWO_COLUMN}, {"one-column", RB_REC_ONE_COLUMN}, {NULL, 0}};
+
+const rb_enum_name rb_anchor_type_names[] = {
+    {"cast-in-headed", RB_ANCHOR_CAST_IN_HEADED}, {NULL, 0}};
+
+const rb_enum_name rb_anchor_mode_names[] = {
+    {"steel-tension", RB_ANCHOR_STEEL_N}, {"breakout-tension", RB_ANCHOR_BREAKOUT_N},
+    {"pullout", RB_ANCHOR_PULLOUT_N}, {"side-face-blowout", RB_ANCHOR_SIDEFACE_N},
+    {"steel-shear", RB_ANCHOR_STEEL_V}, {"breakout-shear", RB_ANCHOR_BREAKOUT_V},
+    {"pryout", RB_ANCHOR_PRYOUT_V}, {NULL, 0}};
+
+const rb_enum_name rb_aci17_coef_names[] = {
+    {"si", RB_ACI17_SI}, {"in-lb", RB_ACI17_INLB}, {NULL, 0}};
 
 const char *rb_enum_str(const rb_enum_name *t, int value)
 {

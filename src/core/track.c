@@ -7,6 +7,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include "rockbolt/aci17.h"
 #include "solver.h"
 
 static void note_displacements(rb_solver *sv, const double *y)
@@ -106,6 +107,24 @@ static void note_friction(rb_solver *sv, double t, double H, double v, double fl
         sv->win_friction.n = 0;
 }
 
+/* The anchorage's demand: tension and shear at the same instant, in the
+ * interaction of 17.8, not the largest of each taken apart. */
+static void note_anchor(rb_solver *sv, double t, double tension, double shear)
+{
+    rb_result *r = sv->res;
+    int which;
+    double u = rb_aci17_interaction(tension, sv->opts.anchor_phi_nn_n, shear,
+                                    sv->opts.anchor_phi_vn_n, &which);
+    r->anchor_checked = 1;
+    if (u > r->anchor_max_ratio) {
+        r->anchor_max_ratio = u;
+        r->anchor_max_s = t;
+        r->anchor_tension_n = tension;
+        r->anchor_shear_n = shear;
+        r->anchor_clause = which;
+    }
+}
+
 void rb_track_aux(rb_solver *sv, double t, const double *y, const rb_aux *a)
 {
     const rb_sys *S = &sv->sys;
@@ -134,6 +153,8 @@ void rb_track_aux(rb_solver *sv, double t, const double *y, const rb_aux *a)
                                       -peak_push(&sv->win_vertical, t, -floor_v));
     note_liftoff(sv, t, floor_v);
     note_friction(sv, t, H, floor_v, RB_FRICTION_FLOOR * S->d.W);
+    if (sv->opts.anchor_phi_nn_n > 0 && sv->opts.anchor_phi_vn_n > 0)
+        note_anchor(sv, t, a->bolt_force > 0 ? a->bolt_force : 0, fabs(H));
 }
 
 void rb_track_point(rb_solver *sv, double t, const double *y)

@@ -27,7 +27,7 @@ static const char style[] =
     "th{background:#f0f0f0;font-weight:normal}\n"
     "td.num{text-align:right;font-variant-numeric:tabular-nums;white-space:nowrap}\n"
     "td.pass{color:#1b5e20;font-weight:bold}\ntd.fail{color:#b71c1c;font-weight:bold}\n"
-    "td.warn{background:#fff4d6}\n"
+    "td.warn{background:#fff4d6}\ntd.governs{font-weight:bold}\n"
     "@media (max-width:600px){body{margin:8px}table{font-size:11px}}\n"
     "@media print{body{margin:0}.scroll{overflow:visible}"
     "section.summary{page-break-after:always}"

@@ -150,6 +150,54 @@ static void anchorage(rb_strbuf *b, const rb_report *rep, const rb_out_units *u)
     rb_strbuf_puts(b, "</table></div>\n");
 }
 
+/* The concrete check (a case with concrete:): each mode's strengths, then
+ * each motion's demand at its largest 17.8 utilization. */
+static void concrete(rb_strbuf *b, const rb_report *rep, const rb_out_units *u)
+{
+    const rb_anchor_strength *s = &rep->kase->anchor;
+    char name[32];
+    rb_strbuf_printf(b, "<div class=\"scroll\"><table class=\"concrete\">\n<caption>"
+                        "Anchorage in concrete, ACI 318-19 Chapter 17 (%s)</caption>\n"
+                        "<tr><th>mode</th><th>clause</th><th>nominal (%s)</th><th>&#966;"
+                        "</th><th>seismic</th><th>design (%s)</th></tr>\n",
+                     s->ductile ? "ductile" : "not ductile", u->force, u->force);
+    for (int k = 0; k < RB_ANCHOR_N_MODES; k++) {
+        const rb_anchor_mode_strength *m = &s->mode[k];
+        rb_strbuf_puts(b, "<tr>");
+        cell_text(b, "td", (k == (int)s->tension_mode || k == (int)s->shear_mode)
+                  ? "governs" : NULL, rb_enum_str(rb_anchor_mode_names, k));
+        cell_text(b, "td", NULL, rb_anchor_clause((rb_anchor_mode)k));
+        if (m->applies) {
+            cell_sig(b, m->nominal_n / u->force_f);
+            cell_num(b, m->phi);
+            cell_num(b, m->seismic);
+            cell_sig(b, m->design_n / u->force_f);
+        } else {
+            rb_strbuf_puts(b, "<td colspan=\"4\">does not apply</td>");
+        }
+        rb_strbuf_puts(b, "</tr>\n");
+    }
+    rb_strbuf_puts(b, "</table></div>\n");
+    rb_strbuf_printf(b, "<div class=\"scroll\"><table class=\"demand\">\n<caption>Demand "
+                        "on the anchorage (17.8, tension and shear at the same instant)"
+                        "</caption>\n<tr><th>motion</th><th>utilization</th><th>t (s)</th>"
+                        "<th>tension (%s)</th><th>shear (%s)</th></tr>\n", u->force, u->force);
+    for (size_t i = 0; i < rep->n_motions; i++) {
+        const rb_report_motion *m = &rep->motions[i];
+        const rb_result *r = m->result;
+        if (!r || !r->anchor_checked)
+            continue;
+        rb_strbuf_puts(b, "<tr>");
+        cell_text(b, "td", NULL, motion_name(m, i, name, sizeof name));
+        cell_num(b, r->anchor_max_ratio);
+        cell_num(b, r->anchor_max_s);
+        cell_sig(b, r->anchor_tension_n / u->force_f);
+        cell_sig(b, r->anchor_shear_n / u->force_f);
+        rb_strbuf_puts(b, "</tr>\n");
+    }
+    rb_strbuf_puts(b, "</table></div>\n");
+}
+
 void rb_plot_summary_tables(rb_strbuf *b, const rb_report *rep)
 {
     if (!rep || !rep->kase)
@@ -164,5 +212,7 @@ void rb_plot_summary_tables(rb_strbuf *b, const rb_report *rep)
     verdicts(b, rep);
     results(b, rep, u);
     anchorage(b, rep, u);
+    if (rep->kase->has_concrete)
+        concrete(b, rep, u);
     rb_strbuf_puts(b, "</section>\n");
 }

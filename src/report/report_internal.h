@@ -69,5 +69,16 @@ rb_status rb_report_text_case_design(const rb_report *r, rb_txt_arena *a,
                                      rb_tlist *out);
 rb_status rb_report_text_motion_design(const rb_report *r, size_t i, rb_txt_arena *a,
                                        rb_tlist *out);
+/* n zeroed items of size bytes that live as long as a; NULL when out of
+ * memory (and every later call then fails too). */
+void *rb_txt_arena_alloc(rb_txt_arena *a, size_t n, size_t size);
+
+/* ---- report_text_anchor.c: the concrete check of the text report ------- */
+/* The top-level list "concrete" (one item for a case with concrete:, none
+ * otherwise) with its list "modes"; and a motion's variables has_anchorage
+ * and anchor_*. */
+rb_status rb_report_text_concrete(const rb_report *r, rb_txt_arena *a, rb_tlist *out);
+void rb_report_text_motion_anchorage(rb_tvars *t, const rb_report *r,
+                                     const rb_report_motion *m);
 
 #endif

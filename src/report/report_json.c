@@ -99,6 +99,8 @@ static void add_settings(rb_jctx *cx, cJSON *root, const rb_case *c)
     rb_j_opt(cx, o, "friction_coefficient", k->friction_coefficient > 0,
              k->friction_coefficient);
     rb_j_str(cx, o, "validity", rb_enum_str(rb_validity_mode_names, (int)k->validity));
+    if (c->has_concrete)
+        rb_j_bool(cx, o, "concrete", k->concrete);
 }
 
 static void add_motion_desc(rb_jctx *cx, cJSON *parent, const rb_case_motion *cm,
@@ -310,6 +312,7 @@ static void add_motion(rb_jctx *cx, cJSON *arr, const rb_report *r, size_t i)
     rb_j_warnings(cx, v, "validity_warnings", m->verdict.warnings);
     rb_j_str(cx, v, "reason", m->verdict.reason);
     rb_report_json_validity(cx, o, r, m);
+    rb_report_json_motion_anchorage(cx, o, r, m);
     v = rb_j_obj(cx, o, "result");
     add_peaks(cx, v, m->result, &n);
     add_rows_outcome(cx, v, m->result, &n);
@@ -398,6 +401,7 @@ rb_status rb_report_json_render(const rb_report *r, char **out, rb_diag *diag)
     add_model(&cx, root, &r->kase->model);
     add_derived(&cx, root, &r->derived);
     add_settings(&cx, root, r->kase);
+    rb_report_json_anchorage(&cx, root, r);
     if (cx.st == RB_OK && !(arr = cJSON_AddArrayToObject(root, "motions")))
         cx.st = RB_ERR_NOMEM;
     for (i = 0; i < r->n_motions && cx.st == RB_OK; i++)

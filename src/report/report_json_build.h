@@ -41,4 +41,9 @@ void rb_report_json_validity(rb_jctx *cx, cJSON *motion_o, const rb_report *r,
                              const rb_report_motion *m);
 void rb_j_warnings(rb_jctx *cx, cJSON *o, const char *key, unsigned warnings);
 
+/* report_json_anchor.c: the concrete check, for a case with concrete:. */
+void rb_report_json_anchorage(rb_jctx *cx, cJSON *root, const rb_report *r);
+void rb_report_json_motion_anchorage(rb_jctx *cx, cJSON *motion_o, const rb_report *r,
+                                     const rb_report_motion *m);
+
 #endif

@@ -286,7 +286,8 @@ rb_status rb_report_text_render(const rb_report *r, const char *tmpl,
     rb_tlist *motion_lists = calloc(n ? n : 1, sizeof *motion_lists);
     rb_txt_arena *arena = rb_txt_arena_new();
     rb_tscope top = {0};
-    rb_tlist lists[2] = { { "motions", NULL, 0 }, { "design", NULL, 0 } };
+    rb_tlist lists[3] = { { "motions", NULL, 0 }, { "design", NULL, 0 },
+                          { "concrete", NULL, 0 } };
     char (*heads)[RB_HEADLINE_MAX] = calloc(n ? n : 1, sizeof *heads);
     char (*srcs)[96] = calloc(n ? n : 1, sizeof *srcs);
     rb_tvars t;
@@ -310,6 +311,7 @@ rb_status rb_report_text_render(const rb_report *r, const char *tmpl,
         motion_row_vars(&t, r->motions[i].result, &norms, out_units(r));
         motion_outcome_vars(&t, r->motions[i].result, out_units(r));
         motion_validity_vars(&t, r, &r->motions[i]);
+        rb_report_text_motion_anchorage(&t, r, &r->motions[i]);
         items[i].vars = t.v;
         items[i].n_vars = t.n;
         if (rb_report_text_motion_design(r, i, arena, &motion_lists[i]) != RB_OK)
@@ -317,12 +319,13 @@ rb_status rb_report_text_render(const rb_report *r, const char *tmpl,
         items[i].lists = &motion_lists[i];
         items[i].n_lists = 1;
     }
-    if (rb_report_text_case_design(r, arena, &lists[1]) != RB_OK)
+    if (rb_report_text_case_design(r, arena, &lists[1]) != RB_OK
+        || rb_report_text_concrete(r, arena, &lists[2]) != RB_OK)
         goto done;
     lists[0].items = items;
     lists[0].n = n;
     top.lists = lists;
-    top.n_lists = 2;
+    top.n_lists = 3;
     st = rb_template_render(tmpl, &top, out, diag);
 done:
     rb_txt_arena_free(arena);

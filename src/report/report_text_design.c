@@ -38,6 +38,11 @@ static void *arena_alloc(rb_txt_arena *a, size_t n, size_t size)
     return p;
 }
 
+void *rb_txt_arena_alloc(rb_txt_arena *a, size_t n, size_t size)
+{
+    return arena_alloc(a, n, size);
+}
+
 rb_txt_arena *rb_txt_arena_new(void)
 {
     return calloc(1, sizeof(rb_txt_arena));

@@ -60,13 +60,13 @@ outputs)
     # no progress line when stderr is not a terminal
     lacks "$s/err" "cases, "
     # CSV: header, one row per case and motion, errors last column
-    [ "$(head -1 "$s/b.csv")" = "index,source,line,tag,motion,governing,verdict,case_verdict,usage,shear_over_w,force_over_fy,theta_over_alpha,validity_warnings,error" ] \
+    [ "$(head -1 "$s/b.csv")" = "index,source,line,tag,motion,governing,verdict,case_verdict,usage,shear_over_w,force_over_fy,theta_over_alpha,validity_warnings,anchor_mode,anchor_utilization,error" ] \
         || fail "CSV header"
     [ "$(wc -l <"$s/b.csv")" -eq 13 ] || fail "CSV rows: $(wc -l <"$s/b.csv")"
     has "$s/b.csv" '^2,tests/batch/cases/c-suite.yaml,0,c-suite,strong,1,fail,fail,1,'
     has "$s/b.csv" '^2,tests/batch/cases/c-suite.yaml,0,c-suite,weak,0,pass,fail,'
     has "$s/b.csv" '^6,tests/batch/list.csv,5,"P-103, spare",motion,1,fail,fail,'
-    has "$s/b.csv" '^7,tests/batch/list.csv,6,P-104,,0,unreadable,unreadable,,,,,,"tests/batch/list.csv:6:26: '
+    has "$s/b.csv" '^7,tests/batch/list.csv,6,P-104,,0,unreadable,unreadable,,,,,,,,"tests/batch/list.csv:6:26: '
     # JSON: counts, governing motion, mean and max of the suite
     has "$s/b.json" '"format":	"rockbolt-batch"'
     has "$s/b.json" '"unreadable":	4'
@@ -170,7 +170,7 @@ reports)
 design)
     run 1 batch tests/batch/cases/a-pass.yaml tests/batch/cases/c-suite.yaml --design \
         -q --json "$s/d.json" --csv "$s/d.csv"
-    has "$s/d.csv" "design_factor,design_factor_bound,gap_ratio,validity_warnings,error"
+    has "$s/d.csv" "design_factor,design_factor_bound,gap_ratio,validity_warnings,anchor_mode,anchor_utilization,error"
     has "$s/d.json" '"min_design_factor":'
     has "$s/d.json" '"gap_ratio":	0.0325'
     run 1 batch tests/batch/cases/a-pass.yaml tests/batch/cases/c-suite.yaml --design \

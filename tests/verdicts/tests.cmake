@@ -18,6 +18,11 @@ if(Python3_Interpreter_FOUND)
                    $<TARGET_FILE:rockbolt> ${CMAKE_CURRENT_BINARY_DIR}/verdict-scratch/overrides)
   set_tests_properties(verdict_overrides PROPERTIES LABELS verdicts
       WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} TIMEOUT 600)
+  add_test(NAME verdict_concrete
+           COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/tests/verdicts/concrete.py
+                   $<TARGET_FILE:rockbolt> ${CMAKE_CURRENT_BINARY_DIR}/verdict-scratch/concrete)
+  set_tests_properties(verdict_concrete PROPERTIES LABELS verdicts
+      WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} TIMEOUT 600)
   # 1000 random cases through check, batch (files and a list) and the
   # design searches' run: about 30 s here
   add_test(NAME verdict_property

@@ -1,0 +1,93 @@
+/* The concrete side of the anchorage (ACI 318-19 Chapter 17): the design
+ * strengths of the cabinet's anchors in each mode, from the model's bolts
+ * and the slab. No I/O.
+ *
+ * Layout (docs/code-check.md, "The anchorage"): two rows of n anchors at
+ * spacing s, the rows 2 (l - b) apart (each row l - b from the plate's
+ * centre), one slab edge parallel to the rows at c_a1 from the nearer row,
+ * the slab h_a thick. Tension: the loaded row, as a group of n (the other
+ * row is slack whenever one is loaded). Shear: the whole horizontal floor
+ * reaction, no friction counted (ASCE 7 13.4); steel over all 2n anchors,
+ * breakout of the row nearer the edge towards it, pryout of both rows.
+ * Units SI throughout (rockbolt/aci17.h). */
+#ifndef ROCKBOLT_ANCHOR_H
+#define ROCKBOLT_ANCHOR_H
+
+#include <stdbool.h>
+#include "rockbolt/aci17.h"
+#include "rockbolt/model.h"
+#include "rockbolt/status.h"
+
+typedef enum {
+    RB_ANCHOR_CAST_IN_HEADED = 0   /* headed bolts or studs; post-installed later */
+} rb_anchor_type;
+
+typedef struct {
+    /* the slab */
+    double fc_pa;          /* f'c */
+    bool cracked;          /* default true */
+    double lambda_a;       /* lightweight-concrete factor, default 1 */
+    double thickness_m;    /* h_a */
+    double edge_m;         /* c_a1 from the nearer row to the slab edge;
+                              INFINITY: no edge near */
+    bool condition_a;      /* supplementary reinforcement (17.5.3, condition A) */
+    bool seismic;          /* SDC C-F: 17.10 applies; default true */
+    /* the anchors (diameter, area, fya and number per row: the model's) */
+    rb_anchor_type type;
+    double hef_m;          /* effective embedment */
+    double spacing_m;      /* between the anchors of a row */
+    double futa_pa;        /* specified tensile strength */
+    double abrg_m2;        /* bearing area of the head; <= 0: a heavy hex head */
+    bool grout_pad;        /* shear through a grout pad (17.7.1.2.1) */
+    rb_aci17_coef coef;    /* coefficients of the SI or the in-lb edition */
+} rb_anchor_inputs;
+
+/* Defaults: cracked, lambda_a 1, seismic, no edge, condition B, no grout
+ * pad, cast-in headed, SI coefficients; the rest zero (required). */
+void rb_anchor_inputs_init(rb_anchor_inputs *in);
+
+typedef enum {
+    RB_ANCHOR_STEEL_N = 0,  /* 17.6.1 */
+    RB_ANCHOR_BREAKOUT_N,   /* 17.6.2 */
+    RB_ANCHOR_PULLOUT_N,    /* 17.6.3 */
+    RB_ANCHOR_SIDEFACE_N,   /* 17.6.4 */
+    RB_ANCHOR_STEEL_V,      /* 17.7.1 */
+    RB_ANCHOR_BREAKOUT_V,   /* 17.7.2 */
+    RB_ANCHOR_PRYOUT_V,     /* 17.7.3 */
+    RB_ANCHOR_N_MODES
+} rb_anchor_mode;
+
+typedef struct {
+    bool applies;          /* side-face blowout: only near an edge */
+    double nominal_n;      /* of the group the mode takes (see above) */
+    double phi;            /* 17.5.3 */
+    double seismic;        /* 0.75 on concrete tension modes (17.10.5.4), else 1 */
+    double design_n;       /* phi seismic nominal */
+} rb_anchor_mode_strength;
+
+typedef struct {
+    rb_anchor_mode_strength mode[RB_ANCHOR_N_MODES];
+    double da_m;           /* anchor diameter, from the bolt's area */
+    double abrg_m2;        /* bearing area used */
+    double phi_nn_n;       /* least design tension strength of a row */
+    double phi_vn_n;       /* least design shear strength of the anchorage */
+    rb_anchor_mode tension_mode, shear_mode; /* which governs each */
+    /* 17.10.5.3: the row's concrete-governed nominal tension strength
+     * over 1.2 x its steel strength (>= 1: the steel yields first), and
+     * the stretch length against 8 da */
+    double ductility_margin;
+    bool stretch_ok;
+    bool ductile;          /* both hold */
+} rb_anchor_strength;
+
+/* Strengths of the anchorage of model m (bolts_per_row, bolt area,
+ * yield stress, lever arm, half width, deformable length) on the slab and
+ * anchors of in. RB_ERR_INVALID with diag->key naming the input for a
+ * model without bolts, or an input that is missing or out of range. */
+rb_status rb_anchor_check(const rb_model *m, const rb_anchor_inputs *in,
+                          rb_anchor_strength *out, rb_diag *diag);
+
+/* The clause of a mode ("17.6.2"); never NULL. */
+const char *rb_anchor_clause(rb_anchor_mode mode);
+
+#endif

@@ -1,0 +1,111 @@
+/* concrete: and the anchorage's keys for the concrete check (ACI 318-19
+ * Chapter 17): read with the rest of the case, then, once the model is
+ * whole, the anchorage's strengths, which every run of the case tracks its
+ * demand against (rb_solve_opts.anchor_phi_*) and the judge reads. */
+#include <math.h>
+#include <string.h>
+#include "case_internal.h"
+
+static const char *const concrete_keys[] = {
+    "strength", "cracked", "lightweight", "thickness", "edge_distance", "reinforcement",
+    "seismic", "coefficients", NULL};
+
+static void flag(rb_cctx *c, rb_ynode *m, const char *path, const char *key, bool *out)
+{
+    char k[RB_CASE_KEY_MAX];
+    int b;
+    rb_ynode *v = rb_cv_get(c, m, path, key, 0, "");
+    rb_case_keypath(k, path, key);
+    if (v && rb_cv_bool(c, v, k, &b))
+        *out = b != 0;
+}
+
+static void read_slab(rb_cctx *c, rb_ynode *cn, rb_anchor_inputs *in)
+{
+    static const char *const reinforcement[] = {"none", "present", NULL};
+    const char *p = "concrete";
+    int i;
+    rb_cv_number(c, cn, p, "strength", 1, RB_DIM_STRESS, 6.9e6, 1, 138e6, 1, &in->fc_pa);
+    flag(c, cn, p, "cracked", &in->cracked);
+    rb_cv_number(c, cn, p, "lightweight", 0, RB_DIM_RATIO, 0, 0, 1, 1, &in->lambda_a);
+    rb_cv_number(c, cn, p, "thickness", 1, RB_DIM_LENGTH, 0, 0, 100, 1, &in->thickness_m);
+    rb_cv_number(c, cn, p, "edge_distance", 0, RB_DIM_LENGTH, 0, 0, (double)NAN, 0,
+                 &in->edge_m);
+    rb_ynode *v = rb_cv_get(c, cn, p, "reinforcement", 0, "");
+    if (v && rb_cv_enum(c, v, "concrete.reinforcement", reinforcement, &i))
+        in->condition_a = i == 1;
+    flag(c, cn, p, "seismic", &in->seismic);
+    v = rb_cv_get(c, cn, p, "coefficients", 0, "");
+    if (v && rb_cv_enum_table(c, v, "concrete.coefficients", rb_aci17_coef_names, 0, &i)) {
+        in->coef = (rb_aci17_coef)i;
+        c->anchor_coef_given = 1;
+    }
+    rb_cv_unknown_keys(c, cn, p, concrete_keys);
+}
+
+/* The anchors' own keys: read whenever given, required with concrete:. */
+static void read_anchors(rb_cctx *c, rb_ynode *an, int required, int per_row,
+                         rb_anchor_inputs *in)
+{
+    const char *p = "anchorage";
+    int i;
+    rb_ynode *v = rb_cv_get(c, an, p, "type", 0, "");
+    if (v && rb_cv_enum_table(c, v, "anchorage.type", rb_anchor_type_names, 0, &i))
+        in->type = (rb_anchor_type)i;
+    rb_cv_number(c, an, p, "embedment", required, RB_DIM_LENGTH, 0, 0, 10, 1, &in->hef_m);
+    rb_cv_number(c, an, p, "spacing", required && per_row > 1, RB_DIM_LENGTH, 0, 0, 100, 1,
+                 &in->spacing_m);
+    rb_cv_number(c, an, p, "ultimate_stress", required, RB_DIM_STRESS, 0, 0, 10e9, 1,
+                 &in->futa_pa);
+    rb_cv_number(c, an, p, "head_bearing_area", 0, RB_DIM_AREA, 0, 0, 1, 1, &in->abrg_m2);
+    flag(c, an, p, "grout_pad", &in->grout_pad);
+}
+
+void rb_case_read_concrete(rb_cctx *c, rb_ynode *root, rb_ynode *an, rb_case *cs)
+{
+    rb_anchor_inputs_init(&cs->anchor_in);
+    rb_ynode *cn = rb_cv_get(c, root, "", "concrete", 0, "");
+    if (cn && rb_cv_map(c, cn, "concrete")) {
+        cs->has_concrete = 1;
+        c->concrete_node = cn;
+        read_slab(c, cn, &cs->anchor_in);
+    }
+    c->anchorage_node = an;
+    if (an && cs->model.bolt_model != RB_BOLT_NONE)
+        read_anchors(c, an, cs->has_concrete, cs->model.bolts_per_row, &cs->anchor_in);
+    else if (cs->has_concrete)
+        rb_cctx_error(c, cn, "concrete", "the concrete check needs bolts: the anchorage "
+                      "is free-standing (model: none)");
+}
+
+/* The node a key of the check names ("anchorage.embedment"), else the
+ * concrete: section. */
+static const rb_ynode *node_of(rb_cctx *c, const char *key)
+{
+    rb_ynode *map = strncmp(key, "anchorage.", 10) == 0 ? c->anchorage_node
+                  : strncmp(key, "concrete.", 9) == 0 ? c->concrete_node : NULL;
+    const char *k = strchr(key, '.');
+    rb_yentry *e = map && k ? rb_ymap_find(map, k + 1) : NULL;
+    return e ? e->value : c->concrete_node;
+}
+
+void rb_case_resolve_concrete(rb_cctx *c, rb_case *cs)
+{
+    rb_diag d;
+    /* an input already refused would only be refused again here */
+    if (!cs->has_concrete || cs->model.bolt_model == RB_BOLT_NONE
+        || c->diags->n > c->first_diag)
+        return;
+    /* the edition of the units the case is written in, unless it says */
+    if (!c->anchor_coef_given)
+        cs->anchor_in.coef = cs->output_units == RB_UNITS_US ? RB_ACI17_INLB : RB_ACI17_SI;
+    rb_diag_clear(&d);
+    if (rb_anchor_check(&cs->model, &cs->anchor_in, &cs->anchor, &d) != RB_OK) {
+        rb_cctx_error(c, node_of(c, d.key), d.key, "%s", d.msg);
+        return;
+    }
+    cs->solve.anchor_phi_nn_n = cs->anchor.phi_nn_n;
+    cs->solve.anchor_phi_vn_n = cs->anchor.phi_vn_n;
+    cs->criteria.concrete = c->judge_concrete != 0;
+    cs->criteria.anchor_ductile = cs->anchor.ductile || !cs->anchor_in.seismic;
+}

@@ -1,0 +1,82 @@
+/* The concrete check in the JSON report: under the root the anchorage's
+ * inputs and its design strength in each mode of ACI 318-19 Chapter 17;
+ * under each motion the demand it put on them. Written only for a case
+ * with concrete:, so that other reports keep their bytes. SI throughout. */
+#include <math.h>
+#include "report_json_build.h"
+#include "rockbolt/names.h"
+
+static void add_inputs(rb_jctx *cx, cJSON *o, const rb_anchor_inputs *in)
+{
+    rb_j_str(cx, o, "type", rb_enum_str(rb_anchor_type_names, (int)in->type));
+    rb_j_str(cx, o, "coefficients", rb_enum_str(rb_aci17_coef_names, (int)in->coef));
+    rb_j_num(cx, o, "strength_pa", in->fc_pa);
+    rb_j_bool(cx, o, "cracked", in->cracked);
+    rb_j_num(cx, o, "lightweight", in->lambda_a);
+    rb_j_num(cx, o, "thickness_m", in->thickness_m);
+    rb_j_opt(cx, o, "edge_distance_m", isfinite(in->edge_m), in->edge_m);
+    rb_j_str(cx, o, "reinforcement", in->condition_a ? "present" : "none");
+    rb_j_bool(cx, o, "seismic", in->seismic);
+    rb_j_num(cx, o, "embedment_m", in->hef_m);
+    rb_j_num(cx, o, "spacing_m", in->spacing_m);
+    rb_j_num(cx, o, "ultimate_stress_pa", in->futa_pa);
+    rb_j_bool(cx, o, "grout_pad", in->grout_pad);
+}
+
+void rb_report_json_anchorage(rb_jctx *cx, cJSON *root, const rb_report *r)
+{
+    const rb_case *c = r->kase;
+    if (!c || !c->has_concrete || cx->st != RB_OK)
+        return;
+    const rb_anchor_strength *a = &c->anchor;
+    cx->where = "anchorage_check";
+    cJSON *o = rb_j_obj(cx, root, "anchorage_check");
+    add_inputs(cx, rb_j_obj(cx, o, "inputs"), &c->anchor_in);
+    rb_j_bool(cx, o, "judged", c->criteria.concrete);
+    rb_j_num(cx, o, "anchor_diameter_m", a->da_m);
+    rb_j_num(cx, o, "head_bearing_area_m2", a->abrg_m2);
+    cJSON *modes = cJSON_AddArrayToObject(o, "modes");
+    rb_j_oom(cx, modes);
+    for (int k = 0; modes && k < RB_ANCHOR_N_MODES && cx->st == RB_OK; k++) {
+        const rb_anchor_mode_strength *s = &a->mode[k];
+        cJSON *m = cJSON_CreateObject();
+        if (!m || !cJSON_AddItemToArray(modes, m)) {
+            cJSON_Delete(m);
+            cx->st = RB_ERR_NOMEM;
+            return;
+        }
+        rb_j_str(cx, m, "mode", rb_enum_str(rb_anchor_mode_names, k));
+        rb_j_str(cx, m, "clause", rb_anchor_clause((rb_anchor_mode)k));
+        rb_j_bool(cx, m, "applies", s->applies);
+        rb_j_opt(cx, m, "nominal_n", s->applies, s->nominal_n);
+        rb_j_num(cx, m, "phi", s->phi);
+        rb_j_num(cx, m, "seismic_factor", s->seismic);
+        rb_j_opt(cx, m, "design_n", s->applies, s->design_n);
+    }
+    rb_j_num(cx, o, "phi_nn_row_n", a->phi_nn_n);
+    rb_j_str(cx, o, "tension_governs", rb_enum_str(rb_anchor_mode_names, (int)a->tension_mode));
+    rb_j_num(cx, o, "phi_vn_n", a->phi_vn_n);
+    rb_j_str(cx, o, "shear_governs", rb_enum_str(rb_anchor_mode_names, (int)a->shear_mode));
+    rb_j_num(cx, o, "ductility_margin", a->ductility_margin);
+    rb_j_bool(cx, o, "stretch_ok", a->stretch_ok);
+    rb_j_bool(cx, o, "ductile", a->ductile);
+}
+
+void rb_report_json_motion_anchorage(rb_jctx *cx, cJSON *motion_o, const rb_report *r,
+                                     const rb_report_motion *m)
+{
+    const rb_result *res = m->result;
+    if (!r->kase || !r->kase->has_concrete || !res || !res->anchor_checked)
+        return;
+    const rb_anchor_strength *a = &r->kase->anchor;
+    char clause[16];
+    cJSON *o = rb_j_obj(cx, motion_o, "anchorage");
+    rb_j_num(cx, o, "utilization", res->anchor_max_ratio);
+    snprintf(clause, sizeof clause, "17.8.%d", res->anchor_clause);
+    rb_j_str(cx, o, "clause", clause);
+    rb_j_num(cx, o, "time_s", res->anchor_max_s);
+    rb_j_num(cx, o, "tension_n", res->anchor_tension_n);
+    rb_j_num(cx, o, "shear_n", res->anchor_shear_n);
+    rb_j_num(cx, o, "tension_ratio", res->anchor_tension_n / a->phi_nn_n);
+    rb_j_num(cx, o, "shear_ratio", res->anchor_shear_n / a->phi_vn_n);
+}

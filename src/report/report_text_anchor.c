@@ -1,0 +1,104 @@
+/* The concrete check in the text report: the anchorage's design strength
+ * in each mode (list "concrete", with its list "modes"), and each motion's
+ * demand on it at the instant of its largest 17.8 utilization. Forces in
+ * the case's output units. */
+#include <math.h>
+#include <stdio.h>
+#include "rockbolt/names.h"
+#include "report_internal.h"
+
+static const rb_out_units *units_of(const rb_report *r)
+{
+    return rb_out_units_of(r->kase->output_units);
+}
+
+static int modes_list(rb_txt_arena *a, const rb_report *r, rb_tlist *out)
+{
+    const rb_anchor_strength *s = &r->kase->anchor;
+    const rb_out_units *u = units_of(r);
+    rb_tscope *items = rb_txt_arena_alloc(a, RB_ANCHOR_N_MODES, sizeof *items);
+    out->name = "modes";
+    out->items = items;
+    out->n = RB_ANCHOR_N_MODES;
+    if (!items)
+        return 0;
+    for (int k = 0; k < RB_ANCHOR_N_MODES; k++) {
+        const rb_anchor_mode_strength *m = &s->mode[k];
+        rb_tvars t = {rb_txt_arena_alloc(a, RB_TXT_MAX_VARS, sizeof(rb_tvar)), 0};
+        if (!t.v)
+            return 0;
+        rb_tv_str(&t, "mode", rb_enum_str(rb_anchor_mode_names, k));
+        rb_tv_str(&t, "clause", rb_anchor_clause((rb_anchor_mode)k));
+        rb_tv_opt(&t, "nominal", m->applies, m->nominal_n / u->force_f);
+        rb_tv_num(&t, "phi", m->phi);
+        rb_tv_num(&t, "seismic", m->seismic);
+        rb_tv_opt(&t, "design", m->applies, m->design_n / u->force_f);
+        rb_tv_str(&t, "applies", m->applies ? "" : "does not apply");
+        items[k].vars = t.v;
+        items[k].n_vars = t.n;
+    }
+    return 1;
+}
+
+rb_status rb_report_text_concrete(const rb_report *r, rb_txt_arena *a, rb_tlist *out)
+{
+    out->name = "concrete";
+    out->items = NULL;
+    out->n = 0;
+    if (!r->kase || !r->kase->has_concrete)
+        return RB_OK;
+    const rb_anchor_inputs *in = &r->kase->anchor_in;
+    const rb_anchor_strength *s = &r->kase->anchor;
+    const rb_out_units *u = units_of(r);
+    rb_tscope *sc = rb_txt_arena_alloc(a, 1, sizeof *sc);
+    rb_tlist *modes = rb_txt_arena_alloc(a, 1, sizeof *modes);
+    rb_tvars t = {rb_txt_arena_alloc(a, RB_TXT_MAX_VARS, sizeof(rb_tvar)), 0};
+    if (!sc || !modes || !t.v || !modes_list(a, r, modes))
+        return RB_ERR_NOMEM;
+    rb_tv_str(&t, "anchor_type", rb_enum_str(rb_anchor_type_names, (int)in->type));
+    rb_tv_str(&t, "coefficients", rb_enum_str(rb_aci17_coef_names, (int)in->coef));
+    rb_tv_num(&t, "fc", in->fc_pa / u->stress_f);
+    rb_tv_str(&t, "cracked", in->cracked ? "cracked" : "uncracked");
+    rb_tv_num(&t, "slab", in->thickness_m / u->small_length_f);
+    rb_tv_opt(&t, "edge", isfinite(in->edge_m), in->edge_m / u->small_length_f);
+    rb_tv_num(&t, "hef", in->hef_m / u->small_length_f);
+    rb_tv_num(&t, "spacing", in->spacing_m / u->small_length_f);
+    rb_tv_str(&t, "condition", in->condition_a ? "A" : "B");
+    rb_tv_str(&t, "seismic_design", in->seismic ? "yes (17.10)" : "no");
+    rb_tv_num(&t, "phi_nn", s->phi_nn_n / u->force_f);
+    rb_tv_num(&t, "phi_vn", s->phi_vn_n / u->force_f);
+    rb_tv_str(&t, "tension_governs", rb_enum_str(rb_anchor_mode_names, (int)s->tension_mode));
+    rb_tv_str(&t, "shear_governs", rb_enum_str(rb_anchor_mode_names, (int)s->shear_mode));
+    rb_tv_num(&t, "ductility_margin", s->ductility_margin);
+    rb_tv_str(&t, "stretch_ok", s->stretch_ok ? "at least 8 da" : "below 8 da");
+    rb_tv_str(&t, "ductile", s->ductile ? "ductile" : "NOT ductile");
+    rb_tv_str(&t, "judged", r->kase->criteria.concrete ? "part of the verdict"
+                                                        : "reported, not judged");
+    sc->vars = t.v;
+    sc->n_vars = t.n;
+    sc->lists = modes;
+    sc->n_lists = 1;
+    out->items = sc;
+    out->n = 1;
+    return RB_OK;
+}
+
+void rb_report_text_motion_anchorage(rb_tvars *t, const rb_report *r,
+                                     const rb_report_motion *m)
+{
+    const rb_result *res = m->result;
+    int have = r->kase && r->kase->has_concrete && res && res->anchor_checked;
+    const rb_out_units *u = units_of(r);
+    static const char *const clauses[] = {"17.8", "17.8.1", "17.8.2", "17.8.3"};
+    rb_tv_int(t, "has_anchorage", have);
+    if (!have)
+        return;
+    const rb_anchor_strength *s = &r->kase->anchor;
+    rb_tv_num(t, "anchor_utilization", res->anchor_max_ratio);
+    rb_tv_str(t, "anchor_clause", clauses[res->anchor_clause & 3]);
+    rb_tv_num(t, "anchor_s", res->anchor_max_s);
+    rb_tv_num(t, "anchor_tension", res->anchor_tension_n / u->force_f);
+    rb_tv_num(t, "anchor_tension_ratio", res->anchor_tension_n / s->phi_nn_n);
+    rb_tv_num(t, "anchor_shear", res->anchor_shear_n / u->force_f);
+    rb_tv_num(t, "anchor_shear_ratio", res->anchor_shear_n / s->phi_vn_n);
+}

@@ -1,0 +1,219 @@
+/* The anchorage's strengths in concrete (rockbolt/anchor.h, aci17.c):
+ *   - the modes of a row of two 1/2 in headed bolts, worked by hand here in
+ *     the in-lb formulas of ACI 318-19 (lb, in, psi);
+ *   - a case written in US customary units and the same case in SI give
+ *     the same strengths when they use the same coefficients (the formulas
+ *     are dimensional: only the conversions could differ);
+ *   - the cast-in worked examples of AISC Design Guide 1, 3rd ed. (2024),
+ *     "Base Connection Design for Steel Structures", Examples 4.7-3, 4.7-4,
+ *     4.7-7 and 4.7-11, to the rounding of the source (three figures);
+ *   - the demand a run puts on the anchorage is the 17.8 interaction of
+ *     its tension and shear at one instant. */
+#include <math.h>
+#include <string.h>
+#include "harness.h"
+#include "rockbolt/anchor.h"
+#include "rockbolt/case.h"
+
+#define IN RB_ACI17_IN_M
+#define LB RB_ACI17_LBF_N
+#define PSI RB_ACI17_PSI_PA
+#define KIP (1000 * LB)
+
+/* |got - printed| within half a unit of the printed value's third figure */
+static int three_figures(double got, double printed)
+{
+    double unit = pow(10, floor(log10(fabs(printed))) - 2);
+    return fabs(got - printed) <= 0.5 * unit * (1 + 1e-9);
+}
+
+#define CHECK3(got, printed) do { double g3_ = (got); rb_test_checks++; \
+    if (!three_figures(g3_, (printed))) { rb_test_failures++; \
+    fprintf(stderr, "%s:%d: FAILED: %s = %.6g, printed %.6g\n", __FILE__, __LINE__, \
+            #got, g3_, (double)(printed)); } } while (0)
+
+static void model_2x(rb_model *m)
+{
+    rb_model_reference(m);
+    m->bolts_per_row = 2;
+    m->bolt_area_m2 = M_PI * 0.5 * 0.5 / 4 * IN * IN;   /* 1/2 in, gross */
+    m->yield_stress_pa = 36000 * PSI;
+    m->deformable_length_m = 8 * IN;
+}
+
+/* One row of two bolts 8 in apart, 4 in deep in a 6 in slab, 18 in from
+ * the edge, f'c 4000 psi cracked, Abrg 0.467 in^2, in-lb coefficients. */
+static void hand_worked(void)
+{
+    rb_model m;
+    rb_anchor_inputs in;
+    rb_anchor_strength s;
+    rb_diag d;
+    model_2x(&m);
+    rb_anchor_inputs_init(&in);
+    in.coef = RB_ACI17_INLB;
+    in.fc_pa = 4000 * PSI;
+    in.thickness_m = 6 * IN;
+    in.edge_m = 18 * IN;
+    in.hef_m = 4 * IN;
+    in.spacing_m = 8 * IN;
+    in.futa_pa = 58000 * PSI;
+    in.abrg_m2 = 0.467 * IN * IN;
+    CHECK(rb_anchor_check(&m, &in, &s, &d) == RB_OK);
+    double ase = M_PI / 16, sqfc = sqrt(4000.0);
+    /* 17.6.1: 2 Ase futa */
+    CHECK_REL(s.mode[RB_ANCHOR_STEEL_N].nominal_n, 2 * ase * 58000 * LB, 1e-12);
+    /* 17.6.2: ANc = (6 + 8 + 6) x (6 + 6), ANco = 9 x 16, Nb = 24 sqrt(f'c) 4^1.5 */
+    double ncbg = 240.0 / 144.0 * 24 * sqfc * 8;
+    CHECK_REL(s.mode[RB_ANCHOR_BREAKOUT_N].nominal_n, ncbg * LB, 1e-12);
+    /* 17.6.3: 2 x 8 Abrg f'c */
+    CHECK_REL(s.mode[RB_ANCHOR_PULLOUT_N].nominal_n, 2 * 8 * 0.467 * 4000 * LB, 1e-12);
+    /* 17.6.4: hef = 4 in < 2.5 ca1 = 45 in: no side-face blowout */
+    CHECK(!s.mode[RB_ANCHOR_SIDEFACE_N].applies);
+    /* 17.7.1: 4 x 0.6 Ase futa */
+    CHECK_REL(s.mode[RB_ANCHOR_STEEL_V].nominal_n, 4 * 0.6 * ase * 58000 * LB, 1e-12);
+    /* 17.7.2: the row at 18 in: AVc = (54 + 8) x 6 (ha < 1.5 ca1),
+     * AVco = 4.5 x 18^2, psi_h = sqrt(1.5 x 18 / 6); Vb the lesser of
+     * 7 (le/da)^0.2 sqrt(da) sqrt(f'c) ca1^1.5 (le = 8 da) and 9 sqrt(f'c) ca1^1.5 */
+    double ca = pow(18, 1.5), da = 0.5;
+    double vb = fmin(7 * pow(8, 0.2) * sqrt(da) * sqfc * ca, 9 * sqfc * ca);
+    double vcbg = 62.0 * 6 / (4.5 * 324) * sqrt(27.0 / 6) * vb;
+    CHECK_REL(s.mode[RB_ANCHOR_BREAKOUT_V].nominal_n, vcbg * LB, 1e-12);
+    /* 17.7.3: kcp = 2 x the breakout of both rows, 2 (l - b) apart; A_Nc
+     * is at most n A_Nco (17.6.2.1.1) */
+    double apart = 2 * (m.lever_arm_m - m.half_width_m) / IN;
+    double anc = fmin((6 + 8 + 6) * (6 + apart + 6), 4 * 144.0);
+    CHECK_REL(s.mode[RB_ANCHOR_PRYOUT_V].nominal_n, 2 * anc / 144 * 24 * sqfc * 8 * LB,
+              1e-12);
+    /* phi (Table 17.5.3, condition B) and 0.75 on concrete tension (17.10.5.4) */
+    CHECK(s.mode[RB_ANCHOR_BREAKOUT_N].phi == 0.70 && s.mode[RB_ANCHOR_BREAKOUT_N].seismic == 0.75);
+    CHECK(s.mode[RB_ANCHOR_STEEL_N].phi == 0.75 && s.mode[RB_ANCHOR_STEEL_N].seismic == 1.0);
+    CHECK_REL(s.phi_nn_n, 0.70 * 0.75 * ncbg * LB, 1e-12);
+    CHECK(s.tension_mode == RB_ANCHOR_BREAKOUT_N);
+    /* 17.10.5.3: breakout 20 239 lb < 1.2 x steel 22 777 lb: not ductile */
+    CHECK_REL(s.ductility_margin, ncbg / (1.2 * 2 * ase * 58000), 1e-12);
+    CHECK(!s.ductile && s.stretch_ok);
+    /* inputs out of range name their key */
+    in.hef_m = 7 * IN;
+    CHECK(rb_anchor_check(&m, &in, &s, &d) == RB_ERR_INVALID
+          && strcmp(d.key, "anchorage.embedment") == 0);
+}
+
+static const char *const us_case =
+    "equipment: {mass: 1000 lb, height: 77 in, base_width: 36 in, frequency: 5 Hz,"
+    " damping: 1 %}\n"
+    "anchorage: {model: rigid-plastic, bolts_per_row: 2, diameter: 0.5 in,"
+    " yield_stress: 36 ksi, toughness: 12000 in-lbf/in^3, deformable_length: 8 in,"
+    " edge_distance: 4 in, embedment: 5 in, spacing: 8 in, ultimate_stress: 58 ksi}\n"
+    "gap: 0.3 in\n"
+    "concrete: {strength: 4000 psi, thickness: 8 in, edge_distance: 6 in,"
+    " coefficients: %s}\n"
+    "motion: {type: harmonic, amplitude: 0.5 g, frequency: 4 Hz, duration: 0.5 s}\n";
+
+/* The same case in SI, every length and stress converted exactly. */
+static const char *const si_case =
+    "equipment: {mass: 453.59237 kg, height: 1.9558 m, base_width: 0.9144 m,"
+    " frequency: 5 Hz, damping: 1 %}\n"
+    "anchorage: {model: rigid-plastic, bolts_per_row: 2, diameter: 12.7 mm,"
+    " yield_stress: 248.21126255406 MPa, toughness: 82737.0875180 kJ/m^3,"
+    " deformable_length: 203.2 mm, edge_distance: 101.6 mm, embedment: 127 mm,"
+    " spacing: 203.2 mm, ultimate_stress: 399.8959230037649 MPa}\n"
+    "gap: 7.62 mm\n"
+    "concrete: {strength: 27.579029172673444 MPa, thickness: 203.2 mm,"
+    " edge_distance: 152.4 mm, coefficients: %s}\n"
+    "motion: {type: harmonic, amplitude: 0.5 g, frequency: 4 Hz, duration: 0.5 s}\n";
+
+/* fmt with its one %s replaced by coef */
+static int load(const char *fmt, const char *coef, rb_case *c)
+{
+    char text[2048];
+    rb_diag_list dl = {0};
+    const char *at = strstr(fmt, "%s");
+    snprintf(text, sizeof text, "%.*s%s%s", (int)(at - fmt), fmt, coef, at + 2);
+    rb_status st = rb_case_load_text("inline.yaml", text, strlen(text), NULL, c, &dl);
+    for (size_t i = 0; i < dl.n; i++)
+        fprintf(stderr, "%s:%d:%d: %s: %s\n", dl.items[i].file, dl.items[i].line,
+                dl.items[i].col, dl.items[i].key, dl.items[i].msg);
+    rb_diag_list_free(&dl);
+    return st == RB_OK;
+}
+
+static void units_agree(void)
+{
+    const char *coefs[2] = {"in-lb", "si"};
+    for (int k = 0; k < 2; k++) {
+        rb_case us, si;
+        CHECK(load(us_case, coefs[k], &us) && load(si_case, coefs[k], &si));
+        CHECK(us.has_concrete && si.has_concrete);
+        for (int j = 0; j < RB_ANCHOR_N_MODES; j++)
+            if (us.anchor.mode[j].applies || si.anchor.mode[j].applies)
+                CHECK_REL(si.anchor.mode[j].nominal_n, us.anchor.mode[j].nominal_n, 1e-9);
+        CHECK_REL(si.solve.anchor_phi_nn_n, us.solve.anchor_phi_nn_n, 1e-9);
+        CHECK_REL(si.solve.anchor_phi_vn_n, us.solve.anchor_phi_vn_n, 1e-9);
+        CHECK(us.anchor_in.coef == (k ? RB_ACI17_SI : RB_ACI17_INLB));
+        rb_case_free(&us);
+        rb_case_free(&si);
+    }
+    /* without coefficients: the edition of the units the case is written in */
+    rb_case us;
+    char fmt[2048];
+    snprintf(fmt, sizeof fmt, "%s", us_case);
+    *strstr(fmt, ", coefficients: %s") = '\0';
+    strcat(fmt, "}\nmotion: {type: harmonic, amplitude: 0.5 g, frequency: 4 Hz,"
+                " duration: 0.5 s}\n%s");
+    CHECK(load(fmt, "", &us) && us.anchor_in.coef == RB_ACI17_INLB);
+    rb_case_free(&us);
+}
+
+/* AISC Design Guide 1, 3rd ed., cast-in examples (in-lb, kips, printed to
+ * three figures; the guide rounds intermediate values, so each step is
+ * fed the printed value of the one before). */
+static void aisc_dg1(void)
+{
+    double fc4 = 4000 * PSI, fc5 = 5000 * PSI;
+    /* Ex. 4.7-3: four 7/8 in rods on a 4 in square, hef 15 in, no edges */
+    CHECK3(rb_aci17_nsa(0.462 * IN * IN, 58000 * PSI, 36000 * PSI) / KIP, 26.8);
+    CHECK3(rb_aci17_anc(15 * IN, INFINITY, INFINITY, 4 * IN, INFINITY, INFINITY, 4 * IN)
+           / (IN * IN), 2400);
+    CHECK3(rb_aci17_anco(15 * IN) / (IN * IN), 2030);
+    CHECK3(rb_aci17_nb_cast_in(RB_ACI17_INLB, 1, fc4, 15 * IN) / KIP, 92.3);
+    CHECK3(rb_aci17_ncbg(4, 2400, 2030, 1, 1, rb_aci17_psi_c_n(true), 1, 92.3 * KIP) / KIP,
+           109);
+    CHECK(rb_aci17_phi(RB_ACI17_BREAKOUT_TENSION, true, false) == 0.70);
+    /* Ex. 4.7-4: shear towards an edge 12 in away, the two rods 4 in apart */
+    CHECK3(rb_aci17_avc(12 * IN, INFINITY, INFINITY, 4 * IN, 100 * IN) / (IN * IN), 720);
+    CHECK3(rb_aci17_avco(12 * IN) / (IN * IN), 648);
+    CHECK3(rb_aci17_vb(RB_ACI17_INLB, 7 * IN, 0.875 * IN, 1, fc4, 12 * IN) / KIP, 23.7);
+    CHECK3(rb_aci17_vcbg(2, 720, 648, 1, 1, 1, 1, 23.7 * KIP) / KIP, 26.3);
+    /* Ex. 4.7-7: eight 1 1/2 in rods, f'c 5000 psi, hef 24 in, grout pad */
+    double ase = 1.41 * IN * IN;
+    CHECK3(rb_aci17_nsa(ase, 58000 * PSI, 36000 * PSI) / KIP, 81.8);
+    CHECK3(rb_aci17_anc(24 * IN, INFINITY, INFINITY, 28 * IN, INFINITY, INFINITY,
+                        6.5 * IN) / (IN * IN), 7850);
+    CHECK3(rb_aci17_anco(24 * IN) / (IN * IN), 5180);
+    CHECK3(rb_aci17_nb_cast_in(RB_ACI17_INLB, 1, fc5, 24 * IN) / KIP, 226);
+    CHECK3(rb_aci17_ncbg(8, 7850, 5180, 1, 1, 1, 1, 226 * KIP) / KIP, 342);
+    CHECK3(rb_aci17_np(3.12 * IN * IN, fc5) / KIP, 125);
+    CHECK3(rb_aci17_vsa(ase, 58000 * PSI, 36000 * PSI, false, true) / KIP, 39.3);
+    CHECK(rb_aci17_kcp(RB_ACI17_INLB, 24 * IN) == 2);
+    CHECK3(rb_aci17_vcpg(RB_ACI17_INLB, 24 * IN, 342 * KIP) / KIP, 684);
+    /* the guide's check: 138 / 239 + 14.5 / 25.5 = 1.15 <= 1.2 (Eq. 17.8.3) */
+    int which;
+    double u = rb_aci17_interaction(138, 239, 14.5, 25.5, &which);
+    CHECK(which == 3);
+    CHECK3(1.2 * u, 1.15);
+    /* Ex. 4.7-11: two 1 in rods 12 in apart, hef 18 in */
+    CHECK3(rb_aci17_anc(18 * IN, INFINITY, INFINITY, 12 * IN, INFINITY, INFINITY, 0)
+           / (IN * IN), 3560);
+    CHECK3(rb_aci17_anco(18 * IN) / (IN * IN), 2920);
+    CHECK3(rb_aci17_nb_cast_in(RB_ACI17_INLB, 1, fc4, 18 * IN) / KIP, 125);
+    CHECK3(rb_aci17_ncbg(2, 3560, 2920, 1, 1, 1, 1, 125 * KIP) / KIP, 152);
+}
+
+int main(void)
+{
+    hand_worked();
+    units_agree();
+    aisc_dg1();
+    TEST_MAIN_END();
+}

@@ -1,0 +1,145 @@
+#!/usr/bin/env python3
+"""The concrete check in the verdict, end to end.
+
+    python3 tests/verdicts/concrete.py ROCKBOLT SCRATCH
+
+Run from the source root. On cases/reference-concrete.yaml and variants:
+  - the anchorage's demand is the 17.8 interaction of tension and shear at
+    one instant: the reported utilization is what rb_aci17_interaction
+    gives for the reported tension and shear, and is no larger than the
+    interaction of the largest tension with the largest shear;
+  - an anchorage that is not ductile fails a seismic case (17.10.5.3) and
+    says so; with `seismic: false` it does not;
+  - a utilization of 1 or more fails the case; `criteria: concrete: false`
+    keeps the check in the report but out of the verdict;
+  - the text report and the page show the modes' table, and the batch
+    summary gives each run's governing mode and utilization, which merged
+    shards keep byte for byte."""
+import json, os, shutil, subprocess, sys
+
+rb, scratch = (os.path.abspath(a) for a in sys.argv[1:3])
+shutil.rmtree(scratch, ignore_errors=True)
+os.makedirs(scratch)
+src = os.getcwd()
+failures = []
+
+
+def fail(msg):
+    failures.append(msg)
+    print("FAIL:", msg)
+
+
+def case(name, extra, level="0.4 A*"):
+    p = os.path.join(scratch, name + ".yaml")
+    with open(p, "w") as f:
+        f.write(f"extends: {src}/cases/reference-concrete.yaml\nname: {name}\n"
+                f"motion:\n  peak: {level}\n{extra}")
+    return p
+
+
+def check(p, *args):
+    out = os.path.join(scratch, os.path.basename(p)[:-5] + ".json")
+    r = subprocess.run([rb, "check", p, "--json", out, *args], capture_output=True,
+                       text=True)
+    if r.returncode not in (0, 1):
+        fail(f"{p}: exit {r.returncode}: {r.stderr.strip()[:300]}")
+        return None, r
+    return json.load(open(out)), r
+
+
+def interaction(n, phi_n, v, phi_v):
+    rn, rv = n / phi_n, v / phi_v
+    if v <= 0.2 * phi_v:
+        return rn
+    if n <= 0.2 * phi_n:
+        return rv
+    return max(rn, rv, (rn + rv) / 1.2)
+
+
+# concurrent demand, on the shipped case
+rep, _ = check(os.path.join(src, "cases", "reference-concrete.yaml"))
+if rep:
+    a, m = rep["anchorage_check"], rep["motions"][0]
+    d, peaks = m["anchorage"], m["result"]["peaks"]
+    u = interaction(d["tension_n"], a["phi_nn_row_n"], d["shear_n"], a["phi_vn_n"])
+    if abs(u - d["utilization"]) > 1e-12 * u:
+        fail(f"utilization {d['utilization']} is not the interaction {u} of its demands")
+    worst = interaction(max(peaks["max_bolt_force_n"].values()), a["phi_nn_row_n"],
+                        peaks["max_shear_total_n"], a["phi_vn_n"])
+    if d["utilization"] > worst * (1 + 1e-12):
+        fail(f"utilization {d['utilization']} above max-with-max {worst}")
+    print(f"reference-concrete: utilization {d['utilization']:.3f} at {d['time_s']:.3f} s "
+          f"({d['clause']}); largest tension with largest shear {worst:.3f}")
+
+# not ductile: a seismic case fails at a level that uses little of it
+low = case("low", "", "0.02 A*")
+rep, _ = check(low)
+if rep:
+    v = rep["motions"][0]["verdict"]
+    if v["pass"] or "not ductile" not in v["reason"]:
+        fail(f"a seismic anchorage that is not ductile passes: {v['reason']}")
+    if rep["motions"][0]["anchorage"]["utilization"] >= 1:
+        fail("the low run should use less than the design strength")
+nonseis = case("nonseismic", "concrete:\n  seismic: false\n", "0.02 A*")
+rep, _ = check(nonseis)
+if rep and not rep["motions"][0]["verdict"]["pass"]:
+    fail(f"a non-seismic low run fails: {rep['motions'][0]['verdict']['reason']}")
+
+# utilization >= 1 fails; criteria: concrete: false takes it out of the verdict
+deep = ("anchorage:\n  deformable_length: 8 in\nconcrete:\n  seismic: false\n"
+        "criteria:\n  kind: no-break\n  usage_limit: 100\n")
+over = case("over", deep, "0.3 A*")
+rep, _ = check(over)
+if rep:
+    m = rep["motions"][0]
+    if m["anchorage"]["utilization"] < 1:
+        fail("the 0.3 A* run should exceed the design strength")
+    elif m["verdict"]["pass"] or "design strength" not in m["verdict"]["reason"]:
+        fail(f"a utilization of {m['anchorage']['utilization']} passes: "
+             f"{m['verdict']['reason']}")
+off = case("off", deep + "  concrete: false\n", "0.3 A*")
+rep, r = check(off, "--text", os.path.join(scratch, "off.txt"),
+               "--html", os.path.join(scratch, "off.html"))
+if rep:
+    m = rep["motions"][0]
+    if not m["verdict"]["pass"] or rep["anchorage_check"]["judged"]:
+        fail(f"criteria: concrete: false still judges: {m['verdict']['reason']}")
+    if "anchorage" not in m:
+        fail("criteria: concrete: false drops the demand from the report")
+    text = open(os.path.join(scratch, "off.txt")).read()
+    for w in ("breakout-tension     17.6.2", "anchorage (17.8)", "reported, not judged"):
+        if w not in text:
+            fail(f"the text report lacks '{w}'")
+    if "Anchorage in concrete" not in open(os.path.join(scratch, "off.html")).read():
+        fail("the page lacks the concrete table")
+
+# batch: each run's governing mode and utilization
+bj, bc = os.path.join(scratch, "b.json"), os.path.join(scratch, "b.csv")
+r = subprocess.run([rb, "batch", over, off, "--json", bj, "--csv", bc, "-q"],
+                   capture_output=True, text=True)
+if r.returncode not in (0, 1):
+    fail(f"batch: exit {r.returncode}: {r.stderr.strip()[:300]}")
+else:
+    for c in json.load(open(bj))["cases"]:
+        run = c["runs"][0]
+        if "anchor_utilization" not in run or run.get("anchor_mode") is None:
+            fail(f"batch summary lacks the anchorage of {c['tag']}")
+    head = open(bc).readline()
+    if "anchor_mode,anchor_utilization" not in head:
+        fail("the batch CSV lacks the anchorage columns")
+    # shards merge into the single run's bytes, anchorage and all
+    shards = []
+    for k in (1, 2):
+        sj = os.path.join(scratch, f"s{k}.json")
+        subprocess.run([rb, "batch", over, off, "--shard", f"{k}/2", "--json", sj, "-q"],
+                       capture_output=True)
+        shards.append(sj)
+    mj = os.path.join(scratch, "m.json")
+    r = subprocess.run([rb, "merge", *shards, "--json", mj, "-q"], capture_output=True,
+                       text=True)
+    if r.returncode not in (0, 1) or open(mj, "rb").read() != open(bj, "rb").read():
+        fail(f"merged shards differ from the single run (exit {r.returncode}: "
+             f"{r.stderr.strip()[:200]})")
+
+print(f"{len(failures)} failures")
+sys.exit(1 if failures else 0)
