@@ -219,6 +219,12 @@ typedef struct {
     double futa_used_pa;      /* min(futa, 1.9 fya, 861.8 MPa) */
     double phi_nsa_n;         /* 0.75 n Ase futa of one row */
     double ratio;             /* T / phi Nsa */
+    /* with the concrete check (rb_run_design): the 17.8 utilization of the
+     * row tension T with the anchor design force as shear, against the
+     * anchorage's design strengths, and the clause (1-3) */
+    int has_concrete;
+    double concrete_utilization;
+    int concrete_clause;
 } rb_code_result;
 
 /* Compare the model's anchorage with the code-static design. W, h, b, l,

@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "rockbolt/aci17.h"
 #include "rockbolt/run.h"
 
 static rb_status fail_at(rb_diag *diag, const char *motion, const char *what,
@@ -167,6 +168,15 @@ rb_status rb_run_design(const rb_case *c, int n_threads, rb_case_design *out,
     if (st == RB_OK && c->has_code) {
         step(&pg, NULL, "code-static comparison");
         st = rb_code_static(&c->model, &c->code, &out->code, diag);
+        if (st == RB_OK && c->has_concrete) {
+            /* the static demand on the anchorage: T of a row, and all of
+             * the anchor design force in shear (no friction counted) */
+            rb_code_result *k = &out->code;
+            k->has_concrete = 1;
+            k->concrete_utilization = rb_aci17_interaction(k->tension_n, c->anchor.phi_nn_n,
+                                                           k->fp_anchor_n, c->anchor.phi_vn_n,
+                                                           &k->concrete_clause);
+        }
         if (st != RB_OK) {
             char key[sizeof diag->key];
             snprintf(key, sizeof key, "design.code.%.100s", diag->key);

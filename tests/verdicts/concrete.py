@@ -14,7 +14,9 @@ Run from the source root. On cases/reference-concrete.yaml and variants:
     keeps the check in the report but out of the verdict;
   - the text report and the page show the modes' table, and the batch
     summary gives each run's governing mode and utilization, which merged
-    shards keep byte for byte."""
+    shards keep byte for byte;
+  - the static demand of design.code (row tension, anchor design force as
+    shear) is put through the same interaction."""
 import json, os, shutil, subprocess, sys
 
 rb, scratch = (os.path.abspath(a) for a in sys.argv[1:3])
@@ -140,6 +142,21 @@ else:
     if r.returncode not in (0, 1) or open(mj, "rb").read() != open(bj, "rb").read():
         fail(f"merged shards differ from the single run (exit {r.returncode}: "
              f"{r.stderr.strip()[:200]})")
+
+# the static demand: design.code's row tension and anchor design force
+code = case("code", "design:\n  code:\n    edition: ASCE 7-22\n    sds: 1.0\n"
+            "    z_over_h: 0.5\n    car: 1\n    rpo: 1.5\n    r: 8\n    ie: 1\n"
+            "    omega0: 2.5\n    futa: 58 ksi\n")
+cj = os.path.join(scratch, "code.json")
+r = subprocess.run([rb, "design", code, "--json", cj, "-q"], capture_output=True, text=True)
+if r.returncode not in (0, 1):
+    fail(f"design with code: exit {r.returncode}: {r.stderr.strip()[:300]}")
+else:
+    rep = json.load(open(cj))
+    k, a = rep["design"]["code_static"], rep["anchorage_check"]
+    u = interaction(k["tension_n"], a["phi_nn_row_n"], k["fp_anchor_n"], a["phi_vn_n"])
+    if abs(k.get("concrete_utilization", -1) - u) > 1e-12 * u:
+        fail(f"static utilization {k.get('concrete_utilization')} is not {u}")
 
 print(f"{len(failures)} failures")
 sys.exit(1 if failures else 0)
