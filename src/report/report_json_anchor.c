@@ -79,4 +79,14 @@ void rb_report_json_motion_anchorage(rb_jctx *cx, cJSON *motion_o, const rb_repo
     rb_j_num(cx, o, "shear_n", res->anchor_shear_n);
     rb_j_num(cx, o, "tension_ratio", res->anchor_tension_n / a->phi_nn_n);
     rb_j_num(cx, o, "shear_ratio", res->anchor_shear_n / a->phi_vn_n);
+    /* each mode's demand / design strength at that instant */
+    cJSON *modes = rb_j_obj(cx, o, "mode_ratios");
+    for (int k = 0; modes && k < RB_ANCHOR_N_MODES; k++) {
+        const rb_anchor_mode_strength *s = &a->mode[k];
+        double demand = k <= RB_ANCHOR_SIDEFACE_N ? res->anchor_tension_n : res->anchor_shear_n;
+        if (s->applies)
+            rb_j_num(cx, modes, rb_enum_str(rb_anchor_mode_names, k), demand / s->design_n);
+        else
+            rb_j_null(cx, modes, rb_enum_str(rb_anchor_mode_names, k));
+    }
 }

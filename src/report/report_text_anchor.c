@@ -101,4 +101,8 @@ void rb_report_text_motion_anchorage(rb_tvars *t, const rb_report *r,
     rb_tv_num(t, "anchor_tension_ratio", res->anchor_tension_n / s->phi_nn_n);
     rb_tv_num(t, "anchor_shear", res->anchor_shear_n / u->force_f);
     rb_tv_num(t, "anchor_shear_ratio", res->anchor_shear_n / s->phi_vn_n);
+    /* the mode that governs at that instant, the larger share */
+    int tension = res->anchor_tension_n / s->phi_nn_n >= res->anchor_shear_n / s->phi_vn_n;
+    rb_tv_str(t, "anchor_mode", rb_enum_str(rb_anchor_mode_names,
+                                            (int)(tension ? s->tension_mode : s->shear_mode)));
 }
