@@ -1,0 +1,54 @@
+/* Lognormal fragility curves (FEMA P-58): the probability that a limit
+ * state is reached at intensity im,
+ *
+ *     P(im) = Phi(ln(im / median) / beta),
+ *
+ * fitted by maximum likelihood to the capacities of a suite of motions
+ * (the intensity at which each first reaches the limit state). A motion
+ * that never reaches it within the range searched is censored: its
+ * capacity is only known to exceed the end of the range. No I/O. */
+#ifndef ROCKBOLT_FRAGILITY_H
+#define ROCKBOLT_FRAGILITY_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "rockbolt/status.h"
+
+typedef struct {
+    double median;     /* intensity at P = 0.5 */
+    double beta;       /* lognormal dispersion (standard deviation of ln) */
+    double loglik;     /* log-likelihood at the fit */
+    int iterations;
+} rb_fragility_fit;
+
+/* Maximum-likelihood fit to n capacities > 0, censored[i] != 0 marking a
+ * capacity known only to exceed capacity[i] (censored may be NULL: none).
+ * Without censoring the fit is the closed form (mean and standard
+ * deviation, over n, of ln capacity); with it, the EM iteration for a
+ * right-censored normal, to 1e-12 relative. RB_ERR_INVALID for fewer than
+ * two uncensored capacities, a capacity that is not finite and > 0, or
+ * uncensored capacities all equal (no dispersion to fit). */
+rb_status rb_fragility_mle(const double *capacity, const int *censored, size_t n,
+                           rb_fragility_fit *out);
+
+/* P(im) of a fit; 0 for im <= 0. */
+double rb_fragility_prob(const rb_fragility_fit *f, double im);
+/* The intensity at probability 0 < p < 1. */
+double rb_fragility_quantile(const rb_fragility_fit *f, double p);
+
+/* The standard normal distribution and its inverse (0 < p < 1). */
+double rb_normal_cdf(double z);
+double rb_normal_quantile(double p);
+
+/* A percentile-bootstrap confidence interval of the median at the given
+ * level (0.9: 5th to 95th percentile): the motions resampled with
+ * replacement n_boot times from a seeded generator (the same interval on
+ * every machine), each resample refitted; resamples that cannot be fitted
+ * are skipped and counted in *skipped (may be NULL). RB_ERR_NOMEM, or
+ * RB_ERR_INVALID as rb_fragility_mle for the whole sample, or when fewer
+ * than half the resamples can be fitted. */
+rb_status rb_fragility_bootstrap(const double *capacity, const int *censored, size_t n,
+                                 unsigned n_boot, uint64_t seed, double level,
+                                 double *lo, double *hi, unsigned *skipped);
+
+#endif
