@@ -31,6 +31,9 @@ typedef struct {
      * where 17.10 asks it to be (anchor_ductile 0). Default 0 and 1. */
     int concrete;
     int anchor_ductile;
+    /* the checks that validity: fail counts (bit 1 << rb_check); default
+     * all. A fragility's lift-off limit state counts lift-off alone. */
+    unsigned validity_mask;
 } rb_criteria;
 
 void rb_criteria_init(rb_criteria *c);

@@ -51,4 +51,43 @@ rb_status rb_fragility_bootstrap(const double *capacity, const int *censored, si
                                  unsigned n_boot, uint64_t seed, double level,
                                  double *lo, double *hi, unsigned *skipped);
 
+/* ---- A case's fragility (rb_run_fragility, rockbolt/run.h) ------------ */
+
+typedef enum {
+    RB_LIMIT_FIRST_YIELD = 0, /* a bolt row yields or reaches Fy */
+    RB_LIMIT_USAGE,           /* toughness usage reaches the case's limit
+                                 (no-break's, else 1) */
+    RB_LIMIT_OVERTURN,        /* the cabinet overturns, bolts stretching on */
+    RB_LIMIT_LIFT_OFF,        /* the base lifts off the floor (the validity
+                                 check), bolts stretching on */
+    RB_N_LIMITS
+} rb_limit_state;
+
+/* Each motion's capacity for each limit state: the lowest peak floor
+ * acceleration found to reach it (the design factor's scan and bisection,
+ * with the case's design: settings), or, censored, the top of the scan
+ * that never reached it. */
+typedef struct {
+    double capacity_mps2[RB_N_LIMITS];
+    int censored[RB_N_LIMITS];
+    long runs;
+} rb_motion_fragility;
+
+typedef struct {
+    rb_motion_fragility *motions;   /* owned, one per motion of the case */
+    size_t n_motions;
+    double level_mps2;              /* the case's own level: motion 1's peak */
+    double g_mps2, a_star_mps2;
+    uint64_t seed;                  /* of the bootstrap */
+    unsigned n_boot;
+    int fitted[RB_N_LIMITS];        /* 0: fewer than two motions reached it */
+    rb_fragility_fit fit[RB_N_LIMITS]; /* median in m/s^2 */
+    double median_lo[RB_N_LIMITS], median_hi[RB_N_LIMITS]; /* 90 % bootstrap */
+    double p_at_level[RB_N_LIMITS]; /* P of the limit state at level_mps2 */
+    double im10[RB_N_LIMITS], im50[RB_N_LIMITS]; /* levels at P = 10 %, 50 % */
+    long runs;
+} rb_case_fragility;
+
+void rb_case_fragility_free(rb_case_fragility *f);
+
 #endif

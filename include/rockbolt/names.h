@@ -23,6 +23,7 @@ extern const rb_enum_name rb_record_format_names[]; /* rb_record_format */
 extern const rb_enum_name rb_anchor_type_names[];   /* rb_anchor_type */
 extern const rb_enum_name rb_anchor_mode_names[];   /* rb_anchor_mode */
 extern const rb_enum_name rb_aci17_coef_names[];    /* rb_aci17_coef: si, in-lb */
+extern const rb_enum_name rb_limit_state_names[];   /* rb_limit_state (fragility.h) */
 
 /* The name of value in table t; "unknown" when it has none. */
 const char *rb_enum_str(const rb_enum_name *t, int value);

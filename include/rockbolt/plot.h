@@ -21,6 +21,7 @@
 #include <stddef.h>
 #include "rockbolt/status.h"
 #include "rockbolt/report.h"
+#include "rockbolt/fragility.h"
 #include "rockbolt/design.h"
 
 /* Series of the time-history figure, top panel to bottom, in the order
@@ -86,5 +87,12 @@ rb_status rb_plot_html_page(const rb_report *rep, const char *title,
  * makes. */
 rb_status rb_plot_report_html(const rb_report *rep, const char *text_report,
                               char **out, rb_diag *diag);
+
+/* The fragility figure of a case: each fitted limit state's lognormal
+ * curve against the peak floor acceleration in g, the motions' capacities
+ * as points at their empirical fractions, the case's level dashed. title
+ * (may be NULL) heads it. RB_ERR_INVALID without motions, RB_ERR_NOMEM. */
+rb_status rb_plot_fragility_svg(const rb_case_fragility *f, const char *title, char **out,
+                                rb_diag *diag);
 
 #endif

@@ -18,6 +18,7 @@
 #include "rockbolt/criteria.h"
 #include "rockbolt/case.h"
 #include "rockbolt/design.h"
+#include "rockbolt/fragility.h"
 
 /* Bumped whenever a JSON field is renamed, removed or changes meaning;
  * adding a field does not bump it. */
@@ -201,5 +202,14 @@ void rb_outfile_abort(rb_outfile *f);
 /* Write len bytes of data to path atomically (open, write, commit). */
 rb_status rb_outfile_write_all(const char *path, const char *data, size_t len,
                                int no_clobber, rb_diag *diag);
+
+/* ---- Fragility (rb_run_fragility, rockbolt/run.h) ---------------------- */
+
+/* Text for the terminal, JSON (SI, every capacity) and CSV (one row per
+ * motion and limit state, in g and A*). Each returns a string the caller
+ * frees, or NULL when memory runs out. */
+char *rb_fragility_render_text(const rb_case *c, const rb_case_fragility *f);
+char *rb_fragility_render_json(const rb_case *c, const rb_case_fragility *f);
+char *rb_fragility_render_csv(const rb_case *c, const rb_case_fragility *f);
 
 #endif

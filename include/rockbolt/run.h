@@ -12,6 +12,7 @@
 
 #include "rockbolt/case.h"
 #include "rockbolt/design.h"
+#include "rockbolt/fragility.h"
 #include "rockbolt/report.h"
 
 /* Interval of a time history when the case names none. */
@@ -63,5 +64,17 @@ const rb_design_factor_result *rb_run_own_factor(const rb_case *c,
  * progress callback may be NULL; the results do not depend on it. */
 rb_status rb_run_design(const rb_case *c, int n_threads, rb_case_design *out,
                         rb_diag *diag, rb_design_progress_fn progress, void *ctx);
+
+/* ---- Fragility ------------------------------------------------------------ */
+
+/* The fragility of c over its motions: every motion x limit state search
+ * (on n_threads), then the fits and their bootstrap intervals (n_boot
+ * resamples from seed). progress as for rb_run_design (one step per
+ * search). out is owned by the caller (rb_case_fragility_free, also after
+ * an error). RB_ERR_INVALID for a case without bolts; else as
+ * rb_design_factor, diag->key naming the motion and limit state. */
+rb_status rb_run_fragility(const rb_case *c, int n_threads, uint64_t seed, unsigned n_boot,
+                           rb_case_fragility *out, rb_diag *diag,
+                           rb_design_progress_fn progress, void *ctx);
 
 #endif

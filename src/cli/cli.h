@@ -23,7 +23,8 @@ typedef enum {
     RB_CMD_VERSION,
     RB_CMD_CHECK,
     RB_CMD_DESIGN,
-    RB_CMD_INIT
+    RB_CMD_INIT,
+    RB_CMD_FRAGILITY
 } rb_cli_command;
 
 typedef struct {
@@ -40,6 +41,8 @@ typedef struct {
     const char *html_path;    /* --html FILE: report and figures, or NULL */
     const char *sandbox_dir;  /* --sandbox DIR: inputs must lie inside, or NULL */
     const char *help_command; /* help: the command asked about, or NULL */
+    const char *csv_path;     /* fragility: --csv FILE, or NULL */
+    unsigned long long seed;  /* fragility: --seed N of the bootstrap */
 } rb_cli_opts;
 
 /* Parse argv into o. Returns RB_EXIT_PASS, or RB_EXIT_USAGE after printing
@@ -50,6 +53,9 @@ rb_exit rb_cli_args_parse(int argc, char **argv, rb_cli_opts *o);
  * (rockbolt/sandbox.h) before anything is read. RB_EXIT_USAGE after
  * printing why when DIR is not a directory. NULL: nothing to do. */
 rb_exit rb_cli_sandbox(const char *dir);
+
+/* rockbolt fragility (cli_fragility.c). */
+rb_exit rb_cli_fragility_run(const rb_cli_opts *o);
 
 /* check and design share one flow; design adds the searches. */
 rb_exit rb_cli_check_run(const rb_cli_opts *o);

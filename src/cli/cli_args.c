@@ -6,6 +6,7 @@
  * (exit 2) with one line naming the offending argument, and is found
  * before anything is read or written. The options are documented in
  * src/cli/help.txt, which --help and the man page are made from. */
+#include <errno.h>
 #include <stdlib.h>
 #include <string.h>
 #include "cli.h"
@@ -41,7 +42,7 @@ static rb_exit take_threads(const char *v, rb_cli_opts *o)
 }
 
 enum { OPT_JSON = 256, OPT_TEXT, OPT_HISTORY, OPT_SVG, OPT_HTML, OPT_SANDBOX,
-       OPT_SWEEP_CSV };
+       OPT_SWEEP_CSV, OPT_CSV, OPT_SEED };
 
 /* The options of check; design's add --sweep-csv and -j; init's --help. */
 static const struct option check_longs[] = {
@@ -63,6 +64,17 @@ static const struct option design_longs[] = {
     {"html", required_argument, NULL, OPT_HTML},
     {"sandbox", required_argument, NULL, OPT_SANDBOX},
     {"sweep-csv", required_argument, NULL, OPT_SWEEP_CSV},
+    {"threads", required_argument, NULL, 'j'},
+    {"quiet", no_argument, NULL, 'q'},
+    {"help", no_argument, NULL, 'h'},
+    {NULL, 0, NULL, 0}
+};
+static const struct option fragility_longs[] = {
+    {"json", required_argument, NULL, OPT_JSON},
+    {"csv", required_argument, NULL, OPT_CSV},
+    {"svg", required_argument, NULL, OPT_SVG},
+    {"sandbox", required_argument, NULL, OPT_SANDBOX},
+    {"seed", required_argument, NULL, OPT_SEED},
     {"threads", required_argument, NULL, 'j'},
     {"quiet", no_argument, NULL, 'q'},
     {"help", no_argument, NULL, 'h'},
@@ -91,6 +103,20 @@ static rb_exit take_option(int c, const rb_cli_getopt *g, rb_cli_opts *o)
         return take_value(g->name, g->arg, &o->sandbox_dir);
     case OPT_SWEEP_CSV:
         return take_value(g->name, g->arg, &o->sweep_csv_path);
+    case OPT_CSV:
+        return take_value(g->name, g->arg, &o->csv_path);
+    case OPT_SEED: {
+        char *end;
+        errno = 0;
+        unsigned long long v = strtoull(g->arg, &end, 10);
+        if (end == g->arg || *end || errno || g->arg[0] == '-') {
+            rb_cli_error(NULL, NULL, "option '--seed' needs a whole number from 0 to "
+                         "18446744073709551615 (got '%s')", g->arg);
+            return RB_EXIT_USAGE;
+        }
+        o->seed = v;
+        return RB_EXIT_PASS;
+    }
     case 'j':
         return take_threads(g->arg, o);
     case 'q':
@@ -105,13 +131,15 @@ static rb_exit take_option(int c, const rb_cli_getopt *g, rb_cli_opts *o)
 /* Two outputs, or an output and the case, must not be the same file. */
 static rb_exit check_distinct(const rb_cli_opts *o)
 {
-    const char *p[7] = { o->json_path, o->text_path, o->history_path,
-                         o->sweep_csv_path, o->svg_path, o->html_path, o->case_path };
-    static const char *const what[7] = { "--json", "--text", "--history",
-                                         "--sweep-csv", "--svg", "--html", "the case" };
+    const char *p[8] = { o->json_path, o->text_path, o->history_path,
+                         o->sweep_csv_path, o->svg_path, o->html_path, o->csv_path,
+                         o->case_path };
+    static const char *const what[8] = { "--json", "--text", "--history",
+                                         "--sweep-csv", "--svg", "--html", "--csv",
+                                         "the case" };
     int a, b;
-    for (a = 0; a < 6; a++)
-        for (b = a + 1; b < 7; b++)
+    for (a = 0; a < 7; a++)
+        for (b = a + 1; b < 8; b++)
             if (p[a] && p[b] && strcmp(p[a], p[b]) == 0) {
                 rb_cli_error(p[a], what[a], "same file as %s", what[b]);
                 return RB_EXIT_USAGE;
@@ -122,13 +150,16 @@ static rb_exit check_distinct(const rb_cli_opts *o)
 /* Operands and options after the command name. */
 static rb_exit parse_rest(int argc, char **argv, rb_cli_opts *o)
 {
-    int takes_case = o->command == RB_CMD_CHECK || o->command == RB_CMD_DESIGN;
+    int takes_case = o->command == RB_CMD_CHECK || o->command == RB_CMD_DESIGN
+                     || o->command == RB_CMD_FRAGILITY;
     const char **positional = takes_case ? &o->case_path : &o->init_path;
     const char *cmd = argv[1];
     rb_cli_getopt g;
     int c;
     if (o->command == RB_CMD_DESIGN)
         rb_cli_getopt_init(&g, cmd, argc - 1, argv + 1, "qhj:", design_longs);
+    else if (o->command == RB_CMD_FRAGILITY)
+        rb_cli_getopt_init(&g, cmd, argc - 1, argv + 1, "qhj:", fragility_longs);
     else if (o->command == RB_CMD_CHECK)
         rb_cli_getopt_init(&g, cmd, argc - 1, argv + 1, "qh", check_longs);
     else
@@ -169,7 +200,8 @@ rb_exit rb_cli_args_parse(int argc, char **argv, rb_cli_opts *o)
     rb_exit e;
     memset(o, 0, sizeof *o);
     static const char *const commands[] = {"check", "design", "batch", "merge",
-                                           "init", "help", "version", NULL};
+                                           "init", "fragility", "help", "version",
+                                           NULL};
     if (!cmd) {
         rb_cli_error(NULL, NULL, "no command given (see rockbolt --help)");
         return RB_EXIT_USAGE;
@@ -199,6 +231,8 @@ rb_exit rb_cli_args_parse(int argc, char **argv, rb_cli_opts *o)
         o->command = RB_CMD_DESIGN;
     else if (!strcmp(cmd, "init"))
         o->command = RB_CMD_INIT;
+    else if (!strcmp(cmd, "fragility"))
+        o->command = RB_CMD_FRAGILITY;
     else {
         rb_cli_unknown_word("command", cmd, commands, NULL);
         return RB_EXIT_USAGE;
@@ -211,7 +245,8 @@ rb_exit rb_cli_args_parse(int argc, char **argv, rb_cli_opts *o)
         return RB_EXIT_PASS;
     }
     if (!o->case_path) {
-        const char *c = o->command == RB_CMD_DESIGN ? "design" : "check";
+        const char *c = o->command == RB_CMD_DESIGN ? "design"
+                        : o->command == RB_CMD_FRAGILITY ? "fragility" : "check";
         rb_cli_error(NULL, NULL, "'%s' needs a case file: rockbolt %s CASE.yaml", c, c);
         return RB_EXIT_USAGE;
     }

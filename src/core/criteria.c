@@ -9,11 +9,14 @@
 
 void rb_criteria_init(rb_criteria *c)
 {
+    /* every field a default, also those added later */
+    memset(c, 0, sizeof *c);
     c->kind = RB_CRIT_NO_BREAK;
     c->usage_limit = 1.0;
     c->max_shear_over_w = 0;
     c->max_theta_over_alpha = 0;
     c->anchor_ductile = 1;
+    c->validity_mask = (1u << RB_N_CHECKS) - 1;
     c->friction_coefficient = 0;
     c->validity = RB_VALIDITY_WARN;
 }
@@ -191,9 +194,9 @@ void rb_judge(const rb_criteria *c, const rb_result *r, rb_verdict *v)
     criteria(c, r, v);
     validity(c, r, v);
     v->pass = v->criteria_pass;
-    if (v->pass && v->warnings && c->validity == RB_VALIDITY_FAIL) {
+    if (v->pass && (v->warnings & c->validity_mask) && c->validity == RB_VALIDITY_FAIL) {
         char w[128];
-        rb_warnings_str(v->warnings, w, sizeof w);
+        rb_warnings_str(v->warnings & c->validity_mask, w, sizeof w);
         snprintf(v->reason, sizeof v->reason, "%s (criteria: validity: fail)", w);
         v->pass = 0;
     }

@@ -10,6 +10,7 @@
  * lines where a general optimiser (and its library) would be more. */
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 #include "rockbolt/fragility.h"
 #include "util/rng.h"
 
@@ -193,4 +194,12 @@ rb_status rb_fragility_bootstrap(const double *capacity, const int *censored, si
     }
     free(x), free(med), free(c);
     return st;
+}
+
+void rb_case_fragility_free(rb_case_fragility *f)
+{
+    if (!f)
+        return;
+    free(f->motions);
+    memset(f, 0, sizeof *f);
 }

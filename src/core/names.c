@@ -5,6 +5,7 @@
 #include "rockbolt/motion.h"
 #include "rockbolt/names.h"
 #include "rockbolt/anchor.h"
+#include "rockbolt/fragility.h"
 #include "rockbolt/record.h"
 #include "rockbolt/solve.h"
 
@@ -44,6 +45,11 @@ const rb_enum_name rb_anchor_mode_names[] = {
 
 const rb_enum_name rb_aci17_coef_names[] = {
     {"si", RB_ACI17_SI}, {"in-lb", RB_ACI17_INLB}, {NULL, 0}};
+
+
+const rb_enum_name rb_limit_state_names[] = {
+    {"first-yield", RB_LIMIT_FIRST_YIELD}, {"usage", RB_LIMIT_USAGE},
+    {"overturn", RB_LIMIT_OVERTURN}, {"lift-off", RB_LIMIT_LIFT_OFF}, {NULL, 0}};
 
 const char *rb_enum_str(const rb_enum_name *t, int value)
 {

@@ -1,0 +1,132 @@
+/* "rockbolt fragility CASE.yaml": the case's fragility over its motions
+ * (rb_run_fragility), as a table on stdout and, when asked, JSON, CSV and
+ * an SVG figure, all planned and checked before the searches and written
+ * all or none. Exit 0 when it is computed (a fragility is not a verdict). */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "cli.h"
+#include "cli_batch.h"
+#include "rockbolt/outplan.h"
+#include "rockbolt/plot.h"
+#include "rockbolt/run.h"
+
+#define RB_FRAGILITY_BOOTSTRAP 1000
+
+typedef struct {
+    const rb_case *c;
+    const rb_case_fragility *f;
+    const char *title;
+} outputs;
+
+static rb_status fill(void *ctx, size_t i, FILE *fp, rb_diag *d)
+{
+    const void *const *cx = ctx;
+    const rb_outplan *plan = cx[0];
+    const outputs *o = cx[1];
+    const char *opt = plan->outs[i].opt;
+    char *text = NULL;
+    rb_status st = RB_OK;
+    if (strcmp(opt, "--json") == 0)
+        text = rb_fragility_render_json(o->c, o->f);
+    else if (strcmp(opt, "--csv") == 0)
+        text = rb_fragility_render_csv(o->c, o->f);
+    else
+        st = rb_plot_fragility_svg(o->f, o->title, &text, d);
+    if (st == RB_OK && !text)
+        st = RB_ERR_NOMEM;
+    if (st == RB_OK && fputs(text, fp) == EOF)
+        st = RB_ERR_IO;
+    if (st != RB_OK && !d->msg[0])
+        snprintf(d->msg, sizeof d->msg, "%s", rb_status_str(st));
+    free(text);
+    return st;
+}
+
+static rb_exit plan(const rb_cli_opts *o, rb_outplan *p)
+{
+    const char *paths[3] = {o->json_path, o->csv_path, o->svg_path};
+    static const char *const opts[3] = {"--json", "--csv", "--svg"};
+    rb_diag d;
+    rb_diag_clear(&d);
+    rb_status st = rb_outplan_add_input(p, o->case_path, &d);
+    for (int k = 0; k < 3 && st == RB_OK; k++)
+        if (paths[k])
+            st = rb_outplan_add(p, opts[k], paths[k], &d);
+    return st == RB_OK ? RB_EXIT_PASS : rb_cli_plan_error(st, &d);
+}
+
+static rb_exit load(const rb_cli_opts *o, rb_case *c, rb_outplan *p)
+{
+    rb_diag_list diags = {0};
+    rb_status st = rb_case_load(o->case_path, c, &diags);
+    for (size_t i = 0; i < diags.n; i++)
+        rb_cli_diag_print(&diags.items[i]);
+    if (st != RB_OK && diags.n == 0)
+        rb_cli_error(o->case_path, NULL, "cannot load the case: %s", rb_status_str(st));
+    rb_diag_list_free(&diags);
+    if (st != RB_OK)
+        return st == RB_ERR_NOMEM ? RB_EXIT_INTERNAL : RB_EXIT_USAGE;
+    /* the records and bases it read are inputs too */
+    rb_diag d;
+    rb_diag_clear(&d);
+    for (size_t i = 0; i < c->n_input_files && st == RB_OK; i++)
+        st = rb_outplan_add_input(p, c->input_files[i], &d);
+    return st == RB_OK ? RB_EXIT_PASS : rb_cli_plan_error(st, &d);
+}
+
+static rb_exit compute(const rb_cli_opts *o, const rb_case *c, rb_case_fragility *f)
+{
+    rb_cli_progress line;
+    rb_diag d;
+    rb_diag_clear(&d);
+    rb_cli_progress_start(&line, o->quiet);
+    rb_status st = rb_run_fragility(c, o->threads, o->seed, RB_FRAGILITY_BOOTSTRAP, f, &d,
+                                    line.enabled ? rb_cli_progress_design : NULL, &line);
+    if (line.enabled && line.shown)
+        fputs("\r\033[K", stderr);
+    if (st == RB_OK)
+        return RB_EXIT_PASS;
+    rb_cli_error(o->case_path, d.key[0] ? d.key : NULL, "%s%s%s", rb_status_str(st),
+                 d.msg[0] ? ": " : "", d.msg);
+    return st == RB_ERR_INVALID ? RB_EXIT_USAGE : RB_EXIT_INTERNAL;
+}
+
+rb_exit rb_cli_fragility_run(const rb_cli_opts *o)
+{
+    rb_outplan p;
+    rb_case c;
+    rb_case_fragility f;
+    char title[256];
+    memset(&c, 0, sizeof c);
+    memset(&f, 0, sizeof f);
+    rb_outplan_init(&p);
+    rb_exit e = plan(o, &p);
+    if (e == RB_EXIT_PASS)
+        e = load(o, &c, &p);
+    if (e == RB_EXIT_PASS)
+        e = compute(o, &c, &f);
+    if (e == RB_EXIT_PASS) {
+        snprintf(title, sizeof title, "Fragility of %.200s", c.name ? c.name : "the case");
+        outputs out = {&c, &f, title};
+        const void *cx[2] = {&p, &out};
+        rb_diag d;
+        rb_diag_clear(&d);
+        if (rb_outplan_write(&p, fill, (void *)cx, &d) != RB_OK) {
+            rb_cli_diag_print(&d);
+            e = RB_EXIT_INTERNAL;
+        }
+    }
+    if (e == RB_EXIT_PASS && !o->quiet && !rb_outplan_uses_stdout(&p)) {
+        char *text = rb_fragility_render_text(&c, &f);
+        if (!text || fputs(text, stdout) == EOF || fflush(stdout) != 0) {
+            rb_cli_error(NULL, NULL, "cannot write the fragility to standard output");
+            e = RB_EXIT_INTERNAL;
+        }
+        free(text);
+    }
+    rb_case_fragility_free(&f);
+    rb_case_free(&c);
+    rb_outplan_free(&p);
+    return e;
+}

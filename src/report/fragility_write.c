@@ -1,0 +1,159 @@
+/* A case's fragility as text (the terminal), JSON (everything, SI) and CSV
+ * (one row per motion and limit state). Intensities are peak floor
+ * accelerations, shown in g and in A*. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <cjson/cJSON.h>
+#include "rockbolt/jsonnum.h"
+#include "rockbolt/names.h"
+#include "rockbolt/report.h"
+#include "rockbolt/textsafe.h"
+#include "util/strbuf.h"
+
+static const char *motion_name(const rb_case *c, size_t m)
+{
+    return c->motions[m].name ? c->motions[m].name : "?";
+}
+
+char *rb_fragility_render_text(const rb_case *c, const rb_case_fragility *f)
+{
+    rb_strbuf b = {0};
+    char name[128];
+    double g = f->g_mps2, as = f->a_star_mps2;
+    rb_strbuf_printf(&b, "fragility of %s: %zu motions, peak floor acceleration as the "
+                     "intensity (A* = %.3f g), at the case's level %.4f g = %.4f A*\n",
+                     rb_text_escape_buf(c->name ? c->name : "case", name, sizeof name),
+                     f->n_motions, as / g, f->level_mps2 / g, f->level_mps2 / as);
+    rb_strbuf_printf(&b, "%-12s %9s %7s %21s %9s %9s %8s %8s\n", "limit state",
+                     "median g", "beta", "median 90% interval", "10% at g", "P(level)",
+                     "reached", "censored");
+    for (int k = 0; k < RB_N_LIMITS; k++) {
+        size_t cens = 0;
+        for (size_t m = 0; m < f->n_motions; m++)
+            cens += (size_t)f->motions[m].censored[k];
+        rb_strbuf_printf(&b, "%-12s ", rb_enum_str(rb_limit_state_names, k));
+        if (f->fitted[k])
+            rb_strbuf_printf(&b, "%9.4f %7.3f %9.4f to %8.4f %9.4f %9.4f", f->fit[k].median / g,
+                             f->fit[k].beta, f->median_lo[k] / g, f->median_hi[k] / g,
+                             f->im10[k] / g, f->p_at_level[k]);
+        else
+            rb_strbuf_printf(&b, "%9s %7s %21s %9s %9s", "n/a", "n/a",
+                             "(fewer than 2 reach it)", "n/a", "n/a");
+        rb_strbuf_printf(&b, " %8zu %8zu\n", f->n_motions - cens, cens);
+    }
+    rb_strbuf_puts(&b, "capacities (g; > : not reached up to the scan's end)\n");
+    rb_strbuf_printf(&b, "%-28s", "motion");
+    for (int k = 0; k < RB_N_LIMITS; k++)
+        rb_strbuf_printf(&b, " %12s", rb_enum_str(rb_limit_state_names, k));
+    rb_strbuf_puts(&b, "\n");
+    for (size_t m = 0; m < f->n_motions; m++) {
+        rb_strbuf_printf(&b, "%-28.28s", rb_text_escape_buf(motion_name(c, m), name,
+                                                           sizeof name));
+        for (int k = 0; k < RB_N_LIMITS; k++)
+            rb_strbuf_printf(&b, " %s%11.4f", f->motions[m].censored[k] ? ">" : " ",
+                             f->motions[m].capacity_mps2[k] / g);
+        rb_strbuf_puts(&b, "\n");
+    }
+    rb_strbuf_printf(&b, "%ld solver runs; median interval: percentile bootstrap of %u "
+                     "resamples, seed %llu\n", f->runs, f->n_boot,
+                     (unsigned long long)f->seed);
+    return rb_strbuf_take(&b);
+}
+
+static void num(rb_strbuf *b, const char *key, double v, int comma)
+{
+    char buf[RB_JSONNUM_MAX];
+    if (isfinite(v))
+        rb_json_number(v, buf);
+    else
+        snprintf(buf, sizeof buf, "null");
+    rb_strbuf_printf(b, "\"%s\": %s%s", key, buf, comma ? ", " : "");
+}
+
+/* A JSON string of text from the case: bytes that are not UTF-8 and
+ * control characters shown as \xHH first (rockbolt/textsafe.h), as every
+ * other output shows them, then cJSON's quoting. */
+static void str(rb_strbuf *b, const char *s)
+{
+    char safe[1024];
+    cJSON *j = cJSON_CreateString(rb_text_escape_buf(s, safe, sizeof safe));
+    char *e = j ? cJSON_PrintUnformatted(j) : NULL;
+    cJSON_Delete(j);
+    if (!e) {
+        b->oom = 1;
+        return;
+    }
+    rb_strbuf_puts(b, e);
+    cJSON_free(e);
+}
+
+char *rb_fragility_render_json(const rb_case *c, const rb_case_fragility *f)
+{
+    rb_strbuf b = {0};
+    rb_strbuf_puts(&b, "{\n  \"format\": \"rockbolt-fragility\", \"format_version\": 1,\n"
+                       "  \"case\": ");
+    str(&b, c->name ? c->name : "");
+    rb_strbuf_puts(&b, ",\n  \"intensity\": \"peak_floor_acceleration\", ");
+    num(&b, "g_mps2", f->g_mps2, 1);
+    num(&b, "a_star_mps2", f->a_star_mps2, 1);
+    num(&b, "level_mps2", f->level_mps2, 1);
+    rb_strbuf_printf(&b, "\"bootstrap\": {\"resamples\": %u, \"seed\": %llu, "
+                     "\"interval\": 0.9}, \"runs\": %ld,\n  \"limit_states\": [\n",
+                     f->n_boot, (unsigned long long)f->seed, f->runs);
+    for (int k = 0; k < RB_N_LIMITS; k++) {
+        rb_strbuf_printf(&b, "    {\"limit_state\": \"%s\", \"fitted\": %s",
+                         rb_enum_str(rb_limit_state_names, k), f->fitted[k] ? "true" : "false");
+        if (f->fitted[k]) {
+            rb_strbuf_puts(&b, ", ");
+            num(&b, "median_mps2", f->fit[k].median, 1);
+            num(&b, "beta", f->fit[k].beta, 1);
+            num(&b, "median_lo_mps2", f->median_lo[k], 1);
+            num(&b, "median_hi_mps2", f->median_hi[k], 1);
+            num(&b, "p_at_level", f->p_at_level[k], 1);
+            num(&b, "level_p10_mps2", f->im10[k], 1);
+            num(&b, "level_p50_mps2", f->im50[k], 1);
+            num(&b, "loglik", f->fit[k].loglik, 0);
+        }
+        rb_strbuf_printf(&b, "}%s\n", k + 1 < RB_N_LIMITS ? "," : "");
+    }
+    rb_strbuf_puts(&b, "  ],\n  \"motions\": [\n");
+    for (size_t m = 0; m < f->n_motions; m++) {
+        rb_strbuf_puts(&b, "    {\"name\": ");
+        str(&b, motion_name(c, m));
+        rb_strbuf_puts(&b, ", \"capacity_mps2\": {");
+        for (int k = 0; k < RB_N_LIMITS; k++)
+            num(&b, rb_enum_str(rb_limit_state_names, k), f->motions[m].capacity_mps2[k],
+                k + 1 < RB_N_LIMITS);
+        rb_strbuf_puts(&b, "}, \"censored\": {");
+        for (int k = 0; k < RB_N_LIMITS; k++)
+            rb_strbuf_printf(&b, "\"%s\": %s%s", rb_enum_str(rb_limit_state_names, k),
+                             f->motions[m].censored[k] ? "true" : "false",
+                             k + 1 < RB_N_LIMITS ? ", " : "");
+        rb_strbuf_printf(&b, "}, \"runs\": %ld}%s\n", f->motions[m].runs,
+                         m + 1 < f->n_motions ? "," : "");
+    }
+    rb_strbuf_puts(&b, "  ]\n}\n");
+    return rb_strbuf_take(&b);
+}
+
+char *rb_fragility_render_csv(const rb_case *c, const rb_case_fragility *f)
+{
+    rb_strbuf b = {0};
+    rb_strbuf_puts(&b, "motion,limit_state,capacity_g,capacity_astar,censored\n");
+    for (size_t m = 0; m < f->n_motions; m++)
+        for (int k = 0; k < RB_N_LIMITS; k++) {
+            char *field = rb_csv_field(motion_name(c, m), 0);
+            if (!field) {
+                b.oom = 1;
+                break;
+            }
+            rb_strbuf_printf(&b, "%s,%s,%.6g,%.6g,%d\n", field,
+                             rb_enum_str(rb_limit_state_names, k),
+                             f->motions[m].capacity_mps2[k] / f->g_mps2,
+                             f->motions[m].capacity_mps2[k] / f->a_star_mps2,
+                             f->motions[m].censored[k]);
+            free(field);
+        }
+    return rb_strbuf_take(&b);
+}

@@ -1,0 +1,112 @@
+/* The fragility figure: for each limit state that could be fitted, the
+ * lognormal curve P(limit state | peak floor acceleration) and the
+ * motions' capacities at their empirical fractions (censored motions
+ * count in the fractions but have no point); a dashed line at the case's
+ * own level. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "plot_internal.h"
+#include "rockbolt/names.h"
+
+#define FIG_W 900.0
+#define LEFT 100.0
+#define RIGHT 32.0
+#define TOP 70.0
+#define PANEL_H 420.0
+#define CURVE_POINTS 200
+
+static const char *const colours[RB_N_LIMITS] = {"#ff7f0e", "#d62728", "#7f7f7f",
+                                                 "#1f77b4"};
+
+static int cmp(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* The largest intensity worth drawing: every capacity, and each curve up
+ * to 99 %. */
+static double x_top(const rb_case_fragility *f)
+{
+    double top = f->level_mps2;
+    for (size_t m = 0; m < f->n_motions; m++)
+        for (int k = 0; k < RB_N_LIMITS; k++)
+            top = fmax(top, f->motions[m].capacity_mps2[k]);
+    for (int k = 0; k < RB_N_LIMITS; k++)
+        if (f->fitted[k])
+            top = fmax(top, rb_fragility_quantile(&f->fit[k], 0.99));
+    return top / f->g_mps2;
+}
+
+static void points(rb_strbuf *b, const rb_panel *p, const rb_case_fragility *f, int k,
+                   double *cap)
+{
+    size_t n = 0;
+    for (size_t m = 0; m < f->n_motions; m++)
+        if (!f->motions[m].censored[k])
+            cap[n++] = f->motions[m].capacity_mps2[k] / f->g_mps2;
+    qsort(cap, n, sizeof *cap, cmp);
+    for (size_t i = 0; i < n; i++)
+        rb_strbuf_printf(b, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"3.5\" fill=\"%s\" "
+                         "data-limit-state=\"%s\"/>\n", rb_panel_x(p, cap[i]),
+                         rb_panel_y(p, (i + 0.5) / (double)f->n_motions), colours[k],
+                         rb_enum_str(rb_limit_state_names, k));
+}
+
+rb_status rb_plot_fragility_svg(const rb_case_fragility *f, const char *title, char **out,
+                                rb_diag *diag)
+{
+    rb_strbuf b = {0};
+    rb_panel p;
+    memset(&p, 0, sizeof p);
+    p.x0 = LEFT, p.y0 = TOP, p.w = FIG_W - LEFT - RIGHT, p.h = PANEL_H;
+    double x[CURVE_POINTS], y[CURVE_POINTS];
+    double *cap = malloc((f->n_motions ? f->n_motions : 1) * sizeof *cap);
+    const char *names[RB_N_LIMITS];
+    const char *cols[RB_N_LIMITS];
+    char line[256];
+    int n_leg = 0;
+    *out = NULL;
+    if (!cap || f->n_motions == 0) {
+        free(cap);
+        if (diag)
+            snprintf(diag->msg, sizeof diag->msg, "no motions to draw");
+        return cap ? RB_ERR_INVALID : RB_ERR_NOMEM;
+    }
+    rb_axis_nice(&p.xa, 0, x_top(f), 10, 1);
+    rb_axis_nice(&p.ya, 0, 1, 5, 1);
+    rb_svg_open(&b, FIG_W, TOP + PANEL_H + 80);
+    rb_strbuf_printf(&b, "<text x=\"%.1f\" y=\"24\" font-size=\"16\" font-weight=\"bold\">",
+                     LEFT);
+    rb_plot_escape(&b, title ? title : "Fragility");
+    rb_strbuf_puts(&b, "</text>\n");
+    snprintf(line, sizeof line, "lognormal fits to %zu motions; points: capacities at "
+             "their fractions; dashed: the case's level %.3g g (A* = %.3g g)",
+             f->n_motions, f->level_mps2 / f->g_mps2, f->a_star_mps2 / f->g_mps2);
+    rb_svg_text(&b, LEFT, 44, 11, "start", NULL, line);
+    rb_panel_draw(&b, &p, "probability of reaching the limit state (-)", 1,
+                  "peak floor acceleration (g)");
+    double lx = rb_panel_x(&p, f->level_mps2 / f->g_mps2);
+    rb_strbuf_printf(&b, "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\" "
+                     "stroke=\"#555555\" stroke-dasharray=\"4 3\"/>\n", lx, p.y0, lx,
+                     p.y0 + p.h);
+    for (int k = 0; k < RB_N_LIMITS; k++) {
+        if (!f->fitted[k])
+            continue;
+        for (int i = 0; i < CURVE_POINTS; i++) {
+            x[i] = p.xa.hi * (i + 1) / CURVE_POINTS;
+            y[i] = rb_fragility_prob(&f->fit[k], x[i] * f->g_mps2);
+        }
+        rb_series_path(&b, &p, x, y, CURVE_POINTS, 1, colours[k], NULL,
+                       rb_enum_str(rb_limit_state_names, k));
+        points(&b, &p, f, k, cap);
+        names[n_leg] = rb_enum_str(rb_limit_state_names, k);
+        cols[n_leg++] = colours[k];
+    }
+    rb_panel_legend(&b, &p, names, cols, n_leg);
+    rb_svg_close(&b);
+    free(cap);
+    return rb_plot_finish(&b, out, diag);
+}

@@ -1,0 +1,192 @@
+/* A case's fragility: for every motion and limit state the capacity by the
+ * design factor's search, with a criterion that fails exactly when the
+ * limit state is reached, then a lognormal fit per limit state
+ * (rockbolt/fragility.h). The searches are independent, so they share the
+ * threads (one thread each: a search's own speculative runs would be
+ * wasted work), each writing its own slot; the result does not depend on
+ * the thread count. */
+#include <math.h>
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "rockbolt/names.h"
+#include "rockbolt/run.h"
+#include "util/pool.h"
+
+#define RB_FRAGILITY_CI 0.9
+/* The base lifts at a few thousandths of A* (the frame amplifies the
+ * floor): the design searches' 0.001 A* would be a third of it. */
+#define RB_LIFT_OFF_RESOLUTION 1e-5
+
+/* The judge's criteria and the solver options under which a run fails
+ * exactly when limit state k is reached (or a worse state: a yield comes
+ * before any usage, a row that breaks before it overturns is stretched on). */
+static void limit_criteria(const rb_case *c, rb_limit_state k, rb_criteria *cr,
+                           rb_solve_opts *so)
+{
+    rb_criteria_init(cr);
+    *so = c->solve;
+    switch (k) {
+    case RB_LIMIT_FIRST_YIELD:
+        cr->kind = RB_CRIT_NO_YIELD;
+        break;
+    case RB_LIMIT_USAGE:
+        cr->kind = RB_CRIT_NO_BREAK;
+        if (c->criteria.kind == RB_CRIT_NO_BREAK)
+            cr->usage_limit = c->criteria.usage_limit;
+        /* the usage is read at the end of the run: keep stretching */
+        so->stretch_past_failure = 1;
+        break;
+    case RB_LIMIT_OVERTURN:
+    case RB_LIMIT_LIFT_OFF:
+        cr->kind = RB_CRIT_NO_BREAK;
+        cr->usage_limit = INFINITY;
+        so->stretch_past_failure = 1;
+        if (k == RB_LIMIT_LIFT_OFF) {
+            cr->validity = RB_VALIDITY_FAIL;
+            cr->validity_mask = 1u << RB_CHECK_LIFT_OFF;
+        }
+        break;
+    case RB_N_LIMITS:
+        break;
+    }
+}
+
+static rb_status search(const rb_case *c, size_t m, rb_limit_state k, int n_threads,
+                        rb_motion_fragility *out, rb_diag *diag)
+{
+    rb_criteria cr;
+    rb_solve_opts so;
+    rb_design_factor_result f;
+    rb_design_opts grid = c->design;
+    limit_criteria(c, k, &cr, &so);
+    if (k == RB_LIMIT_LIFT_OFF && grid.resolution > RB_LIFT_OFF_RESOLUTION)
+        grid.resolution = RB_LIFT_OFF_RESOLUTION;
+    rb_status st = rb_design_factor(&c->model, &c->motions[m].motion, &so, &cr, &grid,
+                                    n_threads, &f, diag);
+    if (st != RB_OK) {
+        char key[sizeof diag->key];
+        snprintf(key, sizeof key, "motion '%.60s': %s", c->motions[m].name ?
+                 c->motions[m].name : "?", rb_enum_str(rb_limit_state_names, (int)k));
+        return rb_diag_set(diag, st, diag->file, diag->line, diag->col, key, "%s",
+                           diag->msg[0] ? diag->msg : rb_status_str(st));
+    }
+    out->censored[k] = f.no_failure;
+    out->capacity_mps2[k] = f.no_failure ? f.level_mps2 : f.fail_mps2;
+    out->runs += f.runs;
+    return RB_OK;
+}
+
+typedef struct {
+    const rb_case *c;
+    rb_case_fragility *out;
+    rb_diag *diags;             /* one per search */
+    rb_design_progress_fn progress;
+    void *progress_ctx;
+    size_t done, total;
+    pthread_mutex_t lock;       /* progress is told one call at a time */
+} job_ctx;
+
+/* Search i: motion i / RB_N_LIMITS, limit state i % RB_N_LIMITS. The
+ * limit states of one motion write their own fields of its slot. */
+static rb_status job(void *arg, size_t i)
+{
+    job_ctx *jc = arg;
+    size_t m = i / RB_N_LIMITS;
+    int k = (int)(i % RB_N_LIMITS);
+    rb_motion_fragility one = {{0}, {0}, 0};
+    rb_diag_clear(&jc->diags[i]);
+    rb_status st = search(jc->c, m, (rb_limit_state)k, 1, &one, &jc->diags[i]);
+    pthread_mutex_lock(&jc->lock);
+    rb_motion_fragility *slot = &jc->out->motions[m];
+    slot->capacity_mps2[k] = one.capacity_mps2[k];
+    slot->censored[k] = one.censored[k];
+    slot->runs += one.runs;
+    if (jc->progress) {
+        char what[160];
+        snprintf(what, sizeof what, "motion '%.100s': %s", jc->c->motions[m].name
+                 ? jc->c->motions[m].name : "?", rb_enum_str(rb_limit_state_names, k));
+        jc->progress(jc->progress_ctx, ++jc->done, jc->total, what);
+    }
+    pthread_mutex_unlock(&jc->lock);
+    return st;
+}
+
+static void fit_one(rb_case_fragility *fr, rb_limit_state k)
+{
+    size_t n = fr->n_motions;
+    double *cap = malloc((n ? n : 1) * sizeof *cap);
+    int *cens = malloc((n ? n : 1) * sizeof *cens);
+    if (cap && cens) {
+        for (size_t i = 0; i < n; i++) {
+            cap[i] = fr->motions[i].capacity_mps2[k];
+            cens[i] = fr->motions[i].censored[k];
+        }
+        rb_fragility_fit *f = &fr->fit[k];
+        fr->fitted[k] = rb_fragility_mle(cap, cens, n, f) == RB_OK;
+        if (fr->fitted[k]) {
+            fr->p_at_level[k] = rb_fragility_prob(f, fr->level_mps2);
+            fr->im10[k] = rb_fragility_quantile(f, 0.1);
+            fr->im50[k] = f->median;
+            if (rb_fragility_bootstrap(cap, cens, n, fr->n_boot, fr->seed + (uint64_t)k,
+                                       RB_FRAGILITY_CI, &fr->median_lo[k],
+                                       &fr->median_hi[k], NULL) != RB_OK)
+                fr->median_lo[k] = fr->median_hi[k] = NAN;
+        }
+    }
+    free(cap);
+    free(cens);
+}
+
+rb_status rb_run_fragility(const rb_case *c, int n_threads, uint64_t seed, unsigned n_boot,
+                           rb_case_fragility *out, rb_diag *diag,
+                           rb_design_progress_fn progress, void *ctx)
+{
+    rb_derived d;
+    rb_status st = RB_OK;
+    memset(out, 0, sizeof *out);
+    if (c->model.bolt_model == RB_BOLT_NONE || c->n_motions == 0)
+        return rb_diag_set(diag, RB_ERR_INVALID, NULL, 0, 0, "anchorage",
+                           "a fragility needs bolts and at least one motion");
+    if ((st = rb_model_derive(&c->model, &d, diag)) != RB_OK)
+        return st;
+    out->motions = calloc(c->n_motions, sizeof *out->motions);
+    if (!out->motions)
+        return RB_ERR_NOMEM;
+    out->n_motions = c->n_motions;
+    out->g_mps2 = d.g;
+    out->a_star_mps2 = d.a_star_mps2;
+    out->level_mps2 = rb_motion_peak(&c->motions[0].motion);
+    out->seed = seed;
+    out->n_boot = n_boot;
+    size_t total = c->n_motions * RB_N_LIMITS;
+    job_ctx jc = {c, out, NULL, progress, ctx, 0, total, PTHREAD_MUTEX_INITIALIZER};
+    jc.diags = calloc(total, sizeof *jc.diags);
+    rb_status *sts = calloc(total, sizeof *sts);
+    if (!jc.diags || !sts) {
+        free(jc.diags);
+        free(sts);
+        return RB_ERR_NOMEM;
+    }
+    st = rb_pool_map(total, n_threads, job, &jc, sts);
+    /* the first search that failed, in motion and limit state order */
+    for (size_t i = 0; i < total && st == RB_OK; i++)
+        if (sts[i] != RB_OK) {
+            st = sts[i];
+            if (diag)
+                *diag = jc.diags[i];
+        }
+    free(jc.diags);
+    free(sts);
+    pthread_mutex_destroy(&jc.lock);
+    if (st != RB_OK)
+        return st;
+    for (size_t m = 0; m < c->n_motions; m++)
+        out->runs += out->motions[m].runs;
+    for (int k = 0; k < RB_N_LIMITS; k++)
+        fit_one(out, (rb_limit_state)k);
+    if (progress)
+        progress(ctx, total, total, NULL);
+    return RB_OK;
+}

@@ -1,0 +1,110 @@
+#!/usr/bin/env python3
+"""rockbolt fragility end to end.
+
+    python3 tests/fragility/fragility.py ROCKBOLT SCRATCH
+
+Run from the source root. On a suite of two shipped records:
+  - the JSON is the same, byte for byte, on one thread and on two;
+  - each first-yield capacity is the failing level of `rockbolt design`'s
+    no-yield design factor search for that motion (the same search);
+  - a limit state every motion reaches is fitted by the closed form
+    (mean and standard deviation over n of ln capacity);
+  - a state no motion reaches within the scan is censored at the scan's
+    end and not fitted; the CSV has a row per motion and state;
+  - a free-standing case is refused (exit 2) and writes nothing."""
+import json, math, os, shutil, subprocess, sys
+
+rb, scratch = (os.path.abspath(a) for a in sys.argv[1:3])
+shutil.rmtree(scratch, ignore_errors=True)
+os.makedirs(scratch)
+src = os.getcwd()
+failures = []
+
+
+def fail(msg):
+    failures.append(msg)
+    print("FAIL:", msg)
+
+
+def write_case(name, extra=""):
+    p = os.path.join(scratch, name + ".yaml")
+    with open(p, "w") as f:
+        f.write(f"""extends: {src}/cases/base/reference-cabinet.yaml
+name: {name}
+motions:
+  - {{type: record, name: elcentro, file: {src}/cases/records/elcentro_1940_ns.at2, format: at2, building: {{frequency: 5 Hz, damping: 5 %}}, peak: 0.3 A*, window: [0 s, 12 s]}}
+  - {{type: record, name: taft, file: {src}/cases/records/taft_1952_s69e.txt, format: one-column, units: g, dt: 0.01 s, building: {{frequency: 5 Hz, damping: 5 %}}, peak: 0.3 A*, window: [0 s, 12 s]}}
+{extra}""")
+    return p
+
+
+def run(*args):
+    return subprocess.run([rb, *args], capture_output=True, text=True)
+
+
+case = write_case("suite", "design:\n  scan_end: 0.6\n")
+j1, j2 = os.path.join(scratch, "j1.json"), os.path.join(scratch, "j2.json")
+csv = os.path.join(scratch, "f.csv")
+r1 = run("fragility", case, "-j", "1", "--json", j1, "--csv", csv, "-q")
+r2 = run("fragility", case, "-j", "2", "--json", j2, "-q")
+if r1.returncode or r2.returncode:
+    fail(f"exit {r1.returncode} / {r2.returncode}: {r1.stderr.strip()[:300]}")
+    sys.exit(1)
+if open(j1, "rb").read() != open(j2, "rb").read():
+    fail("the JSON depends on the thread count")
+fr = json.load(open(j1))
+states = {s["limit_state"]: s for s in fr["limit_states"]}
+
+# first yield: design's no-yield search, motion by motion
+dj = os.path.join(scratch, "d.json")
+r = run("design", case, "--json", dj, "-q")
+if r.returncode not in (0, 1):
+    fail(f"design: exit {r.returncode}: {r.stderr.strip()[:300]}")
+else:
+    d = json.load(open(dj))
+    for m, dm in zip(fr["motions"], d["motions"]):
+        want = dm["design"]["design_factor"]["no_yield"]["fail_mps2"]
+        if m["capacity_mps2"]["first-yield"] != want:
+            fail(f"{m['name']}: first-yield capacity {m['capacity_mps2']['first-yield']} "
+                 f"is not design's failing level {want}")
+
+# a state every motion reaches: the closed form
+for name, s in states.items():
+    caps = [m["capacity_mps2"][name] for m in fr["motions"]]
+    cens = [m["censored"][name] for m in fr["motions"]]
+    if any(cens):
+        continue
+    if not s["fitted"]:
+        fail(f"{name}: every motion reaches it, but it is not fitted")
+        continue
+    x = [math.log(c) for c in caps]
+    mu = sum(x) / len(x)
+    beta = math.sqrt(sum((v - mu) ** 2 for v in x) / len(x))
+    if abs(s["median_mps2"] / math.exp(mu) - 1) > 1e-12 or abs(s["beta"] / beta - 1) > 1e-12:
+        fail(f"{name}: fit {s['median_mps2']}, {s['beta']} is not the closed form "
+             f"{math.exp(mu)}, {beta}")
+
+# overturning is beyond a scan that ends at 0.6 A*: censored there, not fitted
+top = 0.6 * fr["a_star_mps2"]
+for m in fr["motions"]:
+    if not m["censored"]["overturn"] or abs(m["capacity_mps2"]["overturn"] / top - 1) > 1e-9:
+        fail(f"{m['name']}: overturning should be censored at the scan's end {top}")
+if states["overturn"]["fitted"]:
+    fail("overturn fitted with every motion censored")
+
+rows = open(csv).read().splitlines()
+if len(rows) != 1 + 2 * 4 or rows[0] != "motion,limit_state,capacity_g,capacity_astar,censored":
+    fail(f"the CSV has {len(rows)} lines: {rows[:2]}")
+
+# free-standing: refused, nothing written
+fs = os.path.join(scratch, "free.yaml")
+with open(fs, "w") as f:
+    f.write(f"extends: {src}/cases/base/reference-cabinet.yaml\nanchorage:\n  model: none\n"
+            "motion: {type: harmonic, amplitude: 0.5 g, frequency: 4 Hz, duration: 1 s}\n")
+out = os.path.join(scratch, "free.json")
+r = run("fragility", fs, "--json", out)
+if r.returncode != 2 or os.path.exists(out) or "needs bolts" not in r.stderr:
+    fail(f"a free-standing case: exit {r.returncode}, {r.stderr.strip()[:200]}")
+
+print(f"{len(failures)} failures")
+sys.exit(1 if failures else 0)

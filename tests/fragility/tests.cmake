@@ -1,0 +1,9 @@
+# rockbolt fragility end to end (docs/fragility.md).
+find_package(Python3 COMPONENTS Interpreter)
+if(Python3_Interpreter_FOUND)
+  add_test(NAME fragility_cli
+           COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/tests/fragility/fragility.py
+                   $<TARGET_FILE:rockbolt> ${CMAKE_CURRENT_BINARY_DIR}/fragility-scratch)
+  set_tests_properties(fragility_cli PROPERTIES LABELS fragility
+      WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} TIMEOUT 600)
+endif()
