@@ -181,7 +181,8 @@ static void concrete(rb_strbuf *b, const rb_report *rep, const rb_out_units *u)
     rb_strbuf_printf(b, "<div class=\"scroll\"><table class=\"demand\">\n<caption>Demand "
                         "on the anchorage (17.8, tension and shear at the same instant)"
                         "</caption>\n<tr><th>motion</th><th>utilization</th><th>t (s)</th>"
-                        "<th>tension (%s)</th><th>shear (%s)</th></tr>\n", u->force, u->force);
+                        "<th>tension (%s)</th><th>shear (%s)</th><th>governs</th></tr>\n",
+                     u->force, u->force);
     for (size_t i = 0; i < rep->n_motions; i++) {
         const rb_report_motion *m = &rep->motions[i];
         const rb_result *r = m->result;
@@ -193,6 +194,10 @@ static void concrete(rb_strbuf *b, const rb_report *rep, const rb_out_units *u)
         cell_num(b, r->anchor_max_s);
         cell_sig(b, r->anchor_tension_n / u->force_f);
         cell_sig(b, r->anchor_shear_n / u->force_f);
+        int tension = r->anchor_tension_n / s->phi_nn_n >= r->anchor_shear_n / s->phi_vn_n;
+        cell_text(b, "td", NULL, rb_enum_str(rb_anchor_mode_names,
+                                              (int)(tension ? s->tension_mode
+                                                            : s->shear_mode)));
         rb_strbuf_puts(b, "</tr>\n");
     }
     rb_strbuf_puts(b, "</table></div>\n");

@@ -80,5 +80,9 @@ void *rb_txt_arena_alloc(rb_txt_arena *a, size_t n, size_t size);
 rb_status rb_report_text_concrete(const rb_report *r, rb_txt_arena *a, rb_tlist *out);
 void rb_report_text_motion_anchorage(rb_tvars *t, const rb_report *r,
                                      const rb_report_motion *m);
+/* A motion's list "anchor_modes": each mode's demand and demand / design
+ * strength at the instant of its largest utilization (none without). */
+rb_status rb_report_text_motion_anchor_modes(const rb_report *r, const rb_report_motion *m,
+                                             rb_txt_arena *a, rb_tlist *out);
 
 #endif

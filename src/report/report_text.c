@@ -283,7 +283,7 @@ rb_status rb_report_text_render(const rb_report *r, const char *tmpl,
     size_t n = r->n_motions, i;
     rb_tvar *vars = calloc((n + 1) * RB_TXT_MAX_VARS, sizeof *vars);
     rb_tscope *items = calloc(n ? n : 1, sizeof *items);
-    rb_tlist *motion_lists = calloc(n ? n : 1, sizeof *motion_lists);
+    rb_tlist *motion_lists = calloc(2 * (n ? n : 1), sizeof *motion_lists);
     rb_txt_arena *arena = rb_txt_arena_new();
     rb_tscope top = {0};
     rb_tlist lists[3] = { { "motions", NULL, 0 }, { "design", NULL, 0 },
@@ -314,10 +314,12 @@ rb_status rb_report_text_render(const rb_report *r, const char *tmpl,
         rb_report_text_motion_anchorage(&t, r, &r->motions[i]);
         items[i].vars = t.v;
         items[i].n_vars = t.n;
-        if (rb_report_text_motion_design(r, i, arena, &motion_lists[i]) != RB_OK)
+        if (rb_report_text_motion_design(r, i, arena, &motion_lists[2 * i]) != RB_OK
+            || rb_report_text_motion_anchor_modes(r, &r->motions[i], arena,
+                                                  &motion_lists[2 * i + 1]) != RB_OK)
             goto done;
-        items[i].lists = &motion_lists[i];
-        items[i].n_lists = 1;
+        items[i].lists = &motion_lists[2 * i];
+        items[i].n_lists = 2;
     }
     if (rb_report_text_case_design(r, arena, &lists[1]) != RB_OK
         || rb_report_text_concrete(r, arena, &lists[2]) != RB_OK)

@@ -83,6 +83,39 @@ rb_status rb_report_text_concrete(const rb_report *r, rb_txt_arena *a, rb_tlist 
     return RB_OK;
 }
 
+rb_status rb_report_text_motion_anchor_modes(const rb_report *r, const rb_report_motion *m,
+                                             rb_txt_arena *a, rb_tlist *out)
+{
+    const rb_result *res = m->result;
+    out->name = "anchor_modes";
+    out->items = NULL;
+    out->n = 0;
+    if (!r->kase || !r->kase->has_concrete || !res || !res->anchor_checked)
+        return RB_OK;
+    const rb_anchor_strength *s = &r->kase->anchor;
+    const rb_out_units *u = units_of(r);
+    rb_tscope *items = rb_txt_arena_alloc(a, RB_ANCHOR_N_MODES, sizeof *items);
+    if (!items)
+        return RB_ERR_NOMEM;
+    for (int k = 0; k < RB_ANCHOR_N_MODES; k++) {
+        const rb_anchor_mode_strength *md = &s->mode[k];
+        double demand = k <= RB_ANCHOR_SIDEFACE_N ? res->anchor_tension_n : res->anchor_shear_n;
+        rb_tvars t = {rb_txt_arena_alloc(a, RB_TXT_MAX_VARS, sizeof(rb_tvar)), 0};
+        if (!t.v)
+            return RB_ERR_NOMEM;
+        rb_tv_str(&t, "mode", rb_enum_str(rb_anchor_mode_names, k));
+        rb_tv_str(&t, "clause", rb_anchor_clause((rb_anchor_mode)k));
+        rb_tv_num(&t, "demand", demand / u->force_f);
+        rb_tv_opt(&t, "design", md->applies, md->design_n / u->force_f);
+        rb_tv_opt(&t, "ratio", md->applies, demand / md->design_n);
+        items[k].vars = t.v;
+        items[k].n_vars = t.n;
+    }
+    out->items = items;
+    out->n = RB_ANCHOR_N_MODES;
+    return RB_OK;
+}
+
 void rb_report_text_motion_anchorage(rb_tvars *t, const rb_report *r,
                                      const rb_report_motion *m)
 {
