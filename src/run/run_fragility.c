@@ -88,13 +88,19 @@ typedef struct {
     pthread_mutex_t lock;       /* progress is told one call at a time */
 } job_ctx;
 
-/* Search i: motion i / RB_N_LIMITS, limit state i % RB_N_LIMITS. The
- * limit states of one motion write their own fields of its slot. */
+/* The limit states in the order their searches are handed out: the
+ * longest first (overturning runs to the highest levels, rocking hard), so
+ * that the last searches, which decide when the threads finish, are short. */
+static const rb_limit_state longest_first[RB_N_LIMITS] = {
+    RB_LIMIT_OVERTURN, RB_LIMIT_USAGE, RB_LIMIT_FIRST_YIELD, RB_LIMIT_LIFT_OFF};
+
+/* Search i: limit state longest_first[i / n], motion i % n. The limit
+ * states of one motion write their own fields of its slot. */
 static rb_status job(void *arg, size_t i)
 {
     job_ctx *jc = arg;
-    size_t m = i / RB_N_LIMITS;
-    int k = (int)(i % RB_N_LIMITS);
+    size_t n = jc->out->n_motions, m = i % n;
+    int k = (int)longest_first[i / n];
     rb_motion_fragility one = {{0}, {0}, 0};
     rb_diag_clear(&jc->diags[i]);
     rb_status st = search(jc->c, m, (rb_limit_state)k, 1, &one, &jc->diags[i]);
@@ -170,7 +176,7 @@ rb_status rb_run_fragility(const rb_case *c, int n_threads, uint64_t seed, unsig
         return RB_ERR_NOMEM;
     }
     st = rb_pool_map(total, n_threads, job, &jc, sts);
-    /* the first search that failed, in motion and limit state order */
+    /* the first search that failed, in the order they were handed out */
     for (size_t i = 0; i < total && st == RB_OK; i++)
         if (sts[i] != RB_OK) {
             st = sts[i];
