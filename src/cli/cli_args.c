@@ -71,6 +71,7 @@ static const struct option design_longs[] = {
 };
 static const struct option fragility_longs[] = {
     {"json", required_argument, NULL, OPT_JSON},
+    {"html", required_argument, NULL, OPT_HTML},
     {"csv", required_argument, NULL, OPT_CSV},
     {"svg", required_argument, NULL, OPT_SVG},
     {"sandbox", required_argument, NULL, OPT_SANDBOX},

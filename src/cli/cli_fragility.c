@@ -19,6 +19,20 @@ typedef struct {
     const char *title;
 } outputs;
 
+/* --html: the table and the figure in one page */
+static rb_status page(const outputs *o, char **out, rb_diag *d)
+{
+    char *svg = NULL, *text = rb_fragility_render_text(o->c, o->f);
+    rb_status st = text ? rb_plot_fragility_svg(o->f, o->title, &svg, d) : RB_ERR_NOMEM;
+    if (st == RB_OK) {
+        const char *svgs[1] = {svg};
+        st = rb_plot_html_page(NULL, o->title, text, svgs, 1, out, d);
+    }
+    free(svg);
+    free(text);
+    return st;
+}
+
 static rb_status fill(void *ctx, size_t i, FILE *fp, rb_diag *d)
 {
     const void *const *cx = ctx;
@@ -31,8 +45,10 @@ static rb_status fill(void *ctx, size_t i, FILE *fp, rb_diag *d)
         text = rb_fragility_render_json(o->c, o->f);
     else if (strcmp(opt, "--csv") == 0)
         text = rb_fragility_render_csv(o->c, o->f);
-    else
+    else if (strcmp(opt, "--svg") == 0)
         st = rb_plot_fragility_svg(o->f, o->title, &text, d);
+    else
+        st = page(o, &text, d);
     if (st == RB_OK && !text)
         st = RB_ERR_NOMEM;
     if (st == RB_OK && fputs(text, fp) == EOF)
@@ -45,12 +61,12 @@ static rb_status fill(void *ctx, size_t i, FILE *fp, rb_diag *d)
 
 static rb_exit plan(const rb_cli_opts *o, rb_outplan *p)
 {
-    const char *paths[3] = {o->json_path, o->csv_path, o->svg_path};
-    static const char *const opts[3] = {"--json", "--csv", "--svg"};
+    const char *paths[4] = {o->json_path, o->csv_path, o->svg_path, o->html_path};
+    static const char *const opts[4] = {"--json", "--csv", "--svg", "--html"};
     rb_diag d;
     rb_diag_clear(&d);
     rb_status st = rb_outplan_add_input(p, o->case_path, &d);
-    for (int k = 0; k < 3 && st == RB_OK; k++)
+    for (int k = 0; k < 4 && st == RB_OK; k++)
         if (paths[k])
             st = rb_outplan_add(p, opts[k], paths[k], &d);
     return st == RB_OK ? RB_EXIT_PASS : rb_cli_plan_error(st, &d);

@@ -45,7 +45,8 @@ def run(*args):
 case = write_case("suite", "design:\n  scan_end: 0.6\n")
 j1, j2 = os.path.join(scratch, "j1.json"), os.path.join(scratch, "j2.json")
 csv = os.path.join(scratch, "f.csv")
-r1 = run("fragility", case, "-j", "1", "--json", j1, "--csv", csv, "-q")
+html = os.path.join(scratch, "f.html")
+r1 = run("fragility", case, "-j", "1", "--json", j1, "--csv", csv, "--html", html, "-q")
 r2 = run("fragility", case, "-j", "2", "--json", j2, "-q")
 if r1.returncode or r2.returncode:
     fail(f"exit {r1.returncode} / {r2.returncode}: {r1.stderr.strip()[:300]}")
@@ -91,6 +92,10 @@ for m in fr["motions"]:
         fail(f"{m['name']}: overturning should be censored at the scan's end {top}")
 if states["overturn"]["fitted"]:
     fail("overturn fitted with every motion censored")
+
+page = open(html).read()
+if page.count("<svg") != 1 or "first-yield" not in page or "median g" not in page:
+    fail("the page lacks the figure or the table")
 
 rows = open(csv).read().splitlines()
 if len(rows) != 1 + 2 * 4 or rows[0] != "motion,limit_state,capacity_g,capacity_astar,censored":
