@@ -38,6 +38,9 @@ typedef struct {
     double spacing_m;      /* between the anchors of a row */
     double futa_pa;        /* specified tensile strength */
     double abrg_m2;        /* bearing area of the head; <= 0: a heavy hex head */
+    double ase_m2;         /* effective (tensile stress) area A_se of one
+                              anchor, for the steel strengths; <= 0: the
+                              model's bolt area */
     bool grout_pad;        /* shear through a grout pad (17.7.1.2.1) */
     rb_aci17_coef coef;    /* coefficients of the SI or the in-lb edition */
 } rb_anchor_inputs;
@@ -80,7 +83,8 @@ typedef struct {
     bool ductile;          /* both hold */
 } rb_anchor_strength;
 
-/* Strengths of the anchorage of model m (bolts_per_row, bolt area,
+/* Strengths of the anchorage of model m (bolts_per_row, bolt area (its
+ * diameter for da, and A_se unless in gives it),
  * yield stress, lever arm, half width, deformable length) on the slab and
  * anchors of in. RB_ERR_INVALID with diag->key naming the input for a
  * model without bolts, or an input that is missing or out of range. */

@@ -58,6 +58,7 @@ static void read_anchors(rb_cctx *c, rb_ynode *an, int required, int per_row,
     rb_cv_number(c, an, p, "ultimate_stress", required, RB_DIM_STRESS, 0, 0, 10e9, 1,
                  &in->futa_pa);
     rb_cv_number(c, an, p, "head_bearing_area", 0, RB_DIM_AREA, 0, 0, 1, 1, &in->abrg_m2);
+    rb_cv_number(c, an, p, "tensile_area", 0, RB_DIM_AREA, 0, 0, 1, 1, &in->ase_m2);
     flag(c, an, p, "grout_pad", &in->grout_pad);
 }
 

@@ -54,6 +54,8 @@ static rb_status check_inputs(const rb_model *m, const rb_anchor_inputs *in, rb_
                            "%g mm, slab %g mm)", in->hef_m * 1e3, in->thickness_m * 1e3);
     if (m->bolts_per_row > 1 && !(in->spacing_m > 0))
         return bad(diag, "anchorage.spacing", "must be > 0 for two or more bolts a row");
+    if (in->ase_m2 > m->bolt_area_m2)
+        return bad(diag, "anchorage.tensile_area", "must not exceed the bolt's area");
     if (!(in->futa_pa >= m->yield_stress_pa) || !isfinite(in->futa_pa))
         return bad(diag, "anchorage.ultimate_stress", "must be at least the yield stress");
     return RB_OK;
@@ -66,8 +68,9 @@ static void tension(const rb_model *m, const rb_anchor_inputs *in, rb_anchor_str
     int n = m->bolts_per_row;
     double s_row = (n - 1) * in->spacing_m, hef = in->hef_m, ca1 = in->edge_m;
     double fya = m->yield_stress_pa;
+    double ase = in->ase_m2 > 0 ? in->ase_m2 : m->bolt_area_m2;
     rb_anchor_mode_strength *st = &o->mode[RB_ANCHOR_STEEL_N];
-    st->nominal_n = n * rb_aci17_nsa(m->bolt_area_m2, in->futa_pa, fya);
+    st->nominal_n = n * rb_aci17_nsa(ase, in->futa_pa, fya);
     st->phi = rb_aci17_phi(RB_ACI17_STEEL_TENSION, true, in->condition_a);
 
     rb_anchor_mode_strength *br = &o->mode[RB_ANCHOR_BREAKOUT_N];
@@ -105,8 +108,9 @@ static void shear(const rb_model *m, const rb_anchor_inputs *in, rb_anchor_stren
     double s_row = (n - 1) * in->spacing_m, hef = in->hef_m, ca1 = in->edge_m;
     double rows_apart = 2 * (m->lever_arm_m - m->half_width_m);
     rb_anchor_mode_strength *st = &o->mode[RB_ANCHOR_STEEL_V];
-    st->nominal_n = 2 * n * rb_aci17_vsa(m->bolt_area_m2, in->futa_pa, m->yield_stress_pa,
-                                         false, in->grout_pad);
+    double ase = in->ase_m2 > 0 ? in->ase_m2 : m->bolt_area_m2;
+    st->nominal_n = 2 * n * rb_aci17_vsa(ase, in->futa_pa, m->yield_stress_pa, false,
+                                         in->grout_pad);
     st->phi = rb_aci17_phi(RB_ACI17_STEEL_SHEAR, true, in->condition_a);
 
     rb_anchor_mode_strength *br = &o->mode[RB_ANCHOR_BREAKOUT_V];

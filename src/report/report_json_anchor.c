@@ -20,6 +20,7 @@ static void add_inputs(rb_jctx *cx, cJSON *o, const rb_anchor_inputs *in)
     rb_j_num(cx, o, "embedment_m", in->hef_m);
     rb_j_num(cx, o, "spacing_m", in->spacing_m);
     rb_j_num(cx, o, "ultimate_stress_pa", in->futa_pa);
+    rb_j_opt(cx, o, "tensile_area_m2", in->ase_m2 > 0, in->ase_m2);
     rb_j_bool(cx, o, "grout_pad", in->grout_pad);
 }
 

@@ -93,6 +93,16 @@ static void hand_worked(void)
     /* 17.10.5.3: breakout 20 239 lb < 1.2 x steel 22 777 lb: not ductile */
     CHECK_REL(s.ductility_margin, ncbg / (1.2 * 2 * ase * 58000), 1e-12);
     CHECK(!s.ductile && s.stretch_ok);
+    /* the steel strengths on the effective area when it is given */
+    in.ase_m2 = 0.142 * IN * IN;
+    CHECK(rb_anchor_check(&m, &in, &s, &d) == RB_OK);
+    CHECK_REL(s.mode[RB_ANCHOR_STEEL_N].nominal_n, 2 * 0.142 * 58000 * LB, 1e-12);
+    CHECK_REL(s.mode[RB_ANCHOR_STEEL_V].nominal_n, 4 * 0.6 * 0.142 * 58000 * LB, 1e-12);
+    CHECK_REL(s.mode[RB_ANCHOR_BREAKOUT_N].nominal_n, ncbg * LB, 1e-12);
+    in.ase_m2 = 0.2 * IN * IN;   /* more than the bolt's gross area */
+    CHECK(rb_anchor_check(&m, &in, &s, &d) == RB_ERR_INVALID
+          && strcmp(d.key, "anchorage.tensile_area") == 0);
+    in.ase_m2 = 0;
     /* inputs out of range name their key */
     in.hef_m = 7 * IN;
     CHECK(rb_anchor_check(&m, &in, &s, &d) == RB_ERR_INVALID
