@@ -30,6 +30,24 @@ static int floor_motion_50hz(const char *path, rb_series *out)
     return 0;
 }
 
+/* Solve n times into r; the times, sorted, into t. 0, or -1 after
+ * printing why a solve failed. */
+static int time_solves(const rb_model *m, const rb_motion *mo, const rb_solve_opts *o,
+                       int n, double *t, rb_result *r)
+{
+    for (int i = 0; i < n; i++) {
+        double t0 = rb_bench_now_s();
+        rb_status st = rb_solve_run(m, mo, o, r, NULL);
+        t[i] = rb_bench_now_s() - t0;
+        if (st != RB_OK) {
+            fprintf(stderr, "solve failed: %s\n", rb_status_str(st));
+            return -1;
+        }
+    }
+    qsort(t, (size_t)n, sizeof *t, cmp);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     const char *path = argc > 1 ? argv[1] : "cases/records/elcentro_1940_ns.at2";
@@ -56,16 +74,8 @@ int main(int argc, char **argv)
     double *t = malloc((size_t)runs * sizeof *t);
     if (!t)
         return 3;
-    for (int i = 0; i < runs; i++) {
-        double t0 = rb_bench_now_s();
-        rb_status st = rb_solve_run(&m, &mo, &o, &r, NULL);
-        t[i] = rb_bench_now_s() - t0;
-        if (st != RB_OK) {
-            fprintf(stderr, "solve failed: %s\n", rb_status_str(st));
-            return 3;
-        }
-    }
-    qsort(t, (size_t)runs, sizeof *t, cmp);
+    if (time_solves(&m, &mo, &o, runs, t, &r) != 0)
+        return 3;
     double med = t[runs / 2];
     printf("reference cabinet, 50 s at 50 Hz, 0.4 A*, rigid-plastic bolts, %d runs\n", runs);
     printf("median solve        %.3f ms (min %.3f, max %.3f)\n", 1e3 * med, 1e3 * t[0],
@@ -95,16 +105,8 @@ int main(int argc, char **argv)
     for (int model = 0; model < 2; model++) {
         m.bolt_model = model == 0 ? RB_BOLT_RIGID_PLASTIC : RB_BOLT_ELASTIC_PLASTIC;
         int n_runs = model == 0 ? runs : (runs + 9) / 10;
-        for (int i = 0; i < n_runs; i++) {
-            double t0 = rb_bench_now_s();
-            rb_status st = rb_solve_run(&m, &mo, &o, &r, NULL);
-            t[i] = rb_bench_now_s() - t0;
-            if (st != RB_OK) {
-                fprintf(stderr, "solve failed: %s\n", rb_status_str(st));
-                return 3;
-            }
-        }
-        qsort(t, (size_t)n_runs, sizeof *t, cmp);
+        if (time_solves(&m, &mo, &o, n_runs, t, &r) != 0)
+            return 3;
         med = t[n_runs / 2];
         printf("%s bolts, El Centro %.0f s at %.0f Hz through the 5 Hz building, "
                "0.4 A*: median solve %.3f ms over %d runs (%ld steps; target %s: %s)\n",

@@ -44,47 +44,49 @@ static rb_exit take_threads(const char *v, rb_cli_opts *o)
 enum { OPT_JSON = 256, OPT_TEXT, OPT_HISTORY, OPT_SVG, OPT_HTML, OPT_SANDBOX,
        OPT_SWEEP_CSV, OPT_CSV, OPT_SEED };
 
-/* The options of check; design's add --sweep-csv and -j; init's --help. */
-static const struct option check_longs[] = {
-    {"json", required_argument, NULL, OPT_JSON},
-    {"text", required_argument, NULL, OPT_TEXT},
-    {"history", required_argument, NULL, OPT_HISTORY},
-    {"svg", required_argument, NULL, OPT_SVG},
-    {"html", required_argument, NULL, OPT_HTML},
-    {"sandbox", required_argument, NULL, OPT_SANDBOX},
-    {"quiet", no_argument, NULL, 'q'},
-    {"help", no_argument, NULL, 'h'},
-    {NULL, 0, NULL, 0}
+/* Every long option once, with the commands that take it: each command's
+ * table is drawn from this one, so an option means the same everywhere. */
+#define CHECK (1u << RB_CMD_CHECK)
+#define DESIGN (1u << RB_CMD_DESIGN)
+#define FRAGILITY (1u << RB_CMD_FRAGILITY)
+#define INIT (1u << RB_CMD_INIT)
+static const struct {
+    struct option o;
+    unsigned commands;
+} all_longs[] = {
+    {{"json", required_argument, NULL, OPT_JSON}, CHECK | DESIGN | FRAGILITY},
+    {{"text", required_argument, NULL, OPT_TEXT}, CHECK | DESIGN},
+    {{"history", required_argument, NULL, OPT_HISTORY}, CHECK | DESIGN},
+    {{"svg", required_argument, NULL, OPT_SVG}, CHECK | DESIGN | FRAGILITY},
+    {{"html", required_argument, NULL, OPT_HTML}, CHECK | DESIGN | FRAGILITY},
+    {{"csv", required_argument, NULL, OPT_CSV}, FRAGILITY},
+    {{"sandbox", required_argument, NULL, OPT_SANDBOX}, CHECK | DESIGN | FRAGILITY},
+    {{"sweep-csv", required_argument, NULL, OPT_SWEEP_CSV}, DESIGN},
+    {{"seed", required_argument, NULL, OPT_SEED}, FRAGILITY},
+    {{"threads", required_argument, NULL, 'j'}, DESIGN | FRAGILITY},
+    {{"quiet", no_argument, NULL, 'q'}, CHECK | DESIGN | FRAGILITY},
+    {{"help", no_argument, NULL, 'h'}, CHECK | DESIGN | FRAGILITY | INIT},
 };
-static const struct option design_longs[] = {
-    {"json", required_argument, NULL, OPT_JSON},
-    {"text", required_argument, NULL, OPT_TEXT},
-    {"history", required_argument, NULL, OPT_HISTORY},
-    {"svg", required_argument, NULL, OPT_SVG},
-    {"html", required_argument, NULL, OPT_HTML},
-    {"sandbox", required_argument, NULL, OPT_SANDBOX},
-    {"sweep-csv", required_argument, NULL, OPT_SWEEP_CSV},
-    {"threads", required_argument, NULL, 'j'},
-    {"quiet", no_argument, NULL, 'q'},
-    {"help", no_argument, NULL, 'h'},
-    {NULL, 0, NULL, 0}
-};
-static const struct option fragility_longs[] = {
-    {"json", required_argument, NULL, OPT_JSON},
-    {"html", required_argument, NULL, OPT_HTML},
-    {"csv", required_argument, NULL, OPT_CSV},
-    {"svg", required_argument, NULL, OPT_SVG},
-    {"sandbox", required_argument, NULL, OPT_SANDBOX},
-    {"seed", required_argument, NULL, OPT_SEED},
-    {"threads", required_argument, NULL, 'j'},
-    {"quiet", no_argument, NULL, 'q'},
-    {"help", no_argument, NULL, 'h'},
-    {NULL, 0, NULL, 0}
-};
-static const struct option init_longs[] = {
-    {"help", no_argument, NULL, 'h'},
-    {NULL, 0, NULL, 0}
-};
+#define N_LONGS (sizeof all_longs / sizeof all_longs[0])
+
+/* The long options of a command into longs (ended by a zero entry) and
+ * the short ones (-q, -j N, -h) it takes into shorts. */
+static void options_of(rb_cli_command cmd, struct option longs[N_LONGS + 1],
+                       char shorts[8])
+{
+    size_t n = 0, k = 0;
+    for (size_t i = 0; i < N_LONGS; i++) {
+        if (!(all_longs[i].commands & (1u << cmd)))
+            continue;
+        longs[n++] = all_longs[i].o;
+        if (all_longs[i].o.val == 'q' || all_longs[i].o.val == 'h')
+            shorts[k++] = (char)all_longs[i].o.val;
+        else if (all_longs[i].o.val == 'j')
+            shorts[k++] = 'j', shorts[k++] = ':';
+    }
+    longs[n] = (struct option){NULL, 0, NULL, 0};
+    shorts[k] = '\0';
+}
 
 /* One option of check, design or init (already known to the table). */
 static rb_exit take_option(int c, const rb_cli_getopt *g, rb_cli_opts *o)
@@ -157,14 +159,10 @@ static rb_exit parse_rest(int argc, char **argv, rb_cli_opts *o)
     const char *cmd = argv[1];
     rb_cli_getopt g;
     int c;
-    if (o->command == RB_CMD_DESIGN)
-        rb_cli_getopt_init(&g, cmd, argc - 1, argv + 1, "qhj:", design_longs);
-    else if (o->command == RB_CMD_FRAGILITY)
-        rb_cli_getopt_init(&g, cmd, argc - 1, argv + 1, "qhj:", fragility_longs);
-    else if (o->command == RB_CMD_CHECK)
-        rb_cli_getopt_init(&g, cmd, argc - 1, argv + 1, "qh", check_longs);
-    else
-        rb_cli_getopt_init(&g, cmd, argc - 1, argv + 1, "h", init_longs);
+    struct option longs[N_LONGS + 1];
+    char shorts[8];
+    options_of(o->command, longs, shorts);
+    rb_cli_getopt_init(&g, cmd, argc - 1, argv + 1, shorts, longs);
     while ((c = rb_cli_getopt_next(&g)) != -1) {
         rb_exit e = RB_EXIT_PASS;
         if (c == '?')
@@ -172,7 +170,8 @@ static rb_exit parse_rest(int argc, char **argv, rb_cli_opts *o)
         if (c == ':') {
             rb_cli_error(NULL, NULL, "option '%s' needs %s", g.name,
                          strcmp(g.name, "-j") == 0 || strcmp(g.name, "--threads") == 0
-                         ? "a number of threads" : "a file name");
+                         ? "a number of threads"
+                         : strcmp(g.name, "--seed") == 0 ? "a whole number" : "a file name");
             return RB_EXIT_USAGE;
         }
         if (c == 'h') {
