@@ -9,76 +9,13 @@
  * order one before scaling and squaring. */
 #include <math.h>
 #include <string.h>
+#include "matexp.h"
 #include "sdof.h"
 
-#define RB_SDOF_N 4
-/* Taylor terms after scaling the matrix norm below 1/2: the remainder,
- * 0.5^21 / 21!, is far below double precision. */
-#define RB_SDOF_TAYLOR_TERMS 20
 /* Bounds that keep the number of squarings small; far beyond any physical
  * oscillator (xi = 100 is a dashpot, w dt = 1e6 a step of 1e5 periods). */
 #define RB_SDOF_XI_MAX 100.0
 #define RB_SDOF_H_MAX 1e6
-
-typedef struct {
-    double m[RB_SDOF_N][RB_SDOF_N];
-} rb_mat4;
-
-/* out = a b; out may alias a or b. */
-static void mat4_mul(const rb_mat4 *a, const rb_mat4 *b, rb_mat4 *out)
-{
-    rb_mat4 r;
-    for (int i = 0; i < RB_SDOF_N; i++)
-        for (int j = 0; j < RB_SDOF_N; j++) {
-            double s = 0.0;
-            for (int k = 0; k < RB_SDOF_N; k++)
-                s += a->m[i][k] * b->m[k][j];
-            r.m[i][j] = s;
-        }
-    *out = r;
-}
-
-static double mat4_norm_inf(const rb_mat4 *a)
-{
-    double best = 0.0;
-    for (int i = 0; i < RB_SDOF_N; i++) {
-        double row = 0.0;
-        for (int j = 0; j < RB_SDOF_N; j++)
-            row += fabs(a->m[i][j]);
-        if (row > best)
-            best = row;
-    }
-    return best;
-}
-
-/* e = exp(a) by scaling, Taylor series and squaring. */
-static void mat4_exp(const rb_mat4 *a, rb_mat4 *e)
-{
-    int squarings = 0;
-    double norm = mat4_norm_inf(a);
-    while (norm > 0.5) {
-        norm *= 0.5;
-        squarings++;
-    }
-    double scale = ldexp(1.0, -squarings);
-    rb_mat4 x, term;
-    for (int i = 0; i < RB_SDOF_N; i++)
-        for (int j = 0; j < RB_SDOF_N; j++) {
-            x.m[i][j] = a->m[i][j] * scale;
-            term.m[i][j] = (i == j) ? 1.0 : 0.0;
-            e->m[i][j] = term.m[i][j];
-        }
-    for (int k = 1; k <= RB_SDOF_TAYLOR_TERMS; k++) {
-        mat4_mul(&term, &x, &term);
-        for (int i = 0; i < RB_SDOF_N; i++)
-            for (int j = 0; j < RB_SDOF_N; j++) {
-                term.m[i][j] /= k;
-                e->m[i][j] += term.m[i][j];
-            }
-    }
-    for (int s = 0; s < squarings; s++)
-        mat4_mul(e, e, e);
-}
 
 rb_status rb_sdof_step_init(rb_sdof_step *st, double omega, double xi, double dt)
 {
@@ -90,13 +27,12 @@ rb_status rb_sdof_step_init(rb_sdof_step *st, double omega, double xi, double dt
     double h = omega * dt;
     if (!(h <= RB_SDOF_H_MAX))
         return RB_ERR_INVALID;
-    rb_mat4 a = {{{0.0, h, 0.0, 0.0},
-                  {-h, -2.0 * xi * h, h, 0.0},
-                  {0.0, 0.0, 0.0, h},
-                  {0.0, 0.0, 0.0, 0.0}}};
-    rb_mat4 ex;
-    mat4_exp(&a, &ex);
-    double (*e)[RB_SDOF_N] = ex.m;
+    const double a[4][4] = {{0.0, h, 0.0, 0.0},
+                            {-h, -2.0 * xi * h, h, 0.0},
+                            {0.0, 0.0, 0.0, h},
+                            {0.0, 0.0, 0.0, 0.0}};
+    double e[4][4];
+    rb_matexp(4, &a[0][0], &e[0][0]);
     /* Back to (u, v, p0, p1): u_t = v / w, q = p / w^2, and
      * q_t = (p1 - p0) / (w^2 h). */
     double w2 = omega * omega;

@@ -1,0 +1,116 @@
+/* Response spectra of floor motions, and the target spectra they are
+ * compared with or matched to.
+ *
+ * A response spectrum is the peak response of a linear single-degree-of-
+ * freedom oscillator of frequency f and damping xi standing on the floor:
+ * the pseudo-acceleration w^2 max|u| and the absolute acceleration
+ * max|u'' + floor|. The oscillator is stepped exactly for a floor that is
+ * linear between samples, and through a building for the ground that is
+ * linear between samples (building and oscillator as one linear system),
+ * so that the spectrum is that of the motion the solver sees. No I/O. */
+#ifndef ROCKBOLT_SPECTRUM_H
+#define ROCKBOLT_SPECTRUM_H
+
+#include <stddef.h>
+#include "rockbolt/motion.h"
+#include "rockbolt/status.h"
+
+/* The analysis grid: f_min * 2^(k / per_octave) for k = 0, 1, ... up to
+ * f_max (included when it falls on the grid to 1e-9). */
+typedef struct {
+    double damping;     /* xi, default 0.05 */
+    double f_min_hz;    /* default 0.5 */
+    double f_max_hz;    /* default 50 */
+    double per_octave;  /* default 12 */
+} rb_spectrum_opts;
+
+#define RB_SPECTRUM_MAX_POINTS 2000
+
+void rb_spectrum_opts_init(rb_spectrum_opts *o);
+
+typedef struct {
+    size_t n;
+    double damping;
+    double *freq_hz;    /* owned, n, ascending */
+    double *psa_mps2;   /* owned, n: w^2 max|u| */
+    double *sa_mps2;    /* owned, n: max |absolute acceleration| */
+} rb_spectrum;
+
+/* Allocate the grid of o with zero ordinates. RB_ERR_INVALID when
+ * 0 < f_min < f_max, per_octave > 0 and 0 <= damping < 1 do not hold or
+ * the grid would exceed RB_SPECTRUM_MAX_POINTS; RB_ERR_NOMEM. */
+rb_status rb_spectrum_grid(const rb_spectrum_opts *o, rb_spectrum *sp);
+/* Allocate n given frequencies (each > 0, ascending). */
+rb_status rb_spectrum_alloc(rb_spectrum *sp, const double *freq_hz, size_t n,
+                            double damping);
+void rb_spectrum_free(rb_spectrum *sp);
+
+/* Fill the ordinates of sp for the series s multiplied by scale. The
+ * oscillator starts at rest with the series and, once the samples end
+ * (where the solver's floor stops), vibrates freely for one more of its
+ * periods, where its peak may still come. Peaks between the exact states
+ * are found on the cubic through their values and slopes, with steps of
+ * at most 0.2 / w (relative error under 1e-5). RB_ERR_INVALID for an
+ * empty series. */
+rb_status rb_spectrum_of_series(const rb_series *s, double scale, rb_spectrum *sp);
+
+/* The spectrum of any motion: a sampled one through rb_spectrum_of_series
+ * (with its scale); a closed form (harmonic, pulse) sampled every
+ * 1 / (200 f_max) s over its duration first, a straight-line
+ * approximation whose error that spacing keeps under 1e-4. The polarity
+ * does not change a spectrum. RB_ERR_INVALID for the critical excitation,
+ * which depends on the response. */
+rb_status rb_spectrum_of_motion(const rb_motion *m, rb_spectrum *sp);
+
+/* ---- target spectra ---------------------------------------------------- */
+
+typedef enum {
+    RB_TARGET_AC156 = 0,  /* ICC-ES AC156 required response spectrum */
+    RB_TARGET_TABLE       /* frequency / acceleration pairs */
+} rb_target_kind;
+
+typedef struct {
+    rb_target_kind kind;
+    double damping;         /* of the target's ordinates: 0.05 for AC156 */
+    /* AC156 */
+    double sds_mps2;        /* S_DS as an acceleration */
+    double z_over_h;        /* 0 (grade) to 1 (roof) */
+    /* table: owned, n points, frequencies ascending; log-log between */
+    double *freq_hz;
+    double *accel_mps2;
+    size_t n;
+    /* The frequencies over which a motion must envelope the target, and
+     * the band it must stay within there: [lower, upper] x target. */
+    double check_from_hz, check_to_hz;
+    double band_lower, band_upper;
+    double check_per_octave; /* analysis resolution of the check: 6 */
+} rb_target;
+
+/* AC156's horizontal flexible and rigid levels A_FLX-H and A_RIG-H. */
+void rb_ac156_levels(double sds_mps2, double z_over_h, double *a_flx, double *a_rig);
+/* An AC156 target for S_DS and z/h with the criteria's check range, band
+ * and resolution. */
+void rb_target_ac156(rb_target *t, double sds_mps2, double z_over_h);
+/* The target's acceleration at f (> 0); a table is constant beyond its
+ * ends. */
+double rb_target_at(const rb_target *t, double f_hz);
+void rb_target_free(rb_target *t);
+
+/* How well a spectrum of the target's damping follows it: over the
+ * spectrum's points within the check range, the least and the largest
+ * ratio of the absolute acceleration to the target (the test response
+ * spectrum of a shake table is the absolute acceleration), and where. */
+typedef struct {
+    double min_ratio, min_at_hz;
+    double max_ratio, max_at_hz;
+    size_t n_checked;
+    int within;   /* every ratio within [band_lower, band_upper] */
+} rb_target_fit;
+
+/* Allocate the target's check grid: check_from * 2^(k / check_per_octave)
+ * up to check_to, with the target's damping. */
+rb_status rb_target_check_grid(const rb_target *t, rb_spectrum *sp);
+rb_status rb_target_compare(const rb_target *t, const rb_spectrum *sp,
+                            rb_target_fit *fit);
+
+#endif
