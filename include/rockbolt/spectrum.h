@@ -31,6 +31,10 @@ void rb_spectrum_opts_init(rb_spectrum_opts *o);
 typedef struct {
     size_t n;
     double damping;
+    /* The largest phase of the fastest mode over one sub-step, in radians:
+     * 0.2 from rb_spectrum_alloc (peaks within 4e-6); a quick estimate may
+     * take up to 1 (peaks within 3e-3). */
+    double step_phase;
     double *freq_hz;    /* owned, n, ascending */
     double *psa_mps2;   /* owned, n: w^2 max|u| */
     double *sa_mps2;    /* owned, n: max |absolute acceleration| */
@@ -50,8 +54,8 @@ void rb_spectrum_free(rb_spectrum *sp);
  * (where the solver's floor stops), vibrates freely for one more of its
  * periods, where its peak may still come. Peaks between the exact states
  * are found on the cubic through their values and slopes, with steps of
- * at most 0.2 / w (relative error under 1e-5). RB_ERR_INVALID for an
- * empty series. */
+ * at most step_phase / w: the cubic's error is (step_phase)^4 / 384 of the
+ * peak. RB_ERR_INVALID for an empty series. */
 rb_status rb_spectrum_of_series(const rb_series *s, double scale, rb_spectrum *sp);
 
 /* The spectrum of any motion: a sampled one through rb_spectrum_of_series
@@ -69,10 +73,21 @@ typedef enum {
     RB_TARGET_TABLE       /* frequency / acceleration pairs */
 } rb_target_kind;
 
+/* Which AC156 form of the horizontal levels (docs/motion.md):
+ * 2010: A_FLX-H = S_DS (1 + 2 z/h) <= 1.6 S_DS, A_RIG-H = 0.4 S_DS (1 + 2 z/h)
+ *       (AC156 with ASCE 7-05 to 7-16);
+ * 2024: A_FLX-H = S_DS H_f / R_mu <= 1.6 S_DS, A_RIG-H = 0.4 S_DS H_f / R_mu
+ *       with ASCE 7-22's H_f = 1 + 2.5 z/h and R_mu = 1.3 (1.0 at grade). */
+typedef enum {
+    RB_AC156_2010 = 0,
+    RB_AC156_2024
+} rb_ac156_edition;
+
 typedef struct {
     rb_target_kind kind;
     double damping;         /* of the target's ordinates: 0.05 for AC156 */
     /* AC156 */
+    rb_ac156_edition edition;
     double sds_mps2;        /* S_DS as an acceleration */
     double z_over_h;        /* 0 (grade) to 1 (roof) */
     /* table: owned, n points, frequencies ascending; log-log between */
@@ -84,13 +99,22 @@ typedef struct {
     double check_from_hz, check_to_hz;
     double band_lower, band_upper;
     double check_per_octave; /* analysis resolution of the check: 6 */
+    /* The least peak acceleration a motion must reach: for AC156 0.9
+     * A_RIG (the peak table acceleration, AC156-24 6.5.4.2.3); 0: none. */
+    double min_peak_mps2;
 } rb_target;
 
 /* AC156's horizontal flexible and rigid levels A_FLX-H and A_RIG-H. */
-void rb_ac156_levels(double sds_mps2, double z_over_h, double *a_flx, double *a_rig);
+void rb_ac156_levels(rb_ac156_edition ed, double sds_mps2, double z_over_h,
+                     double *a_flx, double *a_rig);
 /* An AC156 target for S_DS and z/h with the criteria's check range, band
  * and resolution. */
-void rb_target_ac156(rb_target *t, double sds_mps2, double z_over_h);
+void rb_target_ac156(rb_target *t, rb_ac156_edition ed, double sds_mps2, double z_over_h);
+/* A table target (takes ownership of freq and accel, n >= 2, frequencies
+ * ascending and > 0, accelerations > 0) checked over its own frequency
+ * range at 1/6 octave within [0.9, 1.3], as AC156 does. */
+void rb_target_table(rb_target *t, double *freq_hz, double *accel_mps2, size_t n,
+                     double damping);
 /* The target's acceleration at f (> 0); a table is constant beyond its
  * ends. */
 double rb_target_at(const rb_target *t, double f_hz);

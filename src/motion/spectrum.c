@@ -14,10 +14,11 @@
 #include "rockbolt/spectrum.h"
 #include "matexp.h"
 
-/* Sub-steps of at most this many radians of the fastest mode: the peak
- * between two exact states, taken on the cubic through their values and
- * slopes, is then within (0.2)^4 / 384 (4e-6) of the true one. */
+/* Sub-steps of at most this many radians of the fastest mode by default:
+ * the peak between two exact states, taken on the cubic through their
+ * values and slopes, is then within (0.2)^4 / 384 (4e-6) of the true one. */
 #define SPECTRUM_MAX_PHASE 0.2
+#define SPECTRUM_COARSEST_PHASE 1.0
 /* Samples per period of the highest frequency, for closed-form motions. */
 #define SPECTRUM_CLOSED_FORM_RATE 200.0
 
@@ -58,6 +59,7 @@ rb_status rb_spectrum_alloc(rb_spectrum *sp, const double *freq_hz, size_t n,
     memcpy(sp->freq_hz, freq_hz, n * sizeof *freq_hz);
     sp->n = n;
     sp->damping = damping;
+    sp->step_phase = SPECTRUM_MAX_PHASE;
     return RB_OK;
 }
 
@@ -140,6 +142,12 @@ static void transition_init(transition *tr, size_t m, const double *a,
 
 static void transition_apply(const transition *tr, double *x, double g0, double g1)
 {
+    if (tr->m == 2) {   /* the common case, unrolled */
+        double p = x[0], v = x[1];
+        x[0] = tr->phi[0] * p + tr->phi[1] * v + tr->in0[0] * g0 + tr->in1[0] * g1;
+        x[1] = tr->phi[2] * p + tr->phi[3] * v + tr->in0[1] * g0 + tr->in1[1] * g1;
+        return;
+    }
     double y[4];
     size_t m = tr->m;
     for (size_t i = 0; i < m; i++) {
@@ -225,7 +233,7 @@ static void tracker_step(tracker *t, double pw, double v, double load, double h)
 }
 
 /* The peaks of one oscillator under the series. */
-static void oscillator_peaks(const rb_series *s, double f_hz, double xi,
+static void oscillator_peaks(const rb_series *s, double f_hz, double xi, double phase,
                              double *psa, double *sa)
 {
     const rb_series_building *bld = &s->bld;
@@ -233,7 +241,7 @@ static void oscillator_peaks(const rb_series *s, double f_hz, double xi,
     size_t m = building ? 4 : 2, o = m - 2;
     double w = 2.0 * M_PI * f_hz, wb = building ? bld->omega_rps : 0.0;
     double fastest = w > wb ? w : wb;
-    unsigned k = (unsigned)ceil(fastest * s->dt_s / SPECTRUM_MAX_PHASE);
+    unsigned k = (unsigned)ceil(fastest * s->dt_s / phase);
     if (k < 1)
         k = 1;
     double h = s->dt_s / k;
@@ -244,7 +252,7 @@ static void oscillator_peaks(const rb_series *s, double f_hz, double xi,
     /* after the samples the floor is zero: the oscillator alone */
     double a2[4], b2[2];
     system_matrix(w, xi, 0.0, 0.0, 2, a2, b2);
-    unsigned kf = (unsigned)ceil(w * s->dt_s / SPECTRUM_MAX_PHASE);
+    unsigned kf = (unsigned)ceil(w * s->dt_s / phase);
     double hf = s->dt_s / (kf ? kf : 1);
     transition_init(&free_tr, 2, a2, b2, hf);
 
@@ -284,8 +292,12 @@ rb_status rb_spectrum_of_series(const rb_series *s, double scale, rb_spectrum *s
 {
     if (!s || s->n < 1 || !sp || sp->n == 0 || !(s->dt_s > 0))
         return RB_ERR_INVALID;
+    double phase = sp->step_phase;
+    if (!(phase > 0) || phase > SPECTRUM_COARSEST_PHASE)
+        phase = phase > SPECTRUM_COARSEST_PHASE ? SPECTRUM_COARSEST_PHASE : SPECTRUM_MAX_PHASE;
     for (size_t i = 0; i < sp->n; i++) {
-        oscillator_peaks(s, sp->freq_hz[i], sp->damping, &sp->psa_mps2[i], &sp->sa_mps2[i]);
+        oscillator_peaks(s, sp->freq_hz[i], sp->damping, phase, &sp->psa_mps2[i],
+                         &sp->sa_mps2[i]);
         sp->psa_mps2[i] *= fabs(scale);
         sp->sa_mps2[i] *= fabs(scale);
     }

@@ -1,0 +1,103 @@
+/* The time-domain parts of a synthetic motion: its envelope, its baseline
+ * correction and its Arias intensity. */
+#include <math.h>
+#include "rockbolt/synth.h"
+#include "synth_internal.h"
+
+#define STANDARD_GRAVITY 9.80665
+
+double rb_synth_envelope(double t, double rise_s, double strong_s, double decay_s)
+{
+    if (t <= 0)
+        return 0.0;
+    if (t < rise_s) {
+        double s = sin(0.5 * M_PI * t / rise_s);
+        return s * s;
+    }
+    t -= rise_s;
+    if (t <= strong_s)
+        return 1.0;
+    t -= strong_s;
+    if (t >= decay_s)
+        return 0.0;
+    double c = cos(0.5 * M_PI * t / decay_s);
+    return c * c;
+}
+
+void rb_synth_integrate(const double *a, size_t n, double dt, double *v_end,
+                        double *d_end, double *v_peak, double *d_peak)
+{
+    /* exact for an acceleration linear between samples */
+    double v = 0, d = 0, vp = 0, dp = 0;
+    for (size_t i = 1; i < n; i++) {
+        d += dt * v + dt * dt * (2.0 * a[i - 1] + a[i]) / 6.0;
+        v += 0.5 * dt * (a[i - 1] + a[i]);
+        if (fabs(v) > vp)
+            vp = fabs(v);
+        if (fabs(d) > dp)
+            dp = fabs(d);
+    }
+    *v_end = v;
+    *d_end = d;
+    if (v_peak)
+        *v_peak = vp;
+    if (d_peak)
+        *d_peak = dp;
+}
+
+void rb_synth_baseline(double *a, size_t n, double dt)
+{
+    /* Two half-sines of the whole duration, zero at both ends and far below
+     * any frequency of interest, cancel the end velocity and displacement:
+     * the 2 x 2 system is solved on the same discrete integrals, so the
+     * residuals are rounding. */
+    double T = (double)(n - 1) * dt;
+    double v0, d0, v1, d1, v2, d2;
+    rb_synth_integrate(a, n, dt, &v0, &d0, NULL, NULL);
+    double q[2][2];   /* q[k] = (v_end, d_end) of sin((k + 1) pi t / T) */
+    for (int k = 0; k < 2; k++) {
+        double v = 0, d = 0, prev = 0;
+        for (size_t i = 1; i < n; i++) {
+            double cur = sin((k + 1) * M_PI * (double)i * dt / T);
+            d += dt * v + dt * dt * (2.0 * prev + cur) / 6.0;
+            v += 0.5 * dt * (prev + cur);
+            prev = cur;
+        }
+        q[k][0] = v;
+        q[k][1] = d;
+    }
+    v1 = q[0][0], d1 = q[0][1], v2 = q[1][0], d2 = q[1][1];
+    double det = v1 * d2 - v2 * d1;
+    if (det == 0.0)
+        return;
+    double alpha = (-v0 * d2 + v2 * d0) / det;
+    double beta = (-v1 * d0 + v0 * d1) / det;
+    for (size_t i = 0; i < n; i++) {
+        double t = (double)i * dt;
+        a[i] += alpha * sin(M_PI * t / T) + beta * sin(2.0 * M_PI * t / T);
+    }
+}
+
+void rb_series_arias(const rb_series *s, double *arias_mps, double *t5_s, double *t95_s)
+{
+    double total = 0;
+    const double *a = s->accel_mps2;
+    for (size_t i = 1; i < s->n; i++)
+        total += s->dt_s * (a[i - 1] * a[i - 1] + a[i - 1] * a[i] + a[i] * a[i]) / 3.0;
+    *arias_mps = M_PI / (2.0 * STANDARD_GRAVITY) * total;
+    *t5_s = *t95_s = s->t0_s;
+    if (!(total > 0))
+        return;
+    double cum = 0, want[2] = {0.05 * total, 0.95 * total};
+    double *out[2] = {t5_s, t95_s};
+    int w = 0;
+    for (size_t i = 1; i < s->n && w < 2; i++) {
+        double step = s->dt_s * (a[i - 1] * a[i - 1] + a[i - 1] * a[i] + a[i] * a[i]) / 3.0;
+        while (w < 2 && cum + step >= want[w]) {
+            double f = step > 0 ? (want[w] - cum) / step : 0.0;
+            *out[w] = s->t0_s + ((double)(i - 1) + f) * s->dt_s;
+            w++;
+        }
+        cum += step;
+    }
+}
