@@ -13,18 +13,42 @@
 #include "rockbolt/criteria.h"
 #include "rockbolt/units.h"
 #include "rockbolt/anchor.h"
+#include "rockbolt/spectrum.h"
+#include "rockbolt/synth.h"
 
 /* One floor motion of a case, ready for rb_solve_run. For records the
  * samples are already filtered, windowed and scaled to target_peak_mps2 in
  * place, so motion.scale is 1; motion.duration_s is the case's run_time or
  * the record's length. Amplitudes given in A* are already multiplied out. */
+/* A motion's `type:` in the case file (rockbolt/names.h
+ * rb_case_motion_type_names). */
+typedef enum {
+    RB_CASE_MOTION_HARMONIC = 0,
+    RB_CASE_MOTION_PULSE,
+    RB_CASE_MOTION_RECORD,
+    RB_CASE_MOTION_SYNTHETIC
+} rb_case_motion_type;
+
+/* A target spectrum a case names, shared by the motions made from it. */
 typedef struct {
+    rb_target target;
+    char *file;           /* owned: a table's path as resolved, else NULL */
+} rb_case_target;
+
+typedef struct {
+    rb_case_motion_type type;
     char *name;           /* owned; from the case or the record file name */
     char *source;         /* owned; record path as resolved, or a description */
     rb_series series;     /* owned; used when motion.kind == RB_MOTION_SAMPLED */
     rb_motion motion;     /* motion.series points at series above */
     double target_peak_mps2; /* 0 when the case did not ask for scaling */
     double building_freq_hz, building_damping; /* 0 when no building filter */
+    /* synthetic: the target (borrowed from rb_case.targets), the motion's
+     * place in its suite and seed, and what the generator made */
+    const rb_target *target;
+    unsigned synth_index;
+    unsigned long long synth_seed;
+    rb_synth_info synth;
 } rb_case_motion;
 
 /* Options for `rockbolt design` (issue: design checks). */
@@ -100,6 +124,8 @@ typedef struct {
     rb_anchor_strength anchor;
     rb_case_motion *motions;  /* owned array of n_motions (>= 1) */
     size_t n_motions;
+    rb_case_target *targets;  /* owned array: the synthetic motions' targets */
+    size_t n_targets;
     int write_history;        /* analysis.history: true */
     /* The units of the text report and the figures (the JSON report is
      * always SI): RB_UNITS_SI or RB_UNITS_US, from output_units:, else US

@@ -18,6 +18,11 @@ extern const rb_enum_name rb_criterion_names[];     /* rb_criterion_kind */
 extern const rb_enum_name rb_validity_mode_names[]; /* rb_validity_mode */
 extern const rb_enum_name rb_motion_type_names[];   /* rb_motion_kind: harmonic,
                                                        pulse, record (sampled) */
+extern const rb_enum_name rb_case_motion_type_names[]; /* rb_case_motion_type (case.h):
+                                                       harmonic, pulse, record,
+                                                       synthetic */
+extern const rb_enum_name rb_target_type_names[];   /* rb_target_kind: ac156, table */
+extern const rb_enum_name rb_ac156_edition_names[]; /* rb_ac156_edition */
 extern const rb_enum_name rb_pulse_shape_names[];   /* rb_pulse_shape */
 extern const rb_enum_name rb_record_format_names[]; /* rb_record_format */
 extern const rb_enum_name rb_anchor_type_names[];   /* rb_anchor_type */

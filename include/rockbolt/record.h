@@ -51,4 +51,16 @@ rb_status rb_record_read(const char *path, const rb_record_opts *opts,
  * s2, s/s or s^2 for the square. RB_ERR_PARSE if unknown. */
 rb_status rb_record_units_parse(const char *name, double *to_mps2);
 
+/* A target spectrum table: rows of frequency (Hz) and spectral
+ * acceleration (times units_to_mps2), separated by blanks or a comma;
+ * blank lines, lines starting with '#' and one header line before the
+ * first row are skipped. Frequencies strictly increasing and > 0,
+ * accelerations > 0, 2 to max_points rows. *freq_hz and *accel_mps2 are
+ * the caller's (free); on error they are NULL and diag names the file,
+ * line and column. RB_ERR_IO, RB_ERR_PARSE, RB_ERR_INVALID, RB_ERR_LIMIT,
+ * RB_ERR_NOMEM. */
+rb_status rb_spectrum_table_read(const char *path, double units_to_mps2, size_t max_points,
+                                 double **freq_hz, double **accel_mps2, size_t *n,
+                                 rb_diag *diag);
+
 #endif

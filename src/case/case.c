@@ -141,6 +141,11 @@ void rb_case_free(rb_case *c)
         rb_series_free(&c->motions[i].series);
     }
     free(c->motions);
+    for (size_t i = 0; c->targets && i < c->n_targets; i++) {
+        rb_target_free(&c->targets[i].target);
+        free(c->targets[i].file);
+    }
+    free(c->targets);
     for (size_t i = 0; c->input_files && i < c->n_input_files; i++)
         free(c->input_files[i]);
     free(c->input_files);
@@ -166,15 +171,19 @@ static int case_add_input(rb_case *cs, const char *path)
  * record files of the motions. */
 static int case_list_inputs(const rb_cctx *c, rb_case *cs, int first_in_memory)
 {
-    cs->input_files = calloc(c->n_files + cs->n_motions + 1, sizeof *cs->input_files);
+    cs->input_files = calloc(c->n_files + cs->n_motions + cs->n_targets + 1,
+                             sizeof *cs->input_files);
     if (!cs->input_files)
         return 0;
     for (size_t i = first_in_memory ? 1 : 0; i < c->n_files; i++)
         if (!case_add_input(cs, c->files[i]))
             return 0;
     for (size_t i = 0; i < cs->n_motions; i++)
-        if (cs->motions[i].motion.kind == RB_MOTION_SAMPLED && cs->motions[i].source
+        if (cs->motions[i].type == RB_CASE_MOTION_RECORD && cs->motions[i].source
             && !case_add_input(cs, cs->motions[i].source))
+            return 0;
+    for (size_t i = 0; i < cs->n_targets; i++)
+        if (cs->targets[i].file && !case_add_input(cs, cs->targets[i].file))
             return 0;
     return 1;
 }

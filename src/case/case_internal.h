@@ -124,6 +124,19 @@ typedef struct {
     const rb_ynode *peak_node;  /* NULL: no scaling */
     double window[2];
     int has_window;
+    /* synthetic (case_synth.c) */
+    int synthetic;
+    rb_target_kind target_kind;
+    rb_ac156_edition edition;
+    rb_quantity sds;
+    const rb_ynode *sds_node;
+    double z_over_h;
+    const rb_ynode *table_node;   /* spectrum.file */
+    double table_units_to_mps2, table_damping;
+    long count;                   /* motions made from this entry, >= 1 */
+    const rb_ynode *count_node;
+    unsigned long long seed;
+    double total_s, strong_s, synth_dt_s;
     int ok;                     /* 0 when the motion had errors */
 } rb_cmotion;
 
@@ -219,6 +232,20 @@ rb_status rb_case_read_merged(rb_cctx *c, const char *file, rb_ynode **root);
  * in diagnostics; takes text (malloc'ed) and frees it. */
 rb_status rb_case_read_merged_text(rb_cctx *c, const char *name, unsigned char *text,
                                    size_t len, rb_ynode **root);
+
+/* --- case_synth.c: synthetic motions ------------------------------------ */
+/* Read a `type: synthetic` motion's keys into cm; 0 after an error. */
+int rb_case_read_synthetic(rb_cctx *c, rb_ynode *map, rb_cmotion *cm);
+/* Make the target cm names (reading a table file); 0 after an error. */
+int rb_case_make_target(rb_cctx *c, const rb_cmotion *cm, rb_case_target *ct);
+/* Generate motion number index of cm's suite into out; 0 after an error. */
+int rb_case_build_synthetic(rb_cctx *c, const rb_cmotion *cm, const rb_case_target *ct,
+                            unsigned index, rb_case_motion *out);
+/* A file a case names, relative to the directory of the file that named
+ * it, or "shipped:NAME" in the data directory (rockbolt/datadir.h); NULL
+ * when out of memory. */
+char *rb_case_input_path(const rb_ynode *v);
+char *rb_case_strdup(rb_cctx *c, const char *s);
 
 /* --- case_value.c: typed values ----------------------------------------- */
 /* Look up key in map and mark it used. Missing and required: error at the

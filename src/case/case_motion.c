@@ -1,6 +1,7 @@
 /* The floor motions of a case: `motion:` (one) or `motions:` (a list).
  *
- * Each motion is a mapping with a `type:` (harmonic, pulse or record) that
+ * Each motion is a mapping with a `type:` (harmonic, pulse, record or
+ * synthetic, the last in case_synth.c) that
  * decides which other keys it takes. Closed-form values go straight into an
  * rb_motion in SI; what needs the model (amplitudes in A*) or the disk
  * (record files) is kept in an rb_cmotion with the node it came from, and
@@ -268,20 +269,21 @@ static void read_motion(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
     rb_case_keypath(k, cm->key, "polarity");
     if (v)
         read_polarity(c, v, k, &cm->motion.polarity);
-    v = rb_cv_get(c, map, cm->key, "type", 1, "harmonic, pulse or record");
+    v = rb_cv_get(c, map, cm->key, "type", 1, "harmonic, pulse, record or synthetic");
     rb_case_keypath(k, cm->key, "type");
-    /* the critical excitation (last in the table) is built by tests only */
-    if (!v || !rb_cv_enum_table(c, v, k, rb_motion_type_names, 3, &t)) {
+    if (!v || !rb_cv_enum_table(c, v, k, rb_case_motion_type_names, 0, &t)) {
         for (size_t i = 0; i < map->n; i++)
             map->entries[i].used = 1;   /* no type: its keys cannot be judged */
         return;
     }
-    if (t == RB_MOTION_HARMONIC)
+    if (t == RB_CASE_MOTION_HARMONIC)
         cm->ok = read_harmonic(c, map, cm);
-    else if (t == RB_MOTION_PULSE)
+    else if (t == RB_CASE_MOTION_PULSE)
         cm->ok = read_pulse(c, map, cm);
-    else
+    else if (t == RB_CASE_MOTION_RECORD)
         cm->ok = read_record(c, map, cm);
+    else
+        cm->ok = rb_case_read_synthetic(c, map, cm);
 }
 
 void rb_case_read_motions(rb_cctx *c, rb_ynode *root)
@@ -297,7 +299,8 @@ void rb_case_read_motions(rb_cctx *c, rb_ynode *root)
     }
     if (!e1 && !e2) {
         rb_cctx_error(c, root, "motion", "missing required key 'motion' or "
-                      "'motions' (the floor motion: type harmonic, pulse or record)");
+                      "'motions' (the floor motion: type harmonic, pulse, record or "
+                      "synthetic)");
         return;
     }
     which = e2 != NULL;

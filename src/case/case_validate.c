@@ -102,7 +102,7 @@ static int resolve_accel(rb_cctx *c, const rb_cmotion *cm, const rb_ynode *v,
 
 /* The record's path: relative to the directory of the file that named it,
  * or "shipped:NAME" in the data directory (rockbolt/datadir.h). */
-static char *record_path(const rb_ynode *v)
+char *rb_case_input_path(const rb_ynode *v)
 {
     size_t sl = strlen(RB_SHIPPED_PREFIX);
     if (strncmp(v->text, RB_SHIPPED_PREFIX, sl) == 0) {
@@ -124,7 +124,7 @@ static char *record_path(const rb_ynode *v)
     return p;
 }
 
-static char *ctx_strdup(rb_cctx *c, const char *s)
+char *rb_case_strdup(rb_cctx *c, const char *s)
 {
     size_t len = strlen(s) + 1;
     char *p = malloc(len);
@@ -159,7 +159,7 @@ static int load_record(rb_cctx *c, const rb_cmotion *cm, rb_case_motion *out,
     rb_diag rd;
     memset(&rd, 0, sizeof rd);
     rb_case_keypath(k, cm->key, "file");
-    out->source = record_path(cm->file_node);
+    out->source = rb_case_input_path(cm->file_node);
     if (!out->source) {
         c->nomem = 1;
         return 0;
@@ -267,6 +267,9 @@ static int build_motion(rb_cctx *c, const rb_cmotion *cm, rb_case_motion *out,
     char desc[160];
     out->motion = cm->motion;
     double peak = 0;
+    out->type = cm->motion.kind == RB_MOTION_HARMONIC ? RB_CASE_MOTION_HARMONIC
+                : cm->motion.kind == RB_MOTION_PULSE ? RB_CASE_MOTION_PULSE
+                : RB_CASE_MOTION_RECORD;
     if (cm->motion.kind != RB_MOTION_SAMPLED) {
         if (!resolve_accel(c, cm, cm->amplitude_node, "amplitude",
                               cm->amplitude, d, have_model,
@@ -275,8 +278,8 @@ static int build_motion(rb_cctx *c, const rb_cmotion *cm, rb_case_motion *out,
         snprintf(desc, sizeof desc, "%s %g m/s^2",
                  cm->motion.kind == RB_MOTION_HARMONIC ? "harmonic" : "pulse",
                  out->motion.amplitude_mps2);
-        out->source = ctx_strdup(c, desc);
-        out->name = ctx_strdup(c, cm->name ? cm->name : cm->key);
+        out->source = rb_case_strdup(c, desc);
+        out->name = rb_case_strdup(c, cm->name ? cm->name : cm->key);
         return out->source && out->name;
     }
     if (cm->peak_node && !resolve_accel(c, cm, cm->peak_node, "peak",
@@ -285,7 +288,7 @@ static int build_motion(rb_cctx *c, const rb_cmotion *cm, rb_case_motion *out,
     if (!load_record(c, cm, out, peak))
         return 0;
     const char *base = strrchr(out->source, '/');
-    out->name = ctx_strdup(c, cm->name ? cm->name : (base ? base + 1 : out->source));
+    out->name = rb_case_strdup(c, cm->name ? cm->name : (base ? base + 1 : out->source));
     out->motion.series = &out->series;
     out->motion.scale = 1.0;
     if (!cm->has_duration) {
@@ -314,6 +317,28 @@ static int build_motion(rb_cctx *c, const rb_cmotion *cm, rb_case_motion *out,
     return out->name != NULL;
 }
 
+/* The motions the case's entries make: one each, `count` for a synthetic
+ * suite. 0 after an error (over RB_CASE_MAX_MOTIONS in all). */
+static size_t count_motions(rb_cctx *c, size_t *n_targets)
+{
+    size_t n = 0;
+    *n_targets = 0;
+    for (size_t i = 0; i < c->n_motions; i++) {
+        const rb_cmotion *cm = &c->motions[i];
+        size_t k = cm->synthetic ? (size_t)cm->count : 1;
+        *n_targets += cm->synthetic;
+        if (n + k > RB_CASE_MAX_MOTIONS) {
+            const rb_ynode *v = cm->count_node ? cm->count_node : cm->map;
+            rb_cctx_error_at(c, RB_ERR_LIMIT, v->file, v->line, v->col, cm->key,
+                             "the case would have over %d motions (the limit) with "
+                             "this entry's %zu", RB_CASE_MAX_MOTIONS, k);
+            return 0;
+        }
+        n += k;
+    }
+    return n;
+}
+
 void rb_case_resolve(rb_cctx *c, rb_case *cs, const rb_ynode *root)
 {
     rb_derived d;
@@ -323,32 +348,56 @@ void rb_case_resolve(rb_cctx *c, rb_case *cs, const rb_ynode *root)
         rb_case_resolve_concrete(c, cs);
     if (c->n_motions == 0)
         return;
-    cs->motions = calloc(c->n_motions, sizeof *cs->motions);
-    if (!cs->motions) {
+    size_t n_targets, n = count_motions(c, &n_targets);
+    if (n == 0)
+        return;
+    cs->motions = calloc(n, sizeof *cs->motions);
+    cs->targets = n_targets ? calloc(n_targets, sizeof *cs->targets) : NULL;
+    if (!cs->motions || (n_targets && !cs->targets)) {
         c->nomem = 1;
         return;
     }
-    cs->n_motions = c->n_motions;
+    cs->n_motions = n;
     double rows = 0, dt = c->history_dt_s > 0 ? c->history_dt_s
                                                : RB_CASE_HISTORY_DT_DEFAULT_S;
     int over = 0;
+    size_t at = 0;
     for (size_t i = 0; i < c->n_motions && !c->nomem; i++) {
         const rb_cmotion *cm = &c->motions[i];
-        if (!cm->ok || !build_motion(c, cm, &cs->motions[i], &d, have_model))
+        size_t first = at;
+        at += cm->synthetic ? (size_t)cm->count : 1;
+        if (!cm->ok)
             continue;
-        /* the history a run would record, asked for or not: whether a case
-         * is refused must not depend on the outputs requested */
-        rows += floor(cs->motions[i].motion.duration_s / dt) + 2;
-        if (rows > RB_CASE_MAX_HISTORY_ROWS && !over) {
-            over = 1;
-            const rb_ynode *v = c->history_dt_node ? c->history_dt_node : cm->map;
-            rb_cctx_error_at(c, RB_ERR_LIMIT, v->file, v->line, v->col,
-                             c->history_dt_node ? "analysis.output_interval" : cm->key,
-                             "the time history would hold over %.0f rows (the limit)"
-                             " at %g s intervals by %s, which lasts %g s: give a "
-                             "longer output_interval or shorter runs",
-                             RB_CASE_MAX_HISTORY_ROWS, dt, cm->key,
-                             cs->motions[i].motion.duration_s);
+        if (cm->synthetic) {
+            rb_case_target *ct = &cs->targets[cs->n_targets];
+            if (!rb_case_make_target(c, cm, ct)) {
+                free(ct->file);
+                continue;
+            }
+            cs->n_targets++;
+            int ok = 1;
+            for (size_t j = first; j < at && ok && !c->nomem; j++)
+                ok = rb_case_build_synthetic(c, cm, ct, (unsigned)(j - first), &cs->motions[j]);
+            if (!ok)
+                continue;
+        } else if (!build_motion(c, cm, &cs->motions[first], &d, have_model)) {
+            continue;
+        }
+        for (size_t j = first; j < at; j++) {
+            /* the history a run would record, asked for or not: whether a
+             * case is refused must not depend on the outputs requested */
+            rows += floor(cs->motions[j].motion.duration_s / dt) + 2;
+            if (rows > RB_CASE_MAX_HISTORY_ROWS && !over) {
+                over = 1;
+                const rb_ynode *v = c->history_dt_node ? c->history_dt_node : cm->map;
+                rb_cctx_error_at(c, RB_ERR_LIMIT, v->file, v->line, v->col,
+                                 c->history_dt_node ? "analysis.output_interval" : cm->key,
+                                 "the time history would hold over %.0f rows (the limit)"
+                                 " at %g s intervals by %s, which lasts %g s: give a "
+                                 "longer output_interval or shorter runs",
+                                 RB_CASE_MAX_HISTORY_ROWS, dt, cm->key,
+                                 cs->motions[j].motion.duration_s);
+            }
         }
     }
 }

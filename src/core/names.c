@@ -8,6 +8,7 @@
 #include "rockbolt/fragility.h"
 #include "rockbolt/record.h"
 #include "rockbolt/solve.h"
+#include "rockbolt/spectrum.h"
 
 const rb_enum_name rb_bolt_model_names[] = {
     {"rigid-plastic", RB_BOLT_RIGID_PLASTIC}, {"non-yielding", RB_BOLT_NONYIELDING},
@@ -25,6 +26,12 @@ const rb_enum_name rb_validity_mode_names[] = {
 const rb_enum_name rb_motion_type_names[] = {
     {"harmonic", RB_MOTION_HARMONIC}, {"pulse", RB_MOTION_PULSE},
     {"record", RB_MOTION_SAMPLED}, {"critical", RB_MOTION_CRITICAL}, {NULL, 0}};
+const rb_enum_name rb_case_motion_type_names[] = {
+    {"harmonic", 0}, {"pulse", 1}, {"record", 2}, {"synthetic", 3}, {NULL, 0}};
+const rb_enum_name rb_target_type_names[] = {
+    {"ac156", RB_TARGET_AC156}, {"table", RB_TARGET_TABLE}, {NULL, 0}};
+const rb_enum_name rb_ac156_edition_names[] = {
+    {"2010", RB_AC156_2010}, {"2024", RB_AC156_2024}, {NULL, 0}};
 const rb_enum_name rb_pulse_shape_names[] = {
     {"rectangular", RB_PULSE_RECT}, {"triangular-decreasing", RB_PULSE_TRI_DEC},
     {"triangular-increasing", RB_PULSE_TRI_INC}, {"half-sine", RB_PULSE_HALF_SINE},

@@ -108,7 +108,7 @@ static void add_motion_desc(rb_jctx *cx, cJSON *parent, const rb_case_motion *cm
 {
     const rb_motion *m = &cm->motion;
     cJSON *o = rb_j_obj(cx, parent, "motion"), *b;
-    rb_j_str(cx, o, "kind", rb_enum_str(rb_motion_type_names, (int)m->kind));
+    rb_j_str(cx, o, "kind", rb_enum_str(rb_case_motion_type_names, (int)cm->type));
     rb_j_str(cx, o, "source", cm->source);
     rb_j_num(cx, o, "peak_floor_mps2", res->peak_floor_mps2);
     rb_j_norm(cx, o, "peak_floor_g", n->peak_g);

@@ -163,7 +163,7 @@ static void motion_head_vars(rb_tvars *t, const rb_report *r, size_t i,
     rb_tv_str(t, "motion_verdict", rm->verdict.pass ? "PASS" : "FAIL");
     rb_tv_str(t, "motion_headline", rm_headline);
     rb_tv_str(t, "motion_reason", rm->verdict.reason);
-    rb_tv_str(t, "kind", rb_enum_str(rb_motion_type_names, (int)rm->motion->motion.kind));
+    rb_tv_str(t, "kind", rb_enum_str(rb_case_motion_type_names, (int)rm->motion->type));
     rb_tv_num(t, "peak_mps2", res->peak_floor_mps2);
     rb_tv_num(t, "peak_g", n->peak_g);
     rb_tv_num(t, "peak_over_a_star", n->peak_over_a_star);

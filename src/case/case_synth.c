@@ -1,0 +1,282 @@
+/* `type: synthetic` motions: a target spectrum (AC156 or a table) and the
+ * suite of spectrum-compatible motions generated for it (rockbolt/synth.h).
+ * One entry with `count: N` becomes N motions, named NAME-1 to NAME-N,
+ * each from its own random stream of the seed. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "case_internal.h"
+#include "rockbolt/names.h"
+#include "rockbolt/record.h"
+
+#define SYNTH_MIN_TOTAL_S 2.0
+#define SYNTH_MAX_TOTAL_S 600.0
+#define SYNTH_MIN_DT_S 1e-3
+#define SYNTH_MAX_DT_S 0.02
+#define SYNTH_STANDARD_G 9.80665
+
+static const char *const synthetic_keys[] = {
+    "type", "name", "polarity", "spectrum", "count", "seed", "duration", "strong", "dt",
+    "run_time", NULL};
+static const char *const ac156_keys[] = {"type", "sds", "z_over_h", "edition", NULL};
+static const char *const table_keys[] = {"type", "file", "units", "damping", NULL};
+
+static int read_ac156(rb_cctx *c, rb_ynode *sp, const char *k, rb_cmotion *cm)
+{
+    char kk[RB_CASE_KEY_MAX];
+    int ok = 1, i;
+    rb_ynode *v = rb_cv_get(c, sp, k, "sds", 1, "S_DS as an acceleration, e.g. '1.0 g'");
+    rb_case_keypath(kk, k, "sds");
+    if (v && rb_cv_quantity(c, v, kk, RB_DIM_ACCEL, &cm->sds)) {
+        if (cm->sds.relative_a_star) {
+            rb_cctx_error(c, v, kk, "S_DS is a site value: give it in g or m/s^2, not A*");
+            ok = 0;
+        } else if (!(cm->sds.value > 0)
+                   || cm->sds.value > RB_CASE_MAX_ACCEL_G * SYNTH_STANDARD_G) {
+            rb_cctx_error(c, v, kk, "must be > 0 and at most %g g (got '%s')",
+                          RB_CASE_MAX_ACCEL_G, v->text);
+            ok = 0;
+        }
+        cm->sds_node = v;
+    } else {
+        ok = 0;
+    }
+    ok &= rb_cv_number(c, sp, k, "z_over_h", 1, RB_DIM_RATIO, 0, 1, 1, 1,
+                       &cm->z_over_h) != NULL;
+    cm->edition = RB_AC156_2010;
+    if ((v = rb_cv_get(c, sp, k, "edition", 0, ""))) {
+        rb_case_keypath(kk, k, "edition");
+        if (rb_cv_enum_table(c, v, kk, rb_ac156_edition_names, 0, &i))
+            cm->edition = (rb_ac156_edition)i;
+        else
+            ok = 0;
+    }
+    rb_cv_unknown_keys(c, sp, k, ac156_keys);
+    return ok;
+}
+
+static int read_table(rb_cctx *c, rb_ynode *sp, const char *k, rb_cmotion *cm)
+{
+    char kk[RB_CASE_KEY_MAX], text[64], msg[300];
+    int ok = 1;
+    char *name = NULL;
+    rb_ynode *v = rb_cv_get(c, sp, k, "file", 1, "the table file (frequency in Hz, "
+                            "spectral acceleration), relative to this case file");
+    rb_case_keypath(kk, k, "file");
+    if (v && rb_cv_string(c, v, kk, &name) && name[0])
+        cm->table_node = v;
+    else if (v && name)
+        rb_cctx_error(c, v, kk, "expected a file name, found an empty text");
+    free(name);
+    ok &= cm->table_node != NULL;
+    cm->table_units_to_mps2 = SYNTH_STANDARD_G;
+    if ((v = rb_cv_get(c, sp, k, "units", 0, ""))) {
+        rb_quantity q;
+        rb_case_keypath(kk, k, "units");
+        snprintf(text, sizeof text, "1 %.50s", v->kind == RB_YNODE_SCALAR ? v->text : "");
+        if (v->kind != RB_YNODE_SCALAR
+            || rb_unit_parse(text, RB_DIM_ACCEL, &q, msg, sizeof msg) != RB_OK
+            || q.relative_a_star) {
+            rb_cctx_error(c, v, kk, "expected an absolute acceleration unit such as 'g' "
+                          "or 'm/s^2'");
+            ok = 0;
+        } else {
+            cm->table_units_to_mps2 = q.value;
+        }
+    }
+    cm->table_damping = 0.05;
+    if (rb_ymap_find(sp, "damping"))
+        ok &= rb_cv_number(c, sp, k, "damping", 0, RB_DIM_RATIO, 0, 0, 0.5, 1,
+                           &cm->table_damping) != NULL;
+    rb_cv_unknown_keys(c, sp, k, table_keys);
+    return ok;
+}
+
+static int read_spectrum(rb_cctx *c, rb_ynode *sp, rb_cmotion *cm)
+{
+    char k[RB_CASE_KEY_MAX], kk[RB_CASE_KEY_MAX];
+    int t;
+    rb_case_keypath(k, cm->key, "spectrum");
+    if (!rb_cv_map(c, sp, k))
+        return 0;
+    rb_ynode *v = rb_cv_get(c, sp, k, "type", 1, "ac156 or table");
+    rb_case_keypath(kk, k, "type");
+    if (!v || !rb_cv_enum_table(c, v, kk, rb_target_type_names, 0, &t)) {
+        for (size_t i = 0; i < sp->n; i++)
+            sp->entries[i].used = 1;   /* no type: its keys cannot be judged */
+        return 0;
+    }
+    cm->target_kind = (rb_target_kind)t;
+    return t == RB_TARGET_AC156 ? read_ac156(c, sp, k, cm) : read_table(c, sp, k, cm);
+}
+
+int rb_case_read_synthetic(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
+{
+    const char *p = cm->key;
+    char k[RB_CASE_KEY_MAX];
+    int ok = 1;
+    cm->synthetic = 1;
+    cm->motion.kind = RB_MOTION_SAMPLED;
+    rb_ynode *v = rb_cv_get(c, map, p, "spectrum", 1, "the target spectrum, e.g. "
+                            "{type: ac156, sds: 1.0 g, z_over_h: 0.5}");
+    ok &= v && read_spectrum(c, v, cm);
+    cm->count = 1;
+    if ((v = rb_cv_get(c, map, p, "count", 0, ""))) {
+        rb_case_keypath(k, p, "count");
+        ok &= rb_cv_int(c, v, k, 1, RB_CASE_MAX_MOTIONS, &cm->count);
+        cm->count_node = v;
+    }
+    if ((v = rb_cv_get(c, map, p, "seed", 0, ""))) {
+        long seed = 0;
+        rb_case_keypath(k, p, "seed");
+        ok &= rb_cv_int(c, v, k, 0, 2147483647L, &seed);
+        cm->seed = (unsigned long long)seed;
+    }
+    cm->total_s = 30.0;
+    if (rb_ymap_find(map, "duration"))
+        ok &= rb_cv_number(c, map, p, "duration", 0, RB_DIM_TIME, SYNTH_MIN_TOTAL_S, 1,
+                           SYNTH_MAX_TOTAL_S, 1, &cm->total_s) != NULL;
+    /* AC156's proportion: 22 s of 30 at full level */
+    cm->strong_s = cm->total_s * 22.0 / 30.0;
+    if (rb_ymap_find(map, "strong")) {
+        const rb_ynode *sv = rb_cv_number(c, map, p, "strong", 0, RB_DIM_TIME,
+                                          SYNTH_MIN_TOTAL_S, 1, SYNTH_MAX_TOTAL_S, 1,
+                                          &cm->strong_s);
+        rb_case_keypath(k, p, "strong");
+        if (sv && cm->strong_s > cm->total_s) {
+            rb_cctx_error(c, sv, k, "the strong part (%g s) cannot be longer than the "
+                          "motion (duration %g s)", cm->strong_s, cm->total_s);
+            sv = NULL;
+        }
+        ok &= sv != NULL;
+    }
+    cm->synth_dt_s = 0.005;
+    if (rb_ymap_find(map, "dt"))
+        ok &= rb_cv_number(c, map, p, "dt", 0, RB_DIM_TIME, SYNTH_MIN_DT_S, 1,
+                           SYNTH_MAX_DT_S, 1, &cm->synth_dt_s) != NULL;
+    if (rb_ymap_find(map, "run_time")) {
+        cm->has_duration = 1;
+        const rb_ynode *rv = rb_cv_number(c, map, p, "run_time", 0, RB_DIM_TIME, 0, 0,
+                                          (double)NAN, 0, &cm->motion.duration_s);
+        rb_case_keypath(k, p, "run_time");
+        ok &= rv && rb_cv_time_range(c, rv, k, cm->motion.duration_s, 0);
+    }
+    rb_cv_unknown_keys(c, map, p, synthetic_keys);
+    return ok;
+}
+
+int rb_case_make_target(rb_cctx *c, const rb_cmotion *cm, rb_case_target *ct)
+{
+    memset(ct, 0, sizeof *ct);
+    if (cm->target_kind == RB_TARGET_AC156) {
+        rb_target_ac156(&ct->target, cm->edition, cm->sds.value, cm->z_over_h);
+        return 1;
+    }
+    char k[RB_CASE_KEY_MAX];
+    const rb_ynode *v = cm->table_node;
+    rb_case_keypath(k, cm->key, "spectrum.file");
+    ct->file = rb_case_input_path(v);
+    if (!ct->file) {
+        c->nomem = 1;
+        return 0;
+    }
+    double *f, *a;
+    size_t n;
+    rb_diag rd;
+    rb_diag_clear(&rd);
+    rb_status st = rb_spectrum_table_read(ct->file, cm->table_units_to_mps2,
+                                          RB_SPECTRUM_MAX_POINTS, &f, &a, &n, &rd);
+    if (st != RB_OK) {
+        rb_status as = st == RB_ERR_NOMEM ? st : RB_ERR_IO;
+        if (rd.line > 0)
+            rb_cctx_error_at(c, as, v->file, v->line, v->col, k, "cannot read spectrum "
+                             "table '%s' (line %d: %s)", ct->file, rd.line, rd.msg);
+        else
+            rb_cctx_error_at(c, as, v->file, v->line, v->col, k, "cannot read spectrum "
+                             "table '%s' (%s)", ct->file,
+                             rd.msg[0] ? rd.msg : rb_status_str(st));
+        return 0;
+    }
+    rb_target_table(&ct->target, f, a, n, cm->table_damping);
+    return 1;
+}
+
+int rb_case_build_synthetic(rb_cctx *c, const rb_cmotion *cm, const rb_case_target *ct,
+                            unsigned index, rb_case_motion *out)
+{
+    char k[RB_CASE_KEY_MAX], desc[200];
+    const rb_target *t = &ct->target;
+    const rb_ynode *at = cm->map;
+    rb_case_keypath(k, cm->key, "spectrum");
+    out->type = RB_CASE_MOTION_SYNTHETIC;
+    out->motion = cm->motion;
+    out->target = t;
+    out->synth_index = index;
+    out->synth_seed = cm->seed;
+    if (!(t->check_to_hz < 0.4 / cm->synth_dt_s)) {
+        rb_cctx_error_at(c, RB_ERR_INVALID, at->file, at->line, at->col, k, "the target "
+                         "is checked up to %g Hz, which needs samples at most %g s apart "
+                         "(dt is %g s)", t->check_to_hz, 0.4 / t->check_to_hz * 0.999,
+                         cm->synth_dt_s);
+        return 0;
+    }
+    size_t n = (size_t)llround(cm->total_s / cm->synth_dt_s) + 1;
+    if (n > RB_CASE_MAX_SAMPLES - c->n_samples) {
+        rb_cctx_error_at(c, RB_ERR_LIMIT, at->file, at->line, at->col, cm->key, "the "
+                         "motions of one case may hold %u samples in all (the limit): "
+                         "this one needs %zu and the motions before it hold %zu",
+                         RB_CASE_MAX_SAMPLES, n, c->n_samples);
+        return 0;
+    }
+    rb_synth_opts o;
+    rb_synth_opts_init(&o, t);
+    o.dt_s = cm->synth_dt_s;
+    o.total_s = cm->total_s;
+    o.strong_s = cm->strong_s;
+    o.seed = cm->seed;
+    o.index = index;
+    rb_status st = rb_synth_generate(&o, &out->series, &out->synth);
+    if (st == RB_ERR_LIMIT) {
+        rb_cctx_error_at(c, RB_ERR_INVALID, at->file, at->line, at->col, k, "motion %u "
+                         "of seed %llu did not envelope the target within [1, %g] at "
+                         "every check frequency (and reach its least peak) in %u "
+                         "passes: the closest was %.3f to %.3f; try another seed",
+                         index + 1, cm->seed, t->band_upper, out->synth.iterations,
+                         out->synth.fit.min_ratio, out->synth.fit.max_ratio);
+        rb_series_free(&out->series);
+        return 0;
+    }
+    if (st != RB_OK) {
+        if (st == RB_ERR_NOMEM)
+            c->nomem = 1;
+        else
+            rb_cctx_error_at(c, st, at->file, at->line, at->col, k, "cannot generate "
+                             "the motion (%s)", rb_status_str(st));
+        return 0;
+    }
+    c->n_samples += out->series.n;
+    out->motion.series = &out->series;
+    out->motion.scale = 1.0;
+    if (!cm->has_duration)
+        out->motion.duration_s = (double)(out->series.n - 1) * out->series.dt_s;
+    if (t->kind == RB_TARGET_AC156) {
+        double flx, rig;
+        rb_ac156_levels(t->edition, t->sds_mps2, t->z_over_h, &flx, &rig);
+        snprintf(desc, sizeof desc, "synthetic: AC156 (%s) S_DS %g m/s^2, z/h %g, seed "
+                 "%llu, motion %u", rb_enum_str(rb_ac156_edition_names, (int)t->edition),
+                 t->sds_mps2, t->z_over_h, cm->seed, index + 1);
+    } else {
+        snprintf(desc, sizeof desc, "synthetic: table %.120s, seed %llu, motion %u",
+                 ct->file, cm->seed, index + 1);
+    }
+    out->source = rb_case_strdup(c, desc);
+    const char *base = cm->name ? cm->name
+                       : t->kind == RB_TARGET_AC156 ? "ac156" : "table";
+    if (cm->count > 1)
+        snprintf(desc, sizeof desc, "%.150s-%u", base, index + 1);
+    else
+        snprintf(desc, sizeof desc, "%.150s", base);
+    out->name = rb_case_strdup(c, desc);
+    return out->source && out->name;
+}
