@@ -137,6 +137,7 @@ typedef struct {
     const rb_ynode *count_node;
     unsigned long long seed;
     double total_s, strong_s, synth_dt_s;
+    const rb_ynode *synth_dt_node;  /* NULL: the default */
     int ok;                     /* 0 when the motion had errors */
 } rb_cmotion;
 

@@ -152,9 +152,11 @@ int rb_case_read_synthetic(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
         ok &= sv != NULL;
     }
     cm->synth_dt_s = 0.005;
-    if (rb_ymap_find(map, "dt"))
-        ok &= rb_cv_number(c, map, p, "dt", 0, RB_DIM_TIME, SYNTH_MIN_DT_S, 1,
-                           SYNTH_MAX_DT_S, 1, &cm->synth_dt_s) != NULL;
+    if (rb_ymap_find(map, "dt")) {
+        cm->synth_dt_node = rb_cv_number(c, map, p, "dt", 0, RB_DIM_TIME, SYNTH_MIN_DT_S, 1,
+                                         SYNTH_MAX_DT_S, 1, &cm->synth_dt_s);
+        ok &= cm->synth_dt_node != NULL;
+    }
     if (rb_ymap_find(map, "run_time")) {
         cm->has_duration = 1;
         const rb_ynode *rv = rb_cv_number(c, map, p, "run_time", 0, RB_DIM_TIME, 0, 0,
@@ -215,6 +217,11 @@ int rb_case_build_synthetic(rb_cctx *c, const rb_cmotion *cm, const rb_case_targ
     out->synth_index = index;
     out->synth_seed = cm->seed;
     if (!(t->check_to_hz < 0.4 / cm->synth_dt_s)) {
+        const rb_ynode *dv = cm->synth_dt_node ? cm->synth_dt_node : cm->table_node;
+        if (dv) {
+            at = dv;
+            rb_case_keypath(k, cm->key, cm->synth_dt_node ? "dt" : "spectrum.file");
+        }
         rb_cctx_error_at(c, RB_ERR_INVALID, at->file, at->line, at->col, k, "the target "
                          "is checked up to %g Hz, which needs samples at most %g s apart "
                          "(dt is %g s)", t->check_to_hz, 0.4 / t->check_to_hz * 0.999,
