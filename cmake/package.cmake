@@ -118,6 +118,7 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/cases/records/
         DESTINATION ${CMAKE_INSTALL_DATADIR}/rockbolt/records)
 install(FILES ${PROJECT_SOURCE_DIR}/templates/report.txt
               ${PROJECT_SOURCE_DIR}/templates/starter.yaml
+              ${PROJECT_SOURCE_DIR}/templates/ac156.yaml
         DESTINATION ${CMAKE_INSTALL_DATADIR}/rockbolt/templates)
 install(FILES ${PROJECT_BINARY_DIR}/man/rockbolt.1
         DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)

@@ -62,6 +62,11 @@ double rb_series_at(const rb_series *s, double t);
  * building). */
 int rb_series_taylor(const rb_series *s, double t0, int n, double *coef);
 
+/* The Arias intensity pi / (2 g) int a^2 dt of a series (over its samples,
+ * linear between; a floor through a building is taken at its samples) and
+ * the times at which 5 % and 95 % of it have built up. */
+void rb_series_arias(const rb_series *s, double *arias_mps, double *t5_s, double *t95_s);
+
 typedef enum {
     RB_MOTION_HARMONIC = 0, /* a sin(2 pi f t), optional linear ramp */
     RB_MOTION_PULSE,        /* one pulse of duration pulse_s, zero after */

@@ -95,4 +95,11 @@ rb_status rb_plot_report_html(const rb_report *rep, const char *text_report,
 rb_status rb_plot_fragility_svg(const rb_case_fragility *f, const char *title, char **out,
                                 rb_diag *diag);
 
+/* The response spectra of a case's motions (rb_run_spectra): absolute
+ * acceleration in g against frequency on a logarithmic axis, each target
+ * over them with its band dashed where it is checked. RB_ERR_INVALID
+ * without spectra, RB_ERR_NOMEM. */
+rb_status rb_plot_spectra_svg(const rb_case *c, const rb_case_spectra *s, const char *title,
+                              char **out, rb_diag *diag);
+
 #endif

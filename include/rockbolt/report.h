@@ -212,4 +212,14 @@ char *rb_fragility_render_text(const rb_case *c, const rb_case_fragility *f);
 char *rb_fragility_render_json(const rb_case *c, const rb_case_fragility *f);
 char *rb_fragility_render_csv(const rb_case *c, const rb_case_fragility *f);
 
+/* ---- Response spectra (rb_run_spectra, rockbolt/run.h) ------------------- */
+
+/* Text for the terminal (each motion's peak, strong-motion duration and
+ * fit to its target, then the spectra in g), JSON (SI, every ordinate)
+ * and CSV (one row per motion and frequency). Each returns a string the
+ * caller frees, or NULL when memory runs out. */
+char *rb_spectra_render_text(const rb_case *c, const rb_case_spectra *s);
+char *rb_spectra_render_json(const rb_case *c, const rb_case_spectra *s);
+char *rb_spectra_render_csv(const rb_case *c, const rb_case_spectra *s);
+
 #endif

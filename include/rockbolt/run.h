@@ -77,4 +77,15 @@ rb_status rb_run_fragility(const rb_case *c, int n_threads, uint64_t seed, unsig
                            rb_case_fragility *out, rb_diag *diag,
                            rb_design_progress_fn progress, void *ctx);
 
+/* ---- Response spectra ---------------------------------------------------- */
+
+/* The response spectra of every motion of c (after building filter and
+ * scaling: the floor the solver sees), on o's grid, and, for a motion with
+ * a target, its fit on the target's check grid. out is owned by the
+ * caller (rb_case_spectra_free, also after an error). RB_ERR_INVALID for
+ * a bad grid (diag->key "spectrum") or a motion without a spectrum (the
+ * critical excitation). */
+rb_status rb_run_spectra(const rb_case *c, const rb_spectrum_opts *o, rb_case_spectra *out,
+                         rb_diag *diag);
+
 #endif

@@ -137,4 +137,24 @@ rb_status rb_target_check_grid(const rb_target *t, rb_spectrum *sp);
 rb_status rb_target_compare(const rb_target *t, const rb_spectrum *sp,
                             rb_target_fit *fit);
 
+/* ---- spectra of a suite of motions (rb_run_spectra, rockbolt/run.h) --- */
+
+/* One motion's spectrum on the options' grid, and what describes it. */
+typedef struct {
+    rb_spectrum sp;
+    double peak_mps2;          /* peak floor acceleration */
+    double arias_mps, arias_t5_s, arias_t95_s; /* over the samples */
+    int has_target;            /* a synthetic motion: its target */
+    rb_target_fit fit;         /* against it, at its check points and damping */
+} rb_motion_spectrum;
+
+typedef struct {
+    rb_spectrum_opts opts;
+    rb_motion_spectrum *motions;  /* owned, n_motions */
+    size_t n_motions;
+    double g_mps2;
+} rb_case_spectra;
+
+void rb_case_spectra_free(rb_case_spectra *s);
+
 #endif

@@ -49,8 +49,4 @@ typedef struct {
  * close); RB_ERR_NOMEM. */
 rb_status rb_synth_generate(const rb_synth_opts *o, rb_series *out, rb_synth_info *info);
 
-/* The Arias intensity of a series (over its samples, linear between) and
- * the times at which 5 % and 95 % of it have built up. */
-void rb_series_arias(const rb_series *s, double *arias_mps, double *t5_s, double *t95_s);
-
 #endif

@@ -24,7 +24,8 @@ typedef enum {
     RB_CMD_CHECK,
     RB_CMD_DESIGN,
     RB_CMD_INIT,
-    RB_CMD_FRAGILITY
+    RB_CMD_FRAGILITY,
+    RB_CMD_SPECTRUM
 } rb_cli_command;
 
 typedef struct {
@@ -35,6 +36,7 @@ typedef struct {
     const char *history_path; /* --history FILE, or NULL */
     int quiet;                /* --quiet: nothing on stdout */
     const char *init_path;    /* init: the file to create */
+    int init_ac156;           /* init --ac156: the AC156 starter */
     const char *sweep_csv_path; /* design: --sweep-csv FILE, or NULL */
     int threads;              /* design: -j N; 0: every processor */
     const char *svg_path;     /* --svg FILE: the figures, or NULL */
@@ -43,6 +45,7 @@ typedef struct {
     const char *help_command; /* help: the command asked about, or NULL */
     const char *csv_path;     /* fragility: --csv FILE, or NULL */
     unsigned long long seed;  /* fragility: --seed N of the bootstrap */
+    rb_spectrum_opts spectrum; /* spectrum: --damping, --from, --to, --per-octave */
 } rb_cli_opts;
 
 /* Parse argv into o. Returns RB_EXIT_PASS, or RB_EXIT_USAGE after printing
@@ -53,6 +56,9 @@ rb_exit rb_cli_args_parse(int argc, char **argv, rb_cli_opts *o);
  * (rockbolt/sandbox.h) before anything is read. RB_EXIT_USAGE after
  * printing why when DIR is not a directory. NULL: nothing to do. */
 rb_exit rb_cli_sandbox(const char *dir);
+
+/* rockbolt spectrum (cli_spectrum.c). */
+rb_exit rb_cli_spectrum_run(const rb_cli_opts *o);
 
 /* rockbolt fragility (cli_fragility.c). */
 rb_exit rb_cli_fragility_run(const rb_cli_opts *o);

@@ -7,6 +7,7 @@
  * before anything is read or written. The options are documented in
  * src/cli/help.txt, which --help and the man page are made from. */
 #include <errno.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "cli.h"
@@ -42,7 +43,7 @@ static rb_exit take_threads(const char *v, rb_cli_opts *o)
 }
 
 enum { OPT_JSON = 256, OPT_TEXT, OPT_HISTORY, OPT_SVG, OPT_HTML, OPT_SANDBOX,
-       OPT_SWEEP_CSV, OPT_CSV, OPT_SEED };
+       OPT_SWEEP_CSV, OPT_CSV, OPT_SEED, OPT_DAMPING, OPT_FROM, OPT_TO, OPT_PER_OCTAVE, OPT_AC156 };
 
 /* Every long option once, with the commands that take it: each command's
  * table is drawn from this one, so an option means the same everywhere. */
@@ -50,22 +51,29 @@ enum { OPT_JSON = 256, OPT_TEXT, OPT_HISTORY, OPT_SVG, OPT_HTML, OPT_SANDBOX,
 #define DESIGN (1u << RB_CMD_DESIGN)
 #define FRAGILITY (1u << RB_CMD_FRAGILITY)
 #define INIT (1u << RB_CMD_INIT)
+#define SPECTRUM (1u << RB_CMD_SPECTRUM)
 static const struct {
     struct option o;
     unsigned commands;
 } all_longs[] = {
-    {{"json", required_argument, NULL, OPT_JSON}, CHECK | DESIGN | FRAGILITY},
+    {{"json", required_argument, NULL, OPT_JSON}, CHECK | DESIGN | FRAGILITY | SPECTRUM},
     {{"text", required_argument, NULL, OPT_TEXT}, CHECK | DESIGN},
     {{"history", required_argument, NULL, OPT_HISTORY}, CHECK | DESIGN},
-    {{"svg", required_argument, NULL, OPT_SVG}, CHECK | DESIGN | FRAGILITY},
-    {{"html", required_argument, NULL, OPT_HTML}, CHECK | DESIGN | FRAGILITY},
-    {{"csv", required_argument, NULL, OPT_CSV}, FRAGILITY},
-    {{"sandbox", required_argument, NULL, OPT_SANDBOX}, CHECK | DESIGN | FRAGILITY},
+    {{"svg", required_argument, NULL, OPT_SVG}, CHECK | DESIGN | FRAGILITY | SPECTRUM},
+    {{"html", required_argument, NULL, OPT_HTML}, CHECK | DESIGN | FRAGILITY | SPECTRUM},
+    {{"csv", required_argument, NULL, OPT_CSV}, FRAGILITY | SPECTRUM},
+    {{"sandbox", required_argument, NULL, OPT_SANDBOX},
+     CHECK | DESIGN | FRAGILITY | SPECTRUM},
     {{"sweep-csv", required_argument, NULL, OPT_SWEEP_CSV}, DESIGN},
     {{"seed", required_argument, NULL, OPT_SEED}, FRAGILITY},
+    {{"damping", required_argument, NULL, OPT_DAMPING}, SPECTRUM},
+    {{"from", required_argument, NULL, OPT_FROM}, SPECTRUM},
+    {{"to", required_argument, NULL, OPT_TO}, SPECTRUM},
+    {{"per-octave", required_argument, NULL, OPT_PER_OCTAVE}, SPECTRUM},
+    {{"ac156", no_argument, NULL, OPT_AC156}, INIT},
     {{"threads", required_argument, NULL, 'j'}, DESIGN | FRAGILITY},
-    {{"quiet", no_argument, NULL, 'q'}, CHECK | DESIGN | FRAGILITY},
-    {{"help", no_argument, NULL, 'h'}, CHECK | DESIGN | FRAGILITY | INIT},
+    {{"quiet", no_argument, NULL, 'q'}, CHECK | DESIGN | FRAGILITY | SPECTRUM},
+    {{"help", no_argument, NULL, 'h'}, CHECK | DESIGN | FRAGILITY | INIT | SPECTRUM},
 };
 #define N_LONGS (sizeof all_longs / sizeof all_longs[0])
 
@@ -86,6 +94,26 @@ static void options_of(rb_cli_command cmd, struct option longs[N_LONGS + 1],
     }
     longs[n] = (struct option){NULL, 0, NULL, 0};
     shorts[k] = '\0';
+}
+
+/* A quantity option of spectrum: a number with or without its unit
+ * ("5 %", "0.05"; "0.5 Hz", "0.5"), within [lo, hi]. */
+static rb_exit take_quantity(const char *name, const char *v, rb_dim dim, double lo,
+                             double hi, const char *expected, double *out)
+{
+    rb_quantity q;
+    char msg[200], *end;
+    double x;
+    if (rb_unit_parse(v, dim, &q, msg, sizeof msg) == RB_OK && !q.relative_a_star)
+        x = q.value;
+    else if ((x = strtod(v, &end)), end == v || *end)
+        x = NAN;
+    if (!(x >= lo && x <= hi)) {
+        rb_cli_error(NULL, NULL, "option '%s' needs %s (got '%s')", name, expected, v);
+        return RB_EXIT_USAGE;
+    }
+    *out = x;
+    return RB_EXIT_PASS;
 }
 
 /* One option of check, design or init (already known to the table). */
@@ -120,6 +148,25 @@ static rb_exit take_option(int c, const rb_cli_getopt *g, rb_cli_opts *o)
         o->seed = v;
         return RB_EXIT_PASS;
     }
+    case OPT_DAMPING:
+        return take_quantity(g->name, g->arg, RB_DIM_RATIO, 0, 0.99,
+                             "a damping ratio from 0 to 99 %, e.g. '5 %' or 0.05",
+                             &o->spectrum.damping);
+    case OPT_FROM:
+        return take_quantity(g->name, g->arg, RB_DIM_FREQUENCY, 1e-3, 1e4,
+                             "a frequency from 0.001 to 10000 Hz, e.g. '0.5 Hz'",
+                             &o->spectrum.f_min_hz);
+    case OPT_TO:
+        return take_quantity(g->name, g->arg, RB_DIM_FREQUENCY, 1e-3, 1e4,
+                             "a frequency from 0.001 to 10000 Hz, e.g. '50 Hz'",
+                             &o->spectrum.f_max_hz);
+    case OPT_PER_OCTAVE:
+        return take_quantity(g->name, g->arg, RB_DIM_RATIO, 1, 96,
+                             "a number of points per octave from 1 to 96",
+                             &o->spectrum.per_octave);
+    case OPT_AC156:
+        o->init_ac156 = 1;
+        return RB_EXIT_PASS;
     case 'j':
         return take_threads(g->arg, o);
     case 'q':
@@ -154,7 +201,7 @@ static rb_exit check_distinct(const rb_cli_opts *o)
 static rb_exit parse_rest(int argc, char **argv, rb_cli_opts *o)
 {
     int takes_case = o->command == RB_CMD_CHECK || o->command == RB_CMD_DESIGN
-                     || o->command == RB_CMD_FRAGILITY;
+                     || o->command == RB_CMD_FRAGILITY || o->command == RB_CMD_SPECTRUM;
     const char **positional = takes_case ? &o->case_path : &o->init_path;
     const char *cmd = argv[1];
     rb_cli_getopt g;
@@ -171,7 +218,11 @@ static rb_exit parse_rest(int argc, char **argv, rb_cli_opts *o)
             rb_cli_error(NULL, NULL, "option '%s' needs %s", g.name,
                          strcmp(g.name, "-j") == 0 || strcmp(g.name, "--threads") == 0
                          ? "a number of threads"
-                         : strcmp(g.name, "--seed") == 0 ? "a whole number" : "a file name");
+                         : strcmp(g.name, "--seed") == 0 ? "a whole number"
+                         : o->command == RB_CMD_SPECTRUM && strcmp(g.name, "--json")
+                           && strcmp(g.name, "--csv") && strcmp(g.name, "--svg")
+                           && strcmp(g.name, "--html") && strcmp(g.name, "--sandbox")
+                         ? "a value" : "a file name");
             return RB_EXIT_USAGE;
         }
         if (c == 'h') {
@@ -199,8 +250,10 @@ rb_exit rb_cli_args_parse(int argc, char **argv, rb_cli_opts *o)
     const char *cmd = argc > 1 ? argv[1] : NULL;
     rb_exit e;
     memset(o, 0, sizeof *o);
+    rb_spectrum_opts_init(&o->spectrum);
     static const char *const commands[] = {"check", "design", "batch", "merge",
-                                           "init", "fragility", "help", "version",
+                                           "init", "fragility", "spectrum", "help",
+                                           "version",
                                            NULL};
     if (!cmd) {
         rb_cli_error(NULL, NULL, "no command given (see rockbolt --help)");
@@ -233,6 +286,8 @@ rb_exit rb_cli_args_parse(int argc, char **argv, rb_cli_opts *o)
         o->command = RB_CMD_INIT;
     else if (!strcmp(cmd, "fragility"))
         o->command = RB_CMD_FRAGILITY;
+    else if (!strcmp(cmd, "spectrum"))
+        o->command = RB_CMD_SPECTRUM;
     else {
         rb_cli_unknown_word("command", cmd, commands, NULL);
         return RB_EXIT_USAGE;
@@ -246,7 +301,8 @@ rb_exit rb_cli_args_parse(int argc, char **argv, rb_cli_opts *o)
     }
     if (!o->case_path) {
         const char *c = o->command == RB_CMD_DESIGN ? "design"
-                        : o->command == RB_CMD_FRAGILITY ? "fragility" : "check";
+                        : o->command == RB_CMD_FRAGILITY ? "fragility"
+                        : o->command == RB_CMD_SPECTRUM ? "spectrum" : "check";
         rb_cli_error(NULL, NULL, "'%s' needs a case file: rockbolt %s CASE.yaml", c, c);
         return RB_EXIT_USAGE;
     }

@@ -1,6 +1,6 @@
-/* "rockbolt init [FILE]": write the commented starter case (the shipped
- * templates/starter.yaml, or its compiled-in copy) so a new user starts
- * from a file that runs. An existing file is never replaced: the write
+/* "rockbolt init [FILE] [--ac156]": write the commented starter case (the
+ * shipped templates/starter.yaml or, with --ac156, templates/ac156.yaml,
+ * or their compiled-in copies) so a new user starts from a file that runs. An existing file is never replaced: the write
  * links a finished temporary file into place, which fails if the name is
  * taken. */
 #include <stdio.h>
@@ -16,7 +16,8 @@ rb_exit rb_cli_init_run(const rb_cli_opts *o)
     rb_diag_clear(&d);
     st = rb_outfile_check(o->init_path, &d);
     if (st == RB_OK)
-        st = rb_template_load("starter.yaml", &text, NULL, &d);
+        st = rb_template_load(o->init_ac156 ? "ac156.yaml" : "starter.yaml", &text, NULL,
+                              &d);
     if (st != RB_OK) {
         rb_cli_diag_print(&d);
         return st == RB_ERR_IO ? RB_EXIT_USAGE : RB_EXIT_INTERNAL;

@@ -33,6 +33,8 @@ int main(int argc, char **argv)
         return (int)rb_cli_init_run(&o);
     case RB_CMD_FRAGILITY:
         return (int)rb_cli_fragility_run(&o);
+    case RB_CMD_SPECTRUM:
+        return (int)rb_cli_spectrum_run(&o);
     case RB_CMD_NONE:
         break;
     }

@@ -328,3 +328,13 @@ rb_status rb_spectrum_of_motion(const rb_motion *m, rb_spectrum *sp)
     rb_series_free(&s);
     return st;
 }
+
+void rb_case_spectra_free(rb_case_spectra *s)
+{
+    if (!s)
+        return;
+    for (size_t i = 0; s->motions && i < s->n_motions; i++)
+        rb_spectrum_free(&s->motions[i].sp);
+    free(s->motions);
+    memset(s, 0, sizeof *s);
+}

@@ -1,4 +1,5 @@
-/* Finding a shipped template (report.txt, starter.yaml) at run time.
+/* Finding a shipped template (report.txt, starter.yaml, ac156.yaml) at run
+ * time.
  *
  * A developer edits templates/ and wants the change seen without a
  * rebuild; a user runs an installed binary with no source tree. So the

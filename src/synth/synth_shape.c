@@ -1,10 +1,8 @@
-/* The time-domain parts of a synthetic motion: its envelope, its baseline
- * correction and its Arias intensity. */
+/* The time-domain parts of a synthetic motion: its envelope and its
+ * baseline correction. */
 #include <math.h>
 #include "rockbolt/synth.h"
 #include "synth_internal.h"
-
-#define STANDARD_GRAVITY 9.80665
 
 double rb_synth_envelope(double t, double rise_s, double strong_s, double decay_s)
 {
@@ -75,29 +73,5 @@ void rb_synth_baseline(double *a, size_t n, double dt)
     for (size_t i = 0; i < n; i++) {
         double t = (double)i * dt;
         a[i] += alpha * sin(M_PI * t / T) + beta * sin(2.0 * M_PI * t / T);
-    }
-}
-
-void rb_series_arias(const rb_series *s, double *arias_mps, double *t5_s, double *t95_s)
-{
-    double total = 0;
-    const double *a = s->accel_mps2;
-    for (size_t i = 1; i < s->n; i++)
-        total += s->dt_s * (a[i - 1] * a[i - 1] + a[i - 1] * a[i] + a[i] * a[i]) / 3.0;
-    *arias_mps = M_PI / (2.0 * STANDARD_GRAVITY) * total;
-    *t5_s = *t95_s = s->t0_s;
-    if (!(total > 0))
-        return;
-    double cum = 0, want[2] = {0.05 * total, 0.95 * total};
-    double *out[2] = {t5_s, t95_s};
-    int w = 0;
-    for (size_t i = 1; i < s->n && w < 2; i++) {
-        double step = s->dt_s * (a[i - 1] * a[i - 1] + a[i - 1] * a[i] + a[i] * a[i]) / 3.0;
-        while (w < 2 && cum + step >= want[w]) {
-            double f = step > 0 ? (want[w] - cum) / step : 0.0;
-            *out[w] = s->t0_s + ((double)(i - 1) + f) * s->dt_s;
-            w++;
-        }
-        cum += step;
     }
 }

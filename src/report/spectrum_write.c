@@ -1,0 +1,215 @@
+/* A case's response spectra as text (the terminal), JSON (SI, every
+ * ordinate) and CSV (one row per motion and frequency). Accelerations are
+ * shown in g in the text and the CSV. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <cjson/cJSON.h>
+#include "rockbolt/jsonnum.h"
+#include "rockbolt/names.h"
+#include "rockbolt/report.h"
+#include "rockbolt/textsafe.h"
+#include "util/strbuf.h"
+
+static const char *motion_name(const rb_case *c, size_t m)
+{
+    return c->motions[m].name ? c->motions[m].name : "?";
+}
+
+static void text_motion(rb_strbuf *b, const rb_case *c, const rb_case_spectra *s, size_t m)
+{
+    const rb_motion_spectrum *ms = &s->motions[m];
+    const rb_case_motion *cm = &c->motions[m];
+    double g = s->g_mps2;
+    char name[128];
+    rb_strbuf_printf(b, "%-24.24s %9.4f", rb_text_escape_buf(motion_name(c, m), name,
+                                                            sizeof name), ms->peak_mps2 / g);
+    if (ms->arias_t95_s > ms->arias_t5_s)
+        rb_strbuf_printf(b, " %8.2f %6.2f-%6.2f", ms->arias_t95_s - ms->arias_t5_s,
+                         ms->arias_t5_s, ms->arias_t95_s);
+    else
+        rb_strbuf_printf(b, " %8s %13s", "n/a", "");
+    if (ms->has_target)
+        rb_strbuf_printf(b, "  %.3f (%.2f Hz) to %.3f (%.2f Hz) %s", ms->fit.min_ratio,
+                         ms->fit.min_at_hz, ms->fit.max_ratio, ms->fit.max_at_hz,
+                         ms->fit.within ? "within" : "OUTSIDE");
+    if (cm->type == RB_CASE_MOTION_SYNTHETIC && cm->target && cm->target->min_peak_mps2 > 0)
+        rb_strbuf_printf(b, ", peak %s 0.9 A_RIG",
+                         ms->peak_mps2 >= cm->target->min_peak_mps2 ? ">=" : "BELOW");
+    rb_strbuf_puts(b, "\n");
+}
+
+char *rb_spectra_render_text(const rb_case *c, const rb_case_spectra *s)
+{
+    rb_strbuf b = {0};
+    char name[128];
+    double g = s->g_mps2;
+    rb_strbuf_printf(&b, "response spectra of %s: %zu motions, damping %g %%, %g to %g Hz "
+                     "at 1/%g octave\n", rb_text_escape_buf(c->name ? c->name : "case",
+                     name, sizeof name), s->n_motions, 100 * s->opts.damping,
+                     s->opts.f_min_hz, s->opts.f_max_hz, s->opts.per_octave);
+    rb_strbuf_printf(&b, "%-24s %9s %8s %13s  %s\n", "motion", "peak g", "5-95% s",
+                     "from-to s", "absolute acceleration / target at its check points");
+    for (size_t m = 0; m < s->n_motions; m++)
+        text_motion(&b, c, s, m);
+    rb_strbuf_puts(&b, "\nabsolute acceleration spectra (g)\n");
+    rb_strbuf_printf(&b, "%9s", "f (Hz)");
+    for (size_t m = 0; m < s->n_motions; m++)
+        rb_strbuf_printf(&b, " %12.12s", rb_text_escape_buf(motion_name(c, m), name,
+                                                           sizeof name));
+    rb_strbuf_puts(&b, "\n");
+    size_t n = s->n_motions ? s->motions[0].sp.n : 0;
+    for (size_t i = 0; i < n; i++) {
+        rb_strbuf_printf(&b, "%9.3f", s->motions[0].sp.freq_hz[i]);
+        for (size_t m = 0; m < s->n_motions; m++)
+            rb_strbuf_printf(&b, " %12.4f", s->motions[m].sp.sa_mps2[i] / g);
+        rb_strbuf_puts(&b, "\n");
+    }
+    return rb_strbuf_take(&b);
+}
+
+static void num(rb_strbuf *b, double v)
+{
+    char buf[RB_JSONNUM_MAX];
+    if (isfinite(v))
+        rb_json_number(v, buf);
+    else
+        snprintf(buf, sizeof buf, "null");
+    rb_strbuf_puts(b, buf);
+}
+
+static void key_num(rb_strbuf *b, const char *key, double v, int comma)
+{
+    rb_strbuf_printf(b, "\"%s\": ", key);
+    num(b, v);
+    if (comma)
+        rb_strbuf_puts(b, ", ");
+}
+
+/* Text from the case as a JSON string: as every output shows it
+ * (rockbolt/textsafe.h), then cJSON's quoting. */
+static void str(rb_strbuf *b, const char *s)
+{
+    char safe[1024];
+    cJSON *j = cJSON_CreateString(rb_text_escape_buf(s, safe, sizeof safe));
+    char *e = j ? cJSON_PrintUnformatted(j) : NULL;
+    cJSON_Delete(j);
+    if (!e) {
+        b->oom = 1;
+        return;
+    }
+    rb_strbuf_puts(b, e);
+    cJSON_free(e);
+}
+
+static void array(rb_strbuf *b, const char *key, const double *v, size_t n)
+{
+    rb_strbuf_printf(b, "\"%s\": [", key);
+    for (size_t i = 0; i < n; i++) {
+        if (i)
+            rb_strbuf_puts(b, ", ");
+        num(b, v[i]);
+    }
+    rb_strbuf_puts(b, "]");
+}
+
+static void json_target(rb_strbuf *b, const rb_target *t)
+{
+    rb_strbuf_printf(b, "\"target\": {\"type\": \"%s\", ",
+                     rb_enum_str(rb_target_type_names, (int)t->kind));
+    if (t->kind == RB_TARGET_AC156) {
+        double flx, rig;
+        rb_ac156_levels(t->edition, t->sds_mps2, t->z_over_h, &flx, &rig);
+        rb_strbuf_printf(b, "\"edition\": \"%s\", ",
+                         rb_enum_str(rb_ac156_edition_names, (int)t->edition));
+        key_num(b, "sds_mps2", t->sds_mps2, 1);
+        key_num(b, "z_over_h", t->z_over_h, 1);
+        key_num(b, "a_flx_mps2", flx, 1);
+        key_num(b, "a_rig_mps2", rig, 1);
+        key_num(b, "min_peak_mps2", t->min_peak_mps2, 1);
+    }
+    key_num(b, "damping", t->damping, 1);
+    key_num(b, "check_from_hz", t->check_from_hz, 1);
+    key_num(b, "check_to_hz", t->check_to_hz, 1);
+    key_num(b, "check_per_octave", t->check_per_octave, 1);
+    key_num(b, "band_lower", t->band_lower, 1);
+    key_num(b, "band_upper", t->band_upper, 0);
+    rb_strbuf_puts(b, "}, ");
+}
+
+char *rb_spectra_render_json(const rb_case *c, const rb_case_spectra *s)
+{
+    rb_strbuf b = {0};
+    rb_strbuf_puts(&b, "{\n  \"format\": \"rockbolt-spectra\", \"format_version\": 1,\n"
+                       "  \"case\": ");
+    str(&b, c->name ? c->name : "");
+    rb_strbuf_puts(&b, ", ");
+    key_num(&b, "damping", s->opts.damping, 1);
+    key_num(&b, "g_mps2", s->g_mps2, 1);
+    size_t n = s->n_motions ? s->motions[0].sp.n : 0;
+    array(&b, "frequency_hz", n ? s->motions[0].sp.freq_hz : NULL, n);
+    rb_strbuf_puts(&b, ",\n  \"motions\": [\n");
+    for (size_t m = 0; m < s->n_motions; m++) {
+        const rb_motion_spectrum *ms = &s->motions[m];
+        const rb_case_motion *cm = &c->motions[m];
+        rb_strbuf_puts(&b, "    {\"name\": ");
+        str(&b, motion_name(c, m));
+        rb_strbuf_printf(&b, ", \"kind\": \"%s\", ",
+                         rb_enum_str(rb_case_motion_type_names, (int)cm->type));
+        key_num(&b, "peak_mps2", ms->peak_mps2, 1);
+        key_num(&b, "arias_mps", ms->arias_mps, 1);
+        key_num(&b, "arias_t5_s", ms->arias_t5_s, 1);
+        key_num(&b, "arias_t95_s", ms->arias_t95_s, 1);
+        if (cm->type == RB_CASE_MOTION_SYNTHETIC) {
+            rb_strbuf_printf(&b, "\"seed\": %llu, \"index\": %u, \"passes\": %u, "
+                             "\"starts\": %u, ", cm->synth_seed, cm->synth_index + 1,
+                             cm->synth.iterations, cm->synth.attempts);
+            key_num(&b, "end_velocity_mps", cm->synth.end_velocity_mps, 1);
+            key_num(&b, "end_displacement_m", cm->synth.end_displacement_m, 1);
+            key_num(&b, "peak_velocity_mps", cm->synth.peak_velocity_mps, 1);
+            key_num(&b, "peak_displacement_m", cm->synth.peak_displacement_m, 1);
+        }
+        if (ms->has_target) {
+            json_target(&b, cm->target);
+            rb_strbuf_puts(&b, "\"fit\": {");
+            key_num(&b, "min_ratio", ms->fit.min_ratio, 1);
+            key_num(&b, "min_at_hz", ms->fit.min_at_hz, 1);
+            key_num(&b, "max_ratio", ms->fit.max_ratio, 1);
+            key_num(&b, "max_at_hz", ms->fit.max_at_hz, 1);
+            rb_strbuf_printf(&b, "\"points\": %zu, \"within\": %s}, ", ms->fit.n_checked,
+                             ms->fit.within ? "true" : "false");
+        }
+        rb_strbuf_puts(&b, "\n     ");
+        array(&b, "psa_mps2", ms->sp.psa_mps2, ms->sp.n);
+        rb_strbuf_puts(&b, ",\n     ");
+        array(&b, "sa_mps2", ms->sp.sa_mps2, ms->sp.n);
+        rb_strbuf_printf(&b, "}%s\n", m + 1 < s->n_motions ? "," : "");
+    }
+    rb_strbuf_puts(&b, "  ]\n}\n");
+    return rb_strbuf_take(&b);
+}
+
+char *rb_spectra_render_csv(const rb_case *c, const rb_case_spectra *s)
+{
+    rb_strbuf b = {0};
+    double g = s->g_mps2;
+    rb_strbuf_puts(&b, "motion,frequency_hz,psa_g,sa_g,target_g\n");
+    for (size_t m = 0; m < s->n_motions && !b.oom; m++) {
+        const rb_motion_spectrum *ms = &s->motions[m];
+        const rb_target *t = ms->has_target ? c->motions[m].target : NULL;
+        char *name = rb_csv_field(motion_name(c, m), 0);
+        if (!name) {
+            b.oom = 1;
+            break;
+        }
+        for (size_t i = 0; i < ms->sp.n; i++) {
+            rb_strbuf_printf(&b, "%s,%.6g,%.6g,%.6g,", name, ms->sp.freq_hz[i],
+                             ms->sp.psa_mps2[i] / g, ms->sp.sa_mps2[i] / g);
+            if (t)
+                rb_strbuf_printf(&b, "%.6g", rb_target_at(t, ms->sp.freq_hz[i]) / g);
+            rb_strbuf_puts(&b, "\n");
+        }
+        free(name);
+    }
+    return rb_strbuf_take(&b);
+}
