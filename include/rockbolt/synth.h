@@ -49,4 +49,9 @@ typedef struct {
  * close); RB_ERR_NOMEM. */
 rb_status rb_synth_generate(const rb_synth_opts *o, rb_series *out, rb_synth_info *info);
 
+/* Fill what info says of a motion that can be measured on it (all but
+ * iterations and attempts), for a motion that was generated before: a
+ * cached copy. RB_ERR_NOMEM, RB_ERR_INVALID. */
+rb_status rb_synth_describe(const rb_target *t, const rb_series *s, rb_synth_info *info);
+
 #endif

@@ -9,6 +9,7 @@
 #include "case_internal.h"
 #include "rockbolt/names.h"
 #include "rockbolt/record.h"
+#include "rockbolt/record_cache.h"
 
 #define SYNTH_MIN_TOTAL_S 2.0
 #define SYNTH_MAX_TOTAL_S 600.0
@@ -204,6 +205,21 @@ int rb_case_make_target(rb_cctx *c, const rb_cmotion *cm, rb_case_target *ct)
     return 1;
 }
 
+/* Everything a generated motion depends on, as the record cache's name for
+ * it (no file has such a name: it starts with "synthetic:"); 0 when it
+ * does not fit, and the motion is then not cached. */
+static int cache_key(const rb_cmotion *cm, const rb_case_target *ct, unsigned index,
+                      char *key, size_t n)
+{
+    const rb_target *t = &ct->target;
+    int len = snprintf(key, n, "synthetic:%d:%d:%.17g:%.17g:%.17g:%s:%.17g:%.17g|%llu|%u|"
+                       "%.17g|%.17g|%.17g", (int)t->kind, (int)t->edition, t->sds_mps2,
+                       t->z_over_h, t->damping, ct->file ? ct->file : "",
+                       cm->table_units_to_mps2, t->band_upper, cm->seed, index,
+                       cm->total_s, cm->strong_s, cm->synth_dt_s);
+    return len > 0 && (size_t)len < n;
+}
+
 int rb_case_build_synthetic(rb_cctx *c, const rb_cmotion *cm, const rb_case_target *ct,
                             unsigned index, rb_case_motion *out)
 {
@@ -243,7 +259,16 @@ int rb_case_build_synthetic(rb_cctx *c, const rb_cmotion *cm, const rb_case_targ
     o.strong_s = cm->strong_s;
     o.seed = cm->seed;
     o.index = index;
-    rb_status st = rb_synth_generate(&o, &out->series, &out->synth);
+    /* the cases of a batch that share a suite generate it once */
+    char key[4700];
+    rb_record_opts none;
+    rb_record_opts_init(&none);
+    int keyed = cache_key(cm, ct, index, key, sizeof key);
+    rb_status st;
+    if (keyed && rb_record_cache_get(c->cache, key, &none, 0, 0, &out->series))
+        st = rb_synth_describe(t, &out->series, &out->synth);
+    else if ((st = rb_synth_generate(&o, &out->series, &out->synth)) == RB_OK && keyed)
+        rb_record_cache_put(c->cache, key, &none, 0, 0, &out->series);
     if (st == RB_ERR_LIMIT) {
         rb_cctx_error_at(c, RB_ERR_INVALID, at->file, at->line, at->col, k, "motion %u "
                          "of seed %llu did not envelope the target within [1, %g] at "

@@ -259,7 +259,7 @@ static void correct(generator *g, double peak)
     }
 }
 
-static rb_status describe(const rb_target *t, const rb_series *s, rb_synth_info *info)
+rb_status rb_synth_describe(const rb_target *t, const rb_series *s, rb_synth_info *info)
 {
     rb_spectrum check;
     rb_status st = rb_target_check_grid(t, &check);
@@ -329,7 +329,7 @@ rb_status rb_synth_generate(const rb_synth_opts *o, rb_series *out, rb_synth_inf
         rb_series_free(out);
         return st;
     }
-    st = describe(o->target, out, info);
+    st = rb_synth_describe(o->target, out, info);
     if (st != RB_OK) {
         rb_series_free(out);
         return st;
