@@ -193,6 +193,16 @@ static double cubic_peak(double y0, double d0, double y1, double d1, double h)
     return best;
 }
 
+/* An upper bound of |y| on [0, h] for that cubic, cheap enough to skip
+ * cubic_peak where it cannot raise the peak: the cubic departs from the
+ * chord by h s (1 - s) [(1 - s)(d0 - m) - s (d1 - m)], m the chord's slope,
+ * so by at most a quarter of the larger of |h d0 - dy| and |h d1 - dy|. */
+static double cubic_bound(double y0, double d0, double y1, double d1, double h)
+{
+    double dy = y1 - y0;
+    return fmax(fabs(y0), fabs(y1)) + 0.25 * fmax(fabs(h * d0 - dy), fabs(h * d1 - dy));
+}
+
 typedef struct {
     double w, xi;
     double psa, sa;          /* peaks so far, as w u and absolute accel */
@@ -220,12 +230,12 @@ static void tracker_step(tracker *t, double pw, double v, double load, double h)
         t->psa = fabs(pw);
     if (fabs(t->acc) > t->sa)
         t->sa = fabs(t->acc);
-    if (dp0 * dp1 <= 0.0) {
+    if (dp0 * dp1 <= 0.0 && cubic_bound(p0, dp0, pw, dp1, h) > t->psa) {
         double c = cubic_peak(p0, dp0, pw, dp1, h);
         if (c > t->psa)
             t->psa = c;
     }
-    if (j0 * t->jerk <= 0.0) {
+    if (j0 * t->jerk <= 0.0 && cubic_bound(a0, j0, t->acc, t->jerk, h) > t->sa) {
         double c = cubic_peak(a0, j0, t->acc, t->jerk, h);
         if (c > t->sa)
             t->sa = c;
