@@ -28,6 +28,8 @@ for c in cases/*.yaml; do
     run "check $c" "$build/rockbolt" check "$c" --json "$out/r.json" --text "$out/r.txt"
 done
 run "bad input" "$build/rockbolt" check tests/errors/03-unknown-key.yaml
+run "spectrum" "$build/rockbolt" spectrum cases/ac156-roof.yaml --json "$out/s.json" \
+    --csv "$out/s.csv" --svg "$out/s.svg"
 # list rows loaded from memory over a base with several motions, and batch's
 # outputs
 run "batch" "$build/rockbolt" batch tests/batch/list.csv tests/batch/cases -j 2 \
