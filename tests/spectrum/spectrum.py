@@ -242,6 +242,8 @@ else:
 for args, what in ((["--damping", "150 %"], "a damping ratio"),
                    (["--from", "10 Hz", "--to", "5 Hz"], "needs 0 < from < to"),
                    (["--per-octave", "0"], "points per octave"),
+                   (["--from", "0.001", "--to", "10000", "--per-octave", "96"],
+                    "at most 2000 points"),
                    (["--to", "fast"], "a frequency")):
     out = os.path.join(scratch, "bad.json")
     r = run("spectrum", suite, "--json", out, *args)
