@@ -128,9 +128,10 @@ bool rb_aci17_sideface_applies(double ca1_m, double hef_m);
 double rb_aci17_nsb(rb_aci17_coef coef, double ca1_m, double ca2_m,
                     double abrg_m2, double lambda_a, double fc_pa);
 
-/* 17.6.4.2, Eq. (17.6.4.2): group of anchors along the edge with spacing
- * s (between the outer anchors) < 6 ca1: Nsbg = (1 + s / (6 ca1)) Nsb;
- * s >= 6 ca1: each anchor alone, Nsbg = n Nsb. */
+/* 17.6.4.2, Eq. (17.6.4.2): n anchors evenly spaced along the edge, the
+ * outer two s_outer apart. Anchor spacing s_outer / (n - 1) < 6 ca1:
+ * Nsbg = (1 + s_outer / (6 ca1)) Nsb; from 6 ca1 each anchor alone,
+ * Nsbg = n Nsb. nsb_n: Eq. (17.6.4.1) without the corner factor. */
 double rb_aci17_nsbg(int n, double s_outer_m, double ca1_m, double nsb_n);
 
 /* ---- Shear ---- */

@@ -180,10 +180,13 @@ double rb_aci17_nsb(rb_aci17_coef coef, double ca1_m, double ca2_m,
 
 double rb_aci17_nsbg(int n, double s_outer_m, double ca1_m, double nsb_n)
 {
-    /* 17.6.4.2, Eq. (17.6.4.2): s < 6 ca1: Nsbg = (1 + s / (6 ca1)) Nsb. */
+    /* 17.6.4.2, Eq. (17.6.4.2): anchor spacing < 6 ca1: Nsbg =
+     * (1 + s / (6 ca1)) Nsb, s the distance between the outer anchors.
+     * The condition is on the spacing of neighbouring anchors, not on s:
+     * anchors 4 ca1 apart share one blowout however long the row. */
     if (n <= 1)
         return nsb_n;
-    if (s_outer_m < 6.0 * ca1_m)
+    if (s_outer_m / (n - 1) < 6.0 * ca1_m)
         return (1.0 + s_outer_m / (6.0 * ca1_m)) * nsb_n;
     return n * nsb_n;
 }

@@ -217,7 +217,8 @@ static void limits_and_monotony(void)
     CHECK(rb_aci17_nb_cast_in(RB_ACI17_INLB, 1, fc, 12 * IN)
           > rb_aci17_nb_cast_in(RB_ACI17_INLB, 1, fc, 11 * IN));
     /* side-face blowout: applies for ca1 < 0.4 hef; corner factor 1/2 at
-     * ca2 = ca1, 1 from 3 ca1; group factor 1 at s = 0, 2 at s = 6 ca1 */
+     * ca2 = ca1, 1 from 3 ca1; group factor of two anchors 1 at s = 0,
+     * 2 at s = 6 ca1 */
     CHECK(rb_aci17_sideface_applies(0.039, 0.1) && !rb_aci17_sideface_applies(0.04, 0.1));
     double nsb_free = rb_aci17_nsb(RB_ACI17_SI, 0.05, INFINITY, 6e-4, 1, fc);
     CHECK_REL(rb_aci17_nsb(RB_ACI17_SI, 0.05, 0.05, 6e-4, 1, fc), 0.5 * nsb_free, 1e-12);
@@ -226,6 +227,13 @@ static void limits_and_monotony(void)
     CHECK_REL(rb_aci17_nsbg(2, 0, 0.05, 100), 100, 1e-15);
     CHECK_REL(rb_aci17_nsbg(2, 0.3 - 1e-12, 0.05, 100), 200, 1e-9);
     CHECK_REL(rb_aci17_nsbg(2, 0.5, 0.05, 100), 200, 1e-15);
+    /* 17.6.4.2 asks for the group form when the anchor spacing is below
+     * 6 ca1, s in it being the distance between the outer anchors: three
+     * anchors 4 ca1 apart share one blowout (1 + 8/6 of one anchor's
+     * strength), even though the outer two are 8 ca1 apart */
+    CHECK_REL(rb_aci17_nsbg(3, 0.4, 0.05, 100), 100 * (1 + 8.0 / 6), 1e-12);
+    CHECK_REL(rb_aci17_nsbg(3, 0.6 - 1e-12, 0.05, 100), 300, 1e-9);
+    CHECK_REL(rb_aci17_nsbg(3, 0.6, 0.05, 100), 300, 1e-15);
     /* shear breakout: A_Vc capped by n A_Vco; thin member limits depth */
     CHECK_REL(rb_aci17_avc(0.2, INFINITY, INFINITY, 0, 1.0), rb_aci17_avco(0.2), 1e-15);
     CHECK_REL(rb_aci17_vcbg(2, 10, 1, 1, 1, 1, 1, 3.0), 6.0, 1e-15);

@@ -1,6 +1,8 @@
 /* The anchorage's strengths in concrete (rockbolt/anchor.h, aci17.c):
  *   - the modes of a row of two 1/2 in headed bolts, worked by hand here in
- *     the in-lb formulas of ACI 318-19 (lb, in, psi);
+ *     the in-lb formulas of ACI 318-19 (lb, in, psi), and side-face blowout
+ *     of a row of three near an edge (no published worked example of it
+ *     was found: docs/code-check.md);
  *   - a case written in US customary units and the same case in SI give
  *     the same strengths when they use the same coefficients (the formulas
  *     are dimensional: only the conversions could differ);
@@ -107,6 +109,46 @@ static void hand_worked(void)
     in.hef_m = 7 * IN;
     CHECK(rb_anchor_check(&m, &in, &s, &d) == RB_ERR_INVALID
           && strcmp(d.key, "anchorage.embedment") == 0);
+}
+
+/* A row of three 1/2 in bolts 2 in from the edge and 6 in deep
+ * (hef > 2.5 ca1): side-face blowout of the row, worked by hand in the
+ * in-lb formulas. At 8 in the bolts are closer than 6 ca1 = 12 in, so the
+ * row is one group although its outer bolts are 16 in apart; at 13 in
+ * each bolt blows out alone. */
+static void sideface_row(void)
+{
+    rb_model m;
+    rb_anchor_inputs in;
+    rb_anchor_strength s;
+    rb_diag d;
+    model_2x(&m);
+    m.bolts_per_row = 3;
+    rb_anchor_inputs_init(&in);
+    in.coef = RB_ACI17_INLB;
+    in.fc_pa = 4000 * PSI;
+    in.thickness_m = 8 * IN;
+    in.edge_m = 2 * IN;
+    in.hef_m = 6 * IN;
+    in.spacing_m = 8 * IN;
+    in.futa_pa = 58000 * PSI;
+    in.abrg_m2 = 0.467 * IN * IN;
+    CHECK(rb_anchor_check(&m, &in, &s, &d) == RB_OK);
+    /* 17.6.4.1: Nsb = 160 ca1 sqrt(Abrg) sqrt(f'c), no corner */
+    double nsb = 160 * 2 * sqrt(0.467) * sqrt(4000.0);
+    const rb_anchor_mode_strength *sb = &s.mode[RB_ANCHOR_SIDEFACE_N];
+    CHECK(sb->applies);
+    /* 17.6.4.2: (1 + s / (6 ca1)) Nsb with s = 16 in between the outer bolts */
+    CHECK_REL(sb->nominal_n, (1 + 16.0 / 12) * nsb * LB, 1e-12);
+    /* Table 17.5.3(b) condition B and 17.10.5.4(d) */
+    CHECK(sb->phi == 0.70 && sb->seismic == 0.75);
+    in.spacing_m = 13 * IN;
+    CHECK(rb_anchor_check(&m, &in, &s, &d) == RB_OK);
+    CHECK_REL(s.mode[RB_ANCHOR_SIDEFACE_N].nominal_n, 3 * nsb * LB, 1e-12);
+    /* 17.6.4.1 asks for hef > 2.5 ca1 = 5 in: at 5 in it does not apply */
+    in.hef_m = 5 * IN;
+    CHECK(rb_anchor_check(&m, &in, &s, &d) == RB_OK);
+    CHECK(!s.mode[RB_ANCHOR_SIDEFACE_N].applies);
 }
 
 static const char *const us_case =
@@ -223,6 +265,7 @@ static void aisc_dg1(void)
 int main(void)
 {
     hand_worked();
+    sideface_row();
     units_agree();
     aisc_dg1();
     TEST_MAIN_END();
