@@ -110,7 +110,7 @@ static double floor_accel(const rb_sys *S, double t, const double *y)
     return rb_motion_accel(S->motion, t, thd);
 }
 
-static int rocking(const rb_sys *S, const rb_disc *D)
+int rb_dyn_rocking(const rb_sys *S, const rb_disc *D)
 {
     return D->stage == RB_STAGE_UPLIFT || D->stage == RB_STAGE_YIELD
            || (D->stage == RB_STAGE_HELD && !S->bolt->rigid_stop);
@@ -190,12 +190,12 @@ void rb_dyn_rhs(const rb_sys *S, const rb_disc *D, double t, const double *y,
     a.x = floor_accel(S, t, y);
     if (D->stage == RB_STAGE_HELD && S->bolt->rigid_stop)
         m[2] = D->theta_hold;
-    if (rocking(S, D))
+    if (rb_dyn_rocking(S, D))
         solve_rocking(S, D, s * a.x, m, &a);
     else
         solve_still(S, D, s * a.x, m, &a);
     if (dy) {
-        int moving = rocking(S, D);
+        int moving = rb_dyn_rocking(S, D);
         dy[RB_Y_U] = y[RB_Y_UD];
         dy[RB_Y_UD] = s * a.udd;
         dy[RB_Y_TH] = moving ? y[RB_Y_THD] : 0;

@@ -271,6 +271,14 @@ static void release(rb_solver *sv)
     if (sv->sys.bolt->rigid_stop) {
         sv->y[RB_Y_TH] = D->side * D->theta_hold;
         sv->y[RB_Y_THD] = 0;
+    } else {
+        /* a spring goes slack where the chord is the gap, which is the
+         * contact angle; on it exactly, stage 2's contact guard starts at
+         * 0 and is nudged, so that a dip and a new contact within one
+         * check interval still reads as a crossing (a rounding step
+         * past it read as already in contact, and the plate went on to
+         * overturn through the row) */
+        sv->y[RB_Y_TH] = D->side * D->contact[row];
     }
     if (D->gap[row] == 0)
         come_to_rest(sv);
