@@ -242,6 +242,25 @@ static double scaled(const series *s, int k, double hk, const double *tol)
     return (ab > cd ? ab : cd) * hk + 0.0 * (a + b + c + d);
 }
 
+/* The floor's series is formed to a first guess of the order a step
+ * needs, and again to the largest only when a step goes past it: its terms
+ * do not depend on how many are asked for, and through a building (two
+ * divisions a term) the whole RB_TAYLOR_MAX + 2 were a sixth of a step. */
+#define RB_X_FIRST 16
+
+/* The mirrored floor's series to order n into s->X, zeros past a
+ * polynomial's degree; returns the order up to which s->X holds the
+ * motion (all of it for a polynomial). */
+static int floor_series(const rb_motion *m, double t0, double sgn, int n, series *s)
+{
+    s->xd = rb_motion_taylor(m, t0, n, s->X);
+    for (int k = 0; k <= s->xd; k++)
+        s->X[k] *= sgn;
+    for (int k = n + 1; k < NT; k++)
+        s->X[k] = 0;
+    return s->xd < n ? NT : n;
+}
+
 double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double *y0,
                       double h_want, const double *atol, double rtol, rb_taylor *ts)
 {
@@ -251,9 +270,7 @@ double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double
     double sgn = D->side < 0 ? -1.0 : 1.0, tol[RB_NY];
     int rocking = rb_dyn_rocking(S, D);
     load_consts(S, &K);
-    s.xd = rb_motion_taylor(S->motion, t0, RB_TAYLOR_MAX + 1, s.X);
-    for (int k = 0; k <= s.xd; k++) /* the rest are zeros */
-        s.X[k] *= sgn;
+    int xn = floor_series(S->motion, t0, sgn, RB_X_FIRST, &s);
     s.U[0] = sgn * y0[RB_Y_U];
     s.V[0] = sgn * y0[RB_Y_UD];
     s.T[0] = rocking ? sgn * y0[RB_Y_TH] : D->stage == RB_STAGE_HELD ? D->theta_hold : 0;
@@ -270,6 +287,9 @@ double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double
     int n = 0;
     for (int k = 0;; k++) {
         double udd, thdd = 0;
+        /* order k reads the floor to order k, and the step's end to n */
+        if (k + 1 > xn)
+            xn = floor_series(S->motion, t0, sgn, RB_TAYLOR_MAX + 1, &s);
         if (rocking)
             rocking_order(&K, &s, k, bolt_order(&K, &B, &s, k), &udd, &thdd);
         else {
