@@ -368,10 +368,10 @@ int rb_transition_immediate(rb_solver *sv)
     const rb_sys *S = &sv->sys;
     rb_disc *D = &sv->disc;
     if (D->stage == RB_STAGE_FIXED) {
-        double up = rb_dyn_uplift_guard(S, sv->t, sv->y, 1);
-        double dn = rb_dyn_uplift_guard(S, sv->t, sv->y, -1);
-        if (up > 0 || dn > 0) {
-            rb_transition(sv, up > 0 ? G_UP_POS : G_UP_NEG);
+        double g[2];
+        rb_dyn_uplift_guards(S, sv->t, sv->y, g);
+        if (g[0] > 0 || g[1] > 0) {
+            rb_transition(sv, g[0] > 0 ? G_UP_POS : G_UP_NEG);
             return 1;
         }
         return 0;
