@@ -80,6 +80,25 @@ static inline double times_x(const double *a, int stride, const series *s, int k
     return sum;
 }
 
+/* times_x of cos and sin at once: the two sums in one pass, each in the
+ * order times_x adds it, so that their additions overlap instead of each
+ * waiting on the last (the floor through a building has a full series) */
+static inline void times_x_cs(const series *s, int k, double *xc, double *xs)
+{
+    if (s->xd <= 1) {
+        *xc = times_x(&s->CSO[0][LC], LANES + 1, s, k);
+        *xs = times_x(&s->CSO[0][LS], LANES + 1, s, k);
+        return;
+    }
+    double c = 0, sn = 0;
+    for (int j = k > s->xd ? k - s->xd : 0; j <= k; j++) {
+        c += s->CSO[j][LC] * s->X[k - j];
+        sn += s->CSO[j][LS] * s->X[k - j];
+    }
+    *xc = c;
+    *xs = sn;
+}
+
 /* Order k of the right-hand side while rocking (stage 2: no bolt), after
  * theta'^2 at order k and cos, sin at order k + 1, which need theta' only up
  * to order k: one pass over theta' gives all three. */
@@ -109,8 +128,8 @@ static void rocking_order(const consts *K, series *s, int k, double m_bolt, doub
              - K->Ns * K->b * s->Q[k];
         Rth = K->M * K->R * s->X[k] + K->W * K->R * (s->T[k] - (k == 0 ? K->alpha : 0));
     } else {
-        double XC = times_x(&s->CSO[0][LC], LANES + 1, s, k);
-        double XS = times_x(&s->CSO[0][LS], LANES + 1, s, k);
+        double XC, XS;
+        times_x_cs(s, k, &XC, &XS);
         RU = K->Ns * (XC + K->g * S_(s, k)) - K->Ks * s->U[k] - K->Cs * s->V[k]
              - K->Ns * K->b * s->Q[k];
         Rth = K->M * (K->h * XC + K->b * XS) - K->W * (K->b * C_(s, k) - K->h * S_(s, k));
