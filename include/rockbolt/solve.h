@@ -25,8 +25,9 @@ typedef enum {
 /* How the continuous stages are integrated (docs/solver.md). */
 typedef enum {
     RB_INTEGRATOR_AUTO = 0,  /* Taylor series where it applies (stages 1, 2 and
-                                4 of the large and small formulations with
-                                rigid bolts), Dormand-Prince elsewhere */
+                                4 of the large and small formulations, and 5
+                                with elastic-plastic bolts), Dormand-Prince
+                                elsewhere */
     RB_INTEGRATOR_RK45       /* Dormand-Prince 5(4) throughout */
 } rb_integrator;
 

@@ -18,7 +18,6 @@ struct rb_bolt_ops {
     int rows;         /* 0: free-standing, nothing holds the plate down */
     int yields;       /* a row can reach Fy and yield (stage 5) */
     int rigid_stop;   /* the row is a rigid stop (see above) */
-    int taylor;       /* the Taylor steps handle the model; else Dormand-Prince */
     /* For rows that are not rigid stops (NULL otherwise), at the mirrored
      * angle th of the loaded row's side: */
     /* the row's tension in stage 4 */
@@ -29,8 +28,12 @@ struct rb_bolt_ops {
     double (*stored)(const rb_sys *S, const rb_disc *D, double th);
     /* the elastic stretch at Fy, which a row unloading from yield gives back */
     double (*yield_stretch)(const rb_sys *S);
-    /* the fastest frequency the rows add to the response (Hz) */
+    /* the fastest frequency the rows add to the response while taut (Hz) */
     double (*frequency_hz)(const rb_sys *S);
+    /* A row whose tension is k (chord - gap) while taut: k (N/m). The
+     * Taylor steps carry such a row as a series; a force law without it
+     * is integrated by Dormand-Prince in stage 4. */
+    double (*spring_npm)(const rb_sys *S);
 };
 
 /* The operations of a model; never NULL (an unknown value is rigid-plastic). */

@@ -29,6 +29,11 @@ static double yield_stretch(const rb_sys *S)
     return S->d.fy_row_n / S->d.k_row_npm;
 }
 
+static double spring_npm(const rb_sys *S)
+{
+    return S->d.k_row_npm;
+}
+
 /* the rows on the body's rotational inertia about the pivot */
 static double frequency_hz(const rb_sys *S)
 {
@@ -36,7 +41,8 @@ static double frequency_hz(const rb_sys *S)
 }
 
 const rb_bolt_ops rb_bolt_elastic_plastic = {
-    .rows = 1, .yields = 1, .rigid_stop = 0, .taylor = 0,
+    .rows = 1, .yields = 1, .rigid_stop = 0,
     .tension = tension, .taut = stretch, .stored = stored,
     .yield_stretch = yield_stretch, .frequency_hz = frequency_hz,
+    .spring_npm = spring_npm,
 };

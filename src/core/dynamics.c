@@ -110,7 +110,7 @@ static double floor_accel(const rb_sys *S, double t, const double *y)
     return rb_motion_accel(S->motion, t, thd);
 }
 
-static int rocking(const rb_sys *S, const rb_disc *D)
+int rb_dyn_rocking(const rb_sys *S, const rb_disc *D)
 {
     return D->stage == RB_STAGE_UPLIFT || D->stage == RB_STAGE_YIELD
            || (D->stage == RB_STAGE_HELD && !S->bolt->rigid_stop);
@@ -190,12 +190,12 @@ void rb_dyn_rhs(const rb_sys *S, const rb_disc *D, double t, const double *y,
     a.x = floor_accel(S, t, y);
     if (D->stage == RB_STAGE_HELD && S->bolt->rigid_stop)
         m[2] = D->theta_hold;
-    if (rocking(S, D))
+    if (rb_dyn_rocking(S, D))
         solve_rocking(S, D, s * a.x, m, &a);
     else
         solve_still(S, D, s * a.x, m, &a);
     if (dy) {
-        int moving = rocking(S, D);
+        int moving = rb_dyn_rocking(S, D);
         dy[RB_Y_U] = y[RB_Y_UD];
         dy[RB_Y_UD] = s * a.udd;
         dy[RB_Y_TH] = moving ? y[RB_Y_THD] : 0;
@@ -212,7 +212,7 @@ void rb_dyn_rhs(const rb_sys *S, const rb_disc *D, double t, const double *y,
  * theta = 0 (solve_still), so that the two agree in sign to the last bit:
  * an uplift into a zero gap is never met by a bolt force of the other sign,
  * which would bounce the state between stages 1 and 4 for ever. */
-double rb_dyn_uplift_guard(const rb_sys *S, double t, const double *y, int side)
+static double uplift_guard_at(const rb_sys *S, double xp, const double *y, int side)
 {
     const rb_derived *d = &S->d;
     rb_disc D = {0};
@@ -221,7 +221,7 @@ double rb_dyn_uplift_guard(const rb_sys *S, double t, const double *y, int side)
     D.side = side;
     D.stage = RB_STAGE_FIXED;
     mirror(&D, y, m);
-    double x = (side < 0 ? -1.0 : 1.0) * floor_accel(S, t, y);
+    double x = (side < 0 ? -1.0 : 1.0) * xp;
     loads(S, x, m[0], m[1], 0, 0, &L);
     if (S->model->rigid)
         return L.Qth;
@@ -229,10 +229,18 @@ double rb_dyn_uplift_guard(const rb_sys *S, double t, const double *y, int side)
     return L.Qth - d->Fstar * udd;
 }
 
+double rb_dyn_uplift_guard(const rb_sys *S, double t, const double *y, int side)
+{
+    return uplift_guard_at(S, floor_accel(S, t, y), y, side);
+}
+
+/* one evaluation of the floor for both edges: through a building it is
+ * an exponential and a sine and cosine */
 void rb_dyn_uplift_guards(const rb_sys *S, double t, const double *y, double *g)
 {
-    g[0] = rb_dyn_uplift_guard(S, t, y, 1);
-    g[1] = rb_dyn_uplift_guard(S, t, y, -1);
+    double x = floor_accel(S, t, y);
+    g[0] = uplift_guard_at(S, x, y, 1);
+    g[1] = uplift_guard_at(S, x, y, -1);
 }
 
 double rb_dyn_kinetic(const rb_sys *S, const rb_disc *D, const double *y)

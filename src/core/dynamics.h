@@ -58,6 +58,10 @@ double rb_dyn_lever(const rb_sys *S, double th);
 /* Angle at which the plate meets a bolt head with total gap g. */
 double rb_dyn_contact_angle(const rb_sys *S, double g);
 
+/* Whether the plate rotates in the current stage (2, 5, and 4 against a
+ * row that is not a rigid stop). */
+int rb_dyn_rocking(const rb_sys *S, const rb_disc *D);
+
 /* Derivatives for the current stage; dy may be NULL when only aux is wanted. */
 void rb_dyn_rhs(const rb_sys *S, const rb_disc *D, double t, const double *y,
                 double *dy, rb_aux *aux);

@@ -68,7 +68,11 @@ static rb_status check_opts(const rb_solve_opts *o, rb_diag *diag)
     return RB_OK;
 }
 
-static double highest_frequency(const rb_solver *sv)
+/* The highest frequency of the model and the excitation; the rows' own
+ * (a stiff spring's) only where taut, so that a run with elastic rows
+ * keeps the long steps and the check spacing of the rigid model while
+ * they are slack. */
+static double highest_frequency(const rb_solver *sv, int taut)
 {
     const rb_sys *S = &sv->sys;
     const rb_motion *m = S->motion;
@@ -79,7 +83,7 @@ static double highest_frequency(const rb_solver *sv)
         f = fmax(f, m->freq_hz);
     if (m->kind == RB_MOTION_PULSE && m->pulse_s > 0)
         f = fmax(f, 1 / m->pulse_s);
-    if (S->bolt->frequency_hz)
+    if (taut && S->bolt->frequency_hz)
         f = fmax(f, S->bolt->frequency_hz(S));
     return f;
 }
@@ -87,10 +91,10 @@ static double highest_frequency(const rb_solver *sv)
 /* The highest frequency of the response: the model's and the excitation's,
  * and the frame mode coupled with the rotation in stage 2, whose effective
  * mass (M* I_o - F*^2) / I_o is below M*. */
-static double fastest_mode(const rb_solver *sv)
+static double fastest_mode(const rb_solver *sv, int taut)
 {
     const rb_derived *d = &sv->sys.d;
-    double f = highest_frequency(sv);
+    double f = highest_frequency(sv, taut);
     if (!sv->sys.model->rigid)
         f = fmax(f, sqrt(d->Kstar * d->Io / (d->Mstar * d->Io - d->Fstar * d->Fstar))
                     / (2 * M_PI));
@@ -172,9 +176,12 @@ static rb_status setup(rb_solver *sv, const rb_model *model, const rb_motion *mo
     if (!(isfinite(sv->t_end) && sv->t_end > 0))
         return fail(sv, diag, RB_ERR_INVALID, "the run needs a finite duration > 0");
     sv->h_max = sv->opts.max_step_s > 0 ? sv->opts.max_step_s
-                                        : 0.1 / highest_frequency(sv);
+                                        : 0.1 / highest_frequency(sv, 1);
+    sv->h_max_slack = sv->opts.max_step_s > 0 ? sv->opts.max_step_s
+                                              : 0.1 / highest_frequency(sv, 0);
     sv->h = fmin(sv->h_max, 1e-3);
-    sv->check_spacing = 1 / (8 * fastest_mode(sv));
+    sv->check_spacing = 1 / (8 * fastest_mode(sv, 1));
+    sv->check_slack = 1 / (8 * fastest_mode(sv, 0));
     double th0 = S->bolt->rows ? rb_dyn_contact_angle(S, model->gap_m) : HUGE_VAL;
     sv->rest_theta = sv->opts.rest_fraction * fmin(S->d.alpha, th0 > 0 ? th0 : S->d.alpha);
     if (sv->opts.theta_init_rad != 0) {
@@ -253,6 +260,35 @@ static double locate(rb_solver *sv, const rb_rk_step *st, int guard, double a, d
     return b;
 }
 
+/* The earliest guard that crosses over [ta, tb], where the guards read ga
+ * and gb, with its time; -1 if none does. */
+static int first_crossing(rb_solver *sv, const rb_rk_step *st, unsigned mask, double ta,
+                          double tb, const double *ga, const double *gb, double *t_event)
+{
+    int best = -1;
+    double tbest = HUGE_VAL;
+    for (int k = 0; k < G_COUNT; k++) {
+        if (!(mask & 1u << k) || !rb_guard_crossed(k, ga[k], gb[k]))
+            continue;
+        double tk = locate(sv, st, k, ta, tb, ga[k], gb[k]);
+        if (tk < tbest) {
+            tbest = tk;
+            best = k;
+        }
+    }
+    *t_event = tbest;
+    return best;
+}
+
+/* Whether the plate swings against a taut spring: its tension is a
+ * monotone function of the angle, and a swing can reach Fy or go slack
+ * and come back within one check interval (a contact lasts about half a
+ * period of the spring), so the guards are also read where theta' turns. */
+static int on_spring(const rb_solver *sv, const rb_rk_step *st)
+{
+    return st->is_taylor && sv->disc.stage == RB_STAGE_HELD && !sv->sys.bolt->rigid_stop;
+}
+
 /* Earliest guard crossing inside the accepted step, or -1. ys[j] is the
  * state at the end of check interval j of n_sub (ys[n_sub - 1] = y1). */
 static int find_event(rb_solver *sv, const rb_rk_step *st, const double *g0,
@@ -262,28 +298,34 @@ static int find_event(rb_solver *sv, const rb_rk_step *st, const double *g0,
     double ga[G_COUNT], gb[G_COUNT];
     memcpy(ga, g0, sizeof ga);
     rb_guard_nudge(ga);
-    int n = st->n_sub;
+    int n = st->n_sub, spring = on_spring(sv, st);
     double dt = st->h / n;
+    const double *ya = st->y0;
     for (int j = 1; j <= n; j++) {
         double ta = st->t0 + dt * (j - 1);
         double tb = j == n ? st->t1 : st->t0 + dt * j;
-        rb_guard_eval(sv, tb, ys[j - 1], gb);
-        int best = -1;
-        double tbest = HUGE_VAL;
-        for (int k = 0; k < G_COUNT; k++) {
-            if (!(mask & 1u << k) || !rb_guard_crossed(k, ga[k], gb[k]))
-                continue;
-            double tk = locate(sv, st, k, ta, tb, ga[k], gb[k]);
-            if (tk < tbest) {
-                tbest = tk;
-                best = k;
+        double fa = ya[RB_Y_THD], fb = ys[j - 1][RB_Y_THD];
+        if (spring && fa != 0 && fb != 0 && (fa < 0) != (fb < 0)) {
+            double ym[RB_NY] = {0}, gm[G_COUNT];
+            double tm = st->t0 + rb_taylor_rate_root(&st->ts, RB_Y_THD, ta - st->t0,
+                                                     tb - st->t0, fa, fb,
+                                                     1e-14 * (1 + fabs(tb)));
+            if (tm > ta && tm < tb) {
+                rb_rk_dense_state(st, tm, ym);
+                rb_guard_eval(sv, tm, ym, gm);
+                int ev = first_crossing(sv, st, mask, ta, tm, ga, gm, t_event);
+                if (ev >= 0)
+                    return ev;
+                memcpy(ga, gm, sizeof ga);
+                ta = tm;
             }
         }
-        if (best >= 0) {
-            *t_event = tbest;
-            return best;
-        }
+        rb_guard_eval(sv, tb, ys[j - 1], gb);
+        int ev = first_crossing(sv, st, mask, ta, tb, ga, gb, t_event);
+        if (ev >= 0)
+            return ev;
         memcpy(ga, gb, sizeof ga);
+        ya = ys[j - 1];
     }
     return -1;
 }
@@ -400,10 +442,13 @@ static rb_status advance(rb_solver *sv, rb_rk_step *st, double *g, rb_diag *diag
  * not finite. */
 static int taylor_step(rb_solver *sv, rb_rk_step *st, double target)
 {
+    int taut = sv->disc.stage == RB_STAGE_HELD && !sv->sys.bolt->rigid_stop;
+    double h_max = taut ? sv->h_max : sv->h_max_slack;
+    double spacing = taut ? sv->check_spacing : sv->check_slack;
     double h_want = target - sv->t;
-    int landing = h_want <= 1.001 * sv->h_max;
+    int landing = h_want <= 1.001 * h_max;
     if (!landing)
-        h_want = sv->h_max;
+        h_want = h_max;
     double h = rb_taylor_step(&sv->sys, &sv->disc, sv->t, sv->y, h_want, sv->atol,
                               sv->opts.rtol, &st->ts);
     if (!(h > 0))
@@ -414,7 +459,7 @@ static int taylor_step(rb_solver *sv, rb_rk_step *st, double target)
     st->t1 = landing && h == h_want ? target : sv->t + h;
     memcpy(st->y0, sv->y, sizeof st->y0);
     rb_taylor_end(&sv->sys, &sv->disc, &st->ts, h, st->y1, st->k[6], &st->aux1);
-    int n = (int)ceil(h / sv->check_spacing);
+    int n = (int)ceil(h / spacing);
     st->n_sub = n < RB_SUB ? RB_SUB : n > RB_SUB_MAX ? RB_SUB_MAX : n;
     sv->res->steps++;
     sv->res->stage_steps[sv->disc.stage]++;

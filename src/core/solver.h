@@ -43,6 +43,8 @@ typedef struct {
     double atol[RB_NY];
     double h, h_max, t_end;
     double check_spacing;       /* largest spacing of a Taylor step's checks */
+    /* the same two while no row is a taut spring (bolt.h's frequency_hz) */
+    double h_max_slack, check_slack;
     double e_impact;
     double rest_theta;          /* rocking amplitude that counts as at rest */
     double window_start;        /* work bound: events since window_start */

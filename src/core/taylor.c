@@ -19,11 +19,18 @@ static const double inv[NT + 2] = {
 
 int rb_taylor_applies(const rb_sys *S, const rb_disc *D)
 {
-    if (S->form == RB_FORM_CONSISTENT || !S->bolt->taylor
-        || S->motion->kind == RB_MOTION_CRITICAL)
+    if (S->form == RB_FORM_CONSISTENT || S->motion->kind == RB_MOTION_CRITICAL)
         return 0;
-    return D->stage == RB_STAGE_FIXED || D->stage == RB_STAGE_UPLIFT
-           || D->stage == RB_STAGE_HELD;
+    /* a row in stage 4 is a rigid stop or a spring in its chord */
+    if (D->stage == RB_STAGE_HELD)
+        return S->bolt->rigid_stop || S->bolt->spring_npm;
+    /* a yielding row pulls with Fy. A spring yields at most impacts (500
+     * Dormand-Prince steps of a 40 s record at 0.4 A*); a rigid row's
+     * stage 5 is a few dozen steps a run, which Dormand-Prince still
+     * takes, so that the rigid rows' results do not move */
+    if (D->stage == RB_STAGE_YIELD)
+        return S->bolt->spring_npm != NULL;
+    return D->stage == RB_STAGE_FIXED || D->stage == RB_STAGE_UPLIFT;
 }
 
 typedef struct {
@@ -52,6 +59,9 @@ enum { LC, LS, LO, LANES };
 typedef struct {
     double U[NT], V[NT], T[NT], X[NT], Q[NT];
     double CSO[NT][LANES + 1];
+    /* cos and sin of half the angle, for a row's lever arm l cos(theta/2)
+     * (stages 4 and 5 of the large formulation) */
+    double C2[NT], S2[NT];
     int xd;
 } series;
 
@@ -71,10 +81,31 @@ static inline double times_x(const double *a, int stride, const series *s, int k
     return sum;
 }
 
-/* Order k of the right-hand side while rocking (stage 2: no bolt), after
+/* times_x of cos and sin at once: the two sums in one pass, each in the
+ * order times_x adds it, so that their additions overlap instead of each
+ * waiting on the last (the floor through a building has a full series) */
+static inline void times_x_cs(const series *s, int k, double *xc, double *xs)
+{
+    if (s->xd <= 1) {
+        *xc = times_x(&s->CSO[0][LC], LANES + 1, s, k);
+        *xs = times_x(&s->CSO[0][LS], LANES + 1, s, k);
+        return;
+    }
+    double c = 0, sn = 0;
+    for (int j = k > s->xd ? k - s->xd : 0; j <= k; j++) {
+        c += s->CSO[j][LC] * s->X[k - j];
+        sn += s->CSO[j][LS] * s->X[k - j];
+    }
+    *xc = c;
+    *xs = sn;
+}
+
+/* Order k of the right-hand side while rocking, the bolt's moment at that
+ * order being m_bolt (0 in stage 2), after
  * theta'^2 at order k and cos, sin at order k + 1, which need theta' only up
  * to order k: one pass over theta' gives all three. */
-static void rocking_order(const consts *K, series *s, int k, double *udd, double *thdd)
+static void rocking_order(const consts *K, series *s, int k, double m_bolt, double *udd,
+                          double *thdd)
 {
     /* two sets of accumulators halve the chain of dependent additions */
     double a0[LANES + 1] = {0}, a1[LANES + 1] = {0};
@@ -99,18 +130,67 @@ static void rocking_order(const consts *K, series *s, int k, double *udd, double
              - K->Ns * K->b * s->Q[k];
         Rth = K->M * K->R * s->X[k] + K->W * K->R * (s->T[k] - (k == 0 ? K->alpha : 0));
     } else {
-        double XC = times_x(&s->CSO[0][LC], LANES + 1, s, k);
-        double XS = times_x(&s->CSO[0][LS], LANES + 1, s, k);
+        double XC, XS;
+        times_x_cs(s, k, &XC, &XS);
         RU = K->Ns * (XC + K->g * S_(s, k)) - K->Ks * s->U[k] - K->Cs * s->V[k]
              - K->Ns * K->b * s->Q[k];
         Rth = K->M * (K->h * XC + K->b * XS) - K->W * (K->b * C_(s, k) - K->h * S_(s, k));
     }
+    Rth -= m_bolt;
     if (K->rigid) {
         *udd = 0;
         *thdd = Rth * K->inv_Io;
     } else {
         *udd = (K->Io * RU - K->Fs * Rth) * K->inv_det;
         *thdd = (K->Ms * Rth - K->Fs * RU) * K->inv_det;
+    }
+}
+
+/* What a row holds the plate with, for the order-k moment about the pivot. */
+typedef struct {
+    int kind;          /* BOLT_SLACK, BOLT_SPRING (stage 4), BOLT_YIELD (stage 5) */
+    double k_row, gap, fy, l;
+} bolt_law;
+enum { BOLT_SLACK, BOLT_SPRING, BOLT_YIELD };
+
+/* Order k of the bolt's moment: the tension times the lever l cos(theta/2)
+ * (l when small). A spring's k (2 l sin(theta/2) - gap) l cos(theta/2) is
+ * k l (l sin theta - gap cos(theta/2)). cos and sin of the half angle at
+ * order k + 1 are formed here, from theta' up to order k. */
+static double bolt_order(const consts *K, const bolt_law *B, series *s, int k)
+{
+    if (B->kind == BOLT_SLACK)
+        return 0;
+    if (K->small) {
+        if (B->kind == BOLT_YIELD)
+            return k == 0 ? B->fy * B->l : 0;
+        return B->k_row * B->l * (B->l * s->T[k] - (k == 0 ? B->gap : 0));
+    }
+    double ac = 0, as = 0;
+    for (int j = 0; j <= k; j++) {
+        ac += O_(s, j) * s->C2[k - j];
+        as += O_(s, j) * s->S2[k - j];
+    }
+    s->S2[k + 1] = 0.5 * ac * inv[k + 1];
+    s->C2[k + 1] = -0.5 * as * inv[k + 1];
+    if (B->kind == BOLT_YIELD)
+        return B->fy * B->l * s->C2[k];
+    return B->k_row * B->l * (B->l * S_(s, k) - B->gap * s->C2[k]);
+}
+
+static void bolt_law_of(const rb_sys *S, const rb_disc *D, double th0, bolt_law *B,
+                        series *s)
+{
+    B->kind = D->stage == RB_STAGE_YIELD ? BOLT_YIELD
+              : D->stage == RB_STAGE_HELD && !S->bolt->rigid_stop ? BOLT_SPRING
+                                                                  : BOLT_SLACK;
+    B->l = S->l;
+    B->fy = S->d.fy_row_n;
+    B->k_row = B->kind == BOLT_SPRING ? S->bolt->spring_npm(S) : 0;
+    B->gap = D->gap[rb_row_of_side(D->side)];
+    if (B->kind != BOLT_SLACK) {
+        s->C2[0] = cos(0.5 * th0);
+        s->S2[0] = sin(0.5 * th0);
     }
 }
 
@@ -183,17 +263,35 @@ static double scaled(const series *s, int k, double hk, const double *tol)
     return (ab > cd ? ab : cd) * hk + 0.0 * (a + b + c + d);
 }
 
+/* The floor's series is formed to a first guess of the order a step
+ * needs, and again to the largest only when a step goes past it: its terms
+ * do not depend on how many are asked for, and through a building (two
+ * divisions a term) the whole RB_TAYLOR_MAX + 2 were a sixth of a step. */
+#define RB_X_FIRST 16
+
+/* The mirrored floor's series to order n into s->X, zeros past a
+ * polynomial's degree; returns the order up to which s->X holds the
+ * motion (all of it for a polynomial). */
+static int floor_series(const rb_motion *m, double t0, double sgn, int n, series *s)
+{
+    s->xd = rb_motion_taylor(m, t0, n, s->X);
+    for (int k = 0; k <= s->xd; k++)
+        s->X[k] *= sgn;
+    for (int k = n + 1; k < NT; k++)
+        s->X[k] = 0;
+    return s->xd < n ? NT : n;
+}
+
 double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double *y0,
                       double h_want, const double *atol, double rtol, rb_taylor *ts)
 {
     consts K;
     series s;
+    bolt_law B;
     double sgn = D->side < 0 ? -1.0 : 1.0, tol[RB_NY];
-    int rocking = D->stage == RB_STAGE_UPLIFT;
+    int rocking = rb_dyn_rocking(S, D);
     load_consts(S, &K);
-    s.xd = rb_motion_taylor(S->motion, t0, RB_TAYLOR_MAX + 1, s.X);
-    for (int k = 0; k <= s.xd; k++) /* the rest are zeros */
-        s.X[k] *= sgn;
+    int xn = floor_series(S->motion, t0, sgn, RB_X_FIRST, &s);
     s.U[0] = sgn * y0[RB_Y_U];
     s.V[0] = sgn * y0[RB_Y_UD];
     s.T[0] = rocking ? sgn * y0[RB_Y_TH] : D->stage == RB_STAGE_HELD ? D->theta_hold : 0;
@@ -201,6 +299,7 @@ double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double
     C_(&s, 0) = s.T[0] == 0 ? 1 : cos(s.T[0]);
     S_(&s, 0) = s.T[0] == 0 ? 0 : sin(s.T[0]);
     s.CSO[0][LANES] = 0;
+    bolt_law_of(S, D, s.T[0], &B, &s);
     /* reciprocals: the test runs once per order */
     for (int i = RB_Y_U; i <= RB_Y_THD; i++)
         tol[i] = 1 / (atol[i] + rtol * fabs(y0[i]));
@@ -209,8 +308,11 @@ double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double
     int n = 0;
     for (int k = 0;; k++) {
         double udd, thdd = 0;
+        /* order k reads the floor to order k, and the step's end to n */
+        if (k + 1 > xn)
+            xn = floor_series(S->motion, t0, sgn, RB_TAYLOR_MAX + 1, &s);
         if (rocking)
-            rocking_order(&K, &s, k, &udd, &thdd);
+            rocking_order(&K, &s, k, bolt_order(&K, &B, &s, k), &udd, &thdd);
         else {
             udd = still_order(&K, &s, k);
             C_(&s, k + 1) = S_(&s, k + 1) = s.Q[k] = 0;

@@ -1,6 +1,7 @@
 /* Internal: one step of the Taylor-series integrator, for the stages whose
- * equations are polynomial in U, U', theta' and in cos theta, sin theta
- * (stages 1, 2 and 4 with rigid bolts, large and small formulations).
+ * equations are polynomial in U, U', theta' and in cos theta, sin theta and
+ * of the half angle (stages 1, 2 and 4 with rigid rows; 1, 2, 4 and 5 with
+ * rows that are springs in the chord; large and small formulations).
  *
  * The floor acceleration between two breaks is a polynomial (a sampled
  * record is linear between samples) or a sine, so the solution over a step

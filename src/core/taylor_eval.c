@@ -2,6 +2,7 @@
  * output), what rb_dyn_rhs would give there, and roots of the rates and of
  * the angle by Newton's method on a series and its derivative series. */
 #include <math.h>
+#include "bolt.h"
 #include "taylor.h"
 
 /* Horner on components [0, m) side by side: independent chains in local
@@ -109,7 +110,7 @@ void rb_taylor_aux(const rb_sys *S, const rb_disc *D, const rb_taylor *ts, const
 {
     const rb_derived *d = &S->d;
     double sgn = D->side < 0 ? -1.0 : 1.0;
-    int rocking = D->stage == RB_STAGE_UPLIFT;
+    int rocking = ts->rocking;
     a->x = v[RB_TS_X];
     a->udd = sgn * v[RB_TS_UDD];
     a->thdd = sgn * v[RB_TS_THDD];
@@ -125,7 +126,11 @@ void rb_taylor_aux(const rb_sys *S, const rb_disc *D, const rb_taylor *ts, const
     a->p_input = xm * (in_U * ud + in_th * thd);
     a->p_coupling = d->Nstar * (d->g * (small ? th : sn) - S->b * thd * thd) * ud;
     a->bolt_force = 0;
-    if (D->stage == RB_STAGE_HELD) {
+    if (D->stage == RB_STAGE_YIELD)
+        a->bolt_force = d->fy_row_n;
+    else if (D->stage == RB_STAGE_HELD && rocking)
+        a->bolt_force = S->bolt->tension(S, D, th);
+    else if (D->stage == RB_STAGE_HELD) {
         double Qth = small ? xm * in_th - d->W * d->R * (d->alpha - th)
                            : xm * in_th - d->W * (S->b * c - S->h * sn);
         a->bolt_force = (Qth - d->Fstar * a->udd) / ts->lever_hold;
@@ -140,7 +145,7 @@ void rb_taylor_end(const rb_sys *S, const rb_disc *D, const rb_taylor *ts, doubl
     for (int i = 0; i < RB_NY; i++)
         y1[i] = v[state_series[i]];
     rb_taylor_aux(S, D, ts, v, a);
-    int rocking = D->stage == RB_STAGE_UPLIFT;
+    int rocking = ts->rocking;
     f1[RB_Y_U] = v[RB_TS_UD];
     f1[RB_Y_UD] = v[RB_TS_UDD];
     f1[RB_Y_TH] = rocking ? v[RB_TS_THD] : 0;

@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "rockbolt/aci17.h"
+#include "bolt.h"
 #include "solver.h"
 
 static void note_displacements(rb_solver *sv, const double *y)
@@ -204,6 +205,10 @@ void rb_track_interval(rb_solver *sv, const rb_rk_step *st, double ta, double tb
 {
     double prev[RB_NY] = {0}, cur[RB_NY] = {0}, y[RB_NY] = {0};
     int n = st->n_sub;
+    /* against a taut spring the bolt force peaks where theta' turns, which
+     * is read there rather than by the parabola through the check points */
+    int spring = st->is_taylor && sv->disc.stage == RB_STAGE_HELD
+                 && !sv->sys.bolt->rigid_stop;
     if (ta == st->t0)
         memcpy(prev, st->y0, sizeof prev);
     else
@@ -228,9 +233,14 @@ void rb_track_interval(rb_solver *sv, const rb_rk_step *st, double ta, double tb
              * its zero, so the displacement there stays within this bound */
             double bound = fmax(fabs(prev[pc]), fabs(cur[pc]))
                            + (t1 - t0) * (fabs(prev[c]) + fabs(cur[c]));
-            if (bound > (c == RB_Y_UD ? sv->res->max_u_m : sv->res->max_theta_rad)) {
-                rb_rk_dense_state(st, dense_root(st, c, t0, t1, prev[c], cur[c]), y);
-                note_displacements(sv, y);
+            int turn = spring && c == RB_Y_THD;
+            if (turn || bound > (c == RB_Y_UD ? sv->res->max_u_m : sv->res->max_theta_rad)) {
+                double tr = dense_root(st, c, t0, t1, prev[c], cur[c]);
+                rb_rk_dense_state(st, tr, y);
+                if (turn)
+                    rb_track_point(sv, tr, y);
+                else
+                    note_displacements(sv, y);
             }
         }
         if (j < n && st->is_taylor) {

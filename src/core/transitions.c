@@ -271,6 +271,14 @@ static void release(rb_solver *sv)
     if (sv->sys.bolt->rigid_stop) {
         sv->y[RB_Y_TH] = D->side * D->theta_hold;
         sv->y[RB_Y_THD] = 0;
+    } else {
+        /* a spring goes slack where the chord is the gap, which is the
+         * contact angle; on it exactly, stage 2's contact guard starts at
+         * 0 and is nudged, so that a dip and a new contact within one
+         * check interval still reads as a crossing (a rounding step
+         * past it read as already in contact, and the plate went on to
+         * overturn through the row) */
+        sv->y[RB_Y_TH] = D->side * D->contact[row];
     }
     if (D->gap[row] == 0)
         come_to_rest(sv);
@@ -360,10 +368,10 @@ int rb_transition_immediate(rb_solver *sv)
     const rb_sys *S = &sv->sys;
     rb_disc *D = &sv->disc;
     if (D->stage == RB_STAGE_FIXED) {
-        double up = rb_dyn_uplift_guard(S, sv->t, sv->y, 1);
-        double dn = rb_dyn_uplift_guard(S, sv->t, sv->y, -1);
-        if (up > 0 || dn > 0) {
-            rb_transition(sv, up > 0 ? G_UP_POS : G_UP_NEG);
+        double g[2];
+        rb_dyn_uplift_guards(S, sv->t, sv->y, g);
+        if (g[0] > 0 || g[1] > 0) {
+            rb_transition(sv, g[0] > 0 ? G_UP_POS : G_UP_NEG);
             return 1;
         }
         return 0;
