@@ -53,6 +53,12 @@ rb_status rb_fragility_bootstrap(const double *capacity, const int *censored, si
 
 /* ---- A case's fragility (rb_run_fragility, rockbolt/run.h) ------------ */
 
+/* The bootstrap's resamples in `rockbolt fragility` and `batch --fragility`,
+ * which must agree to give the same interval. */
+#define RB_FRAGILITY_RESAMPLES 1000
+/* The level of its interval of the median (5th to 95th percentile). */
+#define RB_FRAGILITY_INTERVAL 0.9
+
 typedef enum {
     RB_LIMIT_FIRST_YIELD = 0, /* a bolt row yields or reaches Fy */
     RB_LIMIT_USAGE,           /* toughness usage reaches the case's limit

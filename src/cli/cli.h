@@ -49,6 +49,10 @@ typedef struct {
  * what is wrong. Strings in o point into argv. */
 rb_exit rb_cli_args_parse(int argc, char **argv, rb_cli_opts *o);
 
+/* --seed N of fragility and batch --fragility: a whole number that fits
+ * 64 bits; RB_EXIT_USAGE after printing what is wrong. */
+rb_exit rb_cli_take_seed(const char *v, unsigned long long *out);
+
 /* --sandbox DIR of check, design and batch: confine every input to DIR
  * (rockbolt/sandbox.h) before anything is read. RB_EXIT_USAGE after
  * printing why when DIR is not a directory. NULL: nothing to do. */

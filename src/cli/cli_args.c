@@ -27,6 +27,20 @@ static rb_exit take_value(const char *name, const char *v, const char **dst)
     return RB_EXIT_PASS;
 }
 
+rb_exit rb_cli_take_seed(const char *v, unsigned long long *out)
+{
+    char *end;
+    errno = 0;
+    unsigned long long n = strtoull(v, &end, 10);
+    if (end == v || *end || errno || v[0] == '-') {
+        rb_cli_error(NULL, NULL, "option '--seed' needs a whole number from 0 to "
+                     "18446744073709551615 (got '%s')", v);
+        return RB_EXIT_USAGE;
+    }
+    *out = n;
+    return RB_EXIT_PASS;
+}
+
 /* -j N / --threads N: a whole number from 1 to 1024. */
 static rb_exit take_threads(const char *v, rb_cli_opts *o)
 {
@@ -108,18 +122,8 @@ static rb_exit take_option(int c, const rb_cli_getopt *g, rb_cli_opts *o)
         return take_value(g->name, g->arg, &o->sweep_csv_path);
     case OPT_CSV:
         return take_value(g->name, g->arg, &o->csv_path);
-    case OPT_SEED: {
-        char *end;
-        errno = 0;
-        unsigned long long v = strtoull(g->arg, &end, 10);
-        if (end == g->arg || *end || errno || g->arg[0] == '-') {
-            rb_cli_error(NULL, NULL, "option '--seed' needs a whole number from 0 to "
-                         "18446744073709551615 (got '%s')", g->arg);
-            return RB_EXIT_USAGE;
-        }
-        o->seed = v;
-        return RB_EXIT_PASS;
-    }
+    case OPT_SEED:
+        return rb_cli_take_seed(g->arg, &o->seed);
     case 'j':
         return take_threads(g->arg, o);
     case 'q':

@@ -11,8 +11,6 @@
 #include "rockbolt/plot.h"
 #include "rockbolt/run.h"
 
-#define RB_FRAGILITY_BOOTSTRAP 1000
-
 typedef struct {
     const rb_case *c;
     const rb_case_fragility *f;
@@ -97,7 +95,7 @@ static rb_exit compute(const rb_cli_opts *o, const rb_case *c, rb_case_fragility
     rb_diag d;
     rb_diag_clear(&d);
     rb_cli_progress_start(&line, o->quiet);
-    rb_status st = rb_run_fragility(c, o->threads, o->seed, RB_FRAGILITY_BOOTSTRAP, f, &d,
+    rb_status st = rb_run_fragility(c, o->threads, o->seed, RB_FRAGILITY_RESAMPLES, f, &d,
                                     line.enabled ? rb_cli_progress_design : NULL, &line);
     if (line.enabled && line.shown)
         fputs("\r\033[K", stderr);

@@ -7,3 +7,11 @@ if(Python3_Interpreter_FOUND)
   set_tests_properties(fragility_cli PROPERTIES LABELS fragility
       WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} TIMEOUT 600)
 endif()
+# batch --fragility against fragility, row by row, and its determinism
+if(Python3_Interpreter_FOUND)
+  add_test(NAME fragility_batch_property
+           COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/tests/fragility/batch_property.py
+                   $<TARGET_FILE:rockbolt> ${CMAKE_CURRENT_BINARY_DIR}/fragility-batch-scratch)
+  set_tests_properties(fragility_batch_property PROPERTIES LABELS fragility
+      WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} TIMEOUT 600)
+endif()
