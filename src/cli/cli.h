@@ -7,6 +7,7 @@
 #define RB_CLI_H
 
 #include <getopt.h>
+#include "rockbolt/plot.h"
 #include "rockbolt/rockbolt.h"
 
 /* Exit codes, as documented in --help and README.md. */
@@ -43,6 +44,8 @@ typedef struct {
     const char *help_command; /* help: the command asked about, or NULL */
     const char *csv_path;     /* fragility: --csv FILE, or NULL */
     unsigned long long seed;  /* fragility: --seed N of the bootstrap */
+    rb_plot_scale x_scale;    /* fragility: --x-scale of the figure (log) */
+    int x_scale_given;
 } rb_cli_opts;
 
 /* Parse argv into o. Returns RB_EXIT_PASS, or RB_EXIT_USAGE after printing

@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "cli.h"
+#include "rockbolt/plot.h"
 #include "rockbolt/sandbox.h"
 
 /* Store the value of a FILE option, once, not empty. */
@@ -56,7 +57,7 @@ static rb_exit take_threads(const char *v, rb_cli_opts *o)
 }
 
 enum { OPT_JSON = 256, OPT_TEXT, OPT_HISTORY, OPT_SVG, OPT_HTML, OPT_SANDBOX,
-       OPT_SWEEP_CSV, OPT_CSV, OPT_SEED };
+       OPT_SWEEP_CSV, OPT_CSV, OPT_SEED, OPT_X_SCALE };
 
 /* Every long option once, with the commands that take it: each command's
  * table is drawn from this one, so an option means the same everywhere. */
@@ -77,6 +78,7 @@ static const struct {
     {{"sandbox", required_argument, NULL, OPT_SANDBOX}, CHECK | DESIGN | FRAGILITY},
     {{"sweep-csv", required_argument, NULL, OPT_SWEEP_CSV}, DESIGN},
     {{"seed", required_argument, NULL, OPT_SEED}, FRAGILITY},
+    {{"x-scale", required_argument, NULL, OPT_X_SCALE}, FRAGILITY},
     {{"threads", required_argument, NULL, 'j'}, DESIGN | FRAGILITY},
     {{"quiet", no_argument, NULL, 'q'}, CHECK | DESIGN | FRAGILITY},
     {{"help", no_argument, NULL, 'h'}, CHECK | DESIGN | FRAGILITY | INIT},
@@ -124,6 +126,21 @@ static rb_exit take_option(int c, const rb_cli_getopt *g, rb_cli_opts *o)
         return take_value(g->name, g->arg, &o->csv_path);
     case OPT_SEED:
         return rb_cli_take_seed(g->arg, &o->seed);
+    case OPT_X_SCALE: {
+        int v;
+        if (o->x_scale_given) {
+            rb_cli_error(NULL, NULL, "option '--x-scale' given twice");
+            return RB_EXIT_USAGE;
+        }
+        if (!rb_enum_parse(rb_plot_scale_names, g->arg, &v)) {
+            rb_cli_error(NULL, NULL, "option '--x-scale' needs log or linear (got '%s')",
+                         g->arg);
+            return RB_EXIT_USAGE;
+        }
+        o->x_scale = (rb_plot_scale)v;
+        o->x_scale_given = 1;
+        return RB_EXIT_PASS;
+    }
     case 'j':
         return take_threads(g->arg, o);
     case 'q':
@@ -175,7 +192,8 @@ static rb_exit parse_rest(int argc, char **argv, rb_cli_opts *o)
             rb_cli_error(NULL, NULL, "option '%s' needs %s", g.name,
                          strcmp(g.name, "-j") == 0 || strcmp(g.name, "--threads") == 0
                          ? "a number of threads"
-                         : strcmp(g.name, "--seed") == 0 ? "a whole number" : "a file name");
+                         : strcmp(g.name, "--seed") == 0 ? "a whole number"
+                         : strcmp(g.name, "--x-scale") == 0 ? "log or linear" : "a file name");
             return RB_EXIT_USAGE;
         }
         if (c == 'h') {

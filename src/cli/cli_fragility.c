@@ -15,13 +15,14 @@ typedef struct {
     const rb_case *c;
     const rb_case_fragility *f;
     const char *title;
+    rb_plot_scale x_scale;
 } outputs;
 
 /* --html: the table and the figure in one page */
 static rb_status page(const outputs *o, char **out, rb_diag *d)
 {
     char *svg = NULL, *text = rb_fragility_render_text(o->c, o->f);
-    rb_status st = text ? rb_plot_fragility_svg(o->f, o->title, &svg, d) : RB_ERR_NOMEM;
+    rb_status st = text ? rb_plot_fragility_svg(o->f, o->title, o->x_scale, &svg, d) : RB_ERR_NOMEM;
     if (st == RB_OK) {
         const char *svgs[1] = {svg};
         st = rb_plot_html_page(NULL, o->title, text, svgs, 1, out, d);
@@ -44,7 +45,7 @@ static rb_status fill(void *ctx, size_t i, FILE *fp, rb_diag *d)
     else if (strcmp(opt, "--csv") == 0)
         text = rb_fragility_render_csv(o->c, o->f);
     else if (strcmp(opt, "--svg") == 0)
-        st = rb_plot_fragility_svg(o->f, o->title, &text, d);
+        st = rb_plot_fragility_svg(o->f, o->title, o->x_scale, &text, d);
     else
         st = page(o, &text, d);
     if (st == RB_OK && !text)
@@ -122,7 +123,7 @@ rb_exit rb_cli_fragility_run(const rb_cli_opts *o)
         e = compute(o, &c, &f);
     if (e == RB_EXIT_PASS) {
         snprintf(title, sizeof title, "Fragility of %.200s", c.name ? c.name : "the case");
-        outputs out = {&c, &f, title};
+        outputs out = {&c, &f, title, o->x_scale};
         const void *cx[2] = {&p, &out};
         rb_diag d;
         rb_diag_clear(&d);
