@@ -96,4 +96,14 @@ typedef struct {
 
 void rb_case_fragility_free(rb_case_fragility *f);
 
+/* A case's fragility at each gap ratio of a sweep
+ * (rb_run_fragility_gap_sweep, rockbolt/run.h). */
+typedef struct {
+    double *gap_ratios;             /* owned, as the caller gave them */
+    rb_case_fragility *points;      /* owned, one per gap ratio */
+    size_t n_points;
+} rb_fragility_sweep;
+
+void rb_fragility_sweep_free(rb_fragility_sweep *s);
+
 #endif

@@ -108,4 +108,13 @@ extern const rb_enum_name rb_plot_scale_names[];
 rb_status rb_plot_fragility_svg(const rb_case_fragility *f, const char *title,
                                 rb_plot_scale x_scale, char **out, rb_diag *diag);
 
+/* The fragility against the gap ratio (rb_run_fragility_gap_sweep): each
+ * fitted limit state's probability at the case's level (top) and its
+ * median in g on a log axis (bottom, the case's level dashed) at each gap
+ * ratio, a point at each; a state not fitted at a ratio breaks its curves.
+ * title (may be NULL) heads it. RB_ERR_INVALID without points,
+ * RB_ERR_NOMEM. */
+rb_status rb_plot_fragility_sweep_svg(const rb_fragility_sweep *s, const char *title,
+                                      char **out, rb_diag *diag);
+
 #endif

@@ -9,6 +9,7 @@
 #include <getopt.h>
 #include "rockbolt/plot.h"
 #include "rockbolt/rockbolt.h"
+#include "rockbolt/run.h"
 
 /* Exit codes, as documented in --help and README.md. */
 typedef enum {
@@ -46,6 +47,9 @@ typedef struct {
     unsigned long long seed;  /* fragility: --seed N of the bootstrap */
     rb_plot_scale x_scale;    /* fragility: --x-scale of the figure (log) */
     int x_scale_given;
+    const char *sweep_gap;    /* fragility: --sweep-gap FROM:TO:STEP, or NULL */
+    double gap_ratios[RB_FRAGILITY_SWEEP_MAX_POINTS]; /* its grid */
+    size_t n_gap_ratios;
 } rb_cli_opts;
 
 /* Parse argv into o. Returns RB_EXIT_PASS, or RB_EXIT_USAGE after printing

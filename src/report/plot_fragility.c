@@ -19,8 +19,8 @@
 #define PANEL_H 420.0
 #define CURVE_POINTS 200
 
-static const char *const colours[RB_N_LIMITS] = {"#ff7f0e", "#d62728", "#7f7f7f",
-                                                 "#1f77b4"};
+const char *const rb_plot_limit_colours[RB_N_LIMITS] = {"#ff7f0e", "#d62728", "#7f7f7f",
+                                                       "#1f77b4"};
 
 static int cmp(const void *a, const void *b)
 {
@@ -61,7 +61,7 @@ static void points(rb_strbuf *b, const rb_panel *p, const rb_case_fragility *f, 
     for (size_t i = 0; i < n; i++)
         rb_strbuf_printf(b, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"3.5\" fill=\"%s\" "
                          "data-limit-state=\"%s\"/>\n", rb_panel_x(p, cap[i]),
-                         rb_panel_y(p, (i + 0.5) / (double)f->n_motions), colours[k],
+                         rb_panel_y(p, (i + 0.5) / (double)f->n_motions), rb_plot_limit_colours[k],
                          rb_enum_str(rb_limit_state_names, k));
 }
 
@@ -117,11 +117,11 @@ rb_status rb_plot_fragility_svg(const rb_case_fragility *f, const char *title,
                             : p.xa.hi * (i + 1) / CURVE_POINTS;
             y[i] = rb_fragility_prob(&f->fit[k], x[i] * f->g_mps2);
         }
-        rb_series_path(&b, &p, x, y, CURVE_POINTS, 1, colours[k], NULL,
+        rb_series_path(&b, &p, x, y, CURVE_POINTS, 1, rb_plot_limit_colours[k], NULL,
                        rb_enum_str(rb_limit_state_names, k));
         points(&b, &p, f, k, cap);
         names[n_leg] = rb_enum_str(rb_limit_state_names, k);
-        cols[n_leg++] = colours[k];
+        cols[n_leg++] = rb_plot_limit_colours[k];
     }
     rb_panel_legend(&b, &p, names, cols, n_leg);
     rb_svg_close(&b);

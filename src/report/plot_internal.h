@@ -97,6 +97,11 @@ void rb_series_path(rb_strbuf *b, const rb_panel *p, const double *x,
 int rb_series_range(const double *y, size_t n, double scale, double *lo,
                     double *hi);
 
+/* ---- Fragility figures ----------------------------------------------------- */
+
+/* The colour of each limit state (rb_limit_state), the same in every figure. */
+extern const char *const rb_plot_limit_colours[RB_N_LIMITS];
+
 /* ---- Common SVG pieces ---------------------------------------------------- */
 
 /* <svg ...> with its size and the shared font, and a white background. */

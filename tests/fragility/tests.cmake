@@ -15,3 +15,12 @@ if(Python3_Interpreter_FOUND)
   set_tests_properties(fragility_batch_property PROPERTIES LABELS fragility
       WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} TIMEOUT 600)
 endif()
+# --sweep-gap: each point the fragility of the case with that gap ratio;
+# the figure; bad ranges refused
+if(Python3_Interpreter_FOUND)
+  add_test(NAME fragility_sweep_gap
+           COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/tests/fragility/sweep.py
+                   $<TARGET_FILE:rockbolt> ${CMAKE_CURRENT_BINARY_DIR}/fragility-sweep-scratch)
+  set_tests_properties(fragility_sweep_gap PROPERTIES LABELS fragility
+      WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} TIMEOUT 600)
+endif()
