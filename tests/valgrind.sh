@@ -38,6 +38,13 @@ printf 'tag,base,peak\nrow,%s,0.3 A*\n' "$PWD/tests/verdicts/bases/list-records.
 run "batch overrides" "$build/rockbolt" batch "$out/l.csv" --json "$out/l.json"
 run "design" "$build/rockbolt" design cases/reference-design.yaml -j 2 \
     --json "$out/d.json" --html "$out/d.html" --sweep-csv "$out/s.csv"
+# a fragility per case in batch, read back by merge; a sweep over gap ratios
+run "batch fragility" "$build/rockbolt" batch tests/batch/list.csv tests/batch/cases -j 2 \
+    --fragility --json "$out/f.json" --csv "$out/f.csv" --junit "$out/f.xml"
+run "merge fragility" "$build/rockbolt" merge "$out/f.json" --json "$out/fm.json"
+run "fragility sweep" "$build/rockbolt" fragility tests/batch/cases/c-suite.yaml -j 2 \
+    --sweep-gap 0:0.01:0.005 --json "$out/g.json" --csv "$out/g.csv" --svg "$out/g.svg" \
+    --html "$out/g.html"
 for h in case at2 cosmos columns; do
     [ -x "$build/fuzz_replay_$h" ] || continue
     run "fuzz seeds $h" "$build/fuzz_replay_$h" tests/fuzz/seeds/$h

@@ -14,8 +14,10 @@
 #define ROCKBOLT_BATCH_H
 
 #include <stddef.h>
+#include <stdint.h>
 #include "rockbolt/status.h"
 #include "rockbolt/case_overrides.h"
+#include "rockbolt/fragility.h"
 
 /* Bumped when a field of the JSON summary is renamed, removed or changes
  * meaning. */
@@ -92,6 +94,25 @@ typedef struct {
     int anchor_mode;
 } rb_batch_result;
 
+/* One limit state of a case's fragility (batch --fragility), as
+ * rb_run_fragility gives it; the numbers are its own doubles. */
+typedef struct {
+    int fitted;           /* 0: fewer than two motions reached it */
+    double median_mps2, beta;
+    double median_lo_mps2, median_hi_mps2; /* 90 % bootstrap interval; NaN
+                             when too few resamples could be fitted */
+    double p_at_level;    /* at the case's own level */
+    size_t reached;       /* motions that reached it within the scan */
+} rb_batch_limit;
+
+/* A case's fragility over its motions (rockbolt/fragility.h). */
+typedef struct {
+    char *error;          /* owned: why the case has none (it has no bolts);
+                             NULL when it was computed */
+    double g_mps2, level_mps2; /* the case's g and own level (motion 1's peak) */
+    rb_batch_limit limits[RB_N_LIMITS];
+} rb_batch_fragility;
+
 typedef struct {
     size_t index;         /* position in the whole work list */
     char *source;         /* owned */
@@ -107,6 +128,8 @@ typedef struct {
     size_t n_errors;      /* how many the load reported */
     rb_batch_result *runs;   /* owned, one per motion (none when unreadable) */
     size_t n_runs;
+    rb_batch_fragility *fragility; /* owned: with --fragility, for a case
+                             that was solved; else NULL */
 } rb_batch_case;
 
 /* "sha256:" and 64 hex digits, with the NUL. */
@@ -119,6 +142,8 @@ typedef struct {
 
 typedef struct {
     int design;           /* design factor and gap were asked for */
+    int fragility;        /* each case's fragility was asked for */
+    uint64_t seed;        /* of its bootstrap */
     size_t total;         /* items in the whole work list */
     size_t shard, n_shards; /* 1-based shard; 0/0 for the whole list */
     rb_batch_case *cases; /* owned, by index */
@@ -161,6 +186,9 @@ typedef struct {
 typedef struct {
     int n_threads;            /* <= 0: one per online processor */
     int design;               /* also the design factor and recommended gap */
+    int fragility;            /* also each case's fragility (rb_run_fragility,
+                                 RB_FRAGILITY_RESAMPLES resamples) */
+    uint64_t seed;            /* of the fragility's bootstrap */
     const char *reports_dir;  /* NULL: no per-case reports; else one JSON
                                  and one text report per case */
     const char *report_template; /* text of report.txt; needed with reports */
@@ -236,8 +264,8 @@ rb_status rb_batch_summary_parse(const char *text, rb_batch_summary *out,
 
 /* Merge the summaries of the shards of one work list into out, which then
  * renders byte for byte as a single run's. Every shard must come from the
- * same list (same total and design flag) and together they must hold each
- * index once. RB_ERR_INVALID with the reason in diag otherwise. */
+ * same list (same total, design and fragility flags and seed) and
+ * together they must hold each index once. RB_ERR_INVALID with the reason in diag otherwise. */
 rb_status rb_batch_merge(const rb_batch_summary *shards, size_t n,
                          rb_batch_summary *out, rb_diag *diag);
 

@@ -53,6 +53,12 @@ rb_status rb_fragility_bootstrap(const double *capacity, const int *censored, si
 
 /* ---- A case's fragility (rb_run_fragility, rockbolt/run.h) ------------ */
 
+/* The bootstrap's resamples in `rockbolt fragility` and `batch --fragility`,
+ * which must agree to give the same interval. */
+#define RB_FRAGILITY_RESAMPLES 1000
+/* The level of its interval of the median (5th to 95th percentile). */
+#define RB_FRAGILITY_INTERVAL 0.9
+
 typedef enum {
     RB_LIMIT_FIRST_YIELD = 0, /* a bolt row yields or reaches Fy */
     RB_LIMIT_USAGE,           /* toughness usage reaches the case's limit
@@ -89,5 +95,15 @@ typedef struct {
 } rb_case_fragility;
 
 void rb_case_fragility_free(rb_case_fragility *f);
+
+/* A case's fragility at each gap ratio of a sweep
+ * (rb_run_fragility_gap_sweep, rockbolt/run.h). */
+typedef struct {
+    double *gap_ratios;             /* owned, as the caller gave them */
+    rb_case_fragility *points;      /* owned, one per gap ratio */
+    size_t n_points;
+} rb_fragility_sweep;
+
+void rb_fragility_sweep_free(rb_fragility_sweep *s);
 
 #endif

@@ -23,6 +23,7 @@
 #include "rockbolt/report.h"
 #include "rockbolt/fragility.h"
 #include "rockbolt/design.h"
+#include "rockbolt/names.h"
 
 /* Series of the time-history figure, top panel to bottom, in the order
  * their <path> elements appear: floor acceleration; theta; U; left and
@@ -88,12 +89,33 @@ rb_status rb_plot_html_page(const rb_report *rep, const char *title,
 rb_status rb_plot_report_html(const rb_report *rep, const char *text_report,
                               char **out, rb_diag *diag);
 
+/* The scale of an axis that a caller may choose. */
+typedef enum {
+    RB_PLOT_SCALE_LOG = 0,
+    RB_PLOT_SCALE_LINEAR
+} rb_plot_scale;
+
+/* "log", "linear": the one name table of rb_plot_scale (--x-scale). */
+extern const rb_enum_name rb_plot_scale_names[];
+
 /* The fragility figure of a case: each fitted limit state's lognormal
- * curve against the peak floor acceleration in g, the motions' capacities
- * as points at their empirical fractions, the case's level dashed. title
- * (may be NULL) heads it. RB_ERR_INVALID without motions, RB_ERR_NOMEM. */
-rb_status rb_plot_fragility_svg(const rb_case_fragility *f, const char *title, char **out,
-                                rb_diag *diag);
+ * curve against the peak floor acceleration in g on an x axis of the
+ * given scale (on a log axis a lognormal curve is a symmetric S, and
+ * states a hundred times apart are all readable), the motions'
+ * capacities as points at their empirical fractions, the case's level
+ * dashed. title (may be NULL) heads it. RB_ERR_INVALID without motions,
+ * RB_ERR_NOMEM. */
+rb_status rb_plot_fragility_svg(const rb_case_fragility *f, const char *title,
+                                rb_plot_scale x_scale, char **out, rb_diag *diag);
+
+/* The fragility against the gap ratio (rb_run_fragility_gap_sweep): each
+ * fitted limit state's probability at the case's level (top) and its
+ * median in g on a log axis (bottom, the case's level dashed) at each gap
+ * ratio, a point at each; a state not fitted at a ratio breaks its curves.
+ * title (may be NULL) heads it. RB_ERR_INVALID without points,
+ * RB_ERR_NOMEM. */
+rb_status rb_plot_fragility_sweep_svg(const rb_fragility_sweep *s, const char *title,
+                                      char **out, rb_diag *diag);
 
 /* The response spectra of a case's motions (rb_run_spectra): absolute
  * acceleration in g against frequency on a logarithmic axis, each target

@@ -221,5 +221,13 @@ char *rb_fragility_render_csv(const rb_case *c, const rb_case_fragility *f);
 char *rb_spectra_render_text(const rb_case *c, const rb_case_spectra *s);
 char *rb_spectra_render_json(const rb_case *c, const rb_case_spectra *s);
 char *rb_spectra_render_csv(const rb_case *c, const rb_case_spectra *s);
+/* The same for a sweep over gap ratios (rb_run_fragility_gap_sweep): text
+ * (a line per gap ratio: each limit state's median in g, beta and
+ * probability at the case's level), JSON (each point's limit states as
+ * the fragility's JSON has them) and CSV (a row per gap ratio and limit
+ * state). */
+char *rb_fragility_sweep_render_text(const rb_case *c, const rb_fragility_sweep *s);
+char *rb_fragility_sweep_render_json(const rb_case *c, const rb_fragility_sweep *s);
+char *rb_fragility_sweep_render_csv(const rb_fragility_sweep *s);
 
 #endif

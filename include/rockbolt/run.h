@@ -87,5 +87,22 @@ rb_status rb_run_fragility(const rb_case *c, int n_threads, uint64_t seed, unsig
  * critical excitation). */
 rb_status rb_run_spectra(const rb_case *c, const rb_spectrum_opts *o, rb_case_spectra *out,
                          rb_diag *diag);
+/* The most gap ratios a sweep takes: each is a whole fragility. */
+#define RB_FRAGILITY_SWEEP_MAX_POINTS 100
+
+/* The fragility of c with its gap set to each of the n gap ratios (of the
+ * lever arm, as the case's gap_ratio: key sets it), one rb_run_fragility
+ * after the other; everything else, the level included, is the case's.
+ * Every ratio is checked first, as the case loader checks a gap: 0 or at
+ * least 1e-9, and one the plate can rotate through (rb_model_derive);
+ * RB_ERR_INVALID with diag->key "gap_ratio" and the ratio in the message
+ * otherwise, and for n = 0 or n > RB_FRAGILITY_SWEEP_MAX_POINTS. progress
+ * counts the searches of all the points. out is owned by the caller
+ * (rb_fragility_sweep_free, also after an error); other errors as
+ * rb_run_fragility. */
+rb_status rb_run_fragility_gap_sweep(const rb_case *c, const double *gap_ratios, size_t n,
+                                     int n_threads, uint64_t seed, unsigned n_boot,
+                                     rb_fragility_sweep *out, rb_diag *diag,
+                                     rb_design_progress_fn progress, void *ctx);
 
 #endif

@@ -208,6 +208,20 @@ void rb_batch_case_finish(rb_batch_slot *s, rb_batch_case *bc, const rb_batch_op
         bc->n_errors = 1;
         goto done;
     }
+    if (s->frag_status != RB_OK) {
+        rb_diag d;
+        rb_diag_clear(&d);
+        snprintf(d.file, sizeof d.file, "%s", bc->source);
+        d.line = bc->line;
+        snprintf(d.key, sizeof d.key, "fragility%s%.100s", s->frag_diag.key[0] ? ": " : "",
+                 s->frag_diag.key);
+        snprintf(d.msg, sizeof d.msg, "%s%s%.400s", rb_status_str(s->frag_status),
+                 s->frag_diag.msg[0] ? ": " : "", s->frag_diag.msg);
+        bc->verdict = RB_BATCH_ERROR;
+        rb_batch_case_set_error(bc, &d);
+        bc->n_errors = 1;
+        goto done;
+    }
     rb_report rep;
     rb_diag d;
     rb_diag_clear(&d);
@@ -224,6 +238,12 @@ void rb_batch_case_finish(rb_batch_slot *s, rb_batch_case *bc, const rb_batch_op
         }
     }
 done:
+    if (bc->fragility && bc->verdict != RB_BATCH_PASS && bc->verdict != RB_BATCH_FAIL) {
+        /* a case that was not solved shows its error alone */
+        free(bc->fragility->error);
+        free(bc->fragility);
+        bc->fragility = NULL;
+    }
     if (!bc->reason) {
         char buf[700];
         snprintf(buf, sizeof buf, "%s: %s", bc->verdict == RB_BATCH_UNREADABLE

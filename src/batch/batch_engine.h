@@ -17,7 +17,10 @@ typedef struct {
     rb_report_motion *rms;
     rb_status *run_status;
     rb_diag *run_diag;
-    size_t remaining;        /* runs not yet done */
+    size_t remaining;        /* runs not yet done, the fragility counting
+                                as one */
+    rb_status frag_status;   /* of the case's fragility (--fragility) */
+    rb_diag frag_diag;
     rb_record_cache *cache;  /* borrowed: the run's record cache */
 } rb_batch_slot;
 
@@ -25,6 +28,10 @@ typedef struct {
 void rb_batch_case_load(rb_batch_slot *s, const rb_batch_item *it, rb_batch_case *bc);
 /* Solve and judge motion m (and its design when asked). */
 void rb_batch_case_solve(rb_batch_slot *s, rb_batch_case *bc, size_t m, int design);
+/* The case's fragility (batch_fragility.c): rb_run_fragility on n_threads
+ * into bc->fragility; its status in s->frag_status. */
+void rb_batch_case_fragility(rb_batch_slot *s, rb_batch_case *bc, int n_threads,
+                             uint64_t seed);
 /* Conclude the case, write its reports, free s. */
 void rb_batch_case_finish(rb_batch_slot *s, rb_batch_case *bc, const rb_batch_opts *o,
                           size_t total);

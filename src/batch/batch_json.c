@@ -8,6 +8,7 @@
  * cannot be used for this: it keeps 15 digits whenever they come back
  * within a relative DBL_EPSILON, which can be an ulp off, and a mean
  * recomputed from such values then differs in its last digits. */
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -116,8 +117,38 @@ static int add_error(cJSON *o, const rb_batch_case *c)
         && add_num(e, "count", (double)c->n_errors);
 }
 
-static int add_case(cJSON *arr, const rb_batch_case *c, int design)
+/* A case's fragility in SI, under the names `rockbolt fragility --json`
+ * gives the same numbers. */
+static int add_fragility(cJSON *o, const rb_batch_fragility *f)
 {
+    cJSON *fo = cJSON_AddObjectToObject(o, "fragility"), *ls = NULL;
+    if (!fo)
+        return 0;
+    if (f->error)
+        return add_text(fo, "error", f->error) != NULL;
+    int ok = add_num(fo, "g_mps2", f->g_mps2) && add_num(fo, "level_mps2", f->level_mps2)
+        && (ls = cJSON_AddArrayToObject(fo, "limit_states")) != NULL;
+    for (int k = 0; ok && k < RB_N_LIMITS; k++) {
+        const rb_batch_limit *l = &f->limits[k];
+        cJSON *e = cJSON_CreateObject();
+        if (!e || !cJSON_AddItemToArray(ls, e))
+            return cJSON_Delete(e), 0;
+        ok = cJSON_AddStringToObject(e, "limit_state",
+                                     rb_enum_str(rb_limit_state_names, k)) != NULL
+            && cJSON_AddBoolToObject(e, "fitted", l->fitted) != NULL;
+        if (ok && l->fitted)
+            ok = add_num(e, "median_mps2", l->median_mps2) && add_num(e, "beta", l->beta)
+                && add_num(e, "median_lo_mps2", l->median_lo_mps2)
+                && add_num(e, "median_hi_mps2", l->median_hi_mps2)
+                && add_num(e, "p_at_level", l->p_at_level);
+        ok = ok && add_num(e, "reached", (double)l->reached);
+    }
+    return ok;
+}
+
+static int add_case(cJSON *arr, const rb_batch_case *c, const rb_batch_summary *s)
+{
+    int design = s->design;
     cJSON *o = cJSON_CreateObject();
     if (!o || !cJSON_AddItemToArray(arr, o))
         return cJSON_Delete(o), 0;
@@ -142,7 +173,8 @@ static int add_case(cJSON *arr, const rb_batch_case *c, int design)
     rb_batch_stat mean, max;
     rb_batch_stats(c, &mean, &max);
     return ok && runs && add_stat(o, "mean", &mean, design, 0)
-        && add_stat(o, "max", &max, design, 1);
+        && add_stat(o, "max", &max, design, 1)
+        && (!s->fragility || !c->fragility || add_fragility(o, c->fragility));
 }
 
 /* "digest": the SHA-256 of the case's object as printed without it
@@ -175,6 +207,15 @@ void rb_batch_json_head(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_
         snprintf(shard, sizeof shard, "%zu/%zu", s->shard, s->n_shards);
         ok = cJSON_AddStringToObject(root, "shard", shard) != NULL;
     }
+    if (ok && s->fragility) {
+        /* the seed as text: a JSON number keeps 53 bits of its 64 */
+        char seed[32];
+        cJSON *fr = cJSON_AddObjectToObject(root, "fragility");
+        snprintf(seed, sizeof seed, "%llu", (unsigned long long)s->seed);
+        ok = fr && cJSON_AddStringToObject(fr, "seed", seed)
+            && add_num(fr, "resamples", RB_FRAGILITY_RESAMPLES)
+            && add_num(fr, "interval", RB_FRAGILITY_INTERVAL);
+    }
     ok = ok && (counts = cJSON_AddObjectToObject(root, "counts")) != NULL
         && add_num(counts, "cases", (double)n->cases)
         && add_num(counts, "passed", (double)n->passed)
@@ -197,7 +238,7 @@ void rb_batch_json_case(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_
                         size_t pos)
 {
     cJSON *one = cJSON_CreateArray();
-    char *text = one && add_case(one, c, s->design) && add_digest(one->child)
+    char *text = one && add_case(one, c, s) && add_digest(one->child)
                  ? cJSON_Print(one->child) : NULL;
     cJSON_Delete(one);
     if (!text) {
@@ -344,11 +385,12 @@ static void rd_run(rd_ctx *r, const cJSON *o, rb_batch_result *run, int design)
 /* A case's digest must be that of the case as this writer prints it (its
  * numbers in the writer's own shortest form): a row edited by hand (a
  * verdict, a number, a name) no longer matches. dg is the file's digest. */
-static void rd_digest(rd_ctx *r, const cJSON *dg, const rb_batch_case *c, int design)
+static void rd_digest(rd_ctx *r, const cJSON *dg, const rb_batch_case *c,
+                      const rb_batch_summary *s)
 {
     char want[RB_BATCH_DIGEST_CHARS], msg[400];
     cJSON *arr = cJSON_CreateArray();
-    char *text = arr && add_case(arr, c, design)
+    char *text = arr && add_case(arr, c, s)
         ? cJSON_PrintUnformatted(cJSON_GetArrayItem(arr, 0)) : NULL;
     snprintf(msg, sizeof msg, "case %zu (tag '%.100s') ", c->index, c->tag ? c->tag : "?");
     if (!text) {
@@ -369,8 +411,71 @@ static void rd_digest(rd_ctx *r, const cJSON *dg, const rb_batch_case *c, int de
     cJSON_Delete(arr);
 }
 
-static void rd_case(rd_ctx *r, const cJSON *o, rb_batch_case *c, int design)
+/* A number, or NaN for the null that a non-finite one was written as. */
+static double rd_num_or_nan(rd_ctx *r, const cJSON *o, const char *k)
 {
+    int has;
+    double v = rd_opt(r, o, k, &has);
+    return has ? v : (double)NAN;
+}
+
+static void rd_limit(rd_ctx *r, const cJSON *e, int k, rb_batch_limit *l)
+{
+    const cJSON *name = cJSON_GetObjectItemCaseSensitive(e, "limit_state");
+    const cJSON *fitted = cJSON_GetObjectItemCaseSensitive(e, "fitted");
+    if (!cJSON_IsString(name) || strcmp(name->valuestring,
+                                        rb_enum_str(rb_limit_state_names, k)) != 0) {
+        rd_fail(r, "limit_state", "expected first-yield, usage, overturn and lift-off, "
+                "in that order");
+        return;
+    }
+    if (!cJSON_IsBool(fitted)) {
+        rd_fail(r, "fitted", "expected true or false");
+        return;
+    }
+    l->fitted = cJSON_IsTrue(fitted);
+    if (l->fitted) {
+        l->median_mps2 = rd_num(r, e, "median_mps2");
+        l->beta = rd_num(r, e, "beta");
+        l->median_lo_mps2 = rd_num_or_nan(r, e, "median_lo_mps2");
+        l->median_hi_mps2 = rd_num_or_nan(r, e, "median_hi_mps2");
+        l->p_at_level = rd_num(r, e, "p_at_level");
+    }
+    l->reached = rd_size(r, e, "reached");
+}
+
+static void rd_fragility(rd_ctx *r, const cJSON *o, rb_batch_case *c)
+{
+    const cJSON *f = cJSON_GetObjectItemCaseSensitive(o, "fragility"), *e;
+    if (!cJSON_IsObject(f)) {
+        rd_fail(r, "fragility", "expected an object");
+        return;
+    }
+    if (!(c->fragility = calloc(1, sizeof *c->fragility))) {
+        rd_fail(r, "fragility", "out of memory");
+        return;
+    }
+    if (cJSON_GetObjectItemCaseSensitive(f, "error")) {
+        c->fragility->error = rd_str(r, f, "error");
+        return;
+    }
+    c->fragility->g_mps2 = rd_num(r, f, "g_mps2");
+    c->fragility->level_mps2 = rd_num(r, f, "level_mps2");
+    const cJSON *ls = cJSON_GetObjectItemCaseSensitive(f, "limit_states");
+    if (!cJSON_IsArray(ls) || cJSON_GetArraySize(ls) != RB_N_LIMITS) {
+        rd_fail(r, "limit_states", "expected a list of the four limit states");
+        return;
+    }
+    int k = 0;
+    cJSON_ArrayForEach(e, ls) {
+        rd_limit(r, e, k, &c->fragility->limits[k]);
+        k++;
+    }
+}
+
+static void rd_case(rd_ctx *r, const cJSON *o, rb_batch_case *c, const rb_batch_summary *s)
+{
+    int design = s->design;
     char *v;
     c->index = rd_size(r, o, "index");
     c->source = rd_str(r, o, "source");
@@ -415,6 +520,35 @@ static void rd_case(rd_ctx *r, const cJSON *o, rb_batch_case *c, int design)
     size_t m = 0;
     cJSON_ArrayForEach(it, runs)
         rd_run(r, it, &c->runs[m++], design);
+    if (s->fragility)
+        rd_fragility(r, o, c);
+}
+
+/* "fragility": {"seed": "N", "resamples", "interval"} when it was asked for. */
+static void rd_fragility_head(rd_ctx *r, const cJSON *root, rb_batch_summary *out)
+{
+    const cJSON *f = cJSON_GetObjectItemCaseSensitive(root, "fragility");
+    if (!f)
+        return;
+    const cJSON *seed = cJSON_GetObjectItemCaseSensitive(f, "seed");
+    char *end = NULL;
+    unsigned long long v = 0;
+    if (cJSON_IsString(seed) && seed->valuestring[0] >= '0' && seed->valuestring[0] <= '9') {
+        errno = 0;
+        v = strtoull(seed->valuestring, &end, 10);
+    }
+    if (!end || *end || errno) {
+        rd_fail(r, "fragility.seed", "expected the seed as a string of digits");
+        return;
+    }
+    if (rd_num(r, f, "resamples") != RB_FRAGILITY_RESAMPLES
+        || rd_num(r, f, "interval") != RB_FRAGILITY_INTERVAL) {
+        rd_fail(r, "fragility", "another bootstrap (resamples, interval) than this "
+                "rockbolt's");
+        return;
+    }
+    out->fragility = 1;
+    out->seed = v;
 }
 
 rb_status rb_batch_summary_parse(const char *text, rb_batch_summary *out, rb_diag *diag)
@@ -432,6 +566,7 @@ rb_status rb_batch_summary_parse(const char *text, rb_batch_summary *out, rb_dia
     else if (rd_num(&r, root, "format_version") != RB_BATCH_FORMAT_VERSION)
         rd_fail(&r, "format_version", "written by another version of the format");
     out->design = cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(root, "design"));
+    rd_fragility_head(&r, root, out);
     out->total = rd_size(&r, root, "total");
     const cJSON *dg = cJSON_GetObjectItemCaseSensitive(root, "inputs_digest");
     if (!cJSON_IsString(dg) || strlen(dg->valuestring) != RB_BATCH_DIGEST_CHARS - 1)
@@ -453,10 +588,10 @@ rb_status rb_batch_summary_parse(const char *text, rb_batch_summary *out, rb_dia
         cJSON_ArrayForEach(it, cases) {
             if (r.bad)
                 break;
-            rd_case(&r, it, &out->cases[out->n_cases++], out->design);
+            rd_case(&r, it, &out->cases[out->n_cases++], out);
             if (!r.bad)
                 rd_digest(&r, cJSON_GetObjectItemCaseSensitive(it, "digest"),
-                          &out->cases[out->n_cases - 1], out->design);
+                          &out->cases[out->n_cases - 1], out);
         }
     }
     cJSON_Delete(root);

@@ -7,10 +7,12 @@
  * so that a CI's test history follows a cabinet when rows are inserted
  * or its motions change; a list's line is a property, not part of the
  * name. The motions of a case are lines of its <failure>. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "batch_summary.h"
+#include "rockbolt/names.h"
 #include "rockbolt/report.h"
 #include "rockbolt/textsafe.h"
 
@@ -48,6 +50,52 @@ static void xml_text(rb_strbuf *b, const char *s)
     free(t);
 }
 
+static void property(rb_strbuf *b, const char *name, const char *value)
+{
+    rb_strbuf_puts(b, "<property name=\"");
+    xml_text(b, name);
+    rb_strbuf_puts(b, "\" value=\"");
+    xml_text(b, value);
+    rb_strbuf_puts(b, "\"/>");
+}
+
+static void number(rb_strbuf *b, const char *state, const char *what, double v)
+{
+    char name[64], value[32];
+    snprintf(name, sizeof name, "fragility.%s.%s", state, what);
+    if (isfinite(v))
+        snprintf(value, sizeof value, "%.6g", v);
+    else
+        value[0] = '\0';
+    property(b, name, value);
+}
+
+/* The case's fragility as properties, in g, as the CSV has it: a CI can
+ * chart them per cabinet. */
+static void fragility_properties(rb_strbuf *b, const rb_batch_fragility *f)
+{
+    char v[32];
+    if (f->error) {
+        property(b, "fragility.error", f->error);
+        return;
+    }
+    double g = f->g_mps2;
+    snprintf(v, sizeof v, "%.6g", f->level_mps2 / g);
+    property(b, "fragility.level_g", v);
+    for (int k = 0; k < RB_N_LIMITS; k++) {
+        const rb_batch_limit *l = &f->limits[k];
+        const char *st = rb_enum_str(rb_limit_state_names, k);
+        if (l->fitted) {
+            number(b, st, "median_g", l->median_mps2 / g);
+            number(b, st, "beta", l->beta);
+            number(b, st, "median_lo_g", l->median_lo_mps2 / g);
+            number(b, st, "median_hi_g", l->median_hi_mps2 / g);
+            number(b, st, "p_at_level", l->p_at_level);
+        }
+        number(b, st, "reached", (double)l->reached);
+    }
+}
+
 static void junit_case(rb_strbuf *b, const rb_batch_case *c)
 {
     rb_strbuf_puts(b, "    <testcase classname=\"");
@@ -58,7 +106,7 @@ static void junit_case(rb_strbuf *b, const rb_batch_case *c)
     unsigned warnings = 0;
     for (size_t m = 0; m < c->n_runs; m++)
         warnings |= c->runs[m].warnings;
-    if (c->verdict == RB_BATCH_PASS && !warnings && c->line <= 0) {
+    if (c->verdict == RB_BATCH_PASS && !warnings && c->line <= 0 && !c->fragility) {
         rb_strbuf_puts(b, "/>\n");
         return;
     }
@@ -68,7 +116,7 @@ static void junit_case(rb_strbuf *b, const rb_batch_case *c)
     char w[80], head[RB_HEADLINE_MAX];
     rb_warnings_names(warnings, w, sizeof w);
     rb_report_headline(c->verdict == RB_BATCH_PASS, warnings, head, sizeof head);
-    if (c->line > 0 || warnings) {
+    if (c->line > 0 || warnings || c->fragility) {
         rb_strbuf_puts(b, "      <properties>");
         if (c->line > 0)
             rb_strbuf_printf(b, "<property name=\"line\" value=\"%d\"/>", c->line);
@@ -77,6 +125,8 @@ static void junit_case(rb_strbuf *b, const rb_batch_case *c)
             xml_text(b, w);
             rb_strbuf_puts(b, "\"/>");
         }
+        if (c->fragility)
+            fragility_properties(b, c->fragility);
         rb_strbuf_puts(b, "</properties>\n");
     }
     if (c->verdict == RB_BATCH_PASS) {

@@ -32,7 +32,16 @@ static int copy_case(rb_batch_case *dst, const rb_batch_case *src)
     dst->error = NULL;
     int error_ok = !src->error || rb_batch_case_set_error(dst, src->error);
     dst->runs = src->n_runs ? calloc(src->n_runs, sizeof *dst->runs) : NULL;
-    if (!dst->source || !dst->tag || !dst->reason || !error_ok
+    dst->fragility = NULL;
+    int frag_ok = 1;
+    if (src->fragility && (dst->fragility = malloc(sizeof *dst->fragility))) {
+        *dst->fragility = *src->fragility;
+        if (src->fragility->error)
+            frag_ok = (dst->fragility->error = rb_batch_strdup(src->fragility->error)) != NULL;
+    } else if (src->fragility) {
+        frag_ok = 0;
+    }
+    if (!dst->source || !dst->tag || !dst->reason || !error_ok || !frag_ok
         || (src->n_runs && !dst->runs)) {
         dst->n_runs = 0;
         return 0;
@@ -61,6 +70,12 @@ rb_status rb_batch_merge(const rb_batch_summary *shards, size_t n,
                         "(%zu and %zu items)", total, shards[k].total);
         if (shards[k].design != shards[0].design)
             return fail(diag, "summary %zu and the first differ in --design", k + 1);
+        if (shards[k].fragility != shards[0].fragility)
+            return fail(diag, "summary %zu and the first differ in --fragility", k + 1);
+        if (shards[k].seed != shards[0].seed)
+            return fail(diag, "summary %zu and the first differ in --seed (%llu and "
+                        "%llu)", k + 1, (unsigned long long)shards[k].seed,
+                        (unsigned long long)shards[0].seed);
     }
     for (size_t k = 1; k < n; k++)
         if (strcmp(shards[k].inputs_digest, shards[0].inputs_digest) != 0)
@@ -91,6 +106,8 @@ rb_status rb_batch_merge(const rb_batch_summary *shards, size_t n,
     if (st == RB_OK && !(out->cases = calloc(total ? total : 1, sizeof *out->cases)))
         st = RB_ERR_NOMEM;
     out->design = shards[0].design;
+    out->fragility = shards[0].fragility;
+    out->seed = shards[0].seed;
     memcpy(out->inputs_digest, shards[0].inputs_digest, sizeof out->inputs_digest);
     out->total = total;
     for (size_t i = 0; i < total && st == RB_OK; i++) {

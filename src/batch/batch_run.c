@@ -27,6 +27,7 @@ typedef struct {
     rb_batch_slot *slots;    /* RB_BATCH_CHUNK */
     run_ref *runs;
     rb_record_cache *cache;  /* owned: records shared by the cases */
+    int frag_threads;        /* of each fragility of the chunk */
     pthread_mutex_t lock;
     rb_batch_progress prog;
 } run_ctx;
@@ -71,40 +72,67 @@ static rb_status load_job(void *arg, size_t i)
     return RB_OK;
 }
 
+/* The job that computes a case's fragility: its motion is this. */
+#define FRAGILITY_JOB ((size_t)-1)
+
 static rb_status run_job(void *arg, size_t k)
 {
     run_ctx *cx = arg;
     const run_ref *r = &cx->runs[k];
     rb_batch_case *bc = &cx->cases[r->slot];
     rb_batch_slot *s = &cx->slots[r->slot];
-    rb_batch_case_solve(s, bc, r->motion, cx->o->design);
+    if (r->motion == FRAGILITY_JOB)
+        rb_batch_case_fragility(s, bc, cx->frag_threads, cx->o->seed);
+    else
+        rb_batch_case_solve(s, bc, r->motion, cx->o->design);
     pthread_mutex_lock(&cx->lock);
     int last = --s->remaining == 0;
     pthread_mutex_unlock(&cx->lock);
     if (last)
         rb_batch_case_finish(s, bc, cx->o, cx->out->total);
-    progress(cx, last ? bc : NULL, 1);
+    progress(cx, last ? bc : NULL, r->motion != FRAGILITY_JOB);
     return RB_OK;
+}
+
+/* Threads for each fragility of a chunk: its searches share a pool of
+ * their own, so a chunk of fewer cases than threads still uses them all
+ * (the results do not depend on it). */
+static int fragility_threads(const rb_batch_opts *o, size_t n_cases)
+{
+    int nt = o->n_threads > 0 ? o->n_threads : rb_pool_threads_default();
+    size_t each = n_cases ? (size_t)nt / n_cases : 1;
+    return each > 1 ? (int)each : 1;
 }
 
 static rb_status run_chunk(run_ctx *cx, size_t n)
 {
-    size_t n_runs = 0;
+    size_t n_runs = 0, n_frag = 0;
     rb_status st = rb_pool_map(n, cx->o->n_threads, load_job, cx, NULL);
     if (st != RB_OK)
         return st;
     for (size_t i = 0; i < n; i++)
-        if (cx->slots[i].loaded)
+        if (cx->slots[i].loaded) {
             n_runs += cx->slots[i].remaining;
-    run_ref *runs = malloc((n_runs ? n_runs : 1) * sizeof *runs);
+            n_frag += cx->o->fragility != 0;
+        }
+    run_ref *runs = malloc((n_runs + n_frag ? n_runs + n_frag : 1) * sizeof *runs);
     if (!runs)
         return RB_ERR_NOMEM;
-    n_runs = 0;
+    /* the fragilities first: each is hundreds of solver runs, so that the
+     * short motion runs fill the threads at the end */
+    size_t k = 0;
+    for (size_t i = 0; i < n && n_frag; i++)
+        if (cx->slots[i].loaded) {
+            runs[k].slot = i, runs[k++].motion = FRAGILITY_JOB;
+        }
     for (size_t i = 0; i < n; i++)
         for (size_t m = 0; cx->slots[i].loaded && m < cx->slots[i].remaining; m++)
-            runs[n_runs].slot = i, runs[n_runs++].motion = m;
+            runs[k].slot = i, runs[k++].motion = m;
+    for (size_t i = 0; i < n && n_frag; i++)
+        cx->slots[i].remaining += cx->slots[i].loaded;
     cx->runs = runs;
-    st = rb_pool_map(n_runs, cx->o->n_threads, run_job, cx, NULL);
+    cx->frag_threads = fragility_threads(cx->o, n_frag);
+    st = rb_pool_map(k, cx->o->n_threads, run_job, cx, NULL);
     free(runs);
     cx->runs = NULL;
     return st;
@@ -166,6 +194,8 @@ rb_status rb_batch_run(const rb_batch_list *l, const rb_batch_opts *o,
     if (st != RB_OK)
         return st;
     out->design = o->design;
+    out->fragility = o->fragility;
+    out->seed = o->seed;
     out->total = l->n;
     out->shard = o->shard;
     out->n_shards = o->n_shards;

@@ -28,6 +28,9 @@ void rb_batch_case_free(rb_batch_case *c)
     for (size_t m = 0; c->runs && m < c->n_runs; m++)
         free(c->runs[m].motion);
     free(c->runs);
+    if (c->fragility)
+        free(c->fragility->error);
+    free(c->fragility);
     memset(c, 0, sizeof *c);
 }
 

@@ -1,6 +1,7 @@
 /* The summary as a text table (for the terminal) and as CSV (one row per
  * case and motion, for spreadsheets). Numbers in the table are rounded for
  * reading; the CSV keeps 6 significant digits; the JSON keeps them all. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -35,6 +36,33 @@ static void text_nums(rb_strbuf *b, double usage, double vw, double ff, double t
             rb_strbuf_puts(b, "     none");
     }
     rb_strbuf_puts(b, "\n");
+}
+
+/* A line per limit state under the case's motions, in the motion column's
+ * place its name. */
+static void text_fragility(rb_strbuf *b, const rb_batch_case *c)
+{
+    const rb_batch_fragility *f = c->fragility;
+    if (f->error) {
+        char why[600];
+        rb_strbuf_printf(b, "%-24s %-18s %-10s %s\n", "", "[fragility]", "",
+                         rb_text_escape_buf(f->error, why, sizeof why));
+        return;
+    }
+    for (int k = 0; k < RB_N_LIMITS; k++) {
+        const rb_batch_limit *l = &f->limits[k];
+        char name[32];
+        snprintf(name, sizeof name, "[%s]", rb_enum_str(rb_limit_state_names, k));
+        rb_strbuf_printf(b, "%-24s %-18s %-10s", "", name, "");
+        if (l->fitted)
+            rb_strbuf_printf(b, " median %.4g g, beta %.3f, 90%% %.4g to %.4g g; P %.3f "
+                             "at %.4g g;", l->median_mps2 / f->g_mps2, l->beta,
+                             l->median_lo_mps2 / f->g_mps2, l->median_hi_mps2 / f->g_mps2,
+                             l->p_at_level, f->level_mps2 / f->g_mps2);
+        else
+            rb_strbuf_puts(b, " not fitted;");
+        rb_strbuf_printf(b, " reached by %zu of %zu\n", l->reached, c->n_runs);
+    }
 }
 
 static void text_case(rb_strbuf *b, const rb_batch_case *c, int design)
@@ -78,6 +106,8 @@ static void text_case(rb_strbuf *b, const rb_batch_case *c, int design)
                   max.theta_over_alpha, design, max.has_factor, max.design_factor,
                   0, max.has_gap, max.gap_ratio);
     }
+    if (c->fragility)
+        text_fragility(b, c);
 }
 
 void rb_batch_text_head(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_counts *n)
@@ -129,6 +159,57 @@ static void csv_head(rb_strbuf *b, const rb_batch_case *c, const char *motion,
     rb_strbuf_printf(b, ",%d,%s,%s", governing, verdict, rb_batch_verdict_str(c->verdict));
 }
 
+/* A limit state's name in a column name: first_yield, lift_off. */
+static void limit_column(int k, char *buf, size_t n)
+{
+    snprintf(buf, n, "%s", rb_enum_str(rb_limit_state_names, k));
+    for (char *p = buf; *p; p++)
+        if (*p == '-')
+            *p = '_';
+}
+
+/* A number of 6 significant digits, or an empty field when there is none. */
+static void csv_num(rb_strbuf *b, double v)
+{
+    if (isfinite(v))
+        rb_strbuf_printf(b, ",%.6g", v);
+    else
+        rb_strbuf_puts(b, ",");
+}
+
+/* The case's fragility, the same on each of its rows. */
+static void csv_fragility(rb_strbuf *b, const rb_batch_fragility *f)
+{
+    if (f->error) {
+        rb_strbuf_puts(b, ",");
+        for (int k = 0; k < RB_N_LIMITS; k++)
+            rb_strbuf_puts(b, ",,,,,,");
+        rb_strbuf_puts(b, ",");
+        csv_field(b, f->error);
+        return;
+    }
+    double g = f->g_mps2;
+    csv_num(b, f->level_mps2 / g);
+    for (int k = 0; k < RB_N_LIMITS; k++) {
+        const rb_batch_limit *l = &f->limits[k];
+        if (l->fitted) {
+            csv_num(b, l->median_mps2 / g);
+            csv_num(b, l->beta);
+            csv_num(b, l->median_lo_mps2 / g);
+            csv_num(b, l->median_hi_mps2 / g);
+            csv_num(b, l->p_at_level);
+        } else {
+            rb_strbuf_puts(b, ",,,,,");
+        }
+        rb_strbuf_printf(b, ",%zu", l->reached);
+    }
+    rb_strbuf_puts(b, ",");
+}
+
+/* The columns of --fragility after the design's: level, six per limit
+ * state and the reason when there is none. */
+#define FRAGILITY_COLUMNS (1 + 6 * RB_N_LIMITS + 1)
+
 void rb_batch_csv_head(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_counts *n)
 {
     (void)n;
@@ -136,6 +217,18 @@ void rb_batch_csv_head(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_c
                     "usage,shear_over_w,force_over_fy,theta_over_alpha");
     if (s->design)
         rb_strbuf_puts(b, ",design_factor,design_factor_bound,gap_ratio");
+    if (s->fragility) {
+        rb_strbuf_puts(b, ",fragility_level_g");
+        for (int k = 0; k < RB_N_LIMITS; k++) {
+            char st[32];
+            limit_column(k, st, sizeof st);
+            rb_strbuf_printf(b, ",fragility_%s_median_g,fragility_%s_beta,"
+                             "fragility_%s_median_lo_g,fragility_%s_median_hi_g,"
+                             "fragility_%s_p_at_level,fragility_%s_reached", st, st, st, st,
+                             st, st);
+        }
+        rb_strbuf_puts(b, ",fragility_error");
+    }
     rb_strbuf_puts(b, ",validity_warnings,anchor_mode,anchor_utilization,error\n");
 }
 
@@ -153,6 +246,8 @@ void rb_batch_csv_case(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_c
         const rb_diag *e = rb_batch_case_error(c);
         csv_head(b, c, "", 0, rb_batch_verdict_str(c->verdict));
         rb_strbuf_puts(b, s->design ? ",,,,,,,,,,," : ",,,,,,,,");
+        for (int k = 0; s->fragility && k < FRAGILITY_COLUMNS; k++)
+            rb_strbuf_puts(b, ",");
         if (e->line > 0)
             snprintf(err, sizeof err, "%s:%d:%d: %s: %s", e->file, e->line, e->col,
                      e->key, e->msg);
@@ -178,6 +273,11 @@ void rb_batch_csv_case(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_c
             else
                 rb_strbuf_puts(b, ",");
         }
+        if (s->fragility && c->fragility)
+            csv_fragility(b, c->fragility);
+        else
+            for (int k = 0; s->fragility && k < FRAGILITY_COLUMNS; k++)
+                rb_strbuf_puts(b, ",");
         char w[80];
         rb_warnings_names(r->warnings, w, sizeof w);
         rb_strbuf_puts(b, ",");

@@ -7,7 +7,9 @@
 #define RB_CLI_H
 
 #include <getopt.h>
+#include "rockbolt/plot.h"
 #include "rockbolt/rockbolt.h"
+#include "rockbolt/run.h"
 
 /* Exit codes, as documented in --help and README.md. */
 typedef enum {
@@ -46,11 +48,20 @@ typedef struct {
     const char *csv_path;     /* fragility: --csv FILE, or NULL */
     unsigned long long seed;  /* fragility: --seed N of the bootstrap */
     rb_spectrum_opts spectrum; /* spectrum: --damping, --from, --to, --per-octave */
+    rb_plot_scale x_scale;    /* fragility: --x-scale of the figure (log) */
+    int x_scale_given;
+    const char *sweep_gap;    /* fragility: --sweep-gap FROM:TO:STEP, or NULL */
+    double gap_ratios[RB_FRAGILITY_SWEEP_MAX_POINTS]; /* its grid */
+    size_t n_gap_ratios;
 } rb_cli_opts;
 
 /* Parse argv into o. Returns RB_EXIT_PASS, or RB_EXIT_USAGE after printing
  * what is wrong. Strings in o point into argv. */
 rb_exit rb_cli_args_parse(int argc, char **argv, rb_cli_opts *o);
+
+/* --seed N of fragility and batch --fragility: a whole number that fits
+ * 64 bits; RB_EXIT_USAGE after printing what is wrong. */
+rb_exit rb_cli_take_seed(const char *v, unsigned long long *out);
 
 /* --sandbox DIR of check, design and batch: confine every input to DIR
  * (rockbolt/sandbox.h) before anything is read. RB_EXIT_USAGE after

@@ -8,9 +8,12 @@
  * src/cli/help.txt, which --help and the man page are made from. */
 #include <errno.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "cli.h"
+#include "rockbolt/plot.h"
+#include "rockbolt/run.h"
 #include "rockbolt/sandbox.h"
 
 /* Store the value of a FILE option, once, not empty. */
@@ -25,6 +28,73 @@ static rb_exit take_value(const char *name, const char *v, const char **dst)
         return RB_EXIT_USAGE;
     }
     *dst = v;
+    return RB_EXIT_PASS;
+}
+
+rb_exit rb_cli_take_seed(const char *v, unsigned long long *out)
+{
+    char *end;
+    errno = 0;
+    unsigned long long n = strtoull(v, &end, 10);
+    if (end == v || *end || errno || v[0] == '-') {
+        rb_cli_error(NULL, NULL, "option '--seed' needs a whole number from 0 to "
+                     "18446744073709551615 (got '%s')", v);
+        return RB_EXIT_USAGE;
+    }
+    *out = n;
+    return RB_EXIT_PASS;
+}
+
+/* A finite number making up the whole of s. */
+static int number(const char *s, double *out)
+{
+    char *end;
+    errno = 0;
+    *out = strtod(s, &end);
+    return end != s && !*end && !errno && isfinite(*out);
+}
+
+/* --sweep-gap FROM:TO:STEP: the gap ratios FROM, FROM + STEP, ... up to TO
+ * (included when it is on the grid, as design's gap grid). Each is
+ * rounded to 12 significant digits, so that 0.002 + 28 x 0.001 is the
+ * 0.03 a case file would give, not 0.030000000000000002. */
+static rb_exit take_sweep_gap(const char *v, rb_cli_opts *o)
+{
+    char buf[128];
+    const char *c1 = strchr(v, ':'), *c2 = c1 ? strchr(c1 + 1, ':') : NULL;
+    double from = 0, to = 0, step = 0;
+    int ok = c1 && c2 && strlen(v) < sizeof buf;
+    if (o->sweep_gap) {
+        rb_cli_error(NULL, NULL, "option '--sweep-gap' given twice");
+        return RB_EXIT_USAGE;
+    }
+    if (ok) {
+        memcpy(buf, v, strlen(v) + 1);
+        buf[c1 - v] = buf[c2 - v] = '\0';
+        ok = number(buf, &from) && number(buf + (c1 - v) + 1, &to)
+             && number(buf + (c2 - v) + 1, &step)
+             && from >= 0 && to > from && to <= 1 && step > 0;
+    }
+    if (!ok) {
+        rb_cli_error(NULL, NULL, "option '--sweep-gap' needs FROM:TO:STEP, gap ratios of "
+                     "the lever arm with 0 <= FROM < TO <= 1 and STEP > 0, e.g. "
+                     "0.002:0.03:0.002 (got '%s')", v);
+        return RB_EXIT_USAGE;
+    }
+    double n = floor((to - from) / step + 1e-9) + 1;
+    if (n < 2 || n > RB_FRAGILITY_SWEEP_MAX_POINTS) {
+        rb_cli_error(NULL, NULL, "option '--sweep-gap' gives %.0f gap ratio%s from %g to %g "
+                     "in steps of %g; it takes 2 to %d (each is a whole fragility)", n,
+                     n == 1 ? "" : "s", from, to, step, RB_FRAGILITY_SWEEP_MAX_POINTS);
+        return RB_EXIT_USAGE;
+    }
+    o->sweep_gap = v;
+    o->n_gap_ratios = (size_t)n;
+    for (size_t i = 0; i < o->n_gap_ratios; i++) {
+        char r[32];
+        snprintf(r, sizeof r, "%.12g", from + (double)i * step);
+        o->gap_ratios[i] = strtod(r, NULL);
+    }
     return RB_EXIT_PASS;
 }
 
@@ -43,7 +113,8 @@ static rb_exit take_threads(const char *v, rb_cli_opts *o)
 }
 
 enum { OPT_JSON = 256, OPT_TEXT, OPT_HISTORY, OPT_SVG, OPT_HTML, OPT_SANDBOX,
-       OPT_SWEEP_CSV, OPT_CSV, OPT_SEED, OPT_DAMPING, OPT_FROM, OPT_TO, OPT_PER_OCTAVE, OPT_AC156 };
+       OPT_SWEEP_CSV, OPT_CSV, OPT_SEED, OPT_DAMPING, OPT_FROM, OPT_TO, OPT_PER_OCTAVE,
+       OPT_AC156, OPT_X_SCALE, OPT_SWEEP_GAP };
 
 /* Every long option once, with the commands that take it: each command's
  * table is drawn from this one, so an option means the same everywhere. */
@@ -71,6 +142,8 @@ static const struct {
     {{"to", required_argument, NULL, OPT_TO}, SPECTRUM},
     {{"per-octave", required_argument, NULL, OPT_PER_OCTAVE}, SPECTRUM},
     {{"ac156", no_argument, NULL, OPT_AC156}, INIT},
+    {{"x-scale", required_argument, NULL, OPT_X_SCALE}, FRAGILITY},
+    {{"sweep-gap", required_argument, NULL, OPT_SWEEP_GAP}, FRAGILITY},
     {{"threads", required_argument, NULL, 'j'}, DESIGN | FRAGILITY},
     {{"quiet", no_argument, NULL, 'q'}, CHECK | DESIGN | FRAGILITY | SPECTRUM},
     {{"help", no_argument, NULL, 'h'}, CHECK | DESIGN | FRAGILITY | INIT | SPECTRUM},
@@ -136,16 +209,23 @@ static rb_exit take_option(int c, const rb_cli_getopt *g, rb_cli_opts *o)
         return take_value(g->name, g->arg, &o->sweep_csv_path);
     case OPT_CSV:
         return take_value(g->name, g->arg, &o->csv_path);
-    case OPT_SEED: {
-        char *end;
-        errno = 0;
-        unsigned long long v = strtoull(g->arg, &end, 10);
-        if (end == g->arg || *end || errno || g->arg[0] == '-') {
-            rb_cli_error(NULL, NULL, "option '--seed' needs a whole number from 0 to "
-                         "18446744073709551615 (got '%s')", g->arg);
+    case OPT_SEED:
+        return rb_cli_take_seed(g->arg, &o->seed);
+    case OPT_SWEEP_GAP:
+        return take_sweep_gap(g->arg, o);
+    case OPT_X_SCALE: {
+        int v;
+        if (o->x_scale_given) {
+            rb_cli_error(NULL, NULL, "option '--x-scale' given twice");
             return RB_EXIT_USAGE;
         }
-        o->seed = v;
+        if (!rb_enum_parse(rb_plot_scale_names, g->arg, &v)) {
+            rb_cli_error(NULL, NULL, "option '--x-scale' needs log or linear (got '%s')",
+                         g->arg);
+            return RB_EXIT_USAGE;
+        }
+        o->x_scale = (rb_plot_scale)v;
+        o->x_scale_given = 1;
         return RB_EXIT_PASS;
     }
     case OPT_DAMPING:
@@ -219,6 +299,8 @@ static rb_exit parse_rest(int argc, char **argv, rb_cli_opts *o)
                          strcmp(g.name, "-j") == 0 || strcmp(g.name, "--threads") == 0
                          ? "a number of threads"
                          : strcmp(g.name, "--seed") == 0 ? "a whole number"
+                         : strcmp(g.name, "--x-scale") == 0 ? "log or linear"
+                         : strcmp(g.name, "--sweep-gap") == 0 ? "FROM:TO:STEP"
                          : o->command == RB_CMD_SPECTRUM && strcmp(g.name, "--json")
                            && strcmp(g.name, "--csv") && strcmp(g.name, "--svg")
                            && strcmp(g.name, "--html") && strcmp(g.name, "--sandbox")
@@ -304,6 +386,12 @@ rb_exit rb_cli_args_parse(int argc, char **argv, rb_cli_opts *o)
                         : o->command == RB_CMD_FRAGILITY ? "fragility"
                         : o->command == RB_CMD_SPECTRUM ? "spectrum" : "check";
         rb_cli_error(NULL, NULL, "'%s' needs a case file: rockbolt %s CASE.yaml", c, c);
+        return RB_EXIT_USAGE;
+    }
+    if (o->sweep_gap && o->x_scale_given) {
+        rb_cli_error(NULL, NULL, "option '--x-scale' sets the intensity axis of the "
+                     "fragility figure; the figure of --sweep-gap has the gap ratio along "
+                     "x");
         return RB_EXIT_USAGE;
     }
     if ((e = check_distinct(o)) != RB_EXIT_PASS)

@@ -191,6 +191,8 @@ static rb_exit run(rb_batch_cli *o, const rb_batch_list *l, rb_batch_summary *s)
     }
     bo.n_threads = o->threads;
     bo.design = o->design;
+    bo.fragility = o->fragility;
+    bo.seed = o->seed;
     bo.reports_dir = o->reports_dir;
     bo.report_template = tmpl;
     bo.report_stage = &o->plan;

@@ -15,6 +15,9 @@ typedef struct {
     const char *sandbox;      /* batch: --sandbox DIR, or NULL */
     const char *encoding;     /* batch: --encoding NAME, or NULL (UTF-8) */
     int design;               /* batch: --design */
+    int fragility;            /* batch: --fragility */
+    unsigned long long seed;  /* batch: --seed N of the fragility's bootstrap */
+    int seed_given;
     int threads;              /* batch: -j N; 0: every processor */
     size_t shard, n_shards;   /* batch: --shard I/N; 0/0: all */
     int quiet, help;

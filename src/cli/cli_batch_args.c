@@ -54,7 +54,7 @@ static rb_exit parse_shard(const char *v, rb_batch_cli *o)
 }
 
 enum { OPT_JSON = 256, OPT_CSV, OPT_JUNIT, OPT_REPORTS, OPT_BASE, OPT_SANDBOX,
-       OPT_DESIGN, OPT_SHARD, OPT_ENCODING };
+       OPT_DESIGN, OPT_SHARD, OPT_ENCODING, OPT_FRAGILITY, OPT_SEED };
 
 /* Options shared by batch and merge are the output files and --quiet. */
 static const struct option merge_longs[] = {
@@ -74,6 +74,8 @@ static const struct option batch_longs[] = {
     {"sandbox", required_argument, NULL, OPT_SANDBOX},
     {"encoding", required_argument, NULL, OPT_ENCODING},
     {"design", no_argument, NULL, OPT_DESIGN},
+    {"fragility", no_argument, NULL, OPT_FRAGILITY},
+    {"seed", required_argument, NULL, OPT_SEED},
     {"shard", required_argument, NULL, OPT_SHARD},
     {"threads", required_argument, NULL, 'j'},
     {"quiet", no_argument, NULL, 'q'},
@@ -116,6 +118,16 @@ static rb_exit take_option(int c, const rb_cli_getopt *g, rb_batch_cli *o)
     case OPT_DESIGN:
         o->design = 1;
         return RB_EXIT_PASS;
+    case OPT_FRAGILITY:
+        o->fragility = 1;
+        return RB_EXIT_PASS;
+    case OPT_SEED:
+        if (o->seed_given) {
+            rb_cli_error(NULL, NULL, "option '--seed' given twice");
+            return RB_EXIT_USAGE;
+        }
+        o->seed_given = 1;
+        return rb_cli_take_seed(g->arg, &o->seed);
     case OPT_SHARD:
         e = take(g->name, g->arg, &sv);
         return e == RB_EXIT_PASS ? parse_shard(sv, o) : e;
@@ -181,6 +193,11 @@ rb_exit rb_cli_batch_parse(int argc, char **argv, int is_merge, rb_batch_cli *o)
     free(av);
     if (e != RB_EXIT_PASS)
         return e;
+    if (!o->help && o->seed_given && !o->fragility) {
+        rb_cli_error(NULL, "--seed", "the seed of the fragility's bootstrap needs "
+                     "--fragility");
+        return RB_EXIT_USAGE;
+    }
     if (!o->help && o->n_inputs == 0) {
         rb_cli_error(NULL, NULL, is_merge ? "merge needs the JSON summaries of the "
                      "shards (see 'rockbolt help merge')" : "batch needs case files, "

@@ -1,7 +1,9 @@
 /* "rockbolt fragility CASE.yaml": the case's fragility over its motions
- * (rb_run_fragility), as a table on stdout and, when asked, JSON, CSV and
- * an SVG figure, all planned and checked before the searches and written
- * all or none. Exit 0 when it is computed (a fragility is not a verdict). */
+ * (rb_run_fragility), or with --sweep-gap at each gap ratio of a sweep
+ * (rb_run_fragility_gap_sweep), as a table on stdout and, when asked,
+ * JSON, CSV, an SVG figure and a page, all planned and checked before the
+ * searches and written all or none. Exit 0 when it is computed (a
+ * fragility is not a verdict). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -11,19 +13,31 @@
 #include "rockbolt/plot.h"
 #include "rockbolt/run.h"
 
-#define RB_FRAGILITY_BOOTSTRAP 1000
-
 typedef struct {
     const rb_case *c;
-    const rb_case_fragility *f;
+    const rb_case_fragility *f;      /* the fragility, or */
+    const rb_fragility_sweep *sweep; /* the sweep over gap ratios */
     const char *title;
+    rb_plot_scale x_scale;
 } outputs;
+
+static char *text_of(const outputs *o)
+{
+    return o->sweep ? rb_fragility_sweep_render_text(o->c, o->sweep)
+                    : rb_fragility_render_text(o->c, o->f);
+}
+
+static rb_status figure(const outputs *o, char **out, rb_diag *d)
+{
+    return o->sweep ? rb_plot_fragility_sweep_svg(o->sweep, o->title, out, d)
+                    : rb_plot_fragility_svg(o->f, o->title, o->x_scale, out, d);
+}
 
 /* --html: the table and the figure in one page */
 static rb_status page(const outputs *o, char **out, rb_diag *d)
 {
-    char *svg = NULL, *text = rb_fragility_render_text(o->c, o->f);
-    rb_status st = text ? rb_plot_fragility_svg(o->f, o->title, &svg, d) : RB_ERR_NOMEM;
+    char *svg = NULL, *text = text_of(o);
+    rb_status st = text ? figure(o, &svg, d) : RB_ERR_NOMEM;
     if (st == RB_OK) {
         const char *svgs[1] = {svg};
         st = rb_plot_html_page(NULL, o->title, text, svgs, 1, out, d);
@@ -42,11 +56,13 @@ static rb_status fill(void *ctx, size_t i, FILE *fp, rb_diag *d)
     char *text = NULL;
     rb_status st = RB_OK;
     if (strcmp(opt, "--json") == 0)
-        text = rb_fragility_render_json(o->c, o->f);
+        text = o->sweep ? rb_fragility_sweep_render_json(o->c, o->sweep)
+                        : rb_fragility_render_json(o->c, o->f);
     else if (strcmp(opt, "--csv") == 0)
-        text = rb_fragility_render_csv(o->c, o->f);
+        text = o->sweep ? rb_fragility_sweep_render_csv(o->sweep)
+                        : rb_fragility_render_csv(o->c, o->f);
     else if (strcmp(opt, "--svg") == 0)
-        st = rb_plot_fragility_svg(o->f, o->title, &text, d);
+        st = figure(o, &text, d);
     else
         st = page(o, &text, d);
     if (st == RB_OK && !text)
@@ -91,20 +107,30 @@ static rb_exit load(const rb_cli_opts *o, rb_case *c, rb_outplan *p)
     return st == RB_OK ? RB_EXIT_PASS : rb_cli_plan_error(st, &d);
 }
 
-static rb_exit compute(const rb_cli_opts *o, const rb_case *c, rb_case_fragility *f)
+static rb_exit compute(const rb_cli_opts *o, const rb_case *c, rb_case_fragility *f,
+                       rb_fragility_sweep *sweep)
 {
     rb_cli_progress line;
     rb_diag d;
+    rb_status st;
     rb_diag_clear(&d);
     rb_cli_progress_start(&line, o->quiet);
-    rb_status st = rb_run_fragility(c, o->threads, o->seed, RB_FRAGILITY_BOOTSTRAP, f, &d,
-                                    line.enabled ? rb_cli_progress_design : NULL, &line);
+    if (o->sweep_gap)
+        st = rb_run_fragility_gap_sweep(c, o->gap_ratios, o->n_gap_ratios, o->threads,
+                                        o->seed, RB_FRAGILITY_RESAMPLES, sweep, &d,
+                                        line.enabled ? rb_cli_progress_design : NULL, &line);
+    else
+        st = rb_run_fragility(c, o->threads, o->seed, RB_FRAGILITY_RESAMPLES, f, &d,
+                              line.enabled ? rb_cli_progress_design : NULL, &line);
     if (line.enabled && line.shown)
         fputs("\r\033[K", stderr);
     if (st == RB_OK)
         return RB_EXIT_PASS;
-    rb_cli_error(o->case_path, d.key[0] ? d.key : NULL, "%s%s%s", rb_status_str(st),
-                 d.msg[0] ? ": " : "", d.msg);
+    /* a ratio of the sweep that the case cannot take is the option's fault */
+    const char *key = o->sweep_gap && strcmp(d.key, "gap_ratio") == 0 ? "--sweep-gap"
+                      : d.key[0] ? d.key : NULL;
+    rb_cli_error(o->case_path, key, "%s%s%s", rb_status_str(st), d.msg[0] ? ": " : "",
+                 d.msg);
     return st == RB_ERR_INVALID ? RB_EXIT_USAGE : RB_EXIT_INTERNAL;
 }
 
@@ -113,18 +139,22 @@ rb_exit rb_cli_fragility_run(const rb_cli_opts *o)
     rb_outplan p;
     rb_case c;
     rb_case_fragility f;
+    rb_fragility_sweep sweep;
     char title[256];
     memset(&c, 0, sizeof c);
     memset(&f, 0, sizeof f);
+    memset(&sweep, 0, sizeof sweep);
     rb_outplan_init(&p);
     rb_exit e = plan(o, &p);
     if (e == RB_EXIT_PASS)
         e = load(o, &c, &p);
     if (e == RB_EXIT_PASS)
-        e = compute(o, &c, &f);
+        e = compute(o, &c, &f, &sweep);
+    outputs out = {&c, o->sweep_gap ? NULL : &f, o->sweep_gap ? &sweep : NULL, title,
+                   o->x_scale};
     if (e == RB_EXIT_PASS) {
-        snprintf(title, sizeof title, "Fragility of %.200s", c.name ? c.name : "the case");
-        outputs out = {&c, &f, title};
+        snprintf(title, sizeof title, "Fragility of %.200s%s", c.name ? c.name : "the case",
+                 o->sweep_gap ? " against the gap ratio" : "");
         const void *cx[2] = {&p, &out};
         rb_diag d;
         rb_diag_clear(&d);
@@ -134,7 +164,7 @@ rb_exit rb_cli_fragility_run(const rb_cli_opts *o)
         }
     }
     if (e == RB_EXIT_PASS && !o->quiet && !rb_outplan_uses_stdout(&p)) {
-        char *text = rb_fragility_render_text(&c, &f);
+        char *text = text_of(&out);
         if (!text || fputs(text, stdout) == EOF || fflush(stdout) != 0) {
             rb_cli_error(NULL, NULL, "cannot write the fragility to standard output");
             e = RB_EXIT_INTERNAL;
@@ -142,6 +172,7 @@ rb_exit rb_cli_fragility_run(const rb_cli_opts *o)
         free(text);
     }
     rb_case_fragility_free(&f);
+    rb_fragility_sweep_free(&sweep);
     rb_case_free(&c);
     rb_outplan_free(&p);
     return e;

@@ -203,3 +203,14 @@ void rb_case_fragility_free(rb_case_fragility *f)
     free(f->motions);
     memset(f, 0, sizeof *f);
 }
+
+void rb_fragility_sweep_free(rb_fragility_sweep *s)
+{
+    if (!s)
+        return;
+    for (size_t i = 0; s->points && i < s->n_points; i++)
+        rb_case_fragility_free(&s->points[i]);
+    free(s->points);
+    free(s->gap_ratios);
+    memset(s, 0, sizeof *s);
+}

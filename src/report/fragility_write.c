@@ -9,6 +9,7 @@
 #include "rockbolt/names.h"
 #include "rockbolt/report.h"
 #include "rockbolt/textsafe.h"
+#include "report_internal.h"
 #include "util/strbuf.h"
 
 static const char *motion_name(const rb_case *c, size_t m)
@@ -61,7 +62,7 @@ char *rb_fragility_render_text(const rb_case *c, const rb_case_fragility *f)
     return rb_strbuf_take(&b);
 }
 
-static void num(rb_strbuf *b, const char *key, double v, int comma)
+void rb_report_json_num(rb_strbuf *b, const char *key, double v, int comma)
 {
     char buf[RB_JSONNUM_MAX];
     if (isfinite(v))
@@ -74,7 +75,7 @@ static void num(rb_strbuf *b, const char *key, double v, int comma)
 /* A JSON string of text from the case: bytes that are not UTF-8 and
  * control characters shown as \xHH first (rockbolt/textsafe.h), as every
  * other output shows them, then cJSON's quoting. */
-static void str(rb_strbuf *b, const char *s)
+void rb_report_json_str(rb_strbuf *b, const char *s)
 {
     char safe[1024];
     cJSON *j = cJSON_CreateString(rb_text_escape_buf(s, safe, sizeof safe));
@@ -88,43 +89,50 @@ static void str(rb_strbuf *b, const char *s)
     cJSON_free(e);
 }
 
+void rb_report_fragility_limit_json(rb_strbuf *b, const rb_case_fragility *f, int k)
+{
+    rb_strbuf_printf(b, "{\"limit_state\": \"%s\", \"fitted\": %s",
+                     rb_enum_str(rb_limit_state_names, k), f->fitted[k] ? "true" : "false");
+    if (f->fitted[k]) {
+        rb_strbuf_puts(b, ", ");
+        rb_report_json_num(b, "median_mps2", f->fit[k].median, 1);
+        rb_report_json_num(b, "beta", f->fit[k].beta, 1);
+        rb_report_json_num(b, "median_lo_mps2", f->median_lo[k], 1);
+        rb_report_json_num(b, "median_hi_mps2", f->median_hi[k], 1);
+        rb_report_json_num(b, "p_at_level", f->p_at_level[k], 1);
+        rb_report_json_num(b, "level_p10_mps2", f->im10[k], 1);
+        rb_report_json_num(b, "level_p50_mps2", f->im50[k], 1);
+        rb_report_json_num(b, "loglik", f->fit[k].loglik, 0);
+    }
+    rb_strbuf_puts(b, "}");
+}
+
 char *rb_fragility_render_json(const rb_case *c, const rb_case_fragility *f)
 {
     rb_strbuf b = {0};
     rb_strbuf_puts(&b, "{\n  \"format\": \"rockbolt-fragility\", \"format_version\": 1,\n"
                        "  \"case\": ");
-    str(&b, c->name ? c->name : "");
+    rb_report_json_str(&b, c->name ? c->name : "");
     rb_strbuf_puts(&b, ",\n  \"intensity\": \"peak_floor_acceleration\", ");
-    num(&b, "g_mps2", f->g_mps2, 1);
-    num(&b, "a_star_mps2", f->a_star_mps2, 1);
-    num(&b, "level_mps2", f->level_mps2, 1);
+    rb_report_json_num(&b, "g_mps2", f->g_mps2, 1);
+    rb_report_json_num(&b, "a_star_mps2", f->a_star_mps2, 1);
+    rb_report_json_num(&b, "level_mps2", f->level_mps2, 1);
     rb_strbuf_printf(&b, "\"bootstrap\": {\"resamples\": %u, \"seed\": %llu, "
                      "\"interval\": 0.9}, \"runs\": %ld,\n  \"limit_states\": [\n",
                      f->n_boot, (unsigned long long)f->seed, f->runs);
     for (int k = 0; k < RB_N_LIMITS; k++) {
-        rb_strbuf_printf(&b, "    {\"limit_state\": \"%s\", \"fitted\": %s",
-                         rb_enum_str(rb_limit_state_names, k), f->fitted[k] ? "true" : "false");
-        if (f->fitted[k]) {
-            rb_strbuf_puts(&b, ", ");
-            num(&b, "median_mps2", f->fit[k].median, 1);
-            num(&b, "beta", f->fit[k].beta, 1);
-            num(&b, "median_lo_mps2", f->median_lo[k], 1);
-            num(&b, "median_hi_mps2", f->median_hi[k], 1);
-            num(&b, "p_at_level", f->p_at_level[k], 1);
-            num(&b, "level_p10_mps2", f->im10[k], 1);
-            num(&b, "level_p50_mps2", f->im50[k], 1);
-            num(&b, "loglik", f->fit[k].loglik, 0);
-        }
-        rb_strbuf_printf(&b, "}%s\n", k + 1 < RB_N_LIMITS ? "," : "");
+        rb_strbuf_puts(&b, "    ");
+        rb_report_fragility_limit_json(&b, f, k);
+        rb_strbuf_printf(&b, "%s\n", k + 1 < RB_N_LIMITS ? "," : "");
     }
     rb_strbuf_puts(&b, "  ],\n  \"motions\": [\n");
     for (size_t m = 0; m < f->n_motions; m++) {
         rb_strbuf_puts(&b, "    {\"name\": ");
-        str(&b, motion_name(c, m));
+        rb_report_json_str(&b, motion_name(c, m));
         rb_strbuf_puts(&b, ", \"capacity_mps2\": {");
         for (int k = 0; k < RB_N_LIMITS; k++)
-            num(&b, rb_enum_str(rb_limit_state_names, k), f->motions[m].capacity_mps2[k],
-                k + 1 < RB_N_LIMITS);
+            rb_report_json_num(&b, rb_enum_str(rb_limit_state_names, k),
+                               f->motions[m].capacity_mps2[k], k + 1 < RB_N_LIMITS);
         rb_strbuf_puts(&b, "}, \"censored\": {");
         for (int k = 0; k < RB_N_LIMITS; k++)
             rb_strbuf_printf(&b, "\"%s\": %s%s", rb_enum_str(rb_limit_state_names, k),

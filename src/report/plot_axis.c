@@ -1,6 +1,7 @@
 /* Axes: tick values that a reader can add up in their head (1, 2 or 5
- * times a power of ten), panels that map data onto the figure, and their
- * frames, grid, labels, reference lines and legends. */
+ * times a power of ten), linear or logarithmic, panels that map data onto
+ * the figure, and their frames, grid, labels, reference lines and
+ * legends. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -53,6 +54,7 @@ void rb_axis_nice(rb_axis *ax, double lo, double hi, int target, int round_out)
     ax->lo = lo;
     ax->hi = hi;
     ax->step = step;
+    ax->log = 0;
     ax->n_ticks = 0;
     first = ceil(lo / step - 1e-9);
     for (k = 0; k < RB_PLOT_MAX_TICKS; k++) {
@@ -68,8 +70,77 @@ void rb_axis_nice(rb_axis *ax, double lo, double hi, int target, int round_out)
         ax->decimals = 9;
 }
 
+/* The 1-2-5 value at or below v (down) or at or above it (up), v > 0. */
+static double one_two_five(double v, int up)
+{
+    static const double m[4] = {1, 2, 5, 10};
+    double p = pow(10, floor(log10(v)));
+    if (up) {
+        for (int i = 0; i < 4; i++)
+            if (m[i] * p >= v * (1 - 1e-12))
+                return m[i] * p;
+        return 10 * p;
+    }
+    for (int i = 3; i >= 0; i--)
+        if (m[i] * p <= v * (1 + 1e-12))
+            return m[i] * p;
+    return p;
+}
+
+void rb_axis_log(rb_axis *ax, double lo, double hi)
+{
+    int ok_lo = isfinite(lo) && lo > 0, ok_hi = isfinite(hi) && hi > 0;
+    if (!ok_lo && !ok_hi)
+        lo = hi = 1;
+    else if (!ok_lo)
+        lo = hi;
+    else if (!ok_hi)
+        hi = lo;
+    if (lo > hi) {
+        double t = lo;
+        lo = hi;
+        hi = t;
+    }
+    if (hi <= lo * (1 + 1e-12)) {
+        lo /= 2;
+        hi *= 2;
+    }
+    /* beyond the doubles' range a decade has no 1-2-5 values to round to */
+    lo = fmax(lo, 1e-300);
+    hi = fmin(hi, 1e300);
+    memset(ax, 0, sizeof *ax);
+    ax->log = 1;
+    ax->lo = one_two_five(lo, 0);
+    ax->hi = one_two_five(hi, 1);
+    double decades = log10(ax->hi / ax->lo);
+    /* 1, 2 and 5 in each decade while they fit, else every k-th power */
+    int all = 3 * decades + 1 <= RB_PLOT_MAX_TICKS;
+    int every = (int)ceil((decades + 1) / RB_PLOT_MAX_TICKS);
+    static const double m[3] = {1, 2, 5};
+    for (int e = (int)floor(log10(ax->lo)); e <= (int)ceil(log10(ax->hi)); e++) {
+        if (!all && e % (every > 1 ? every : 1) != 0)
+            continue;
+        for (int i = 0; i < (all ? 3 : 1) && ax->n_ticks < RB_PLOT_MAX_TICKS; i++) {
+            double t = m[i] * pow(10, e);
+            if (t >= ax->lo * (1 - 1e-9) && t <= ax->hi * (1 + 1e-9))
+                ax->ticks[ax->n_ticks++] = t;
+        }
+    }
+}
+
+double rb_axis_frac(const rb_axis *ax, double v)
+{
+    if (ax->log)
+        return log10(v / ax->lo) / log10(ax->hi / ax->lo);
+    return (v - ax->lo) / (ax->hi - ax->lo);
+}
+
 void rb_axis_label(const rb_axis *ax, double v, char *buf, size_t n)
 {
+    if (ax->log) {
+        snprintf(buf, n, "%g", v);
+        return;
+    }
     if (fabs(v) < 1e-9 * ax->step)
         v = 0;
     if (fabs(v) >= 1e6 || (v != 0 && ax->step < 1e-6))
@@ -82,13 +153,13 @@ void rb_axis_label(const rb_axis *ax, double v, char *buf, size_t n)
  * "nan" can reach the SVG through a coordinate. */
 double rb_panel_x(const rb_panel *p, double x)
 {
-    double v = p->x0 + (x - p->xa.lo) / (p->xa.hi - p->xa.lo) * p->w;
+    double v = p->x0 + rb_axis_frac(&p->xa, x) * p->w;
     return isfinite(v) ? v : p->x0;
 }
 
 double rb_panel_y(const rb_panel *p, double y)
 {
-    double v = p->y0 + p->h - (y - p->ya.lo) / (p->ya.hi - p->ya.lo) * p->h;
+    double v = p->y0 + p->h - rb_axis_frac(&p->ya, y) * p->h;
     return isfinite(v) ? v : p->y0 + p->h;
 }
 

@@ -2,7 +2,9 @@
  * lognormal curve P(limit state | peak floor acceleration) and the
  * motions' capacities at their empirical fractions (censored motions
  * count in the fractions but have no point); a dashed line at the case's
- * own level. */
+ * own level. The x axis is logarithmic unless asked otherwise: the base
+ * lifts off at a hundredth of the level at which the bolts yield, which a
+ * linear axis squeezes into its first pixels. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -17,8 +19,8 @@
 #define PANEL_H 420.0
 #define CURVE_POINTS 200
 
-static const char *const colours[RB_N_LIMITS] = {"#ff7f0e", "#d62728", "#7f7f7f",
-                                                 "#1f77b4"};
+const char *const rb_plot_limit_colours[RB_N_LIMITS] = {"#ff7f0e", "#d62728", "#7f7f7f",
+                                                       "#1f77b4"};
 
 static int cmp(const void *a, const void *b)
 {
@@ -26,18 +28,26 @@ static int cmp(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-/* The largest intensity worth drawing: every capacity, and each curve up
- * to 99 %. */
-static double x_top(const rb_case_fragility *f)
+const rb_enum_name rb_plot_scale_names[] = {
+    {"log", RB_PLOT_SCALE_LOG}, {"linear", RB_PLOT_SCALE_LINEAR}, {NULL, 0}};
+
+/* The intensities worth drawing, in g: the level, every capacity, and each
+ * curve from 1 % to 99 %. */
+static void x_range(const rb_case_fragility *f, double *lo, double *hi)
 {
-    double top = f->level_mps2;
+    *lo = *hi = f->level_mps2;
     for (size_t m = 0; m < f->n_motions; m++)
-        for (int k = 0; k < RB_N_LIMITS; k++)
-            top = fmax(top, f->motions[m].capacity_mps2[k]);
+        for (int k = 0; k < RB_N_LIMITS; k++) {
+            *lo = fmin(*lo, f->motions[m].capacity_mps2[k]);
+            *hi = fmax(*hi, f->motions[m].capacity_mps2[k]);
+        }
     for (int k = 0; k < RB_N_LIMITS; k++)
-        if (f->fitted[k])
-            top = fmax(top, rb_fragility_quantile(&f->fit[k], 0.99));
-    return top / f->g_mps2;
+        if (f->fitted[k]) {
+            *lo = fmin(*lo, rb_fragility_quantile(&f->fit[k], 0.01));
+            *hi = fmax(*hi, rb_fragility_quantile(&f->fit[k], 0.99));
+        }
+    *lo /= f->g_mps2;
+    *hi /= f->g_mps2;
 }
 
 static void points(rb_strbuf *b, const rb_panel *p, const rb_case_fragility *f, int k,
@@ -51,12 +61,12 @@ static void points(rb_strbuf *b, const rb_panel *p, const rb_case_fragility *f, 
     for (size_t i = 0; i < n; i++)
         rb_strbuf_printf(b, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"3.5\" fill=\"%s\" "
                          "data-limit-state=\"%s\"/>\n", rb_panel_x(p, cap[i]),
-                         rb_panel_y(p, (i + 0.5) / (double)f->n_motions), colours[k],
+                         rb_panel_y(p, (i + 0.5) / (double)f->n_motions), rb_plot_limit_colours[k],
                          rb_enum_str(rb_limit_state_names, k));
 }
 
-rb_status rb_plot_fragility_svg(const rb_case_fragility *f, const char *title, char **out,
-                                rb_diag *diag)
+rb_status rb_plot_fragility_svg(const rb_case_fragility *f, const char *title,
+                                rb_plot_scale x_scale, char **out, rb_diag *diag)
 {
     rb_strbuf b = {0};
     rb_panel p;
@@ -75,7 +85,12 @@ rb_status rb_plot_fragility_svg(const rb_case_fragility *f, const char *title, c
             snprintf(diag->msg, sizeof diag->msg, "no motions to draw");
         return cap ? RB_ERR_INVALID : RB_ERR_NOMEM;
     }
-    rb_axis_nice(&p.xa, 0, x_top(f), 10, 1);
+    double lo, hi;
+    x_range(f, &lo, &hi);
+    if (x_scale == RB_PLOT_SCALE_LINEAR)
+        rb_axis_nice(&p.xa, 0, hi, 10, 1);
+    else
+        rb_axis_log(&p.xa, lo, hi);
     rb_axis_nice(&p.ya, 0, 1, 5, 1);
     rb_svg_open(&b, FIG_W, TOP + PANEL_H + 80);
     rb_strbuf_printf(&b, "<text x=\"%.1f\" y=\"24\" font-size=\"16\" font-weight=\"bold\">",
@@ -87,7 +102,8 @@ rb_status rb_plot_fragility_svg(const rb_case_fragility *f, const char *title, c
              f->n_motions, f->level_mps2 / f->g_mps2, f->a_star_mps2 / f->g_mps2);
     rb_svg_text(&b, LEFT, 44, 11, "start", NULL, line);
     rb_panel_draw(&b, &p, "probability of reaching the limit state (-)", 1,
-                  "peak floor acceleration (g)");
+                  p.xa.log ? "peak floor acceleration (g), log scale"
+                           : "peak floor acceleration (g)");
     double lx = rb_panel_x(&p, f->level_mps2 / f->g_mps2);
     rb_strbuf_printf(&b, "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\" "
                      "stroke=\"#555555\" stroke-dasharray=\"4 3\"/>\n", lx, p.y0, lx,
@@ -96,14 +112,16 @@ rb_status rb_plot_fragility_svg(const rb_case_fragility *f, const char *title, c
         if (!f->fitted[k])
             continue;
         for (int i = 0; i < CURVE_POINTS; i++) {
-            x[i] = p.xa.hi * (i + 1) / CURVE_POINTS;
+            /* evenly spaced along the axis, whichever its scale */
+            x[i] = p.xa.log ? p.xa.lo * pow(p.xa.hi / p.xa.lo, i / (CURVE_POINTS - 1.0))
+                            : p.xa.hi * (i + 1) / CURVE_POINTS;
             y[i] = rb_fragility_prob(&f->fit[k], x[i] * f->g_mps2);
         }
-        rb_series_path(&b, &p, x, y, CURVE_POINTS, 1, colours[k], NULL,
+        rb_series_path(&b, &p, x, y, CURVE_POINTS, 1, rb_plot_limit_colours[k], NULL,
                        rb_enum_str(rb_limit_state_names, k));
         points(&b, &p, f, k, cap);
         names[n_leg] = rb_enum_str(rb_limit_state_names, k);
-        cols[n_leg++] = colours[k];
+        cols[n_leg++] = rb_plot_limit_colours[k];
     }
     rb_panel_legend(&b, &p, names, cols, n_leg);
     rb_svg_close(&b);

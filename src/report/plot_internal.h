@@ -27,13 +27,15 @@ void rb_plot_summary_tables(rb_strbuf *b, const rb_report *rep);
 
 #define RB_PLOT_MAX_TICKS 16
 
-/* An axis range rounded out to nice ticks (1, 2 or 5 times a power of 10). */
+/* An axis range rounded out to nice ticks (1, 2 or 5 times a power of 10),
+ * linear or logarithmic. */
 typedef struct {
-    double lo, hi;                  /* range drawn */
-    double step;
+    double lo, hi;                  /* range drawn; both > 0 when log */
+    double step;                    /* linear: between ticks */
     double ticks[RB_PLOT_MAX_TICKS];
     int n_ticks;
     int decimals;                   /* for the tick labels */
+    int log;                        /* 1: positions by log10 */
 } rb_axis;
 
 /* Ticks for data in [lo, hi] (any order, non-finite ends taken as 0), about
@@ -41,6 +43,17 @@ typedef struct {
  * otherwise it stays [lo, hi] and only ticks inside are kept. A zero-width
  * range is widened around its value. */
 void rb_axis_nice(rb_axis *ax, double lo, double hi, int target, int round_out);
+
+/* A logarithmic axis for data in [lo, hi], both > 0 (a non-positive or
+ * non-finite end is taken from the other, a zero-width range widened to a
+ * factor of 2 each way): the range rounded out to 1, 2 or 5 times a power
+ * of 10, ticks at those values inside it, or at the powers of 10 alone
+ * when they would be too many. */
+void rb_axis_log(rb_axis *ax, double lo, double hi);
+
+/* Where v lies along ax, 0 at lo and 1 at hi (outside for v outside; not
+ * finite for v <= 0 on a log axis). */
+double rb_axis_frac(const rb_axis *ax, double v);
 
 /* Format v as a tick label of ax (no "-0"). */
 void rb_axis_label(const rb_axis *ax, double v, char *buf, size_t n);
@@ -83,6 +96,11 @@ void rb_series_path(rb_strbuf *b, const rb_panel *p, const double *x,
 /* Smallest and largest finite value of scale * y[i]; returns 0 if none. */
 int rb_series_range(const double *y, size_t n, double scale, double *lo,
                     double *hi);
+
+/* ---- Fragility figures ----------------------------------------------------- */
+
+/* The colour of each limit state (rb_limit_state), the same in every figure. */
+extern const char *const rb_plot_limit_colours[RB_N_LIMITS];
 
 /* ---- Common SVG pieces ---------------------------------------------------- */
 

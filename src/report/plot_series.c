@@ -44,7 +44,7 @@ int rb_series_range(const double *y, size_t n, double scale, double *lo, double 
 /* Columns of half a pixel: two extremes per column keep the envelope. */
 static size_t column_of(const rb_panel *p, double x, size_t n_cols)
 {
-    double f = (x - p->xa.lo) / (p->xa.hi - p->xa.lo);
+    double f = rb_axis_frac(&p->xa, x);
     double c = floor(f * (double)n_cols);
     if (!(c >= 0))
         return 0;

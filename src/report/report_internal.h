@@ -85,4 +85,14 @@ void rb_report_text_motion_anchorage(rb_tvars *t, const rb_report *r,
 rb_status rb_report_text_motion_anchor_modes(const rb_report *r, const rb_report_motion *m,
                                              rb_txt_arena *a, rb_tlist *out);
 
+/* ---- fragility_write.c: what the fragility's and its sweep's JSON share - */
+#include "util/strbuf.h"
+/* "key": v in the shortest form that reads back the same (null when not
+ * finite), with ", " after it when comma is set. */
+void rb_report_json_num(rb_strbuf *b, const char *key, double v, int comma);
+/* Text from the case as a JSON string, escaped as every output escapes it. */
+void rb_report_json_str(rb_strbuf *b, const char *s);
+/* Limit state k of f as one JSON object, on one line. */
+void rb_report_fragility_limit_json(rb_strbuf *b, const rb_case_fragility *f, int k);
+
 #endif

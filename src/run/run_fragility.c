@@ -14,7 +14,6 @@
 #include "rockbolt/run.h"
 #include "util/pool.h"
 
-#define RB_FRAGILITY_CI 0.9
 /* The base lifts at a few thousandths of A* (the frame amplifies the
  * floor): the design searches' 0.001 A* would be a third of it. */
 #define RB_LIFT_OFF_RESOLUTION 1e-5
@@ -136,7 +135,7 @@ static void fit_one(rb_case_fragility *fr, rb_limit_state k)
             fr->im10[k] = rb_fragility_quantile(f, 0.1);
             fr->im50[k] = f->median;
             if (rb_fragility_bootstrap(cap, cens, n, fr->n_boot, fr->seed + (uint64_t)k,
-                                       RB_FRAGILITY_CI, &fr->median_lo[k],
+                                       RB_FRAGILITY_INTERVAL, &fr->median_lo[k],
                                        &fr->median_hi[k], NULL) != RB_OK)
                 fr->median_lo[k] = fr->median_hi[k] = NAN;
         }

@@ -177,6 +177,53 @@ design)
         -q -j 1 --json "$s/d1.json"
     cmp "$s/d.json" "$s/d1.json" || fail "design summaries depend on -j"
     ;;
+fragility)
+    # the suite's fragility in every output; the unreadable case keeps its error
+    run 2 batch tests/batch/cases/a-pass.yaml tests/batch/cases/c-suite.yaml \
+        tests/batch/cases/d-broken.yaml --fragility --seed 5 \
+        --json "$s/f.json" --csv "$s/f.csv" --junit "$s/f.xml"
+    has "$s/out" "^ *\[first-yield\] *median [0-9.]* g, beta [0-9.]*, 90% [0-9.]* to [0-9.]* g; P [0-9.]* at [0-9.]* g; reached by 3 of 3"
+    has "$s/out" "^ *\[overturn\] *not fitted; reached by 0 of 3"
+    has "$s/out" "d-broken .*UNREADABLE"
+    has "$s/f.csv" ",theta_over_alpha,fragility_level_g,fragility_first_yield_median_g,fragility_first_yield_beta,fragility_first_yield_median_lo_g,fragility_first_yield_median_hi_g,fragility_first_yield_p_at_level,fragility_first_yield_reached,fragility_usage_median_g,"
+    has "$s/f.csv" ",fragility_lift_off_reached,fragility_error,validity_warnings,"
+    has "$s/f.json" '"seed":	"5"'
+    has "$s/f.json" '"limit_state":	"lift-off"'
+    has "$s/f.xml" '<property name="fragility.usage.median_g" value="[0-9.]*"/>'
+    check_junit "$s/f.xml"
+    if command -v python3 >/dev/null 2>&1; then
+        python3 - "$s/f.csv" "$s/f.json" <<'PY' || fail "fragility columns"
+import csv, json, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert len({len(r) for r in rows}) == 1, "rows of different lengths"
+suite = [r for r in rows if r["tag"] == "c-suite"]
+assert len(suite) == 3 and len({r["fragility_usage_median_g"] for r in suite}) == 1
+assert float(suite[0]["fragility_usage_median_g"]) > 0
+broken = [r for r in rows if r["tag"] == "d-broken"][0]
+assert broken["fragility_level_g"] == "" and "missing unit" in broken["error"]
+cases = {c["tag"]: c for c in json.load(open(sys.argv[2]))["cases"]}
+assert "fragility" not in cases["d-broken"], "an unreadable case has a fragility"
+f = cases["c-suite"]["fragility"]
+assert [l["limit_state"] for l in f["limit_states"]] == \
+    ["first-yield", "usage", "overturn", "lift-off"]
+PY
+    fi
+    # the seed belongs to --fragility, and is a whole number
+    run 2 batch tests/batch/cases/a-pass.yaml --seed 5 --json "$s/no.json"
+    has "$s/err" "error: --seed: the seed of the fragility's bootstrap needs --fragility"
+    [ ! -e "$s/no.json" ] || fail "a summary written after a usage error"
+    run 2 batch tests/batch/cases/a-pass.yaml --fragility --seed -1 --json "$s/no.json"
+    has "$s/err" "option '--seed' needs a whole number from 0 to 18446744073709551615 (got '-1')"
+    [ ! -e "$s/no.json" ] || fail "a summary written after a usage error"
+    # shards run with other seeds do not merge
+    run 0 batch tests/batch/cases/a-pass.yaml tests/batch/cases/c-suite.yaml -q \
+        --fragility --shard 1/2 --json "$s/s1.json"
+    run 1 batch tests/batch/cases/a-pass.yaml tests/batch/cases/c-suite.yaml -q \
+        --fragility --seed 1 --shard 2/2 --json "$s/s2.json"
+    run 2 merge "$s/s1.json" "$s/s2.json" --json "$s/m.json"
+    has "$s/err" "differ in --seed (1 and 0)"
+    [ ! -e "$s/m.json" ] || fail "a merge written from shards of other seeds"
+    ;;
 *)
     fail "unknown test $t"
     ;;

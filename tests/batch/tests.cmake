@@ -1,7 +1,7 @@
 # End-to-end tests of "rockbolt batch" and "rockbolt merge" (label "batch"):
 # every output file, the exit codes, determinism across thread counts and
 # across shards merged, JUnit well-formedness.
-set(RB_BATCH_TESTS outputs determinism shards errors usage reports design)
+set(RB_BATCH_TESTS outputs determinism shards errors usage reports design fragility)
 foreach(t ${RB_BATCH_TESTS})
   add_test(NAME batch_${t}
            COMMAND sh ${PROJECT_SOURCE_DIR}/tests/batch/batch_test.sh ${t}

@@ -11,6 +11,8 @@ Run from the source root. On a suite of two shipped records:
     (mean and standard deviation over n of ln capacity);
   - a state no motion reaches within the scan is censored at the scan's
     end and not fitted; the CSV has a row per motion and state;
+  - the figure's x axis is logarithmic unless --x-scale linear, and a bad
+    --x-scale is refused (exit 2, nothing written);
   - a free-standing case is refused (exit 2) and writes nothing."""
 import json, math, os, shutil, subprocess, sys
 
@@ -46,8 +48,11 @@ case = write_case("suite", "design:\n  scan_end: 0.6\n")
 j1, j2 = os.path.join(scratch, "j1.json"), os.path.join(scratch, "j2.json")
 csv = os.path.join(scratch, "f.csv")
 html = os.path.join(scratch, "f.html")
-r1 = run("fragility", case, "-j", "1", "--json", j1, "--csv", csv, "--html", html, "-q")
-r2 = run("fragility", case, "-j", "2", "--json", j2, "-q")
+svg_log, svg_lin = os.path.join(scratch, "log.svg"), os.path.join(scratch, "lin.svg")
+r1 = run("fragility", case, "-j", "1", "--json", j1, "--csv", csv, "--html", html,
+         "--svg", svg_log, "-q")
+r2 = run("fragility", case, "-j", "2", "--json", j2, "--svg", svg_lin, "--x-scale", "linear",
+         "-q")
 if r1.returncode or r2.returncode:
     fail(f"exit {r1.returncode} / {r2.returncode}: {r1.stderr.strip()[:300]}")
     sys.exit(1)
@@ -96,6 +101,20 @@ if states["overturn"]["fitted"]:
 page = open(html).read()
 if page.count("<svg") != 1 or "first-yield" not in page or "median g" not in page:
     fail("the page lacks the figure or the table")
+
+# the x axis: log by default, linear when asked; the same curves either way
+log_svg, lin_svg = open(svg_log).read(), open(svg_lin).read()
+if "peak floor acceleration (g), log scale" not in log_svg or "log scale" in lin_svg:
+    fail("the figure's x axis is not log by default and linear with --x-scale linear")
+if log_svg.count("<path") != lin_svg.count("<path") or "<path" not in log_svg:
+    fail("the log and linear figures do not draw the same curves")
+for bad, msg in ((["--x-scale", "ln"], "option '--x-scale' needs log or linear (got 'ln')"),
+                 (["--x-scale", "log", "--x-scale", "linear"], "'--x-scale' given twice"),
+                 (["--x-scale"], "option '--x-scale' needs log or linear")):
+    out = os.path.join(scratch, "bad.svg")
+    r = run("fragility", case, "--svg", out, *bad)
+    if r.returncode != 2 or os.path.exists(out) or msg not in r.stderr:
+        fail(f"{bad}: exit {r.returncode}, {r.stderr.strip()[:200]}")
 
 rows = open(csv).read().splitlines()
 if len(rows) != 1 + 2 * 4 or rows[0] != "motion,limit_state,capacity_g,capacity_astar,censored":

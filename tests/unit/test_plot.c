@@ -432,10 +432,118 @@ static void test_axis(void)
     CHECK(isfinite(ax.lo) && isfinite(ax.hi) && ax.hi > ax.lo);
 }
 
+/* Log axes: 1-2-5 ends and ticks around the data, positions by log10,
+ * something drawable for any input. */
+static void test_log_axis(void)
+{
+    rb_axis ax;
+    char lab[32];
+    rb_axis_log(&ax, 0.0318, 14.6);
+    CHECK(ax.log && ax.lo == 0.02 && ax.hi == 20);
+    CHECK(ax.n_ticks == 10 && ax.ticks[0] == 0.02 && ax.ticks[ax.n_ticks - 1] == 20);
+    for (int i = 0; i < ax.n_ticks; i++) {
+        double m = ax.ticks[i] / pow(10, floor(log10(ax.ticks[i]) + 1e-9));
+        CHECK(fabs(m - 1) < 1e-9 || fabs(m - 2) < 1e-9 || fabs(m - 5) < 1e-9);
+        CHECK(i == 0 || ax.ticks[i] > ax.ticks[i - 1]);
+    }
+    CHECK_NEAR(rb_axis_frac(&ax, 0.02), 0, 1e-12);
+    CHECK_NEAR(rb_axis_frac(&ax, 20), 1, 1e-12);
+    CHECK_NEAR(rb_axis_frac(&ax, sqrt(0.02 * 20)), 0.5, 1e-12);   /* the geometric mean */
+    CHECK(!isfinite(rb_axis_frac(&ax, 0)));
+    rb_axis_label(&ax, 0.05, lab, sizeof lab);
+    CHECK(strcmp(lab, "0.05") == 0);
+    rb_axis_label(&ax, 20, lab, sizeof lab);
+    CHECK(strcmp(lab, "20") == 0);
+    rb_axis_log(&ax, 2, 5);                   /* the ends are ticks already */
+    CHECK(ax.lo == 2 && ax.hi == 5 && ax.n_ticks == 2);
+    rb_axis_log(&ax, 1e-10, 1e10);            /* 20 decades: powers of 10 only */
+    CHECK(ax.n_ticks >= 2 && ax.n_ticks <= RB_PLOT_MAX_TICKS);
+    for (int i = 0; i < ax.n_ticks; i++)
+        CHECK_NEAR(log10(ax.ticks[i]), round(log10(ax.ticks[i])), 1e-9);
+    double bad[][2] = {{0, 0}, {-1, 3}, {NAN, HUGE_VAL}, {3, 3}, {1e-320, 1e308}};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        rb_axis_log(&ax, bad[i][0], bad[i][1]);
+        CHECK(isfinite(ax.lo) && isfinite(ax.hi) && ax.lo > 0 && ax.hi > ax.lo);
+        CHECK(ax.n_ticks >= 1 && ax.n_ticks <= RB_PLOT_MAX_TICKS);
+    }
+}
+
+/* The x of the first circle drawn for a limit state. */
+static double circle_x(const char *svg, const char *state)
+{
+    char key[64];
+    snprintf(key, sizeof key, "data-limit-state=\"%s\"", state);
+    const char *k = strstr(svg, key);
+    const char *c = NULL;
+    for (const char *p = svg; k && (p = strstr(p, "<circle cx=\"")) && p < k; p++)
+        c = p;
+    return c ? atof(c + strlen("<circle cx=\"")) : (double)NAN;
+}
+
+/* The fragility figure of a hand-made suite whose lift-off (0.035 g) is
+ * four hundred times below its overturning (14 g): on the default log
+ * axis both are spread over the panel, on a linear one lift-off is
+ * squeezed against the axis. */
+static void test_fragility_figure(void)
+{
+    static const double cap_g[4][RB_N_LIMITS] = {
+        {3.0, 4.6, 13.0, 0.033}, {3.2, 4.7, 14.0, 0.036}, {2.9, 4.8, 12.5, 0.034},
+        {3.4, 4.5, 13.5, 0.037}};
+    rb_motion_fragility m[4];
+    rb_case_fragility f;
+    memset(&f, 0, sizeof f);
+    f.motions = m;
+    f.n_motions = 4;
+    f.g_mps2 = 9.80665;
+    f.a_star_mps2 = 11.7 * f.g_mps2;
+    f.level_mps2 = 0.4 * f.a_star_mps2;
+    for (int i = 0; i < 4; i++) {
+        memset(&m[i], 0, sizeof m[i]);
+        for (int k = 0; k < RB_N_LIMITS; k++)
+            m[i].capacity_mps2[k] = cap_g[i][k] * f.g_mps2;
+    }
+    for (int k = 0; k < RB_N_LIMITS; k++) {
+        double c[4];
+        for (int i = 0; i < 4; i++)
+            c[i] = m[i].capacity_mps2[k];
+        CHECK(rb_fragility_mle(c, NULL, 4, &f.fit[k]) == RB_OK);
+        f.fitted[k] = 1;
+    }
+    char *log_svg = NULL, *lin_svg = NULL;
+    rb_diag d;
+    CHECK(rb_plot_fragility_svg(&f, "suite", RB_PLOT_SCALE_LOG, &log_svg, &d) == RB_OK);
+    CHECK(rb_plot_fragility_svg(&f, "suite", RB_PLOT_SCALE_LINEAR, &lin_svg, &d) == RB_OK);
+    CHECK(log_svg && lin_svg);
+    if (!log_svg || !lin_svg)
+        goto done;
+    CHECK(count(log_svg, "<path") == RB_N_LIMITS && count(lin_svg, "<path") == RB_N_LIMITS);
+    CHECK(!has_nonfinite(log_svg) && !has_nonfinite(lin_svg));
+    CHECK(strstr(log_svg, "peak floor acceleration (g), log scale") != NULL);
+    CHECK(strstr(lin_svg, "log scale") == NULL);
+    CHECK(strstr(log_svg, ">0.02<") && strstr(log_svg, ">20<"));
+    /* panel from x = 100 to 868: where the first lift-off and overturn
+     * points land, as a fraction of it */
+    double lo_log = (circle_x(log_svg, "lift-off") - 100) / 768;
+    double ov_log = (circle_x(log_svg, "overturn") - 100) / 768;
+    double lo_lin = (circle_x(lin_svg, "lift-off") - 100) / 768;
+    CHECK(lo_log > 0.05 && ov_log < 0.97 && ov_log - lo_log > 0.6);
+    CHECK(lo_lin >= 0 && lo_lin < 0.01);
+    /* on the log axis equal ratios are equal distances */
+    rb_axis ax;
+    rb_axis_log(&ax, 0.02, 20);
+    double want = rb_axis_frac(&ax, 0.033);
+    CHECK_NEAR(lo_log, want, 0.01);
+done:
+    free(log_svg);
+    free(lin_svg);
+}
+
 int main(void)
 {
     setup();
     test_axis();
+    test_log_axis();
+    test_fragility_figure();
     test_history_figure();
     test_history_scaling();
     test_hysteresis();

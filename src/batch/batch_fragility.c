@@ -1,0 +1,52 @@
+/* A batch case's fragility: the same rb_run_fragility call as `rockbolt
+ * fragility`, with the same resamples and seed, so that a row's numbers
+ * are the command's to the last bit; only what the summary shows is kept.
+ * A case that has no fragility by its nature (no bolts) keeps its verdict
+ * and says why; a search that fails makes the case an error, as a failed
+ * design search does. */
+#include <stdio.h>
+#include <stdlib.h>
+#include "batch_engine.h"
+#include "rockbolt/run.h"
+
+static void keep(const rb_case_fragility *f, rb_batch_fragility *out)
+{
+    out->g_mps2 = f->g_mps2;
+    out->level_mps2 = f->level_mps2;
+    for (int k = 0; k < RB_N_LIMITS; k++) {
+        rb_batch_limit *l = &out->limits[k];
+        l->fitted = f->fitted[k];
+        l->median_mps2 = f->fit[k].median;
+        l->beta = f->fit[k].beta;
+        l->median_lo_mps2 = f->median_lo[k];
+        l->median_hi_mps2 = f->median_hi[k];
+        l->p_at_level = f->p_at_level[k];
+        l->reached = 0;
+        for (size_t m = 0; m < f->n_motions; m++)
+            l->reached += f->motions[m].censored[k] == 0;
+    }
+}
+
+void rb_batch_case_fragility(rb_batch_slot *s, rb_batch_case *bc, int n_threads,
+                             uint64_t seed)
+{
+    rb_case_fragility f;
+    rb_diag_clear(&s->frag_diag);
+    bc->fragility = calloc(1, sizeof *bc->fragility);
+    if (!bc->fragility) {
+        s->frag_status = RB_ERR_NOMEM;
+        return;
+    }
+    s->frag_status = rb_run_fragility(&s->c, n_threads, seed, RB_FRAGILITY_RESAMPLES, &f,
+                                      &s->frag_diag, NULL, NULL);
+    if (s->frag_status == RB_OK) {
+        keep(&f, bc->fragility);
+    } else if (s->frag_status == RB_ERR_INVALID) {
+        char why[sizeof s->frag_diag.key + sizeof s->frag_diag.msg + 2];
+        snprintf(why, sizeof why, "%s%s%s", s->frag_diag.key,
+                 s->frag_diag.key[0] ? ": " : "", s->frag_diag.msg);
+        bc->fragility->error = rb_batch_strdup(why);
+        s->frag_status = bc->fragility->error ? RB_OK : RB_ERR_NOMEM;
+    }
+    rb_case_fragility_free(&f);
+}

@@ -1,0 +1,119 @@
+/* A fragility sweep over gap ratios as text, JSON and CSV. Every point has
+ * the case's motions and level, so the head gives them once. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include "rockbolt/names.h"
+#include "rockbolt/report.h"
+#include "rockbolt/textsafe.h"
+#include "report_internal.h"
+#include "util/strbuf.h"
+
+char *rb_fragility_sweep_render_text(const rb_case *c, const rb_fragility_sweep *s)
+{
+    rb_strbuf b = {0};
+    char name[128];
+    if (s->n_points == 0)
+        return rb_strbuf_take(&b);
+    const rb_case_fragility *f0 = &s->points[0];
+    double g = f0->g_mps2;
+    rb_strbuf_printf(&b, "fragility of %s against the gap ratio: %zu motions, at the "
+                     "case's level %.4f g = %.4f A*\n",
+                     rb_text_escape_buf(c->name ? c->name : "case", name, sizeof name),
+                     f0->n_motions, f0->level_mps2 / g, f0->level_mps2 / f0->a_star_mps2);
+    rb_strbuf_printf(&b, "%-9s", "");
+    for (int k = 0; k < RB_N_LIMITS; k++)
+        rb_strbuf_printf(&b, " %28s", rb_enum_str(rb_limit_state_names, k));
+    rb_strbuf_printf(&b, "\n%-9s", "gap ratio");
+    for (int k = 0; k < RB_N_LIMITS; k++)
+        rb_strbuf_printf(&b, " %11s %7s %8s", "median g", "beta", "P(level)");
+    rb_strbuf_puts(&b, "\n");
+    long runs = 0;
+    for (size_t i = 0; i < s->n_points; i++) {
+        const rb_case_fragility *f = &s->points[i];
+        rb_strbuf_printf(&b, "%-9.4g", s->gap_ratios[i]);
+        for (int k = 0; k < RB_N_LIMITS; k++) {
+            if (f->fitted[k])
+                rb_strbuf_printf(&b, " %11.4g %7.3f %8.4f", f->fit[k].median / g,
+                                 f->fit[k].beta, f->p_at_level[k]);
+            else
+                rb_strbuf_printf(&b, " %28s", "not fitted");
+        }
+        rb_strbuf_puts(&b, "\n");
+        runs += f->runs;
+    }
+    rb_strbuf_printf(&b, "%ld solver runs; P: probability at the case's level\n", runs);
+    return rb_strbuf_take(&b);
+}
+
+char *rb_fragility_sweep_render_json(const rb_case *c, const rb_fragility_sweep *s)
+{
+    rb_strbuf b = {0};
+    const rb_case_fragility *f0 = s->n_points ? &s->points[0] : NULL;
+    long runs = 0;
+    for (size_t i = 0; i < s->n_points; i++)
+        runs += s->points[i].runs;
+    rb_strbuf_puts(&b, "{\n  \"format\": \"rockbolt-fragility-gap-sweep\", "
+                       "\"format_version\": 1,\n  \"case\": ");
+    rb_report_json_str(&b, c->name ? c->name : "");
+    rb_strbuf_puts(&b, ",\n  \"intensity\": \"peak_floor_acceleration\", ");
+    rb_report_json_num(&b, "g_mps2", f0 ? f0->g_mps2 : (double)NAN, 1);
+    rb_report_json_num(&b, "a_star_mps2", f0 ? f0->a_star_mps2 : (double)NAN, 1);
+    rb_report_json_num(&b, "level_mps2", f0 ? f0->level_mps2 : (double)NAN, 1);
+    rb_strbuf_printf(&b, "\"motions\": %zu, \"bootstrap\": {\"resamples\": %u, \"seed\": "
+                     "%llu, \"interval\": 0.9}, \"runs\": %ld,\n  \"points\": [\n",
+                     f0 ? f0->n_motions : 0, f0 ? f0->n_boot : 0,
+                     f0 ? (unsigned long long)f0->seed : 0ull, runs);
+    for (size_t i = 0; i < s->n_points; i++) {
+        const rb_case_fragility *f = &s->points[i];
+        rb_strbuf_puts(&b, "    {");
+        rb_report_json_num(&b, "gap_ratio", s->gap_ratios[i], 1);
+        rb_strbuf_printf(&b, "\"runs\": %ld, \"limit_states\": [\n", f->runs);
+        for (int k = 0; k < RB_N_LIMITS; k++) {
+            rb_strbuf_puts(&b, "      ");
+            rb_report_fragility_limit_json(&b, f, k);
+            rb_strbuf_puts(&b, k + 1 < RB_N_LIMITS ? ",\n" : "\n");
+        }
+        rb_strbuf_printf(&b, "    ]}%s\n", i + 1 < s->n_points ? "," : "");
+    }
+    rb_strbuf_puts(&b, "  ]\n}\n");
+    return rb_strbuf_take(&b);
+}
+
+/* A number of 6 significant digits, or nothing when there is none. */
+static void field(rb_strbuf *b, double v)
+{
+    if (isfinite(v))
+        rb_strbuf_printf(b, ",%.6g", v);
+    else
+        rb_strbuf_puts(b, ",");
+}
+
+char *rb_fragility_sweep_render_csv(const rb_fragility_sweep *s)
+{
+    rb_strbuf b = {0};
+    rb_strbuf_puts(&b, "gap_ratio,limit_state,fitted,median_g,beta,median_lo_g,median_hi_g,"
+                       "p_at_level,reached\n");
+    for (size_t i = 0; i < s->n_points; i++) {
+        const rb_case_fragility *f = &s->points[i];
+        double g = f->g_mps2;
+        for (int k = 0; k < RB_N_LIMITS; k++) {
+            size_t reached = 0;
+            for (size_t m = 0; m < f->n_motions; m++)
+                reached += f->motions[m].censored[k] == 0;
+            rb_strbuf_printf(&b, "%.6g,%s,%d", s->gap_ratios[i],
+                             rb_enum_str(rb_limit_state_names, k), f->fitted[k]);
+            if (f->fitted[k]) {
+                field(&b, f->fit[k].median / g);
+                field(&b, f->fit[k].beta);
+                field(&b, f->median_lo[k] / g);
+                field(&b, f->median_hi[k] / g);
+                field(&b, f->p_at_level[k]);
+            } else {
+                rb_strbuf_puts(&b, ",,,,,");
+            }
+            rb_strbuf_printf(&b, ",%zu\n", reached);
+        }
+    }
+    return rb_strbuf_take(&b);
+}
