@@ -77,12 +77,24 @@ typedef struct {
     double capacity_mps2[RB_N_LIMITS];
     int censored[RB_N_LIMITS];
     long runs;
+    double im_per_pfa;  /* the intensity over the peak floor acceleration:
+                           1, or Sa(f0) / peak (linear in the level) */
 } rb_motion_fragility;
+
+/* The intensity measure capacities and levels are given in. */
+typedef enum {
+    RB_IM_PFA = 0,  /* peak floor acceleration */
+    RB_IM_SA        /* 5 % pseudo-spectral acceleration at the cabinet's
+                       fixed-base frequency */
+} rb_fragility_intensity;
 
 typedef struct {
     rb_motion_fragility *motions;   /* owned, one per motion of the case */
     size_t n_motions;
-    double level_mps2;              /* the case's own level: motion 1's peak */
+    rb_fragility_intensity intensity;
+    double im_freq_hz, im_damping;  /* RB_IM_SA: where Sa is taken */
+    double level_mps2;              /* the case's own level: motion 1's
+                                       intensity (its peak, or its Sa) */
     double g_mps2, a_star_mps2;
     uint64_t seed;                  /* of the bootstrap */
     unsigned n_boot;

@@ -209,6 +209,9 @@ rb_status rb_outfile_write_all(const char *path, const char *data, size_t len,
  * motion and limit state, in g and A*). Each returns a string the caller
  * frees, or NULL when memory runs out. */
 char *rb_fragility_render_text(const rb_case *c, const rb_case_fragility *f);
+/* The intensity a fragility is in, in words ("peak floor acceleration",
+ * "5 % spectral acceleration at 5 Hz"). */
+void rb_fragility_intensity_describe(const rb_case_fragility *f, char *buf, size_t n);
 char *rb_fragility_render_json(const rb_case *c, const rb_case_fragility *f);
 char *rb_fragility_render_csv(const rb_case *c, const rb_case_fragility *f);
 

@@ -87,6 +87,17 @@ rb_status rb_run_fragility(const rb_case *c, int n_threads, uint64_t seed, unsig
  * critical excitation). */
 rb_status rb_run_spectra(const rb_case *c, const rb_spectrum_opts *o, rb_case_spectra *out,
                          rb_diag *diag);
+/* Restate a fragility of c (from rb_run_fragility, in peak floor
+ * acceleration) in another intensity: RB_IM_SA, the 5 % pseudo-spectral
+ * acceleration at the cabinet's fixed-base frequency. A motion's Sa is
+ * linear in its level, so each capacity is its peak times the motion's
+ * Sa(f0) / peak (im_per_pfa); the case's level likewise, and every limit
+ * state is fitted again with the same bootstrap seed. The searches are not
+ * run again. RB_ERR_INVALID (diag->key "equipment.frequency") for a rigid
+ * cabinet, which has no fixed-base frequency. */
+rb_status rb_run_fragility_intensity(const rb_case *c, rb_fragility_intensity im,
+                                     rb_case_fragility *f, rb_diag *diag);
+
 /* The most gap ratios a sweep takes: each is a whole fragility. */
 #define RB_FRAGILITY_SWEEP_MAX_POINTS 100
 

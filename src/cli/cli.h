@@ -51,6 +51,8 @@ typedef struct {
     rb_plot_scale x_scale;    /* fragility: --x-scale of the figure (log) */
     int x_scale_given;
     const char *sweep_gap;    /* fragility: --sweep-gap FROM:TO:STEP, or NULL */
+    rb_fragility_intensity intensity; /* fragility: --intensity pfa|sa */
+    int intensity_given;
     double gap_ratios[RB_FRAGILITY_SWEEP_MAX_POINTS]; /* its grid */
     size_t n_gap_ratios;
 } rb_cli_opts;

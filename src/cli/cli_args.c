@@ -114,7 +114,7 @@ static rb_exit take_threads(const char *v, rb_cli_opts *o)
 
 enum { OPT_JSON = 256, OPT_TEXT, OPT_HISTORY, OPT_SVG, OPT_HTML, OPT_SANDBOX,
        OPT_SWEEP_CSV, OPT_CSV, OPT_SEED, OPT_DAMPING, OPT_FROM, OPT_TO, OPT_PER_OCTAVE,
-       OPT_AC156, OPT_X_SCALE, OPT_SWEEP_GAP };
+       OPT_AC156, OPT_X_SCALE, OPT_SWEEP_GAP, OPT_INTENSITY };
 
 /* Every long option once, with the commands that take it: each command's
  * table is drawn from this one, so an option means the same everywhere. */
@@ -144,6 +144,7 @@ static const struct {
     {{"ac156", no_argument, NULL, OPT_AC156}, INIT},
     {{"x-scale", required_argument, NULL, OPT_X_SCALE}, FRAGILITY},
     {{"sweep-gap", required_argument, NULL, OPT_SWEEP_GAP}, FRAGILITY},
+    {{"intensity", required_argument, NULL, OPT_INTENSITY}, FRAGILITY},
     {{"threads", required_argument, NULL, 'j'}, DESIGN | FRAGILITY},
     {{"quiet", no_argument, NULL, 'q'}, CHECK | DESIGN | FRAGILITY | SPECTRUM},
     {{"help", no_argument, NULL, 'h'}, CHECK | DESIGN | FRAGILITY | INIT | SPECTRUM},
@@ -213,6 +214,21 @@ static rb_exit take_option(int c, const rb_cli_getopt *g, rb_cli_opts *o)
         return rb_cli_take_seed(g->arg, &o->seed);
     case OPT_SWEEP_GAP:
         return take_sweep_gap(g->arg, o);
+    case OPT_INTENSITY: {
+        int v;
+        if (o->intensity_given) {
+            rb_cli_error(NULL, NULL, "option '--intensity' given twice");
+            return RB_EXIT_USAGE;
+        }
+        if (!rb_enum_parse(rb_intensity_names, g->arg, &v)) {
+            rb_cli_error(NULL, NULL, "option '--intensity' needs pfa or sa (got '%s')",
+                         g->arg);
+            return RB_EXIT_USAGE;
+        }
+        o->intensity = (rb_fragility_intensity)v;
+        o->intensity_given = 1;
+        return RB_EXIT_PASS;
+    }
     case OPT_X_SCALE: {
         int v;
         if (o->x_scale_given) {
@@ -300,6 +316,7 @@ static rb_exit parse_rest(int argc, char **argv, rb_cli_opts *o)
                          ? "a number of threads"
                          : strcmp(g.name, "--seed") == 0 ? "a whole number"
                          : strcmp(g.name, "--x-scale") == 0 ? "log or linear"
+                         : strcmp(g.name, "--intensity") == 0 ? "pfa or sa"
                          : strcmp(g.name, "--sweep-gap") == 0 ? "FROM:TO:STEP"
                          : o->command == RB_CMD_SPECTRUM && strcmp(g.name, "--json")
                            && strcmp(g.name, "--csv") && strcmp(g.name, "--svg")
@@ -386,6 +403,11 @@ rb_exit rb_cli_args_parse(int argc, char **argv, rb_cli_opts *o)
                         : o->command == RB_CMD_FRAGILITY ? "fragility"
                         : o->command == RB_CMD_SPECTRUM ? "spectrum" : "check";
         rb_cli_error(NULL, NULL, "'%s' needs a case file: rockbolt %s CASE.yaml", c, c);
+        return RB_EXIT_USAGE;
+    }
+    if (o->sweep_gap && o->intensity_given && o->intensity != RB_IM_PFA) {
+        rb_cli_error(NULL, NULL, "option '--intensity sa' is not available with "
+                     "--sweep-gap: the sweep is in peak floor acceleration");
         return RB_EXIT_USAGE;
     }
     if (o->sweep_gap && o->x_scale_given) {

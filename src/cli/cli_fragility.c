@@ -122,6 +122,8 @@ static rb_exit compute(const rb_cli_opts *o, const rb_case *c, rb_case_fragility
     else
         st = rb_run_fragility(c, o->threads, o->seed, RB_FRAGILITY_RESAMPLES, f, &d,
                               line.enabled ? rb_cli_progress_design : NULL, &line);
+    if (st == RB_OK && !o->sweep_gap)
+        st = rb_run_fragility_intensity(c, o->intensity, f, &d);
     if (line.enabled && line.shown)
         fputs("\r\033[K", stderr);
     if (st == RB_OK)

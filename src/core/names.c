@@ -54,6 +54,8 @@ const rb_enum_name rb_aci17_coef_names[] = {
     {"si", RB_ACI17_SI}, {"in-lb", RB_ACI17_INLB}, {NULL, 0}};
 
 
+const rb_enum_name rb_intensity_names[] = {
+    {"pfa", RB_IM_PFA}, {"sa", RB_IM_SA}, {NULL, 0}};
 const rb_enum_name rb_limit_state_names[] = {
     {"first-yield", RB_LIMIT_FIRST_YIELD}, {"usage", RB_LIMIT_USAGE},
     {"overturn", RB_LIMIT_OVERTURN}, {"lift-off", RB_LIMIT_LIFT_OFF}, {NULL, 0}};

@@ -17,15 +17,26 @@ static const char *motion_name(const rb_case *c, size_t m)
     return c->motions[m].name ? c->motions[m].name : "?";
 }
 
+void rb_fragility_intensity_describe(const rb_case_fragility *f, char *buf, size_t n)
+{
+    if (f->intensity == RB_IM_SA)
+        snprintf(buf, n, "%g %% spectral acceleration at %.3g Hz", 100 * f->im_damping,
+                 f->im_freq_hz);
+    else
+        snprintf(buf, n, "peak floor acceleration");
+}
+
 char *rb_fragility_render_text(const rb_case *c, const rb_case_fragility *f)
 {
     rb_strbuf b = {0};
     char name[128];
     double g = f->g_mps2, as = f->a_star_mps2;
-    rb_strbuf_printf(&b, "fragility of %s: %zu motions, peak floor acceleration as the "
-                     "intensity (A* = %.3f g), at the case's level %.4f g = %.4f A*\n",
+    char im[96];
+    rb_fragility_intensity_describe(f, im, sizeof im);
+    rb_strbuf_printf(&b, "fragility of %s: %zu motions, %s as the intensity (A* = %.3f g), "
+                     "at the case's level %.4f g = %.4f A*\n",
                      rb_text_escape_buf(c->name ? c->name : "case", name, sizeof name),
-                     f->n_motions, as / g, f->level_mps2 / g, f->level_mps2 / as);
+                     f->n_motions, im, as / g, f->level_mps2 / g, f->level_mps2 / as);
     rb_strbuf_printf(&b, "%-12s %9s %7s %21s %9s %9s %8s %8s\n", "limit state",
                      "median g", "beta", "median 90% interval", "10% at g", "P(level)",
                      "reached", "censored");
@@ -113,7 +124,12 @@ char *rb_fragility_render_json(const rb_case *c, const rb_case_fragility *f)
     rb_strbuf_puts(&b, "{\n  \"format\": \"rockbolt-fragility\", \"format_version\": 1,\n"
                        "  \"case\": ");
     rb_report_json_str(&b, c->name ? c->name : "");
-    rb_strbuf_puts(&b, ",\n  \"intensity\": \"peak_floor_acceleration\", ");
+    rb_strbuf_printf(&b, ",\n  \"intensity\": \"%s\", ", f->intensity == RB_IM_SA
+                     ? "spectral_acceleration" : "peak_floor_acceleration");
+    if (f->intensity == RB_IM_SA) {
+        rb_report_json_num(&b, "intensity_freq_hz", f->im_freq_hz, 1);
+        rb_report_json_num(&b, "intensity_damping", f->im_damping, 1);
+    }
     rb_report_json_num(&b, "g_mps2", f->g_mps2, 1);
     rb_report_json_num(&b, "a_star_mps2", f->a_star_mps2, 1);
     rb_report_json_num(&b, "level_mps2", f->level_mps2, 1);
@@ -129,6 +145,10 @@ char *rb_fragility_render_json(const rb_case *c, const rb_case_fragility *f)
     for (size_t m = 0; m < f->n_motions; m++) {
         rb_strbuf_puts(&b, "    {\"name\": ");
         rb_report_json_str(&b, motion_name(c, m));
+        if (f->intensity != RB_IM_PFA) {
+            rb_strbuf_puts(&b, ", ");
+            rb_report_json_num(&b, "im_per_pfa", f->motions[m].im_per_pfa, 0);
+        }
         rb_strbuf_puts(&b, ", \"capacity_mps2\": {");
         for (int k = 0; k < RB_N_LIMITS; k++)
             rb_report_json_num(&b, rb_enum_str(rb_limit_state_names, k),

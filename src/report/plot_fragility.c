@@ -101,9 +101,10 @@ rb_status rb_plot_fragility_svg(const rb_case_fragility *f, const char *title,
              "their fractions; dashed: the case's level %.3g g (A* = %.3g g)",
              f->n_motions, f->level_mps2 / f->g_mps2, f->a_star_mps2 / f->g_mps2);
     rb_svg_text(&b, LEFT, 44, 11, "start", NULL, line);
-    rb_panel_draw(&b, &p, "probability of reaching the limit state (-)", 1,
-                  p.xa.log ? "peak floor acceleration (g), log scale"
-                           : "peak floor acceleration (g)");
+    char im[96], x_title[140];
+    rb_fragility_intensity_describe(f, im, sizeof im);
+    snprintf(x_title, sizeof x_title, "%s (g)%s", im, p.xa.log ? ", log scale" : "");
+    rb_panel_draw(&b, &p, "probability of reaching the limit state (-)", 1, x_title);
     double lx = rb_panel_x(&p, f->level_mps2 / f->g_mps2);
     rb_strbuf_printf(&b, "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\" "
                      "stroke=\"#555555\" stroke-dasharray=\"4 3\"/>\n", lx, p.y0, lx,

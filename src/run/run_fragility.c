@@ -100,7 +100,7 @@ static rb_status job(void *arg, size_t i)
     job_ctx *jc = arg;
     size_t n = jc->out->n_motions, m = i % n;
     int k = (int)longest_first[i / n];
-    rb_motion_fragility one = {{0}, {0}, 0};
+    rb_motion_fragility one = {{0}, {0}, 0, 1.0};
     rb_diag_clear(&jc->diags[i]);
     rb_status st = search(jc->c, m, (rb_limit_state)k, 1, &one, &jc->diags[i]);
     pthread_mutex_lock(&jc->lock);
@@ -163,6 +163,9 @@ rb_status rb_run_fragility(const rb_case *c, int n_threads, uint64_t seed, unsig
     out->g_mps2 = d.g;
     out->a_star_mps2 = d.a_star_mps2;
     out->level_mps2 = rb_motion_peak(&c->motions[0].motion);
+    out->intensity = RB_IM_PFA;
+    for (size_t m = 0; m < c->n_motions; m++)
+        out->motions[m].im_per_pfa = 1.0;
     out->seed = seed;
     out->n_boot = n_boot;
     size_t total = c->n_motions * RB_N_LIMITS;
@@ -193,5 +196,54 @@ rb_status rb_run_fragility(const rb_case *c, int n_threads, uint64_t seed, unsig
         fit_one(out, (rb_limit_state)k);
     if (progress)
         progress(ctx, total, total, NULL);
+    return RB_OK;
+}
+
+/* Sa(f0) of a motion at its own level, 5 % damped (pseudo-acceleration). */
+static rb_status motion_sa(const rb_motion *m, double f0, double xi, double *sa)
+{
+    rb_spectrum sp;
+    rb_status st = rb_spectrum_alloc(&sp, &f0, 1, xi);
+    if (st == RB_OK)
+        st = rb_spectrum_of_motion(m, &sp);
+    if (st == RB_OK)
+        *sa = sp.psa_mps2[0];
+    rb_spectrum_free(&sp);
+    return st;
+}
+
+rb_status rb_run_fragility_intensity(const rb_case *c, rb_fragility_intensity im,
+                                     rb_case_fragility *f, rb_diag *diag)
+{
+    if (im == f->intensity)
+        return RB_OK;
+    if (im != RB_IM_SA || f->intensity != RB_IM_PFA || f->n_motions != c->n_motions)
+        return rb_diag_set(diag, RB_ERR_INVALID, NULL, 0, 0, "intensity",
+                           "a fragility in peak floor acceleration can be restated in "
+                           "spectral acceleration only");
+    if (c->model.rigid || !(c->model.freq_hz > 0))
+        return rb_diag_set(diag, RB_ERR_INVALID, NULL, 0, 0, "equipment.frequency",
+                           "spectral acceleration is taken at the cabinet's fixed-base "
+                           "frequency, and a rigid cabinet has none");
+    const double xi = 0.05;
+    for (size_t m = 0; m < f->n_motions; m++) {
+        const rb_motion *mo = &c->motions[m].motion;
+        double sa = 0, peak = rb_motion_peak(mo);
+        rb_status st = motion_sa(mo, c->model.freq_hz, xi, &sa);
+        if (st != RB_OK || !(peak > 0))
+            return rb_diag_set(diag, st != RB_OK ? st : RB_ERR_INVALID, NULL, 0, 0,
+                               c->motions[m].name ? c->motions[m].name : "motion",
+                               "no spectral acceleration for this motion");
+        double r = sa / peak;
+        f->motions[m].im_per_pfa = r;
+        for (int k = 0; k < RB_N_LIMITS; k++)
+            f->motions[m].capacity_mps2[k] *= r;
+    }
+    f->level_mps2 *= f->motions[0].im_per_pfa;
+    f->intensity = RB_IM_SA;
+    f->im_freq_hz = c->model.freq_hz;
+    f->im_damping = xi;
+    for (int k = 0; k < RB_N_LIMITS; k++)
+        fit_one(f, (rb_limit_state)k);
     return RB_OK;
 }

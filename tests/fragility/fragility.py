@@ -13,7 +13,11 @@ Run from the source root. On a suite of two shipped records:
     end and not fitted; the CSV has a row per motion and state;
   - the figure's x axis is logarithmic unless --x-scale linear, and a bad
     --x-scale is refused (exit 2, nothing written);
-  - a free-standing case is refused (exit 2) and writes nothing."""
+  - a free-standing case is refused (exit 2) and writes nothing;
+  - --intensity sa restates every capacity and the level as peak x
+    Sa(f0) / peak, with Sa(f0) from `rockbolt spectrum` of the same case
+    (another path to the same spectrum), and refits (the closed form where
+    no motion is censored); a rigid cabinet and --sweep-gap refuse it."""
 import json, math, os, shutil, subprocess, sys
 
 rb, scratch = (os.path.abspath(a) for a in sys.argv[1:3])
@@ -129,6 +133,47 @@ out = os.path.join(scratch, "free.json")
 r = run("fragility", fs, "--json", out)
 if r.returncode != 2 or os.path.exists(out) or "needs bolts" not in r.stderr:
     fail(f"a free-standing case: exit {r.returncode}, {r.stderr.strip()[:200]}")
+
+# --intensity sa
+small = write_case("sa", "design:\n  scan_end: 0.6\n")
+pj, sj, spj = (os.path.join(scratch, n) for n in ("pfa.json", "sa.json", "spec.json"))
+r1 = run("fragility", small, "--json", pj, "-q")
+r2 = run("fragility", small, "--intensity", "sa", "--json", sj, "-q")
+r3 = run("spectrum", small, "--from", "5 Hz", "--to", "10 Hz", "--per-octave", "1",
+         "--json", spj, "-q")
+if r1.returncode or r2.returncode or r3.returncode:
+    fail(f"--intensity sa: exits {r1.returncode} {r2.returncode} {r3.returncode}: "
+         f"{r2.stderr.strip()[:200]} {r3.stderr.strip()[:200]}")
+else:
+    pf, sf, sp = json.load(open(pj)), json.load(open(sj)), json.load(open(spj))
+    if sf["intensity"] != "spectral_acceleration" or sf["intensity_freq_hz"] != 5.0:
+        fail(f"sa intensity fields {sf.get('intensity')}, {sf.get('intensity_freq_hz')}")
+    if sp["frequency_hz"][0] != 5.0:
+        fail(f"spectrum grid starts at {sp['frequency_hz'][0]}")
+    ratios = [m["psa_mps2"][0] / m["peak_mps2"] for m in sp["motions"]]
+    if abs(sf["level_mps2"] / (pf["level_mps2"] * ratios[0]) - 1) > 1e-12:
+        fail(f"sa level {sf['level_mps2']} against {pf['level_mps2'] * ratios[0]}")
+    for mp, ms, rt in zip(pf["motions"], sf["motions"], ratios):
+        if abs(ms["im_per_pfa"] / rt - 1) > 1e-12:
+            fail(f"{ms['name']} Sa / peak {ms['im_per_pfa']} against the spectrum's {rt}")
+        for k, v in mp["capacity_mps2"].items():
+            if abs(ms["capacity_mps2"][k] / (v * rt) - 1) > 1e-12:
+                fail(f"{ms['name']} {k}: sa capacity {ms['capacity_mps2'][k]} against "
+                     f"{v * rt}")
+    for ls in sf["limit_states"]:
+        k = ls["limit_state"]
+        caps = [m["capacity_mps2"][k] for m in sf["motions"]]
+        if ls["fitted"] and not any(m["censored"][k] for m in sf["motions"]):
+            mu = sum(math.log(c) for c in caps) / len(caps)
+            if abs(ls["median_mps2"] / math.exp(mu) - 1) > 1e-12:
+                fail(f"sa {k} median {ls['median_mps2']} against {math.exp(mu)}")
+rigid = write_case("rigid", "equipment:\n  rigid: true\n")
+r = run("fragility", rigid, "--intensity", "sa", "-q")
+if r.returncode != 2 or "equipment.frequency" not in r.stderr:
+    fail(f"sa on a rigid cabinet: exit {r.returncode}, {r.stderr.strip()[:200]}")
+r = run("fragility", small, "--intensity", "sa", "--sweep-gap", "0.01:0.02:0.01", "-q")
+if r.returncode != 2 or "--sweep-gap" not in r.stderr:
+    fail(f"sa with --sweep-gap: exit {r.returncode}, {r.stderr.strip()[:200]}")
 
 print(f"{len(failures)} failures")
 sys.exit(1 if failures else 0)
