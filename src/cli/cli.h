@@ -70,6 +70,13 @@ rb_exit rb_cli_take_seed(const char *v, unsigned long long *out);
  * printing why when DIR is not a directory. NULL: nothing to do. */
 rb_exit rb_cli_sandbox(const char *dir);
 
+/* fragility and spectrum (cli_case_outputs.c): plan --json, --csv, --svg
+ * and --html against the case; load the case and add the files it read to
+ * the plan's inputs. Each prints what went wrong. */
+#include "rockbolt/outplan.h"
+rb_exit rb_cli_plan_case_outputs(const rb_cli_opts *o, rb_outplan *p);
+rb_exit rb_cli_load_case_planned(const rb_cli_opts *o, rb_case *c, rb_outplan *p);
+
 /* rockbolt spectrum (cli_spectrum.c). */
 rb_exit rb_cli_spectrum_run(const rb_cli_opts *o);
 

@@ -22,34 +22,6 @@ static const char *const palette[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728"
                                       "#bcbd22", "#17becf"};
 #define N_PALETTE (sizeof palette / sizeof palette[0])
 
-/* Frequencies on a log axis: x is log10(f); ticks at 1, 2 and 5 times the
- * powers of ten inside the range, labelled in Hz below the panel. */
-static void log_axis(rb_panel *p, double f_lo, double f_hi)
-{
-    static const double mant[3] = {1, 2, 5};
-    p->xa.lo = log10(f_lo);
-    p->xa.hi = log10(f_hi);
-    p->xa.n_ticks = 0;
-    for (int e = (int)floor(p->xa.lo) - 1; e <= (int)ceil(p->xa.hi); e++)
-        for (int k = 0; k < 3 && p->xa.n_ticks < RB_PLOT_MAX_TICKS; k++) {
-            double x = log10(mant[k]) + e;
-            if (x >= p->xa.lo - 1e-12 && x <= p->xa.hi + 1e-12)
-                p->xa.ticks[p->xa.n_ticks++] = x;
-        }
-}
-
-static void log_labels(rb_strbuf *b, const rb_panel *p)
-{
-    char lab[32];
-    for (int i = 0; i < p->xa.n_ticks; i++) {
-        snprintf(lab, sizeof lab, "%g", pow(10, p->xa.ticks[i]));
-        rb_svg_text(b, rb_panel_x(p, p->xa.ticks[i]), p->y0 + p->h + 15, 11, "middle",
-                    NULL, lab);
-    }
-    rb_svg_text(b, p->x0 + p->w / 2, p->y0 + p->h + 34, 12, "middle", NULL,
-                "frequency (Hz)");
-}
-
 /* The distinct targets of the case's motions, at most n. */
 static size_t targets_of(const rb_case *c, const rb_case_spectra *s, const rb_target **t,
                          size_t n)
@@ -71,18 +43,16 @@ static void draw_target(rb_strbuf *b, const rb_panel *p, const rb_target *t, dou
 {
     double x[TARGET_POINTS], y[TARGET_POINTS];
     for (int i = 0; i < TARGET_POINTS; i++) {
-        double lf = log10(f_lo) + (log10(f_hi) - log10(f_lo)) * i / (TARGET_POINTS - 1);
-        x[i] = lf;
-        y[i] = rb_target_at(t, pow(10, lf)) / g;
+        x[i] = f_lo * pow(f_hi / f_lo, (double)i / (TARGET_POINTS - 1));
+        y[i] = rb_target_at(t, x[i]) / g;
     }
     rb_series_path(b, p, x, y, TARGET_POINTS, 1, "#000000", NULL, "target");
     double a = fmax(f_lo, t->check_from_hz), z = fmin(f_hi, t->check_to_hz);
     if (!(z > a))
         return;
     for (int i = 0; i < TARGET_POINTS; i++) {
-        double lf = log10(a) + (log10(z) - log10(a)) * i / (TARGET_POINTS - 1);
-        x[i] = lf;
-        y[i] = rb_target_at(t, pow(10, lf)) / g;
+        x[i] = a * pow(z / a, (double)i / (TARGET_POINTS - 1));
+        y[i] = rb_target_at(t, x[i]) / g;
     }
     rb_series_path(b, p, x, y, TARGET_POINTS, t->band_lower, "#555555", "5 3",
                    "band lower");
@@ -117,7 +87,7 @@ rb_status rb_plot_spectra_svg(const rb_case *c, const rb_case_spectra *s, const 
                                                (double)i / (TARGET_POINTS - 1))) / g);
     memset(&p, 0, sizeof p);
     p.x0 = LEFT, p.y0 = TOP, p.w = FIG_W - LEFT - RIGHT, p.h = PANEL_H;
-    log_axis(&p, f_lo, f_hi);
+    rb_axis_log(&p.xa, f_lo, f_hi);
     rb_axis_nice(&p.ya, 0, top, 8, 1);
     rb_svg_open(&b, FIG_W, TOP + PANEL_H + 80);
     rb_strbuf_printf(&b, "<text x=\"%.1f\" y=\"24\" font-size=\"16\" font-weight=\"bold\">",
@@ -128,28 +98,19 @@ rb_status rb_plot_spectra_svg(const rb_case *c, const rb_case_spectra *s, const 
              100 * s->opts.damping, s->n_motions, s->n_motions == 1 ? "" : "s",
              nt ? "; black: target, dashed: its band where it is checked" : "");
     rb_svg_text(&b, LEFT, 44, 11, "start", NULL, line);
-    rb_panel_draw(&b, &p, "spectral acceleration (g)", 0, NULL);
-    log_labels(&b, &p);
+    rb_panel_draw(&b, &p, "spectral acceleration (g)", 1, "frequency (Hz), log scale");
     const char *names[MAX_LEGEND + 1], *cols[MAX_LEGEND + 1];
     int n_leg = 0;
-    double *x = malloc(sp0->n * sizeof *x);
-    if (!x) {
-        b.oom = 1;
-        return rb_plot_finish(&b, out, diag);
-    }
     for (size_t m = 0; m < s->n_motions; m++) {
         const rb_spectrum *sp = &s->motions[m].sp;
         const char *col = palette[m % N_PALETTE];
-        for (size_t i = 0; i < sp->n && i < sp0->n; i++)
-            x[i] = log10(sp->freq_hz[i]);
-        rb_series_path(&b, &p, x, sp->sa_mps2, sp->n < sp0->n ? sp->n : sp0->n, 1.0 / g,
+        rb_series_path(&b, &p, sp->freq_hz, sp->sa_mps2, sp->n, 1.0 / g,
                        col, NULL, c->motions[m].name ? c->motions[m].name : "motion");
         if (n_leg < MAX_LEGEND && s->n_motions <= MAX_LEGEND) {
             names[n_leg] = c->motions[m].name ? c->motions[m].name : "motion";
             cols[n_leg++] = col;
         }
     }
-    free(x);
     for (size_t k = 0; k < nt; k++)
         draw_target(&b, &p, targets[k], g, f_lo, f_hi);
     if (nt && n_leg < MAX_LEGEND + 1) {

@@ -4,12 +4,11 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <cjson/cJSON.h>
 #include "rockbolt/jsonnum.h"
 #include "rockbolt/names.h"
 #include "rockbolt/report.h"
 #include "rockbolt/textsafe.h"
-#include "util/strbuf.h"
+#include "report_internal.h"
 
 static const char *motion_name(const rb_case *c, size_t m)
 {
@@ -78,30 +77,6 @@ static void num(rb_strbuf *b, double v)
     rb_strbuf_puts(b, buf);
 }
 
-static void key_num(rb_strbuf *b, const char *key, double v, int comma)
-{
-    rb_strbuf_printf(b, "\"%s\": ", key);
-    num(b, v);
-    if (comma)
-        rb_strbuf_puts(b, ", ");
-}
-
-/* Text from the case as a JSON string: as every output shows it
- * (rockbolt/textsafe.h), then cJSON's quoting. */
-static void str(rb_strbuf *b, const char *s)
-{
-    char safe[1024];
-    cJSON *j = cJSON_CreateString(rb_text_escape_buf(s, safe, sizeof safe));
-    char *e = j ? cJSON_PrintUnformatted(j) : NULL;
-    cJSON_Delete(j);
-    if (!e) {
-        b->oom = 1;
-        return;
-    }
-    rb_strbuf_puts(b, e);
-    cJSON_free(e);
-}
-
 static void array(rb_strbuf *b, const char *key, const double *v, size_t n)
 {
     rb_strbuf_printf(b, "\"%s\": [", key);
@@ -122,18 +97,18 @@ static void json_target(rb_strbuf *b, const rb_target *t)
         rb_ac156_levels(t->edition, t->sds_mps2, t->z_over_h, &flx, &rig);
         rb_strbuf_printf(b, "\"edition\": \"%s\", ",
                          rb_enum_str(rb_ac156_edition_names, (int)t->edition));
-        key_num(b, "sds_mps2", t->sds_mps2, 1);
-        key_num(b, "z_over_h", t->z_over_h, 1);
-        key_num(b, "a_flx_mps2", flx, 1);
-        key_num(b, "a_rig_mps2", rig, 1);
-        key_num(b, "min_peak_mps2", t->min_peak_mps2, 1);
+        rb_report_json_num(b, "sds_mps2", t->sds_mps2, 1);
+        rb_report_json_num(b, "z_over_h", t->z_over_h, 1);
+        rb_report_json_num(b, "a_flx_mps2", flx, 1);
+        rb_report_json_num(b, "a_rig_mps2", rig, 1);
+        rb_report_json_num(b, "min_peak_mps2", t->min_peak_mps2, 1);
     }
-    key_num(b, "damping", t->damping, 1);
-    key_num(b, "check_from_hz", t->check_from_hz, 1);
-    key_num(b, "check_to_hz", t->check_to_hz, 1);
-    key_num(b, "check_per_octave", t->check_per_octave, 1);
-    key_num(b, "band_lower", t->band_lower, 1);
-    key_num(b, "band_upper", t->band_upper, 0);
+    rb_report_json_num(b, "damping", t->damping, 1);
+    rb_report_json_num(b, "check_from_hz", t->check_from_hz, 1);
+    rb_report_json_num(b, "check_to_hz", t->check_to_hz, 1);
+    rb_report_json_num(b, "check_per_octave", t->check_per_octave, 1);
+    rb_report_json_num(b, "band_lower", t->band_lower, 1);
+    rb_report_json_num(b, "band_upper", t->band_upper, 0);
     rb_strbuf_puts(b, "}, ");
 }
 
@@ -142,10 +117,10 @@ char *rb_spectra_render_json(const rb_case *c, const rb_case_spectra *s)
     rb_strbuf b = {0};
     rb_strbuf_puts(&b, "{\n  \"format\": \"rockbolt-spectra\", \"format_version\": 1,\n"
                        "  \"case\": ");
-    str(&b, c->name ? c->name : "");
+    rb_report_json_str(&b, c->name ? c->name : "");
     rb_strbuf_puts(&b, ", ");
-    key_num(&b, "damping", s->opts.damping, 1);
-    key_num(&b, "g_mps2", s->g_mps2, 1);
+    rb_report_json_num(&b, "damping", s->opts.damping, 1);
+    rb_report_json_num(&b, "g_mps2", s->g_mps2, 1);
     size_t n = s->n_motions ? s->motions[0].sp.n : 0;
     array(&b, "frequency_hz", n ? s->motions[0].sp.freq_hz : NULL, n);
     rb_strbuf_puts(&b, ",\n  \"motions\": [\n");
@@ -153,29 +128,29 @@ char *rb_spectra_render_json(const rb_case *c, const rb_case_spectra *s)
         const rb_motion_spectrum *ms = &s->motions[m];
         const rb_case_motion *cm = &c->motions[m];
         rb_strbuf_puts(&b, "    {\"name\": ");
-        str(&b, motion_name(c, m));
+        rb_report_json_str(&b, motion_name(c, m));
         rb_strbuf_printf(&b, ", \"kind\": \"%s\", ",
                          rb_enum_str(rb_case_motion_type_names, (int)cm->type));
-        key_num(&b, "peak_mps2", ms->peak_mps2, 1);
-        key_num(&b, "arias_mps", ms->arias_mps, 1);
-        key_num(&b, "arias_t5_s", ms->arias_t5_s, 1);
-        key_num(&b, "arias_t95_s", ms->arias_t95_s, 1);
+        rb_report_json_num(&b, "peak_mps2", ms->peak_mps2, 1);
+        rb_report_json_num(&b, "arias_mps", ms->arias_mps, 1);
+        rb_report_json_num(&b, "arias_t5_s", ms->arias_t5_s, 1);
+        rb_report_json_num(&b, "arias_t95_s", ms->arias_t95_s, 1);
         if (cm->type == RB_CASE_MOTION_SYNTHETIC) {
             rb_strbuf_printf(&b, "\"seed\": %llu, \"index\": %u, \"passes\": %u, "
                              "\"starts\": %u, ", cm->synth_seed, cm->synth_index + 1,
                              cm->synth.iterations, cm->synth.attempts);
-            key_num(&b, "end_velocity_mps", cm->synth.end_velocity_mps, 1);
-            key_num(&b, "end_displacement_m", cm->synth.end_displacement_m, 1);
-            key_num(&b, "peak_velocity_mps", cm->synth.peak_velocity_mps, 1);
-            key_num(&b, "peak_displacement_m", cm->synth.peak_displacement_m, 1);
+            rb_report_json_num(&b, "end_velocity_mps", cm->synth.end_velocity_mps, 1);
+            rb_report_json_num(&b, "end_displacement_m", cm->synth.end_displacement_m, 1);
+            rb_report_json_num(&b, "peak_velocity_mps", cm->synth.peak_velocity_mps, 1);
+            rb_report_json_num(&b, "peak_displacement_m", cm->synth.peak_displacement_m, 1);
         }
         if (ms->has_target) {
             json_target(&b, cm->target);
             rb_strbuf_puts(&b, "\"fit\": {");
-            key_num(&b, "min_ratio", ms->fit.min_ratio, 1);
-            key_num(&b, "min_at_hz", ms->fit.min_at_hz, 1);
-            key_num(&b, "max_ratio", ms->fit.max_ratio, 1);
-            key_num(&b, "max_at_hz", ms->fit.max_at_hz, 1);
+            rb_report_json_num(&b, "min_ratio", ms->fit.min_ratio, 1);
+            rb_report_json_num(&b, "min_at_hz", ms->fit.min_at_hz, 1);
+            rb_report_json_num(&b, "max_ratio", ms->fit.max_ratio, 1);
+            rb_report_json_num(&b, "max_at_hz", ms->fit.max_at_hz, 1);
             rb_strbuf_printf(&b, "\"points\": %zu, \"within\": %s}, ", ms->fit.n_checked,
                              ms->fit.within ? "true" : "false");
         }
