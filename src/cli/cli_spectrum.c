@@ -76,7 +76,7 @@ rb_exit rb_cli_spectrum_run(const rb_cli_opts *o)
         if (st != RB_OK) {
             rb_cli_error(o->case_path, d.key[0] ? d.key : NULL, "%s", d.msg[0] ? d.msg
                          : rb_status_str(st));
-            e = st == RB_ERR_INVALID ? RB_EXIT_USAGE : RB_EXIT_INTERNAL;
+            e = st == RB_ERR_INVALID || st == RB_ERR_LIMIT ? RB_EXIT_USAGE : RB_EXIT_INTERNAL;
         }
     }
     if (e == RB_EXIT_PASS) {

@@ -21,6 +21,9 @@
 #define SPECTRUM_COARSEST_PHASE 1.0
 /* Samples per period of the highest frequency, for closed-form motions. */
 #define SPECTRUM_CLOSED_FORM_RATE 200.0
+/* ... and at most this many samples (80 MB): a longer closed form is
+ * refused (RB_ERR_LIMIT) rather than sampled more coarsely. */
+#define SPECTRUM_MAX_CLOSED_FORM_SAMPLES 1e7
 
 void rb_spectrum_opts_init(rb_spectrum_opts *o)
 {
@@ -324,7 +327,7 @@ rb_status rb_spectrum_of_motion(const rb_motion *m, rb_spectrum *sp)
         return RB_ERR_INVALID;
     double dt = 1.0 / (SPECTRUM_CLOSED_FORM_RATE * sp->freq_hz[sp->n - 1]);
     double n = ceil(m->duration_s / dt) + 1;
-    if (!(n <= 1e8))
+    if (!(n <= SPECTRUM_MAX_CLOSED_FORM_SAMPLES))
         return RB_ERR_LIMIT;
     rb_series s;
     rb_status st = rb_series_alloc(&s, (size_t)n, dt);

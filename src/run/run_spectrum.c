@@ -49,6 +49,14 @@ rb_status rb_run_spectra(const rb_case *c, const rb_spectrum_opts *o, rb_case_sp
             st = rb_spectrum_of_motion(&cm->motion, &ms->sp);
         if (st == RB_OK && cm->target)
             st = motion_fit(cm, ms);
+        if (st == RB_ERR_LIMIT) {
+            rb_diag_set(diag, st, NULL, 0, 0, cm->name ? cm->name : "motion",
+                        "a closed-form motion is sampled 200 times per period of the "
+                        "grid's top frequency (%g Hz): its %g s would take over 10 million "
+                        "samples (the limit); lower --to or shorten the run",
+                        o->f_max_hz, cm->motion.duration_s);
+            break;
+        }
         if (st != RB_OK) {
             rb_diag_set(diag, st, NULL, 0, 0, cm->name ? cm->name : "motion",
                         "no response spectrum for this motion (%s)", rb_status_str(st));

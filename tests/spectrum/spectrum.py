@@ -250,5 +250,17 @@ for args, what in ((["--damping", "150 %"], "a damping ratio"),
     if r.returncode != 2 or what not in r.stderr or os.path.exists(out):
         fail(f"spectrum {args}: exit {r.returncode}, stderr {r.stderr!r}")
 
+# a closed form too long to sample for the grid: refused, nothing written
+long = write("long.yaml", f"""extends: {src}/cases/base/reference-cabinet.yaml
+motion: {{type: harmonic, amplitude: 0.2 A*, frequency: 4 Hz, duration: 3000 s}}
+""")
+out = os.path.join(scratch, "long.json")
+r = run("spectrum", long, "--json", out)
+if r.returncode != 2 or "10 million samples" not in r.stderr or os.path.exists(out):
+    fail(f"a 3000 s harmonic: exit {r.returncode}, {r.stderr.strip()[:200]}")
+r = run("spectrum", long, "--to", "1 Hz", "-q")
+if r.returncode != 0:
+    fail(f"the same with --to 1 Hz: exit {r.returncode}, {r.stderr.strip()[:200]}")
+
 print(f"{len(failures)} failures")
 sys.exit(1 if failures else 0)
