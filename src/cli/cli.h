@@ -76,6 +76,20 @@ rb_exit rb_cli_sandbox(const char *dir);
 #include "rockbolt/outplan.h"
 rb_exit rb_cli_plan_case_outputs(const rb_cli_opts *o, rb_outplan *p);
 rb_exit rb_cli_load_case_planned(const rb_cli_opts *o, rb_case *c, rb_outplan *p);
+/* What such a command renders of its result (ctx): new strings, NULL when
+ * memory runs out; the figure as rb_plot's functions make one. */
+typedef struct {
+    const void *ctx;
+    const char *title;        /* of the figure and the page */
+    const char *what;         /* "fragility": for the stdout error */
+    char *(*text)(const void *ctx);
+    char *(*json)(const void *ctx);
+    char *(*csv)(const void *ctx);
+    rb_status (*figure)(const void *ctx, const char *title, char **out, rb_diag *d);
+} rb_cli_renders;
+/* Write the planned outputs (all or none), then the text on stdout unless
+ * --quiet or an output is stdout. */
+rb_exit rb_cli_emit_case_outputs(const rb_cli_opts *o, rb_outplan *p, const rb_cli_renders *r);
 
 /* rockbolt spectrum (cli_spectrum.c). */
 rb_exit rb_cli_spectrum_run(const rb_cli_opts *o);

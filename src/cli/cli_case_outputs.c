@@ -1,10 +1,14 @@
 /* What the commands that read one case and write figures and tables from
  * it (fragility, spectrum) share: planning --json, --csv, --svg and --html
- * against the case, and loading the case with its own files added to the
- * plan's inputs, so that no output can replace one. */
+ * against the case, loading the case with its own files added to the
+ * plan's inputs, so that no output can replace one, and writing the
+ * outputs and the table on stdout from the command's renderers. */
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 #include "cli.h"
 #include "cli_batch.h"
+#include "rockbolt/plot.h"
 
 rb_exit rb_cli_plan_case_outputs(const rb_cli_opts *o, rb_outplan *p)
 {
@@ -36,4 +40,65 @@ rb_exit rb_cli_load_case_planned(const rb_cli_opts *o, rb_case *c, rb_outplan *p
     for (size_t i = 0; i < c->n_input_files && st == RB_OK; i++)
         st = rb_outplan_add_input(p, c->input_files[i], &d);
     return st == RB_OK ? RB_EXIT_PASS : rb_cli_plan_error(st, &d);
+}
+
+/* --html: the table and the figure in one page */
+static rb_status page(const rb_cli_renders *r, char **out, rb_diag *d)
+{
+    char *svg = NULL, *text = r->text(r->ctx);
+    rb_status st = text ? r->figure(r->ctx, r->title, &svg, d) : RB_ERR_NOMEM;
+    if (st == RB_OK) {
+        const char *svgs[1] = {svg};
+        st = rb_plot_html_page(NULL, r->title, text, svgs, 1, out, d);
+    }
+    free(svg);
+    free(text);
+    return st;
+}
+
+static rb_status fill(void *ctx, size_t i, FILE *fp, rb_diag *d)
+{
+    const void *const *cx = ctx;
+    const rb_outplan *plan = cx[0];
+    const rb_cli_renders *r = cx[1];
+    const char *opt = plan->outs[i].opt;
+    char *text = NULL;
+    rb_status st = RB_OK;
+    if (strcmp(opt, "--json") == 0)
+        text = r->json(r->ctx);
+    else if (strcmp(opt, "--csv") == 0)
+        text = r->csv(r->ctx);
+    else if (strcmp(opt, "--svg") == 0)
+        st = r->figure(r->ctx, r->title, &text, d);
+    else
+        st = page(r, &text, d);
+    if (st == RB_OK && !text)
+        st = RB_ERR_NOMEM;
+    if (st == RB_OK && fputs(text, fp) == EOF)
+        st = RB_ERR_IO;
+    if (st != RB_OK && !d->msg[0])
+        snprintf(d->msg, sizeof d->msg, "%s", rb_status_str(st));
+    free(text);
+    return st;
+}
+
+rb_exit rb_cli_emit_case_outputs(const rb_cli_opts *o, rb_outplan *p, const rb_cli_renders *r)
+{
+    const void *cx[2] = {p, r};
+    rb_diag d;
+    rb_diag_clear(&d);
+    if (rb_outplan_write(p, fill, (void *)cx, &d) != RB_OK) {
+        rb_cli_diag_print(&d);
+        return RB_EXIT_INTERNAL;
+    }
+    if (o->quiet || rb_outplan_uses_stdout(p))
+        return RB_EXIT_PASS;
+    char *text = r->text(r->ctx);
+    rb_exit e = RB_EXIT_PASS;
+    if (!text || fputs(text, stdout) == EOF || fflush(stdout) != 0) {
+        rb_cli_error(NULL, NULL, "cannot write the %s to standard output", r->what);
+        e = RB_EXIT_INTERNAL;
+    }
+    free(text);
+    return e;
 }

@@ -17,62 +17,35 @@ typedef struct {
     const rb_case *c;
     const rb_case_fragility *f;      /* the fragility, or */
     const rb_fragility_sweep *sweep; /* the sweep over gap ratios */
-    const char *title;
     rb_plot_scale x_scale;
 } outputs;
 
-static char *text_of(const outputs *o)
+static char *text_of(const void *ctx)
 {
+    const outputs *o = ctx;
     return o->sweep ? rb_fragility_sweep_render_text(o->c, o->sweep)
                     : rb_fragility_render_text(o->c, o->f);
 }
 
-static rb_status figure(const outputs *o, char **out, rb_diag *d)
+static char *json_of(const void *ctx)
 {
-    return o->sweep ? rb_plot_fragility_sweep_svg(o->sweep, o->title, out, d)
-                    : rb_plot_fragility_svg(o->f, o->title, o->x_scale, out, d);
+    const outputs *o = ctx;
+    return o->sweep ? rb_fragility_sweep_render_json(o->c, o->sweep)
+                    : rb_fragility_render_json(o->c, o->f);
 }
 
-/* --html: the table and the figure in one page */
-static rb_status page(const outputs *o, char **out, rb_diag *d)
+static char *csv_of(const void *ctx)
 {
-    char *svg = NULL, *text = text_of(o);
-    rb_status st = text ? figure(o, &svg, d) : RB_ERR_NOMEM;
-    if (st == RB_OK) {
-        const char *svgs[1] = {svg};
-        st = rb_plot_html_page(NULL, o->title, text, svgs, 1, out, d);
-    }
-    free(svg);
-    free(text);
-    return st;
+    const outputs *o = ctx;
+    return o->sweep ? rb_fragility_sweep_render_csv(o->sweep)
+                    : rb_fragility_render_csv(o->c, o->f);
 }
 
-static rb_status fill(void *ctx, size_t i, FILE *fp, rb_diag *d)
+static rb_status figure(const void *ctx, const char *title, char **out, rb_diag *d)
 {
-    const void *const *cx = ctx;
-    const rb_outplan *plan = cx[0];
-    const outputs *o = cx[1];
-    const char *opt = plan->outs[i].opt;
-    char *text = NULL;
-    rb_status st = RB_OK;
-    if (strcmp(opt, "--json") == 0)
-        text = o->sweep ? rb_fragility_sweep_render_json(o->c, o->sweep)
-                        : rb_fragility_render_json(o->c, o->f);
-    else if (strcmp(opt, "--csv") == 0)
-        text = o->sweep ? rb_fragility_sweep_render_csv(o->sweep)
-                        : rb_fragility_render_csv(o->c, o->f);
-    else if (strcmp(opt, "--svg") == 0)
-        st = figure(o, &text, d);
-    else
-        st = page(o, &text, d);
-    if (st == RB_OK && !text)
-        st = RB_ERR_NOMEM;
-    if (st == RB_OK && fputs(text, fp) == EOF)
-        st = RB_ERR_IO;
-    if (st != RB_OK && !d->msg[0])
-        snprintf(d->msg, sizeof d->msg, "%s", rb_status_str(st));
-    free(text);
-    return st;
+    const outputs *o = ctx;
+    return o->sweep ? rb_plot_fragility_sweep_svg(o->sweep, title, out, d)
+                    : rb_plot_fragility_svg(o->f, title, o->x_scale, out, d);
 }
 
 static rb_exit compute(const rb_cli_opts *o, const rb_case *c, rb_case_fragility *f,
@@ -120,26 +93,12 @@ rb_exit rb_cli_fragility_run(const rb_cli_opts *o)
         e = rb_cli_load_case_planned(o, &c, &p);
     if (e == RB_EXIT_PASS)
         e = compute(o, &c, &f, &sweep);
-    outputs out = {&c, o->sweep_gap ? NULL : &f, o->sweep_gap ? &sweep : NULL, title,
-                   o->x_scale};
+    outputs out = {&c, o->sweep_gap ? NULL : &f, o->sweep_gap ? &sweep : NULL, o->x_scale};
     if (e == RB_EXIT_PASS) {
         snprintf(title, sizeof title, "Fragility of %.200s%s", c.name ? c.name : "the case",
                  o->sweep_gap ? " against the gap ratio" : "");
-        const void *cx[2] = {&p, &out};
-        rb_diag d;
-        rb_diag_clear(&d);
-        if (rb_outplan_write(&p, fill, (void *)cx, &d) != RB_OK) {
-            rb_cli_diag_print(&d);
-            e = RB_EXIT_INTERNAL;
-        }
-    }
-    if (e == RB_EXIT_PASS && !o->quiet && !rb_outplan_uses_stdout(&p)) {
-        char *text = text_of(&out);
-        if (!text || fputs(text, stdout) == EOF || fflush(stdout) != 0) {
-            rb_cli_error(NULL, NULL, "cannot write the fragility to standard output");
-            e = RB_EXIT_INTERNAL;
-        }
-        free(text);
+        rb_cli_renders r = {&out, title, "fragility", text_of, json_of, csv_of, figure};
+        e = rb_cli_emit_case_outputs(o, &p, &r);
     }
     rb_case_fragility_free(&f);
     rb_fragility_sweep_free(&sweep);

@@ -15,46 +15,30 @@
 typedef struct {
     const rb_case *c;
     const rb_case_spectra *s;
-    const char *title;
 } outputs;
 
-static rb_status page(const outputs *o, char **out, rb_diag *d)
+static char *text_of(const void *ctx)
 {
-    char *svg = NULL, *text = rb_spectra_render_text(o->c, o->s);
-    rb_status st = text ? rb_plot_spectra_svg(o->c, o->s, o->title, &svg, d) : RB_ERR_NOMEM;
-    if (st == RB_OK) {
-        const char *svgs[1] = {svg};
-        st = rb_plot_html_page(NULL, o->title, text, svgs, 1, out, d);
-    }
-    free(svg);
-    free(text);
-    return st;
+    const outputs *o = ctx;
+    return rb_spectra_render_text(o->c, o->s);
 }
 
-static rb_status fill(void *ctx, size_t i, FILE *fp, rb_diag *d)
+static char *json_of(const void *ctx)
 {
-    const void *const *cx = ctx;
-    const rb_outplan *plan = cx[0];
-    const outputs *o = cx[1];
-    const char *opt = plan->outs[i].opt;
-    char *text = NULL;
-    rb_status st = RB_OK;
-    if (strcmp(opt, "--json") == 0)
-        text = rb_spectra_render_json(o->c, o->s);
-    else if (strcmp(opt, "--csv") == 0)
-        text = rb_spectra_render_csv(o->c, o->s);
-    else if (strcmp(opt, "--svg") == 0)
-        st = rb_plot_spectra_svg(o->c, o->s, o->title, &text, d);
-    else
-        st = page(o, &text, d);
-    if (st == RB_OK && !text)
-        st = RB_ERR_NOMEM;
-    if (st == RB_OK && fputs(text, fp) == EOF)
-        st = RB_ERR_IO;
-    if (st != RB_OK && !d->msg[0])
-        snprintf(d->msg, sizeof d->msg, "%s", rb_status_str(st));
-    free(text);
-    return st;
+    const outputs *o = ctx;
+    return rb_spectra_render_json(o->c, o->s);
+}
+
+static char *csv_of(const void *ctx)
+{
+    const outputs *o = ctx;
+    return rb_spectra_render_csv(o->c, o->s);
+}
+
+static rb_status figure(const void *ctx, const char *title, char **out, rb_diag *d)
+{
+    const outputs *o = ctx;
+    return rb_plot_spectra_svg(o->c, o->s, title, out, d);
 }
 
 rb_exit rb_cli_spectrum_run(const rb_cli_opts *o)
@@ -82,22 +66,9 @@ rb_exit rb_cli_spectrum_run(const rb_cli_opts *o)
     if (e == RB_EXIT_PASS) {
         snprintf(title, sizeof title, "Response spectra of %.200s",
                  c.name ? c.name : "the case");
-        outputs out = {&c, &s, title};
-        const void *cx[2] = {&p, &out};
-        rb_diag d;
-        rb_diag_clear(&d);
-        if (rb_outplan_write(&p, fill, (void *)cx, &d) != RB_OK) {
-            rb_cli_diag_print(&d);
-            e = RB_EXIT_INTERNAL;
-        }
-    }
-    if (e == RB_EXIT_PASS && !o->quiet && !rb_outplan_uses_stdout(&p)) {
-        char *text = rb_spectra_render_text(&c, &s);
-        if (!text || fputs(text, stdout) == EOF || fflush(stdout) != 0) {
-            rb_cli_error(NULL, NULL, "cannot write the spectra to standard output");
-            e = RB_EXIT_INTERNAL;
-        }
-        free(text);
+        outputs out = {&c, &s};
+        rb_cli_renders r = {&out, title, "spectra", text_of, json_of, csv_of, figure};
+        e = rb_cli_emit_case_outputs(o, &p, &r);
     }
     rb_case_spectra_free(&s);
     rb_case_free(&c);
