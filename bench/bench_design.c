@@ -23,7 +23,7 @@ static int factor(const char *name, const rb_model *m, const rb_motion *mo,
     rb_criteria_init(&c);
     c.kind = kind;
     double t0 = rb_bench_now_s();
-    rb_status st = rb_design_factor(m, mo, NULL, &c, d, nt, &f, &diag);
+    rb_status st = rb_design_factor(m, mo, NULL, &c, d, nt, NULL, &f, &diag);
     double t = rb_bench_now_s() - t0;
     if (st != RB_OK) {
         fprintf(stderr, "design factor (%s): %s: %s\n", name, rb_status_str(st), diag.msg);

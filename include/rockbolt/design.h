@@ -39,6 +39,18 @@ rb_status rb_design_run_at(const rb_model *model, const rb_motion *motion,
 /* Number of threads used for n_threads <= 0: the online processors (>= 1). */
 int rb_design_threads_default(void);
 
+/* Runs shared by the searches of one design. The design factors and an
+ * amplitude sweep of one motion ask for many of the same levels; given one
+ * memo, a run is solved once and its summary handed to every search that
+ * asks for the same model, scaled motion and solver options (the bytes of
+ * each). The results are those without a memo, bit for bit. Safe to share
+ * between threads; it must not outlive the records of the motions it saw.
+ * NULL everywhere a memo is taken: every run is solved. */
+typedef struct rb_design_memo rb_design_memo;
+rb_design_memo *rb_design_memo_new(void);   /* NULL when out of memory */
+void rb_design_memo_free(rb_design_memo *m); /* accepts NULL */
+size_t rb_design_memo_runs(rb_design_memo *m); /* runs held (0 for NULL) */
+
 /* ---- Design factor ------------------------------------------------------ */
 
 /* The largest peak floor acceleration of the motion's shape that meets the
@@ -83,7 +95,8 @@ typedef struct {
 rb_status rb_design_factor(const rb_model *model, const rb_motion *motion,
                            const rb_solve_opts *opts, const rb_criteria *criteria,
                            const rb_design_opts *design, int n_threads,
-                           rb_design_factor_result *out, rb_diag *diag);
+                           rb_design_memo *memo, rb_design_factor_result *out,
+                           rb_diag *diag);
 
 /* One English sentence for reports, e.g. "design factor 4.13: meets the
  * criteria up to 0.2422 A* (27.81 m/s^2); fails at 0.2430 A* (first failing
@@ -187,8 +200,8 @@ rb_status rb_sweep_frequency(const rb_model *model, const rb_solve_opts *opts,
 /* Amplitude sweep: the motion's shape at each level of the range (in A*). */
 rb_status rb_sweep_amplitude(const rb_model *model, const rb_motion *motion,
                              const rb_solve_opts *opts, const rb_criteria *criteria,
-                             const rb_sweep_opts *sw, int n_threads, rb_sweep *out,
-                             rb_diag *diag);
+                             const rb_sweep_opts *sw, int n_threads,
+                             rb_design_memo *memo, rb_sweep *out, rb_diag *diag);
 
 /* Free what a sweep owns; accepts NULL. */
 void rb_sweep_free(rb_sweep *s);

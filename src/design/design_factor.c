@@ -183,7 +183,8 @@ static void finish(factor_search *s, double a_star, double res)
 rb_status rb_design_factor(const rb_model *model, const rb_motion *motion,
                            const rb_solve_opts *opts, const rb_criteria *criteria,
                            const rb_design_opts *design, int n_threads,
-                           rb_design_factor_result *out, rb_diag *diag)
+                           rb_design_memo *memo, rb_design_factor_result *out,
+                           rb_diag *diag)
 {
     rb_design_ctx ctx;
     factor_search s;
@@ -196,6 +197,7 @@ rb_status rb_design_factor(const rb_model *model, const rb_motion *motion,
     if ((st = check_grid(design, diag)) != RB_OK
         || (st = rb_design_ctx_init(&ctx, model, motion, opts, criteria, diag)) != RB_OK)
         return st;
+    ctx.memo = memo;
     memset(&s, 0, sizeof s);
     s.ctx = &ctx;
     s.out = out;

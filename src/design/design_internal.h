@@ -18,6 +18,7 @@ typedef struct {
     const rb_criteria *criteria; /* may be NULL: meets = -1 */
     double a_star_mps2;
     double shape_peak;           /* peak of the shape's samples (sampled) */
+    rb_design_memo *memo;        /* may be NULL */
 } rb_design_ctx;
 
 /* Prepare ctx: derive the model, copy the options (NULL -> defaults) with
@@ -38,7 +39,15 @@ typedef struct {
     rb_result r;                 /* summary (no history) */
 } rb_design_run;
 
-/* Run model under motion and judge it. The rb_result inside out owns
+/* A run the memo holds: 1 with status and r filled, else 0 (memo NULL
+ * included). */
+int rb_design_memo_get(rb_design_memo *m, const rb_model *model, const rb_motion *motion,
+                       const rb_solve_opts *opts, rb_status *status, rb_result *r);
+/* Keep a run's summary (a result with a history is not kept). */
+void rb_design_memo_put(rb_design_memo *m, const rb_model *model, const rb_motion *motion,
+                        const rb_solve_opts *opts, rb_status status, const rb_result *r);
+
+/* Run model under motion (or take it from ctx->memo) and judge it. The rb_result inside out owns
  * nothing (no history is recorded). */
 void rb_design_run_one(const rb_design_ctx *ctx, const rb_model *model,
                        const rb_motion *motion, rb_design_run *out);

@@ -77,10 +77,13 @@ void rb_design_run_one(const rb_design_ctx *ctx, const rb_model *model,
                        const rb_motion *motion, rb_design_run *out)
 {
     memset(out, 0, sizeof *out);
-    out->status = rb_solve_run(model, motion, &ctx->opts, &out->r, NULL);
-    /* no history was asked for, but free whatever the result might own */
-    rb_result_free(&out->r);
-    out->r.history = NULL;
+    if (!rb_design_memo_get(ctx->memo, model, motion, &ctx->opts, &out->status, &out->r)) {
+        out->status = rb_solve_run(model, motion, &ctx->opts, &out->r, NULL);
+        /* no history was asked for, but free whatever the result might own */
+        rb_result_free(&out->r);
+        out->r.history = NULL;
+        rb_design_memo_put(ctx->memo, model, motion, &ctx->opts, out->status, &out->r);
+    }
     out->meets = -1;
     if (out->status == RB_OK && ctx->criteria)
     {

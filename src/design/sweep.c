@@ -111,13 +111,14 @@ static rb_status check_range(const rb_sweep_opts *o, rb_sweep_kind kind, rb_diag
 
 static rb_status sweep_run(const rb_model *model, const rb_motion *motion,
                            const rb_solve_opts *opts, const rb_criteria *criteria,
-                           const rb_sweep_opts *o, int n_threads, rb_sweep *out,
-                           rb_diag *diag)
+                           const rb_sweep_opts *o, int n_threads, rb_design_memo *memo,
+                           rb_sweep *out, rb_diag *diag)
 {
     rb_design_ctx ctx;
     rb_status st = rb_design_ctx_init(&ctx, model, motion, opts, criteria, diag);
     if (st != RB_OK)
         return st;
+    ctx.memo = memo;
     out->kind = o->kind;
     out->a_star_mps2 = ctx.a_star_mps2;
     out->fixed_base_hz = model->freq_hz;
@@ -146,13 +147,13 @@ rb_status rb_sweep_frequency(const rb_model *model, const rb_solve_opts *opts,
     if (model->rigid || !(model->freq_hz > 0))
         return rb_design_fail(diag, RB_ERR_INVALID, "equipment.frequency",
                               "a frequency sweep needs a fixed-base frequency");
-    return sweep_run(model, NULL, opts, criteria, sw, n_threads, out, diag);
+    return sweep_run(model, NULL, opts, criteria, sw, n_threads, NULL, out, diag);
 }
 
 rb_status rb_sweep_amplitude(const rb_model *model, const rb_motion *motion,
                              const rb_solve_opts *opts, const rb_criteria *criteria,
-                             const rb_sweep_opts *sw, int n_threads, rb_sweep *out,
-                             rb_diag *diag)
+                             const rb_sweep_opts *sw, int n_threads,
+                             rb_design_memo *memo, rb_sweep *out, rb_diag *diag)
 {
     rb_status st;
     memset(out, 0, sizeof *out);
@@ -160,5 +161,5 @@ rb_status rb_sweep_amplitude(const rb_model *model, const rb_motion *motion,
         return rb_design_fail(diag, RB_ERR_INVALID, "", "missing model, motion or options");
     if ((st = check_range(sw, RB_SWEEP_AMPLITUDE, diag)) != RB_OK)
         return st;
-    return sweep_run(model, motion, opts, criteria, sw, n_threads, out, diag);
+    return sweep_run(model, motion, opts, criteria, sw, n_threads, memo, out, diag);
 }

@@ -40,10 +40,10 @@ static void step(progress *p, const char *motion, const char *what)
     p->fn(p->ctx, p->done++, p->total, buf);
 }
 
-static rb_status design_motion(const rb_case *c, const rb_case_motion *cm,
-                               rb_run_design_scope scope, int n_threads,
-                               const rb_case_design *cd, rb_motion_design *md,
-                               rb_diag *diag, progress *pg)
+static rb_status design_searches(const rb_case *c, const rb_case_motion *cm,
+                                 rb_run_design_scope scope, int n_threads,
+                                 const rb_case_design *cd, rb_design_memo *memo,
+                                 rb_motion_design *md, rb_diag *diag, progress *pg)
 {
     const rb_motion *mo = &cm->motion;
     rb_status st;
@@ -52,14 +52,14 @@ static rb_status design_motion(const rb_case *c, const rb_case_motion *cm,
     if (full || c->criteria.kind == RB_CRIT_NO_YIELD) {
         step(pg, cm->name, "design factor (no yield)");
         st = rb_design_factor(&c->model, mo, &c->solve, &cd->no_yield, &c->design,
-                              n_threads, &md->no_yield, diag);
+                              n_threads, memo, &md->no_yield, diag);
         if (st != RB_OK)
             return fail_at(diag, cm->name, "design factor (no yield)", st);
     }
     if (full || c->criteria.kind == RB_CRIT_NO_BREAK) {
         step(pg, cm->name, "design factor (no break)");
         st = rb_design_factor(&c->model, mo, &c->solve, &cd->no_break, &c->design,
-                              n_threads, &md->no_break, diag);
+                              n_threads, memo, &md->no_break, diag);
         if (st != RB_OK)
             return fail_at(diag, cm->name, "design factor (no break)", st);
     }
@@ -80,11 +80,26 @@ static rb_status design_motion(const rb_case *c, const rb_case_motion *cm,
             continue;
         step(pg, cm->name, "amplitude sweep");
         st = rb_sweep_amplitude(&c->model, mo, &c->solve, &c->criteria, &c->sweeps[i],
-                                n_threads, &md->sweeps[md->n_sweeps++], diag);
+                                n_threads, memo, &md->sweeps[md->n_sweeps++], diag);
         if (st != RB_OK)
             return fail_at(diag, cm->name, "amplitude sweep", st);
     }
     return RB_OK;
+}
+
+/* The searches of one motion share their runs: the factors' scans and an
+ * amplitude sweep ask for many of the same levels. */
+static rb_status design_motion(const rb_case *c, const rb_case_motion *cm,
+                               rb_run_design_scope scope, int n_threads,
+                               const rb_case_design *cd, rb_motion_design *md,
+                               rb_diag *diag, progress *pg)
+{
+    rb_design_memo *memo = rb_design_memo_new();
+    if (!memo)
+        return RB_ERR_NOMEM;
+    rb_status st = design_searches(c, cm, scope, n_threads, cd, memo, md, diag, pg);
+    rb_design_memo_free(memo);
+    return st;
 }
 
 static rb_status design_sweeps(const rb_case *c, int n_threads, rb_case_design *out,

@@ -53,7 +53,7 @@ static void limit_criteria(const rb_case *c, rb_limit_state k, rb_criteria *cr,
 }
 
 static rb_status search(const rb_case *c, size_t m, rb_limit_state k, int n_threads,
-                        rb_motion_fragility *out, rb_diag *diag)
+                        rb_design_memo *memo, rb_motion_fragility *out, rb_diag *diag)
 {
     rb_criteria cr;
     rb_solve_opts so;
@@ -63,7 +63,7 @@ static rb_status search(const rb_case *c, size_t m, rb_limit_state k, int n_thre
     if (k == RB_LIMIT_LIFT_OFF && grid.resolution > RB_LIFT_OFF_RESOLUTION)
         grid.resolution = RB_LIFT_OFF_RESOLUTION;
     rb_status st = rb_design_factor(&c->model, &c->motions[m].motion, &so, &cr, &grid,
-                                    n_threads, &f, diag);
+                                    n_threads, memo, &f, diag);
     if (st != RB_OK) {
         char key[sizeof diag->key];
         snprintf(key, sizeof key, "motion '%.60s': %s", c->motions[m].name ?
@@ -85,6 +85,10 @@ typedef struct {
     void *progress_ctx;
     size_t done, total;
     pthread_mutex_t lock;       /* progress is told one call at a time */
+    /* runs shared by the searches: the usage, overturning and lift-off
+     * searches of a motion run with the same options and scan the same
+     * levels */
+    rb_design_memo *memo;
 } job_ctx;
 
 /* The limit states in the order their searches are handed out: the
@@ -102,7 +106,7 @@ static rb_status job(void *arg, size_t i)
     int k = (int)longest_first[i / n];
     rb_motion_fragility one = {{0}, {0}, 0, 1.0};
     rb_diag_clear(&jc->diags[i]);
-    rb_status st = search(jc->c, m, (rb_limit_state)k, 1, &one, &jc->diags[i]);
+    rb_status st = search(jc->c, m, (rb_limit_state)k, 1, jc->memo, &one, &jc->diags[i]);
     pthread_mutex_lock(&jc->lock);
     rb_motion_fragility *slot = &jc->out->motions[m];
     slot->capacity_mps2[k] = one.capacity_mps2[k];
@@ -169,12 +173,14 @@ rb_status rb_run_fragility(const rb_case *c, int n_threads, uint64_t seed, unsig
     out->seed = seed;
     out->n_boot = n_boot;
     size_t total = c->n_motions * RB_N_LIMITS;
-    job_ctx jc = {c, out, NULL, progress, ctx, 0, total, PTHREAD_MUTEX_INITIALIZER};
+    job_ctx jc = {c, out, NULL, progress, ctx, 0, total, PTHREAD_MUTEX_INITIALIZER, NULL};
     jc.diags = calloc(total, sizeof *jc.diags);
     rb_status *sts = calloc(total, sizeof *sts);
-    if (!jc.diags || !sts) {
+    jc.memo = rb_design_memo_new();
+    if (!jc.diags || !sts || !jc.memo) {
         free(jc.diags);
         free(sts);
+        rb_design_memo_free(jc.memo);
         return RB_ERR_NOMEM;
     }
     st = rb_pool_map(total, n_threads, job, &jc, sts);
@@ -187,6 +193,7 @@ rb_status rb_run_fragility(const rb_case *c, int n_threads, uint64_t seed, unsig
         }
     free(jc.diags);
     free(sts);
+    rb_design_memo_free(jc.memo);
     pthread_mutex_destroy(&jc.lock);
     if (st != RB_OK)
         return st;

@@ -63,7 +63,7 @@ static int sweeps(const rb_case *c, const char *dir, char **svg_f, char **svg_a)
     o.n_points = N_SWEEP_POINTS;
     memset(&s, 0, sizeof s);
     st = rb_sweep_amplitude(&c->model, &c->motions[0].motion, &c->solve, &c->criteria,
-                            &o, 1, &s, &d);
+                            &o, 1, NULL, &s, &d);
     if (st == RB_OK)
         st = rb_plot_sweep_svg(&s, NULL, svg_a, &d);
     rb_sweep_free(&s);

@@ -48,7 +48,7 @@ static void factor_finds_overturn_threshold(void)
     rb_model_derive(&m, &dv, NULL);
     rb_criteria_init(&c); /* no break, no overturn: for a block, no overturn */
     rb_design_opts_defaults(&d);
-    CHECK(rb_design_factor(&m, &mo, &o, &c, &d, 0, &f, NULL) == RB_OK);
+    CHECK(rb_design_factor(&m, &mo, &o, &c, &d, 0, NULL, &f, NULL) == RB_OK);
     /* K in A*: a = K g alpha, A* = W b / (M h) for a block without bolts */
     double to_astar = dv.g * dv.alpha / dv.a_uplift_mps2;
     double k = thesis_eq_2_17(7.0);
@@ -70,7 +70,7 @@ static void factor_finds_overturn_threshold(void)
     CHECK(strstr(f.fail_reason, "overturns") != NULL);
     /* no failing level up to scan_end */
     d.scan_end = 0.5;
-    CHECK(rb_design_factor(&m, &mo, &o, &c, &d, 2, &f, NULL) == RB_OK);
+    CHECK(rb_design_factor(&m, &mo, &o, &c, &d, 2, NULL, &f, NULL) == RB_OK);
     CHECK(f.no_failure && f.level_astar == 0.5 && f.factor == 2.0);
     CHECK(f.fail_astar == HUGE_VAL && f.first_fail_astar == HUGE_VAL && f.runs == 10);
     char line[400];
@@ -117,7 +117,7 @@ static void factor_finds_uplift_level(void)
     d.scan_step = 0.01;
     d.resolution = 1e-4;
     double want = dv.a_uplift_mps2 / dv.a_star_mps2;
-    CHECK(rb_design_factor(&m, &mo, NULL, &c, &d, 2, &f, NULL) == RB_OK);
+    CHECK(rb_design_factor(&m, &mo, NULL, &c, &d, 2, NULL, &f, NULL) == RB_OK);
     printf("uplift: level %.6f A*, fails at %.6f A*, W b / (M h) = %.6f A*; %ld runs\n",
            f.level_astar, f.fail_astar, want, f.runs);
     CHECK(!f.no_failure && !f.fails_at_start && f.first_fail_astar == 0.04);
@@ -126,7 +126,7 @@ static void factor_finds_uplift_level(void)
     CHECK(f.level_astar <= want * (1 + 2e-4) && f.fail_astar >= want * (1 - 2e-4));
     /* the same level when the scan's first level already fails */
     d.scan_start = d.scan_step = 0.05;
-    CHECK(rb_design_factor(&m, &mo, NULL, &c, &d, 2, &f, NULL) == RB_OK);
+    CHECK(rb_design_factor(&m, &mo, NULL, &c, &d, 2, NULL, &f, NULL) == RB_OK);
     printf("uplift from 0: level %.6f A*, fails at %.6f A*; %ld runs\n", f.level_astar,
            f.fail_astar, f.runs);
     CHECK(f.fails_at_start && f.scan_runs == 1 && f.first_fail_astar == 0.05);
@@ -154,7 +154,7 @@ static void factor_finds_static_yield(void)
         c.max_theta_over_alpha = 0;
         rb_design_opts_defaults(&d);
         d.resolution = 1e-4;
-        CHECK(rb_design_factor(&m, &mo, NULL, &c, &d, 0, &f, NULL) == RB_OK);
+        CHECK(rb_design_factor(&m, &mo, NULL, &c, &d, 0, NULL, &f, NULL) == RB_OK);
         printf("static yield (%s bolts): level %.5f A*, fails at %.5f A*: %s\n",
                k ? "non-yielding" : "rigid-plastic", f.level_astar, f.fail_astar,
                f.fail_reason);
@@ -184,7 +184,7 @@ static void factor_resolution_below_doubles_ends(void)
     d.scan_step = 0.01;
     d.resolution = 1e-18;
     alarm(60);
-    CHECK(rb_design_factor(&m, &mo, NULL, &c, &d, 2, &f, NULL) == RB_OK);
+    CHECK(rb_design_factor(&m, &mo, NULL, &c, &d, 2, NULL, &f, NULL) == RB_OK);
     alarm(0);
     printf("resolution 1e-18: level %.17g A*, fails at %.17g A*; %ld bisection runs\n",
            f.level_astar, f.fail_astar, f.bisect_runs);
@@ -207,10 +207,10 @@ static void invalid_requests(void)
     stiff_cabinet(&m, &mo, &c);
     rb_design_opts_defaults(&d);
     d.scan_step = 0;
-    CHECK(rb_design_factor(&m, &mo, NULL, &c, &d, 1, &f, &diag) == RB_ERR_INVALID);
+    CHECK(rb_design_factor(&m, &mo, NULL, &c, &d, 1, NULL, &f, &diag) == RB_ERR_INVALID);
     CHECK(f.runs == 0 && strcmp(diag.key, "design") == 0);
     rb_design_opts_defaults(&d);
-    CHECK(rb_design_factor(&m, &mo, NULL, NULL, &d, 1, &f, &diag) == RB_ERR_INVALID);
+    CHECK(rb_design_factor(&m, &mo, NULL, NULL, &d, 1, NULL, &f, &diag) == RB_ERR_INVALID);
     d.gap_ratio_step = -1;
     CHECK(rb_gap_recommend(&m, &mo, NULL, &c, &d, 1, &g, &diag) == RB_ERR_INVALID);
     CHECK(g.points == NULL);
@@ -219,11 +219,11 @@ static void invalid_requests(void)
     CHECK(rb_gap_recommend(&block, &mo, NULL, &c, &d, 1, &g, &diag) == RB_ERR_INVALID);
     mo.kind = RB_MOTION_SAMPLED;
     mo.series = &empty;
-    CHECK(rb_design_factor(&m, &mo, NULL, &c, &d, 1, &f, &diag) == RB_ERR_INVALID);
+    CHECK(rb_design_factor(&m, &mo, NULL, &c, &d, 1, NULL, &f, &diag) == RB_ERR_INVALID);
     CHECK(strcmp(diag.key, "motion") == 0);
     m.gap_m = 0.5; /* beyond alpha */
     mo.kind = RB_MOTION_HARMONIC;
-    CHECK(rb_design_factor(&m, &mo, NULL, &c, &d, 1, &f, &diag) == RB_ERR_INVALID);
+    CHECK(rb_design_factor(&m, &mo, NULL, &c, &d, 1, NULL, &f, &diag) == RB_ERR_INVALID);
 }
 
 /* ---- Gap search against theta0 --------------------------------------------- */
@@ -346,7 +346,7 @@ static void factor_deterministic(const rb_model *m, const rb_motion *mo)
     c.kind = RB_CRIT_NO_YIELD;
     rb_design_opts_defaults(&d);
     for (int t = 0; t < 3; t++)
-        CHECK(rb_design_factor(m, mo, NULL, &c, &d, t + 1, &f[t], NULL) == RB_OK);
+        CHECK(rb_design_factor(m, mo, NULL, &c, &d, t + 1, NULL, &f[t], NULL) == RB_OK);
     printf("El Centro no-yield factor %.4f (level %.5f A*), %ld runs; speculative with "
            "1/2/3 threads: %ld/%ld/%ld\n", f[0].factor, f[0].level_astar, f[0].runs,
            f[0].runs_speculative, f[1].runs_speculative, f[2].runs_speculative);
@@ -364,6 +364,55 @@ static void factor_deterministic(const rb_model *m, const rb_motion *mo)
     CHECK(!run_meets(m, &at, &c));
 }
 
+/* Searches sharing a memo give the results they give alone, bit for bit,
+ * and the second factor search finds the first one's scan levels there. */
+static void memo_changes_nothing(const rb_model *m, const rb_motion *mo)
+{
+    rb_criteria cy, cb;
+    rb_design_opts d;
+    rb_sweep_opts so;
+    rb_design_factor_result alone[2], shared[2];
+    rb_sweep sw_alone, sw_shared;
+    rb_design_memo *memo = rb_design_memo_new();
+    CHECK(memo != NULL);
+    rb_criteria_init(&cy);
+    cy.kind = RB_CRIT_NO_YIELD;
+    cb = cy;
+    cb.kind = RB_CRIT_NO_BREAK;
+    rb_design_opts_defaults(&d);
+    rb_sweep_opts_init(&so, RB_SWEEP_AMPLITUDE);
+    so.from = 0.05;
+    so.to = 0.3;
+    so.n_points = 6;
+    CHECK(rb_design_factor(m, mo, NULL, &cy, &d, 2, NULL, &alone[0], NULL) == RB_OK);
+    CHECK(rb_design_factor(m, mo, NULL, &cb, &d, 2, NULL, &alone[1], NULL) == RB_OK);
+    CHECK(rb_sweep_amplitude(m, mo, NULL, &cb, &so, 2, NULL, &sw_alone, NULL) == RB_OK);
+    CHECK(rb_design_factor(m, mo, NULL, &cy, &d, 2, memo, &shared[0], NULL) == RB_OK);
+    size_t after_first = rb_design_memo_runs(memo);
+    CHECK(rb_design_factor(m, mo, NULL, &cb, &d, 2, memo, &shared[1], NULL) == RB_OK);
+    size_t after_second = rb_design_memo_runs(memo);
+    CHECK(rb_sweep_amplitude(m, mo, NULL, &cb, &so, 2, memo, &sw_shared, NULL) == RB_OK);
+    size_t after_sweep = rb_design_memo_runs(memo);
+    printf("memo: %zu runs after the no-yield factor, %zu after no-break (%ld runs asked), "
+           "%zu after a %zu-point sweep\n", after_first, after_second, alone[1].runs,
+           after_sweep, so.n_points);
+    /* every scan level of the first search is asked again by the second */
+    CHECK(after_first >= (size_t)alone[0].runs);
+    CHECK(after_second - after_first < (size_t)alone[1].scan_runs + (size_t)alone[1].bisect_runs);
+    CHECK(after_sweep - after_second < so.n_points);
+    for (int i = 0; i < 2; i++) {
+        alone[i].runs_speculative = shared[i].runs_speculative = 0;
+        CHECK(memcmp(&alone[i], &shared[i], sizeof alone[i]) == 0);
+    }
+    CHECK(sw_alone.n_points == sw_shared.n_points);
+    if (sw_alone.n_points == sw_shared.n_points)
+        CHECK(memcmp(sw_alone.points, sw_shared.points,
+                     sw_alone.n_points * sizeof *sw_alone.points) == 0);
+    rb_sweep_free(&sw_alone);
+    rb_sweep_free(&sw_shared);
+    rb_design_memo_free(memo);
+}
+
 static void elcentro_checks(void)
 {
     rb_series s = {0};
@@ -374,6 +423,7 @@ static void elcentro_checks(void)
     if (s.n) {
         factor_deterministic(&m, &mo);
         gap_search_consistent(&m, &mo);
+        memo_changes_nothing(&m, &mo);
     }
     rb_series_free(&s);
 }
@@ -498,7 +548,7 @@ static void amplitude_sweep_block(void)
     o.from = kt - 0.025;
     o.to = kt + 0.015;
     o.n_points = 5;
-    if (rb_sweep_amplitude(&m, &mo, &so, &c, &o, 0, &s, NULL) != RB_OK) {
+    if (rb_sweep_amplitude(&m, &mo, &so, &c, &o, 0, NULL, &s, NULL) != RB_OK) {
         CHECK(!"amplitude sweep");
         return;
     }

@@ -342,7 +342,7 @@ static void eval_pulse_threshold(vd_ctx *c, const rb_case *k, const rb_motion *m
     rb_diag d;
     rb_diag_clear(&d);
     rb_status st = rb_design_factor(&k->model, m, &k->solve, &k->criteria, &k->design,
-                                    c->n_threads, &f, &d);
+                                    c->n_threads, NULL, &f, &d);
     if (st != RB_OK) {
         snprintf(v->err, sizeof v->err, "design factor: %s: %s", rb_status_str(st), d.msg);
         return;
@@ -459,7 +459,7 @@ static const vd_search_slot *get_search(vd_ctx *c, char kind, const char *kase,
         rb_diag_clear(&d);
         if (kind == 'd') {
             s->st = rb_design_factor(&k->model, m, &k->solve, &k->criteria,
-                                     &k->design, c->n_threads, &s->f, &d);
+                                     &k->design, c->n_threads, NULL, &s->f, &d);
             c->solver_runs += s->st == RB_OK ? s->f.runs : 0;
         } else {
             rb_gap_result g;
