@@ -290,9 +290,11 @@ static int on_spring(const rb_solver *sv, const rb_rk_step *st)
 }
 
 /* Earliest guard crossing inside the accepted step, or -1. ys[j] is the
- * state at the end of check interval j of n_sub (ys[n_sub - 1] = y1). */
+ * state at the end of check interval j of n_sub (ys[n_sub - 1] = y1).
+ * Without a crossing, g_end holds the guards at the step's end, which the
+ * next step starts from. */
 static int find_event(rb_solver *sv, const rb_rk_step *st, const double *g0,
-                      double (*ys)[RB_NY], double *t_event)
+                      double (*ys)[RB_NY], double *t_event, double *g_end)
 {
     unsigned mask = rb_guard_mask(sv);
     double ga[G_COUNT], gb[G_COUNT];
@@ -327,6 +329,7 @@ static int find_event(rb_solver *sv, const rb_rk_step *st, const double *g0,
         memcpy(ga, gb, sizeof ga);
         ya = ys[j - 1];
     }
+    memcpy(g_end, gb, sizeof gb);
     return -1;
 }
 
@@ -415,7 +418,8 @@ static rb_status advance(rb_solver *sv, rb_rk_step *st, double *g, rb_diag *diag
     /* the step end and its derivative (the next step's first stage) */
     if (!state_finite(st->y1) || !state_finite(st->k[6]))
         return nonfinite(sv, diag, st->t1, st->y1);
-    int ev = find_event(sv, st, g, ys, &t_event);
+    double g_end[G_COUNT];
+    int ev = find_event(sv, st, g, ys, &t_event, g_end);
     if (ev >= 0)
         tb = t_event;
     rb_track_interval(sv, st, st->t0, tb, ev < 0 ? (const double (*)[RB_NY])ys : NULL);
@@ -426,7 +430,7 @@ static rb_status advance(rb_solver *sv, rb_rk_step *st, double *g, rb_diag *diag
     if (ev < 0) {
         memcpy(sv->y, st->y1, sizeof sv->y);
         memcpy(sv->f, st->k[6], sizeof sv->f);
-        rb_guard_eval(sv, sv->t, sv->y, g);
+        memcpy(g, g_end, sizeof g_end);
         rb_track_aux(sv, sv->t, sv->y, &st->aux1);
         return RB_OK;
     }
