@@ -238,7 +238,11 @@ double rb_dyn_uplift_guard(const rb_sys *S, double t, const double *y, int side)
  * an exponential and a sine and cosine */
 void rb_dyn_uplift_guards(const rb_sys *S, double t, const double *y, double *g)
 {
-    double x = floor_accel(S, t, y);
+    rb_dyn_uplift_guards_x(S, floor_accel(S, t, y), y, g);
+}
+
+void rb_dyn_uplift_guards_x(const rb_sys *S, double x, const double *y, double *g)
+{
     g[0] = uplift_guard_at(S, x, y, 1);
     g[1] = uplift_guard_at(S, x, y, -1);
 }

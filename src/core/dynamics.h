@@ -72,6 +72,8 @@ void rb_dyn_rhs(const rb_sys *S, const rb_disc *D, double t, const double *y,
 double rb_dyn_uplift_guard(const rb_sys *S, double t, const double *y, int side);
 /* Both sides at once: g[0] about the left edge, g[1] about the right. */
 void rb_dyn_uplift_guards(const rb_sys *S, double t, const double *y, double *g);
+/* The same with the floor acceleration x (physical) given. */
+void rb_dyn_uplift_guards_x(const rb_sys *S, double x, const double *y, double *g);
 
 /* Energies in the relative frame (J). */
 double rb_dyn_kinetic(const rb_sys *S, const rb_disc *D, const double *y);

@@ -66,6 +66,11 @@ typedef struct {
 /* transitions.c */
 unsigned rb_guard_mask(const rb_solver *sv);
 void rb_guard_eval(const rb_solver *sv, double t, const double *y, double *g);
+/* The same where the floor acceleration x at t is known (a Taylor step's
+ * series at its check points): the uplift guards read it instead of the
+ * motion's closed form, which through a building is an exponential, a
+ * sine and a cosine. NAN: evaluate it. */
+void rb_guard_eval_x(const rb_solver *sv, double t, const double *y, double x, double *g);
 /* One guard; what locating its root needs. */
 double rb_guard_one(const rb_solver *sv, int guard, double t, const double *y);
 int rb_guard_crossed(int guard, double before, double after);

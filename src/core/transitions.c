@@ -147,6 +147,11 @@ int rb_guard_angle(const rb_solver *sv, int guard, double *level)
 
 void rb_guard_eval(const rb_solver *sv, double t, const double *y, double *g)
 {
+    rb_guard_eval_x(sv, t, y, NAN, g);
+}
+
+void rb_guard_eval_x(const rb_solver *sv, double t, const double *y, double x, double *g)
+{
     unsigned mask = rb_guard_mask(sv);
     for (int k = 0; k < G_COUNT; k++)
         g[k] = 0; /* inactive guards are never read as crossings, but are copied */
@@ -159,7 +164,10 @@ void rb_guard_eval(const rb_solver *sv, double t, const double *y, double *g)
         mask &= ~(1u << G_SLACK | 1u << G_YIELD);
     }
     if (mask & 1u << G_UP_POS) {
-        rb_dyn_uplift_guards(&sv->sys, t, y, g + G_UP_POS);
+        if (isnan(x))
+            rb_dyn_uplift_guards(&sv->sys, t, y, g + G_UP_POS);
+        else
+            rb_dyn_uplift_guards_x(&sv->sys, x, y, g + G_UP_POS);
         mask &= ~(1u << G_UP_POS | 1u << G_UP_NEG);
     }
     for (int k = 0; k < G_COUNT; k++)
