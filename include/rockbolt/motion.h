@@ -17,11 +17,17 @@
  * samples the ground is linear and the floor is the building's exact
  * response to it: the ground plus a damped oscillation, not a straight
  * line between the floor samples. */
+#define RB_FLOOR_TAYLOR_TERMS 40
+
 typedef struct {
     double omega_rps, xi;   /* the building's circular frequency and damping */
     double *ground_mps2;    /* owned, n: NULL when there is no building */
     double *u_m, *v_mps;    /* owned, n: relative displacement and velocity */
     double peak_mps2;       /* largest |floor| between samples as well */
+    /* Order k of the floor's Taylor series is du[k] u + dv[k] v for a free
+     * vibration in state (u, v): the building's own constants, formed once
+     * so that a series costs no division (rb_series_building_filter) */
+    double taylor_du[RB_FLOOR_TAYLOR_TERMS], taylor_dv[RB_FLOOR_TAYLOR_TERMS];
 } rb_series_building;
 
 typedef struct {

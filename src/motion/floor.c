@@ -109,15 +109,23 @@ int rb_series_taylor(const rb_series *s, double t0, int n, double *coef)
     }
     segment g;
     segment_at(s, (size_t)i, &g);
-    /* the free vibration's series from its state at tau:
-     * (u, v)_{k+1} = (v_k, -w^2 u_k - 2 xi w v_k) / (k + 1) */
-    double u, v, w2 = g.w * g.w, c = 2.0 * g.xi * g.w;
+    double u, v;
     free_state(&g, tau, &u, &v);
-    for (int k = 0; k <= n; k++) {
-        coef[k] = -(c * v + w2 * u);
-        double un = v / (k + 1), vn = -(w2 * u + c * v) / (k + 1);
-        u = un;
-        v = vn;
+    /* the building's series per unit state where it was formed; past the
+     * table, or for a building set up by hand, the recurrence it comes from */
+    const rb_series_building *b = &s->bld;
+    if (b->taylor_du[0] != 0 && n < RB_FLOOR_TAYLOR_TERMS)
+        for (int k = 0; k <= n; k++)
+            coef[k] = b->taylor_du[k] * u + b->taylor_dv[k] * v;
+    else {
+        /* (u, v)_{k+1} = (v_k, -w^2 u_k - 2 xi w v_k) / (k + 1) */
+        double w2 = g.w * g.w, c = 2.0 * g.xi * g.w;
+        for (int k = 0; k <= n; k++) {
+            coef[k] = -(c * v + w2 * u);
+            double un = v / (k + 1), vn = -(w2 * u + c * v) / (k + 1);
+            u = un;
+            v = vn;
+        }
     }
     coef[0] += g.g0 + g.slope * tau;
     coef[1] += g.slope;

@@ -119,8 +119,10 @@ rb_status rb_series_building_filter(rb_series *s, double f_hz, double xi)
     rb_status rc = rb_sdof_step_init(&st, omega, xi, s->dt_s);
     if (rc != RB_OK)
         return rc;
-    rb_series_building b = {omega, xi, malloc(s->n * sizeof(double)),
-                            malloc(s->n * sizeof(double)), malloc(s->n * sizeof(double)), 0};
+    rb_series_building b = {.omega_rps = omega, .xi = xi,
+                            .ground_mps2 = malloc(s->n * sizeof(double)),
+                            .u_m = malloc(s->n * sizeof(double)),
+                            .v_mps = malloc(s->n * sizeof(double))};
     if (!b.ground_mps2 || !b.u_m || !b.v_mps) {
         building_free(&b);
         return RB_ERR_NOMEM;
@@ -138,6 +140,17 @@ rb_status rb_series_building_filter(rb_series *s, double f_hz, double xi)
         b.u_m[i] = u;
         b.v_mps[i] = v;
         a[i] = -(2.0 * xi * omega * v + omega * omega * u);
+    }
+    /* the free vibration's series, (u, v)_{k+1} = (v_k, -w^2 u_k - 2 xi w
+     * v_k) / (k + 1), from (1, 0) and from (0, 1); the floor's term is
+     * -(2 xi w v_k + w^2 u_k) */
+    double uu = 1, uv = 0, vu = 0, vv = 1, c = 2.0 * xi * omega, w2 = omega * omega;
+    for (int k = 0; k < RB_FLOOR_TAYLOR_TERMS; k++) {
+        b.taylor_du[k] = -(c * uv + w2 * uu);
+        b.taylor_dv[k] = -(c * vv + w2 * vu);
+        double nuu = uv / (k + 1), nuv = -(w2 * uu + c * uv) / (k + 1);
+        double nvu = vv / (k + 1), nvv = -(w2 * vu + c * vv) / (k + 1);
+        uu = nuu, uv = nuv, vu = nvu, vv = nvv;
     }
     building_free(&s->bld);
     s->bld = b;
