@@ -160,28 +160,36 @@ void rb_batch_report_stem(size_t index, const char *tag, size_t total, char *buf
     buf[k] = '\0';
 }
 
-static rb_status write_reports(const rb_batch_case *bc,
+/* DIR/STEM.SUFFIX, staged with the summaries when they are */
+static rb_status write_one(const rb_batch_opts *o, const char *stem, const char *suffix,
+                           const char *data, rb_diag *d)
+{
+    char path[4600];
+    snprintf(path, sizeof path, "%s/%s.%s", o->reports_dir, stem, suffix);
+    return o->report_stage
+        ? rb_outplan_stage_data(o->report_stage, path, data, strlen(data), d)
+        : rb_outfile_write_all(path, data, strlen(data), 0, d);
+}
+
+static rb_status write_reports(const rb_batch_slot *s, const rb_batch_case *bc,
                                const rb_batch_opts *o, size_t total,
                                const rb_report *rep, rb_diag *d)
 {
-    char stem[200], path[4600];
+    char stem[200];
     char *json = NULL, *text = NULL;
     rb_status st = rb_report_json_render(rep, &json, d);
     if (st == RB_OK)
         st = rb_report_text_render(rep, o->report_template, &text, d);
     rb_batch_report_stem(bc->index, bc->tag, total, stem, sizeof stem);
-    if (st == RB_OK) {
-        snprintf(path, sizeof path, "%s/%s.json", o->reports_dir, stem);
-        st = o->report_stage
-            ? rb_outplan_stage_data(o->report_stage, path, json, strlen(json), d)
-            : rb_outfile_write_all(path, json, strlen(json), 0, d);
-    }
-    if (st == RB_OK) {
-        snprintf(path, sizeof path, "%s/%s.txt", o->reports_dir, stem);
-        st = o->report_stage
-            ? rb_outplan_stage_data(o->report_stage, path, text, strlen(text), d)
-            : rb_outfile_write_all(path, text, strlen(text), 0, d);
-    }
+    if (st == RB_OK)
+        st = write_one(o, stem, "json", json, d);
+    if (st == RB_OK)
+        st = write_one(o, stem, "txt", text, d);
+    /* the fragility's, as `rockbolt fragility --json` and its text */
+    if (st == RB_OK && s->frag_json)
+        st = write_one(o, stem, "fragility.json", s->frag_json, d);
+    if (st == RB_OK && s->frag_text)
+        st = write_one(o, stem, "fragility.txt", s->frag_text, d);
     free(json);
     free(text);
     return st;
@@ -229,7 +237,7 @@ void rb_batch_case_finish(rb_batch_slot *s, rb_batch_case *bc, const rb_batch_op
     bc->verdict = rep.pass ? RB_BATCH_PASS : RB_BATCH_FAIL;
     bc->reason = rb_batch_strdup(rep.reason);
     if (o->reports_dir) {
-        if (write_reports(bc, o, total, &rep, &d) != RB_OK) {
+        if (write_reports(s, bc, o, total, &rep, &d) != RB_OK) {
             if (!d.key[0])
                 snprintf(d.key, sizeof d.key, "--reports");
             bc->verdict = RB_BATCH_ERROR;
@@ -262,6 +270,8 @@ void rb_batch_slot_free(rb_batch_slot *s)
     free(s->rms);
     free(s->run_status);
     free(s->run_diag);
+    free(s->frag_json);
+    free(s->frag_text);
     rb_case_free(&s->c);
     memset(s, 0, sizeof *s);
 }

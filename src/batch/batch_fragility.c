@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include "batch_engine.h"
+#include "rockbolt/report.h"
 #include "rockbolt/run.h"
 
 static void keep(const rb_case_fragility *f, rb_batch_fragility *out)
@@ -28,7 +29,7 @@ static void keep(const rb_case_fragility *f, rb_batch_fragility *out)
 }
 
 void rb_batch_case_fragility(rb_batch_slot *s, rb_batch_case *bc, int n_threads,
-                             uint64_t seed)
+                             uint64_t seed, int reports)
 {
     rb_case_fragility f;
     rb_diag_clear(&s->frag_diag);
@@ -41,6 +42,12 @@ void rb_batch_case_fragility(rb_batch_slot *s, rb_batch_case *bc, int n_threads,
                                       &s->frag_diag, NULL, NULL);
     if (s->frag_status == RB_OK) {
         keep(&f, bc->fragility);
+        if (reports) {
+            s->frag_json = rb_fragility_render_json(&s->c, &f);
+            s->frag_text = rb_fragility_render_text(&s->c, &f);
+            if (!s->frag_json || !s->frag_text)
+                s->frag_status = RB_ERR_NOMEM;
+        }
     } else if (s->frag_status == RB_ERR_INVALID) {
         char why[sizeof s->frag_diag.key + sizeof s->frag_diag.msg + 2];
         snprintf(why, sizeof why, "%s%s%s", s->frag_diag.key,

@@ -82,7 +82,8 @@ static rb_status run_job(void *arg, size_t k)
     rb_batch_case *bc = &cx->cases[r->slot];
     rb_batch_slot *s = &cx->slots[r->slot];
     if (r->motion == FRAGILITY_JOB)
-        rb_batch_case_fragility(s, bc, cx->frag_threads, cx->o->seed);
+        rb_batch_case_fragility(s, bc, cx->frag_threads, cx->o->seed,
+                                cx->o->reports_dir != NULL);
     else
         rb_batch_case_solve(s, bc, r->motion, cx->o->design);
     pthread_mutex_lock(&cx->lock);

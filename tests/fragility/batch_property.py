@@ -12,6 +12,8 @@ bootstrap seed; then asserts that
     and probability at the level that `rockbolt fragility ROWCASE --seed S
     --json` gives on the same case written as a file, to the last bit, and
     as many motions reaching it as that command has uncensored;
+  - `--reports DIR` holds each row's fragility report as `rockbolt
+    fragility ROWCASE --json` writes it, byte for byte;
   - the free-standing row keeps its verdict and says why it has no
     fragility, where `rockbolt fragility` refuses the case;
   - the table, JSON, CSV and JUnit outputs are byte-identical with -j 1 and
@@ -134,8 +136,10 @@ outs = {}
 for j in ("1", "2"):
     d = os.path.join(scratch, "j" + j)
     os.makedirs(d)
+    reports = ["--reports", f"{d}/reports"] if j == "1" else []
     r = run("batch", lst, "--fragility", "--seed", str(boot_seed), "-j", j,
-            "--json", f"{d}/b.json", "--csv", f"{d}/b.csv", "--junit", f"{d}/b.xml")
+            "--json", f"{d}/b.json", "--csv", f"{d}/b.csv", "--junit", f"{d}/b.xml",
+            *reports)
     if r.returncode not in (0, 1):
         fail(f"batch -j {j}: exit {r.returncode}: {r.stderr.strip()[:400]}")
         print(f"seed {seed}")
@@ -185,6 +189,12 @@ for row in rows:
     if r.returncode != 0:
         fail(f"{row['tag']}: fragility exit {r.returncode}: {r.stderr.strip()[:300]}")
         continue
+    # --reports holds the command's own fragility report, byte for byte
+    rdir = os.path.join(outs["1"], "reports")
+    got_rep = [x for x in os.listdir(rdir) if x.endswith(f"-{row['tag']}.fragility.json")]
+    if len(got_rep) != 1 or \
+            open(os.path.join(rdir, got_rep[0]), "rb").read() != open(fj, "rb").read():
+        fail(f"{row['tag']}: --reports {got_rep} is not `fragility --json`'s report")
     want = json.load(open(fj))
     if not bf or "limit_states" not in bf:
         fail(f"{row['tag']}: no fragility in the batch row: {bf}")
