@@ -4,11 +4,13 @@
  * given, so the searches themselves run one after another. `design` runs
  * it all, `batch --design` the brief part of each motion: both through
  * design_motion, with the criteria of rb_run_design_criteria. */
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "rockbolt/aci17.h"
 #include "rockbolt/run.h"
+#include "util/pool.h"
 
 static rb_status fail_at(rb_diag *diag, const char *motion, const char *what,
                          rb_status st)
@@ -26,6 +28,7 @@ typedef struct {
     rb_design_progress_fn fn;
     void *ctx;
     size_t done, total;
+    pthread_mutex_t lock;   /* a motion's searches run side by side */
 } progress;
 
 static void step(progress *p, const char *motion, const char *what)
@@ -37,7 +40,96 @@ static void step(progress *p, const char *motion, const char *what)
         snprintf(buf, sizeof buf, "motion '%.100s': %s", motion, what);
     else
         snprintf(buf, sizeof buf, "%s", what);
+    pthread_mutex_lock(&p->lock);
     p->fn(p->ctx, p->done++, p->total, buf);
+    pthread_mutex_unlock(&p->lock);
+}
+
+/* The searches of one motion, as three jobs that may run at once: the
+ * two design factors (the second finds most of the first's runs in the
+ * memo), the recommended gap (runs of other gaps, nothing to share), and
+ * the amplitude sweeps. Each writes its own fields of md and its own diag;
+ * their results do not depend on which runs first. */
+typedef struct {
+    const rb_case *c;
+    const rb_case_motion *cm;
+    int full;
+    int n_threads;              /* of each search */
+    const rb_case_design *cd;
+    rb_design_memo *memo;
+    rb_motion_design *md;
+    progress *pg;
+    rb_diag diag[3];
+} searches;
+
+enum { JOB_FACTORS, JOB_GAP, JOB_SWEEPS, N_JOBS };
+
+static rb_status factors(searches *s, rb_diag *diag)
+{
+    const rb_case *c = s->c;
+    const rb_motion *mo = &s->cm->motion;
+    rb_status st;
+    if (s->full || c->criteria.kind == RB_CRIT_NO_YIELD) {
+        step(s->pg, s->cm->name, "design factor (no yield)");
+        st = rb_design_factor(&c->model, mo, &c->solve, &s->cd->no_yield, &c->design,
+                              s->n_threads, s->memo, &s->md->no_yield, diag);
+        if (st != RB_OK)
+            return fail_at(diag, s->cm->name, "design factor (no yield)", st);
+    }
+    if (s->full || c->criteria.kind == RB_CRIT_NO_BREAK) {
+        step(s->pg, s->cm->name, "design factor (no break)");
+        st = rb_design_factor(&c->model, mo, &c->solve, &s->cd->no_break, &c->design,
+                              s->n_threads, s->memo, &s->md->no_break, diag);
+        if (st != RB_OK)
+            return fail_at(diag, s->cm->name, "design factor (no break)", st);
+    }
+    return RB_OK;
+}
+
+static rb_status gap(searches *s, rb_diag *diag)
+{
+    const rb_case *c = s->c;
+    if (c->model.bolt_model == RB_BOLT_NONE)
+        return RB_OK;
+    step(s->pg, s->cm->name, "recommended gap");
+    rb_status st = rb_gap_recommend(&c->model, &s->cm->motion, &c->solve,
+                                    &s->cd->gap_criteria, &c->design, s->n_threads,
+                                    &s->md->gap, diag);
+    s->md->has_gap = st == RB_OK;
+    return st == RB_OK ? st : fail_at(diag, s->cm->name, "recommended gap", st);
+}
+
+static rb_status amplitude_sweeps(searches *s, rb_diag *diag)
+{
+    const rb_case *c = s->c;
+    rb_motion_design *md = s->md;
+    size_t i, n_amp = 0;
+    for (i = 0; s->full && i < c->n_sweeps; i++)
+        n_amp += c->sweeps[i].kind == RB_SWEEP_AMPLITUDE;
+    if (n_amp && !(md->sweeps = calloc(n_amp, sizeof *md->sweeps)))
+        return RB_ERR_NOMEM;
+    for (i = 0; n_amp && i < c->n_sweeps; i++) {
+        if (c->sweeps[i].kind != RB_SWEEP_AMPLITUDE)
+            continue;
+        step(s->pg, s->cm->name, "amplitude sweep");
+        rb_status st = rb_sweep_amplitude(&c->model, &s->cm->motion, &c->solve,
+                                          &c->criteria, &c->sweeps[i], s->n_threads,
+                                          s->memo, &md->sweeps[md->n_sweeps++], diag);
+        if (st != RB_OK)
+            return fail_at(diag, s->cm->name, "amplitude sweep", st);
+    }
+    return RB_OK;
+}
+
+static rb_status search_job(void *v, size_t i)
+{
+    searches *s = v;
+    rb_diag_clear(&s->diag[i]);
+    switch (i) {
+    case JOB_FACTORS: return factors(s, &s->diag[i]);
+    case JOB_GAP: return gap(s, &s->diag[i]);
+    default: return amplitude_sweeps(s, &s->diag[i]);
+    }
 }
 
 static rb_status design_searches(const rb_case *c, const rb_case_motion *cm,
@@ -45,46 +137,23 @@ static rb_status design_searches(const rb_case *c, const rb_case_motion *cm,
                                  const rb_case_design *cd, rb_design_memo *memo,
                                  rb_motion_design *md, rb_diag *diag, progress *pg)
 {
-    const rb_motion *mo = &cm->motion;
-    rb_status st;
-    size_t i, n_amp = 0;
-    int full = scope == RB_RUN_DESIGN_FULL;
-    if (full || c->criteria.kind == RB_CRIT_NO_YIELD) {
-        step(pg, cm->name, "design factor (no yield)");
-        st = rb_design_factor(&c->model, mo, &c->solve, &cd->no_yield, &c->design,
-                              n_threads, memo, &md->no_yield, diag);
-        if (st != RB_OK)
-            return fail_at(diag, cm->name, "design factor (no yield)", st);
-    }
-    if (full || c->criteria.kind == RB_CRIT_NO_BREAK) {
-        step(pg, cm->name, "design factor (no break)");
-        st = rb_design_factor(&c->model, mo, &c->solve, &cd->no_break, &c->design,
-                              n_threads, memo, &md->no_break, diag);
-        if (st != RB_OK)
-            return fail_at(diag, cm->name, "design factor (no break)", st);
-    }
-    if (c->model.bolt_model != RB_BOLT_NONE) {
-        step(pg, cm->name, "recommended gap");
-        st = rb_gap_recommend(&c->model, mo, &c->solve, &cd->gap_criteria, &c->design,
-                              n_threads, &md->gap, diag);
-        md->has_gap = st == RB_OK;
-        if (st != RB_OK)
-            return fail_at(diag, cm->name, "recommended gap", st);
-    }
-    for (i = 0; full && i < c->n_sweeps; i++)
-        n_amp += c->sweeps[i].kind == RB_SWEEP_AMPLITUDE;
-    if (n_amp && !(md->sweeps = calloc(n_amp, sizeof *md->sweeps)))
-        return RB_ERR_NOMEM;
-    for (i = 0; n_amp && i < c->n_sweeps; i++) {
-        if (c->sweeps[i].kind != RB_SWEEP_AMPLITUDE)
-            continue;
-        step(pg, cm->name, "amplitude sweep");
-        st = rb_sweep_amplitude(&c->model, mo, &c->solve, &c->criteria, &c->sweeps[i],
-                                n_threads, memo, &md->sweeps[md->n_sweeps++], diag);
-        if (st != RB_OK)
-            return fail_at(diag, cm->name, "amplitude sweep", st);
-    }
-    return RB_OK;
+    searches s = {.c = c, .cm = cm, .full = scope == RB_RUN_DESIGN_FULL, .n_threads = 1,
+                  .cd = cd, .memo = memo, .md = md, .pg = pg};
+    rb_status sts[N_JOBS];
+    int nt = n_threads > 0 ? n_threads : rb_pool_threads_default();
+    /* the jobs side by side, their searches sharing out the threads: a
+     * search's rounds wait for their slowest run, and the other jobs fill
+     * the wait (rounding up oversubscribes a little rather than idle) */
+    int outer = nt < N_JOBS ? nt : N_JOBS;
+    s.n_threads = (nt + outer - 1) / outer;
+    rb_status st = rb_pool_map(N_JOBS, outer, search_job, &s, sts);
+    for (int i = 0; i < N_JOBS && st == RB_OK; i++)
+        if (sts[i] != RB_OK) {
+            st = sts[i];
+            if (diag)
+                *diag = s.diag[i];
+        }
+    return st;
 }
 
 /* The searches of one motion share their runs: the factors' scans and an
@@ -147,7 +216,7 @@ rb_status rb_run_motion_design(const rb_case *c, size_t m, rb_run_design_scope s
                                int n_threads, const rb_case_design *cd,
                                rb_motion_design *md, rb_diag *diag)
 {
-    progress none = {0};
+    progress none = {NULL, NULL, 0, 0, PTHREAD_MUTEX_INITIALIZER};
     memset(md, 0, sizeof *md);
     return design_motion(c, &c->motions[m], scope, n_threads, cd, md, diag, &none);
 }
@@ -163,7 +232,7 @@ rb_status rb_run_design(const rb_case *c, int n_threads, rb_case_design *out,
 {
     rb_status st = RB_OK;
     size_t i, n_amp = 0, n_freq = 0;
-    progress pg = {fn, ctx, 0, 0};
+    progress pg = {fn, ctx, 0, 0, PTHREAD_MUTEX_INITIALIZER};
     for (i = 0; i < c->n_sweeps; i++) {
         n_amp += c->sweeps[i].kind == RB_SWEEP_AMPLITUDE;
         n_freq += c->sweeps[i].kind == RB_SWEEP_FREQUENCY;
