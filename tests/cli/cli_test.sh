@@ -357,13 +357,16 @@ test_design() {
     echo "design: ok (factors $ny / $nb, exit $rc)"
 }
 
-# The searches give byte-identical reports on one thread and on two.
+# The searches give byte-identical reports on one thread, two and six.
 test_design_threads() {
     run design "$DESIGN" -j 1 --json "$D/j1.json" --quiet
     rc1=$rc
     run design "$DESIGN" -j2 --json "$D/j2.json" --quiet
     [ "$rc" -eq "$rc1" ] || fail "exit codes differ: $rc1 and $rc"
     cmp -s "$D/j1.json" "$D/j2.json" || fail "reports differ between -j 1 and -j 2"
+    # three searches side by side, two threads each
+    run design "$DESIGN" -j 6 --json "$D/j6.json" --quiet
+    cmp -s "$D/j1.json" "$D/j6.json" || fail "reports differ between -j 1 and -j 6"
     run design "$DESIGN" -j 0; expect_rc 2 "-j 0"
     run check "$DESIGN" -j 2; expect_rc 2 "-j on check"
     run check "$DESIGN" --sweep-csv "$D/x.csv"; expect_rc 2 "--sweep-csv on check"
