@@ -109,7 +109,10 @@ typedef struct {
 typedef struct {
     char *error;          /* owned: why the case has none (it has no bolts);
                              NULL when it was computed */
-    double g_mps2, level_mps2; /* the case's g and own level (motion 1's peak) */
+    double g_mps2, level_mps2; /* the case's g and own level (motion 1's peak),
+                             the level and medians in the summary's intensity */
+    double im_freq_hz;    /* spectral acceleration: at this frequency (the
+                             cabinet's f0); 0 for the peak floor acceleration */
     rb_batch_limit limits[RB_N_LIMITS];
 } rb_batch_fragility;
 
@@ -144,6 +147,7 @@ typedef struct {
     int design;           /* design factor and gap were asked for */
     int fragility;        /* each case's fragility was asked for */
     uint64_t seed;        /* of its bootstrap */
+    rb_fragility_intensity intensity; /* its intensity measure */
     size_t total;         /* items in the whole work list */
     size_t shard, n_shards; /* 1-based shard; 0/0 for the whole list */
     rb_batch_case *cases; /* owned, by index */
@@ -189,6 +193,10 @@ typedef struct {
     int fragility;            /* also each case's fragility (rb_run_fragility,
                                  RB_FRAGILITY_RESAMPLES resamples) */
     uint64_t seed;            /* of the fragility's bootstrap */
+    rb_fragility_intensity intensity; /* the fragility's intensity: the peak
+                                 floor acceleration (0, the default) or the
+                                 5 % spectral acceleration at each
+                                 cabinet's f0, as rb_run_fragility_intensity */
     const char *reports_dir;  /* NULL: no per-case reports; else one JSON
                                  and one text report per case */
     const char *report_template; /* text of report.txt; needed with reports */

@@ -30,6 +30,9 @@ extern const rb_enum_name rb_anchor_mode_names[];   /* rb_anchor_mode */
 extern const rb_enum_name rb_aci17_coef_names[];    /* rb_aci17_coef: si, in-lb */
 extern const rb_enum_name rb_limit_state_names[];   /* rb_limit_state (fragility.h) */
 extern const rb_enum_name rb_intensity_names[];     /* rb_fragility_intensity: pfa, sa */
+/* the same, as the JSON reports spell it: peak_floor_acceleration,
+ * spectral_acceleration */
+extern const rb_enum_name rb_intensity_report_names[];
 
 /* The name of value in table t; "unknown" when it has none. */
 const char *rb_enum_str(const rb_enum_name *t, int value);

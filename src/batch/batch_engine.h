@@ -32,10 +32,10 @@ void rb_batch_case_load(rb_batch_slot *s, const rb_batch_item *it, rb_batch_case
 /* Solve and judge motion m (and its design when asked). */
 void rb_batch_case_solve(rb_batch_slot *s, rb_batch_case *bc, size_t m, int design);
 /* The case's fragility (batch_fragility.c): rb_run_fragility on n_threads
- * into bc->fragility; its status in s->frag_status; with reports, its
- * JSON and text reports into s. */
+ * with o's seed, in o's intensity, into bc->fragility; its status in
+ * s->frag_status; with o's reports, its JSON and text reports into s. */
 void rb_batch_case_fragility(rb_batch_slot *s, rb_batch_case *bc, int n_threads,
-                             uint64_t seed, int reports);
+                             const rb_batch_opts *o);
 /* Conclude the case, write its reports, free s. */
 void rb_batch_case_finish(rb_batch_slot *s, rb_batch_case *bc, const rb_batch_opts *o,
                           size_t total);

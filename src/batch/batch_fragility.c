@@ -14,6 +14,7 @@ static void keep(const rb_case_fragility *f, rb_batch_fragility *out)
 {
     out->g_mps2 = f->g_mps2;
     out->level_mps2 = f->level_mps2;
+    out->im_freq_hz = f->intensity == RB_IM_SA ? f->im_freq_hz : 0;
     for (int k = 0; k < RB_N_LIMITS; k++) {
         rb_batch_limit *l = &out->limits[k];
         l->fitted = f->fitted[k];
@@ -29,7 +30,7 @@ static void keep(const rb_case_fragility *f, rb_batch_fragility *out)
 }
 
 void rb_batch_case_fragility(rb_batch_slot *s, rb_batch_case *bc, int n_threads,
-                             uint64_t seed, int reports)
+                             const rb_batch_opts *o)
 {
     rb_case_fragility f;
     rb_diag_clear(&s->frag_diag);
@@ -38,11 +39,15 @@ void rb_batch_case_fragility(rb_batch_slot *s, rb_batch_case *bc, int n_threads,
         s->frag_status = RB_ERR_NOMEM;
         return;
     }
-    s->frag_status = rb_run_fragility(&s->c, n_threads, seed, RB_FRAGILITY_RESAMPLES, &f,
-                                      &s->frag_diag, NULL, NULL);
+    s->frag_status = rb_run_fragility(&s->c, n_threads, o->seed, RB_FRAGILITY_RESAMPLES,
+                                      &f, &s->frag_diag, NULL, NULL);
+    /* restated in Sa(f0) as `fragility --intensity sa` does; a case without
+     * an f0 (a rigid cabinet) has no fragility in it and says why */
+    if (s->frag_status == RB_OK && o->intensity != f.intensity)
+        s->frag_status = rb_run_fragility_intensity(&s->c, o->intensity, &f, &s->frag_diag);
     if (s->frag_status == RB_OK) {
         keep(&f, bc->fragility);
-        if (reports) {
+        if (o->reports_dir) {
             s->frag_json = rb_fragility_render_json(&s->c, &f);
             s->frag_text = rb_fragility_render_text(&s->c, &f);
             if (!s->frag_json || !s->frag_text)

@@ -126,7 +126,8 @@ static int add_fragility(cJSON *o, const rb_batch_fragility *f)
         return 0;
     if (f->error)
         return add_text(fo, "error", f->error) != NULL;
-    int ok = add_num(fo, "g_mps2", f->g_mps2) && add_num(fo, "level_mps2", f->level_mps2)
+    int ok = (!(f->im_freq_hz > 0) || add_num(fo, "intensity_freq_hz", f->im_freq_hz))
+        && add_num(fo, "g_mps2", f->g_mps2) && add_num(fo, "level_mps2", f->level_mps2)
         && (ls = cJSON_AddArrayToObject(fo, "limit_states")) != NULL;
     for (int k = 0; ok && k < RB_N_LIMITS; k++) {
         const rb_batch_limit *l = &f->limits[k];
@@ -213,6 +214,9 @@ void rb_batch_json_head(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_
         cJSON *fr = cJSON_AddObjectToObject(root, "fragility");
         snprintf(seed, sizeof seed, "%llu", (unsigned long long)s->seed);
         ok = fr && cJSON_AddStringToObject(fr, "seed", seed)
+            && cJSON_AddStringToObject(fr, "intensity",
+                                       rb_enum_str(rb_intensity_report_names,
+                                                   (int)s->intensity))
             && add_num(fr, "resamples", RB_FRAGILITY_RESAMPLES)
             && add_num(fr, "interval", RB_FRAGILITY_INTERVAL);
     }
@@ -459,6 +463,8 @@ static void rd_fragility(rd_ctx *r, const cJSON *o, rb_batch_case *c)
         c->fragility->error = rd_str(r, f, "error");
         return;
     }
+    if (cJSON_GetObjectItemCaseSensitive(f, "intensity_freq_hz"))
+        c->fragility->im_freq_hz = rd_num(r, f, "intensity_freq_hz");
     c->fragility->g_mps2 = rd_num(r, f, "g_mps2");
     c->fragility->level_mps2 = rd_num(r, f, "level_mps2");
     const cJSON *ls = cJSON_GetObjectItemCaseSensitive(f, "limit_states");
@@ -547,8 +553,18 @@ static void rd_fragility_head(rd_ctx *r, const cJSON *root, rb_batch_summary *ou
                 "rockbolt's");
         return;
     }
+    /* summaries from before the intensity could be chosen are in pfa */
+    const cJSON *im = cJSON_GetObjectItemCaseSensitive(f, "intensity");
+    int imv = RB_IM_PFA;
+    if (im && (!cJSON_IsString(im)
+               || !rb_enum_parse(rb_intensity_report_names, im->valuestring, &imv))) {
+        rd_fail(r, "fragility.intensity",
+                "expected peak_floor_acceleration or spectral_acceleration");
+        return;
+    }
     out->fragility = 1;
     out->seed = v;
+    out->intensity = (rb_fragility_intensity)imv;
 }
 
 rb_status rb_batch_summary_parse(const char *text, rb_batch_summary *out, rb_diag *diag)

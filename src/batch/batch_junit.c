@@ -80,6 +80,11 @@ static void fragility_properties(rb_strbuf *b, const rb_batch_fragility *f)
         return;
     }
     double g = f->g_mps2;
+    if (f->im_freq_hz > 0) {
+        /* the level and medians are the spectral acceleration there */
+        snprintf(v, sizeof v, "%.6g", f->im_freq_hz);
+        property(b, "fragility.intensity_freq_hz", v);
+    }
     snprintf(v, sizeof v, "%.6g", f->level_mps2 / g);
     property(b, "fragility.level_g", v);
     for (int k = 0; k < RB_N_LIMITS; k++) {

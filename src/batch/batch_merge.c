@@ -72,6 +72,8 @@ rb_status rb_batch_merge(const rb_batch_summary *shards, size_t n,
             return fail(diag, "summary %zu and the first differ in --design", k + 1);
         if (shards[k].fragility != shards[0].fragility)
             return fail(diag, "summary %zu and the first differ in --fragility", k + 1);
+        if (shards[k].intensity != shards[0].intensity)
+            return fail(diag, "summary %zu and the first differ in --intensity", k + 1);
         if (shards[k].seed != shards[0].seed)
             return fail(diag, "summary %zu and the first differ in --seed (%llu and "
                         "%llu)", k + 1, (unsigned long long)shards[k].seed,
@@ -108,6 +110,7 @@ rb_status rb_batch_merge(const rb_batch_summary *shards, size_t n,
     out->design = shards[0].design;
     out->fragility = shards[0].fragility;
     out->seed = shards[0].seed;
+    out->intensity = shards[0].intensity;
     memcpy(out->inputs_digest, shards[0].inputs_digest, sizeof out->inputs_digest);
     out->total = total;
     for (size_t i = 0; i < total && st == RB_OK; i++) {

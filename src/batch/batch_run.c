@@ -82,8 +82,7 @@ static rb_status run_job(void *arg, size_t k)
     rb_batch_case *bc = &cx->cases[r->slot];
     rb_batch_slot *s = &cx->slots[r->slot];
     if (r->motion == FRAGILITY_JOB)
-        rb_batch_case_fragility(s, bc, cx->frag_threads, cx->o->seed,
-                                cx->o->reports_dir != NULL);
+        rb_batch_case_fragility(s, bc, cx->frag_threads, cx->o);
     else
         rb_batch_case_solve(s, bc, r->motion, cx->o->design);
     pthread_mutex_lock(&cx->lock);
@@ -197,6 +196,7 @@ rb_status rb_batch_run(const rb_batch_list *l, const rb_batch_opts *o,
     out->design = o->design;
     out->fragility = o->fragility;
     out->seed = o->seed;
+    out->intensity = o->intensity;
     out->total = l->n;
     out->shard = o->shard;
     out->n_shards = o->n_shards;

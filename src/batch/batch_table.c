@@ -54,6 +54,9 @@ static void text_fragility(rb_strbuf *b, const rb_batch_case *c)
         char name[32];
         snprintf(name, sizeof name, "[%s]", rb_enum_str(rb_limit_state_names, k));
         rb_strbuf_printf(b, "%-24s %-18s %-10s", "", name, "");
+        /* in the spectral acceleration at the cabinet's f0, say so */
+        if (l->fitted && f->im_freq_hz > 0)
+            rb_strbuf_printf(b, " Sa(%.3g Hz)", f->im_freq_hz);
         if (l->fitted)
             rb_strbuf_printf(b, " median %.4g g, beta %.3f, 90%% %.4g to %.4g g; P %.3f "
                              "at %.4g g;", l->median_mps2 / f->g_mps2, l->beta,
@@ -177,9 +180,17 @@ static void csv_num(rb_strbuf *b, double v)
         rb_strbuf_puts(b, ",");
 }
 
-/* The case's fragility, the same on each of its rows. */
-static void csv_fragility(rb_strbuf *b, const rb_batch_fragility *f)
+/* The case's fragility, the same on each of its rows: its intensity
+ * (with the frequency of a spectral acceleration), level, six columns per
+ * limit state, or why it has none. */
+static void csv_fragility(rb_strbuf *b, const rb_batch_fragility *f,
+                         rb_fragility_intensity im)
 {
+    rb_strbuf_printf(b, ",%s", rb_enum_str(rb_intensity_names, (int)im));
+    if (f->im_freq_hz > 0)
+        csv_num(b, f->im_freq_hz);
+    else
+        rb_strbuf_puts(b, ",");
     if (f->error) {
         rb_strbuf_puts(b, ",");
         for (int k = 0; k < RB_N_LIMITS; k++)
@@ -206,9 +217,9 @@ static void csv_fragility(rb_strbuf *b, const rb_batch_fragility *f)
     rb_strbuf_puts(b, ",");
 }
 
-/* The columns of --fragility after the design's: level, six per limit
- * state and the reason when there is none. */
-#define FRAGILITY_COLUMNS (1 + 6 * RB_N_LIMITS + 1)
+/* The columns of --fragility after the design's: intensity and its
+ * frequency, level, six per limit state and the reason when there is none. */
+#define FRAGILITY_COLUMNS (2 + 1 + 6 * RB_N_LIMITS + 1)
 
 void rb_batch_csv_head(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_counts *n)
 {
@@ -218,7 +229,8 @@ void rb_batch_csv_head(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_c
     if (s->design)
         rb_strbuf_puts(b, ",design_factor,design_factor_bound,gap_ratio");
     if (s->fragility) {
-        rb_strbuf_puts(b, ",fragility_level_g");
+        rb_strbuf_puts(b, ",fragility_intensity,fragility_intensity_freq_hz,"
+                        "fragility_level_g");
         for (int k = 0; k < RB_N_LIMITS; k++) {
             char st[32];
             limit_column(k, st, sizeof st);
@@ -274,7 +286,7 @@ void rb_batch_csv_case(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_c
                 rb_strbuf_puts(b, ",");
         }
         if (s->fragility && c->fragility)
-            csv_fragility(b, c->fragility);
+            csv_fragility(b, c->fragility, s->intensity);
         else
             for (int k = 0; s->fragility && k < FRAGILITY_COLUMNS; k++)
                 rb_strbuf_puts(b, ",");

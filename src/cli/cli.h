@@ -64,6 +64,8 @@ rb_exit rb_cli_args_parse(int argc, char **argv, rb_cli_opts *o);
 /* --seed N of fragility and batch --fragility: a whole number that fits
  * 64 bits; RB_EXIT_USAGE after printing what is wrong. */
 rb_exit rb_cli_take_seed(const char *v, unsigned long long *out);
+/* --intensity pfa|sa, once: *given is set (fragility and batch). */
+rb_exit rb_cli_take_intensity(const char *v, rb_fragility_intensity *out, int *given);
 
 /* --sandbox DIR of check, design and batch: confine every input to DIR
  * (rockbolt/sandbox.h) before anything is read. RB_EXIT_USAGE after

@@ -45,6 +45,22 @@ rb_exit rb_cli_take_seed(const char *v, unsigned long long *out)
     return RB_EXIT_PASS;
 }
 
+rb_exit rb_cli_take_intensity(const char *v, rb_fragility_intensity *out, int *given)
+{
+    int im;
+    if (*given) {
+        rb_cli_error(NULL, NULL, "option '--intensity' given twice");
+        return RB_EXIT_USAGE;
+    }
+    if (!rb_enum_parse(rb_intensity_names, v, &im)) {
+        rb_cli_error(NULL, NULL, "option '--intensity' needs pfa or sa (got '%s')", v);
+        return RB_EXIT_USAGE;
+    }
+    *out = (rb_fragility_intensity)im;
+    *given = 1;
+    return RB_EXIT_PASS;
+}
+
 /* A finite number making up the whole of s. */
 static int number(const char *s, double *out)
 {
@@ -214,21 +230,8 @@ static rb_exit take_option(int c, const rb_cli_getopt *g, rb_cli_opts *o)
         return rb_cli_take_seed(g->arg, &o->seed);
     case OPT_SWEEP_GAP:
         return take_sweep_gap(g->arg, o);
-    case OPT_INTENSITY: {
-        int v;
-        if (o->intensity_given) {
-            rb_cli_error(NULL, NULL, "option '--intensity' given twice");
-            return RB_EXIT_USAGE;
-        }
-        if (!rb_enum_parse(rb_intensity_names, g->arg, &v)) {
-            rb_cli_error(NULL, NULL, "option '--intensity' needs pfa or sa (got '%s')",
-                         g->arg);
-            return RB_EXIT_USAGE;
-        }
-        o->intensity = (rb_fragility_intensity)v;
-        o->intensity_given = 1;
-        return RB_EXIT_PASS;
-    }
+    case OPT_INTENSITY:
+        return rb_cli_take_intensity(g->arg, &o->intensity, &o->intensity_given);
     case OPT_X_SCALE: {
         int v;
         if (o->x_scale_given) {

@@ -193,6 +193,7 @@ static rb_exit run(rb_batch_cli *o, const rb_batch_list *l, rb_batch_summary *s)
     bo.design = o->design;
     bo.fragility = o->fragility;
     bo.seed = o->seed;
+    bo.intensity = o->intensity;
     bo.reports_dir = o->reports_dir;
     bo.report_template = tmpl;
     bo.report_stage = &o->plan;

@@ -18,6 +18,8 @@ typedef struct {
     int fragility;            /* batch: --fragility */
     unsigned long long seed;  /* batch: --seed N of the fragility's bootstrap */
     int seed_given;
+    rb_fragility_intensity intensity; /* batch: --intensity pfa|sa */
+    int intensity_given;
     int threads;              /* batch: -j N; 0: every processor */
     size_t shard, n_shards;   /* batch: --shard I/N; 0/0: all */
     int quiet, help;

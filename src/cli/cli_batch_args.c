@@ -54,7 +54,7 @@ static rb_exit parse_shard(const char *v, rb_batch_cli *o)
 }
 
 enum { OPT_JSON = 256, OPT_CSV, OPT_JUNIT, OPT_REPORTS, OPT_BASE, OPT_SANDBOX,
-       OPT_DESIGN, OPT_SHARD, OPT_ENCODING, OPT_FRAGILITY, OPT_SEED };
+       OPT_DESIGN, OPT_SHARD, OPT_ENCODING, OPT_FRAGILITY, OPT_SEED, OPT_INTENSITY };
 
 /* Options shared by batch and merge are the output files and --quiet. */
 static const struct option merge_longs[] = {
@@ -76,6 +76,7 @@ static const struct option batch_longs[] = {
     {"design", no_argument, NULL, OPT_DESIGN},
     {"fragility", no_argument, NULL, OPT_FRAGILITY},
     {"seed", required_argument, NULL, OPT_SEED},
+    {"intensity", required_argument, NULL, OPT_INTENSITY},
     {"shard", required_argument, NULL, OPT_SHARD},
     {"threads", required_argument, NULL, 'j'},
     {"quiet", no_argument, NULL, 'q'},
@@ -128,6 +129,8 @@ static rb_exit take_option(int c, const rb_cli_getopt *g, rb_batch_cli *o)
         }
         o->seed_given = 1;
         return rb_cli_take_seed(g->arg, &o->seed);
+    case OPT_INTENSITY:
+        return rb_cli_take_intensity(g->arg, &o->intensity, &o->intensity_given);
     case OPT_SHARD:
         e = take(g->name, g->arg, &sv);
         return e == RB_EXIT_PASS ? parse_shard(sv, o) : e;
@@ -195,6 +198,11 @@ rb_exit rb_cli_batch_parse(int argc, char **argv, int is_merge, rb_batch_cli *o)
         return e;
     if (!o->help && o->seed_given && !o->fragility) {
         rb_cli_error(NULL, "--seed", "the seed of the fragility's bootstrap needs "
+                     "--fragility");
+        return RB_EXIT_USAGE;
+    }
+    if (!o->help && o->intensity_given && !o->fragility) {
+        rb_cli_error(NULL, "--intensity", "the intensity of the fragility needs "
                      "--fragility");
         return RB_EXIT_USAGE;
     }

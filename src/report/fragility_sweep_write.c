@@ -56,7 +56,8 @@ char *rb_fragility_sweep_render_json(const rb_case *c, const rb_fragility_sweep 
     rb_strbuf_puts(&b, "{\n  \"format\": \"rockbolt-fragility-gap-sweep\", "
                        "\"format_version\": 1,\n  \"case\": ");
     rb_report_json_str(&b, c->name ? c->name : "");
-    rb_strbuf_puts(&b, ",\n  \"intensity\": \"peak_floor_acceleration\", ");
+    rb_strbuf_printf(&b, ",\n  \"intensity\": \"%s\", ",
+                     rb_enum_str(rb_intensity_report_names, RB_IM_PFA));
     rb_report_json_num(&b, "g_mps2", f0 ? f0->g_mps2 : (double)NAN, 1);
     rb_report_json_num(&b, "a_star_mps2", f0 ? f0->a_star_mps2 : (double)NAN, 1);
     rb_report_json_num(&b, "level_mps2", f0 ? f0->level_mps2 : (double)NAN, 1);

@@ -124,8 +124,8 @@ char *rb_fragility_render_json(const rb_case *c, const rb_case_fragility *f)
     rb_strbuf_puts(&b, "{\n  \"format\": \"rockbolt-fragility\", \"format_version\": 1,\n"
                        "  \"case\": ");
     rb_report_json_str(&b, c->name ? c->name : "");
-    rb_strbuf_printf(&b, ",\n  \"intensity\": \"%s\", ", f->intensity == RB_IM_SA
-                     ? "spectral_acceleration" : "peak_floor_acceleration");
+    rb_strbuf_printf(&b, ",\n  \"intensity\": \"%s\", ",
+                     rb_enum_str(rb_intensity_report_names, (int)f->intensity));
     if (f->intensity == RB_IM_SA) {
         rb_report_json_num(&b, "intensity_freq_hz", f->im_freq_hz, 1);
         rb_report_json_num(&b, "intensity_damping", f->im_damping, 1);

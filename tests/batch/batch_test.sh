@@ -185,9 +185,10 @@ fragility)
     has "$s/out" "^ *\[first-yield\] *median [0-9.]* g, beta [0-9.]*, 90% [0-9.]* to [0-9.]* g; P [0-9.]* at [0-9.]* g; reached by 3 of 3"
     has "$s/out" "^ *\[overturn\] *not fitted; reached by 0 of 3"
     has "$s/out" "d-broken .*UNREADABLE"
-    has "$s/f.csv" ",theta_over_alpha,fragility_level_g,fragility_first_yield_median_g,fragility_first_yield_beta,fragility_first_yield_median_lo_g,fragility_first_yield_median_hi_g,fragility_first_yield_p_at_level,fragility_first_yield_reached,fragility_usage_median_g,"
+    has "$s/f.csv" ",theta_over_alpha,fragility_intensity,fragility_intensity_freq_hz,fragility_level_g,fragility_first_yield_median_g,fragility_first_yield_beta,fragility_first_yield_median_lo_g,fragility_first_yield_median_hi_g,fragility_first_yield_p_at_level,fragility_first_yield_reached,fragility_usage_median_g,"
     has "$s/f.csv" ",fragility_lift_off_reached,fragility_error,validity_warnings,"
     has "$s/f.json" '"seed":	"5"'
+    has "$s/f.json" '"intensity":	"peak_floor_acceleration"'
     has "$s/f.json" '"limit_state":	"lift-off"'
     has "$s/f.xml" '<property name="fragility.usage.median_g" value="[0-9.]*"/>'
     check_junit "$s/f.xml"
@@ -199,6 +200,7 @@ assert len({len(r) for r in rows}) == 1, "rows of different lengths"
 suite = [r for r in rows if r["tag"] == "c-suite"]
 assert len(suite) == 3 and len({r["fragility_usage_median_g"] for r in suite}) == 1
 assert float(suite[0]["fragility_usage_median_g"]) > 0
+assert suite[0]["fragility_intensity"] == "pfa" and suite[0]["fragility_intensity_freq_hz"] == ""
 broken = [r for r in rows if r["tag"] == "d-broken"][0]
 assert broken["fragility_level_g"] == "" and "missing unit" in broken["error"]
 cases = {c["tag"]: c for c in json.load(open(sys.argv[2]))["cases"]}
@@ -223,6 +225,26 @@ PY
     run 2 merge "$s/s1.json" "$s/s2.json" --json "$s/m.json"
     has "$s/err" "differ in --seed (1 and 0)"
     [ ! -e "$s/m.json" ] || fail "a merge written from shards of other seeds"
+    # nor shards run in other intensities
+    run 1 batch tests/batch/cases/a-pass.yaml tests/batch/cases/c-suite.yaml -q \
+        --fragility --intensity sa --shard 2/2 --json "$s/s2.json"
+    run 2 merge "$s/s1.json" "$s/s2.json" --json "$s/m.json"
+    has "$s/err" "differ in --intensity"
+    [ ! -e "$s/m.json" ] || fail "a merge written from shards of other intensities"
+    # the intensity belongs to --fragility, and is pfa or sa
+    run 2 batch tests/batch/cases/a-pass.yaml --intensity sa --json "$s/no.json"
+    has "$s/err" "error: --intensity: the intensity of the fragility needs --fragility"
+    run 2 batch tests/batch/cases/a-pass.yaml --fragility --intensity g --json "$s/no.json"
+    has "$s/err" "option '--intensity' needs pfa or sa (got 'g')"
+    [ ! -e "$s/no.json" ] || fail "a summary written after a usage error"
+    # in Sa(f0) every output says so: the table, the CSV, the JSON, JUnit
+    run 1 batch tests/batch/cases/c-suite.yaml --fragility --intensity sa \
+        --json "$s/sa.json" --csv "$s/sa.csv" --junit "$s/sa.xml"
+    has "$s/out" "^ *\[first-yield\] *Sa([0-9.]* Hz) median [0-9.]* g"
+    has "$s/sa.csv" ",sa,[0-9.]*,[0-9.]*,"
+    has "$s/sa.json" '"intensity":	"spectral_acceleration"'
+    has "$s/sa.json" '"intensity_freq_hz":	[0-9.]*'
+    has "$s/sa.xml" '<property name="fragility.intensity_freq_hz" value="[0-9.]*"/>'
     ;;
 *)
     fail "unknown test $t"

@@ -12,6 +12,8 @@ bootstrap seed; then asserts that
     and probability at the level that `rockbolt fragility ROWCASE --seed S
     --json` gives on the same case written as a file, to the last bit, and
     as many motions reaching it as that command has uncensored;
+  - `batch --intensity sa` gives each row what `rockbolt fragility ROWCASE
+    --intensity sa --json` gives, to the last bit, and says so in its head;
   - `--reports DIR` holds each row's fragility report as `rockbolt
     fragility ROWCASE --json` writes it, byte for byte;
   - the free-standing row keeps its verdict and says why it has no
@@ -215,6 +217,49 @@ for row in rows:
             if ls["fitted"] and got[key] != ls[key]:
                 fail(f"{row['tag']}: {name}: {key} {got[key]!r}, fragility {ls[key]!r}")
         compared += ls["fitted"]
+# in Sa(f0): batch --intensity sa against fragility --intensity sa, row by row
+sa_json = os.path.join(scratch, "sa.json")
+r = run("batch", lst, "--fragility", "--seed", str(boot_seed), "--intensity", "sa", "-q",
+        "--json", sa_json)
+sa_compared = 0
+if r.returncode not in (0, 1) or not os.path.exists(sa_json):
+    fail(f"batch --intensity sa: exit {r.returncode}: {r.stderr.strip()[:300]}")
+else:
+    sa = json.load(open(sa_json))
+    if sa.get("fragility", {}).get("intensity") != "spectral_acceleration":
+        fail(f"the Sa summary's head says {sa.get('fragility')}")
+    sa_cases = {c["tag"]: c for c in sa["cases"]}
+    for row in rows:
+        if row.get("bolt_model") == "none":
+            continue
+        bf = sa_cases.get(row["tag"], {}).get("fragility", {})
+        fj = os.path.join(scratch, row["tag"] + ".sa.json")
+        r = run("fragility", row_case(row), "--seed", str(boot_seed), "--intensity", "sa",
+                "--json", fj, "-q")
+        if r.returncode != 0 or "limit_states" not in bf:
+            fail(f"{row['tag']}: Sa: fragility exit {r.returncode}, batch {bf}")
+            continue
+        want = json.load(open(fj))
+        for key in ("level_mps2", "g_mps2"):
+            if bf[key] != want[key]:
+                fail(f"{row['tag']}: Sa {key} {bf[key]!r}, fragility {want[key]!r}")
+        if bf.get("intensity_freq_hz") != want["intensity_freq_hz"]:
+            fail(f"{row['tag']}: Sa at {bf.get('intensity_freq_hz')} Hz, fragility at "
+                 f"{want['intensity_freq_hz']} Hz")
+        # restated, not the pfa numbers again
+        if bf["level_mps2"] == by_tag[row["tag"]]["fragility"]["level_mps2"]:
+            fail(f"{row['tag']}: the Sa level is the pfa level")
+        for got, ls in zip(bf["limit_states"], want["limit_states"]):
+            for key in ("fitted", "median_mps2", "beta", "median_lo_mps2", "median_hi_mps2",
+                        "p_at_level"):
+                if got.get(key) != ls.get(key) and (ls["fitted"] or key == "fitted"):
+                    fail(f"{row['tag']}: Sa {ls['limit_state']}: {key} {got.get(key)!r}, "
+                         f"fragility {ls.get(key)!r}")
+            sa_compared += ls["fitted"]
+print(f"{sa_compared} fitted limit states compared in Sa(f0)")
+if sa_compared < len(rows):
+    fail(f"only {sa_compared} fitted limit states in Sa: the rows test too little")
+
 # one case alone: its searches get both threads, not one
 one = {}
 for j in ("1", "2"):

@@ -46,6 +46,7 @@ for c in $COMMANDS; do
             *" N "*|*" N") value=2 ;;
             *" FILE"*|*" CASE"*) value=x ;;
             *" NAME"*) value=cp1252 ;;
+            *" pfa|sa"*) value=sa ;;
         esac
         for n in $names; do
             case "$n" in -*) ;; *) continue ;; esac
