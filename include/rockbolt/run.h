@@ -97,6 +97,10 @@ rb_status rb_run_spectra(const rb_case *c, const rb_spectrum_opts *o, rb_case_sp
  * cabinet, which has no fixed-base frequency. */
 rb_status rb_run_fragility_intensity(const rb_case *c, rb_fragility_intensity im,
                                      rb_case_fragility *f, rb_diag *diag);
+/* Whether c's fragility can be stated in im, before any search:
+ * RB_ERR_INVALID as above otherwise. */
+rb_status rb_run_fragility_intensity_ok(const rb_case *c, rb_fragility_intensity im,
+                                        rb_diag *diag);
 
 /* The most gap ratios a sweep takes: each is a whole fragility. */
 #define RB_FRAGILITY_SWEEP_MAX_POINTS 100
@@ -115,5 +119,11 @@ rb_status rb_run_fragility_gap_sweep(const rb_case *c, const double *gap_ratios,
                                      int n_threads, uint64_t seed, unsigned n_boot,
                                      rb_fragility_sweep *out, rb_diag *diag,
                                      rb_design_progress_fn progress, void *ctx);
+
+/* Every point of a sweep restated in intensity im, as
+ * rb_run_fragility_intensity (the ratio of a motion's Sa(f0) to its peak
+ * does not depend on the gap). Errors as that function. */
+rb_status rb_run_fragility_sweep_intensity(const rb_case *c, rb_fragility_intensity im,
+                                           rb_fragility_sweep *s, rb_diag *diag);
 
 #endif

@@ -408,11 +408,6 @@ rb_exit rb_cli_args_parse(int argc, char **argv, rb_cli_opts *o)
         rb_cli_error(NULL, NULL, "'%s' needs a case file: rockbolt %s CASE.yaml", c, c);
         return RB_EXIT_USAGE;
     }
-    if (o->sweep_gap && o->intensity_given && o->intensity != RB_IM_PFA) {
-        rb_cli_error(NULL, NULL, "option '--intensity sa' is not available with "
-                     "--sweep-gap: the sweep is in peak floor acceleration");
-        return RB_EXIT_USAGE;
-    }
     if (o->sweep_gap && o->x_scale_given) {
         rb_cli_error(NULL, NULL, "option '--x-scale' sets the intensity axis of the "
                      "fragility figure; the figure of --sweep-gap has the gap ratio along "

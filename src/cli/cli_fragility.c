@@ -56,15 +56,18 @@ static rb_exit compute(const rb_cli_opts *o, const rb_case *c, rb_case_fragility
     rb_status st;
     rb_diag_clear(&d);
     rb_cli_progress_start(&line, o->quiet);
-    if (o->sweep_gap)
+    /* an intensity the case cannot have is refused before the searches */
+    st = rb_run_fragility_intensity_ok(c, o->intensity, &d);
+    if (st == RB_OK && o->sweep_gap)
         st = rb_run_fragility_gap_sweep(c, o->gap_ratios, o->n_gap_ratios, o->threads,
                                         o->seed, RB_FRAGILITY_RESAMPLES, sweep, &d,
                                         line.enabled ? rb_cli_progress_design : NULL, &line);
-    else
+    else if (st == RB_OK)
         st = rb_run_fragility(c, o->threads, o->seed, RB_FRAGILITY_RESAMPLES, f, &d,
                               line.enabled ? rb_cli_progress_design : NULL, &line);
-    if (st == RB_OK && !o->sweep_gap)
-        st = rb_run_fragility_intensity(c, o->intensity, f, &d);
+    if (st == RB_OK)
+        st = o->sweep_gap ? rb_run_fragility_sweep_intensity(c, o->intensity, sweep, &d)
+                          : rb_run_fragility_intensity(c, o->intensity, f, &d);
     if (line.enabled && line.shown)
         fputs("\r\033[K", stderr);
     if (st == RB_OK)

@@ -17,10 +17,16 @@ char *rb_fragility_sweep_render_text(const rb_case *c, const rb_fragility_sweep 
         return rb_strbuf_take(&b);
     const rb_case_fragility *f0 = &s->points[0];
     double g = f0->g_mps2;
-    rb_strbuf_printf(&b, "fragility of %s against the gap ratio: %zu motions, at the "
-                     "case's level %.4f g = %.4f A*\n",
+    char im[96];
+    rb_fragility_intensity_describe(f0, im, sizeof im);
+    rb_strbuf_printf(&b, "fragility of %s against the gap ratio: %zu motions, %s as the "
+                     "intensity, at the case's level %.4f g",
                      rb_text_escape_buf(c->name ? c->name : "case", name, sizeof name),
-                     f0->n_motions, f0->level_mps2 / g, f0->level_mps2 / f0->a_star_mps2);
+                     f0->n_motions, im, f0->level_mps2 / g);
+    /* A* is a peak floor acceleration: a spectral level is not a fraction of it */
+    if (f0->intensity == RB_IM_PFA)
+        rb_strbuf_printf(&b, " = %.4f A*", f0->level_mps2 / f0->a_star_mps2);
+    rb_strbuf_puts(&b, "\n");
     rb_strbuf_printf(&b, "%-9s", "");
     for (int k = 0; k < RB_N_LIMITS; k++)
         rb_strbuf_printf(&b, " %28s", rb_enum_str(rb_limit_state_names, k));
@@ -56,8 +62,13 @@ char *rb_fragility_sweep_render_json(const rb_case *c, const rb_fragility_sweep 
     rb_strbuf_puts(&b, "{\n  \"format\": \"rockbolt-fragility-gap-sweep\", "
                        "\"format_version\": 1,\n  \"case\": ");
     rb_report_json_str(&b, c->name ? c->name : "");
+    rb_fragility_intensity im = f0 ? f0->intensity : RB_IM_PFA;
     rb_strbuf_printf(&b, ",\n  \"intensity\": \"%s\", ",
-                     rb_enum_str(rb_intensity_report_names, RB_IM_PFA));
+                     rb_enum_str(rb_intensity_report_names, (int)im));
+    if (im == RB_IM_SA) {
+        rb_report_json_num(&b, "intensity_freq_hz", f0->im_freq_hz, 1);
+        rb_report_json_num(&b, "intensity_damping", f0->im_damping, 1);
+    }
     rb_report_json_num(&b, "g_mps2", f0 ? f0->g_mps2 : (double)NAN, 1);
     rb_report_json_num(&b, "a_star_mps2", f0 ? f0->a_star_mps2 : (double)NAN, 1);
     rb_report_json_num(&b, "level_mps2", f0 ? f0->level_mps2 : (double)NAN, 1);

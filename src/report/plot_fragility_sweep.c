@@ -91,12 +91,19 @@ rb_status rb_plot_fragility_sweep_svg(const rb_fragility_sweep *s, const char *t
                      LEFT);
     rb_plot_escape(&b, title ? title : "Fragility against the gap ratio");
     rb_strbuf_puts(&b, "</text>\n");
-    snprintf(line, sizeof line, "lognormal fits to %zu motions at each gap ratio; dashed: "
-             "the case's level %.3g g (%.3g A*)", f0->n_motions, level_g,
-             f0->level_mps2 / f0->a_star_mps2);
+    int sa = f0->intensity == RB_IM_SA;
+    if (sa)
+        snprintf(line, sizeof line, "lognormal fits to %zu motions at each gap ratio, in "
+                 "the %g %% Sa at %.3g Hz; dashed: the case's level %.3g g", f0->n_motions,
+                 100 * f0->im_damping, f0->im_freq_hz, level_g);
+    else
+        snprintf(line, sizeof line, "lognormal fits to %zu motions at each gap ratio; "
+                 "dashed: the case's level %.3g g (%.3g A*)", f0->n_motions, level_g,
+                 f0->level_mps2 / f0->a_star_mps2);
     rb_svg_text(&b, LEFT, 44, 11, "start", NULL, line);
     rb_panel_draw(&b, &p[0], "P at the case's level (-)", 0, NULL);
-    rb_panel_draw(&b, &p[1], "median (g), log scale", 1, "gap ratio g0 / l (-)");
+    rb_panel_draw(&b, &p[1], sa ? "median Sa(f0) (g), log scale" : "median (g), log scale",
+                  1, "gap ratio g0 / l (-)");
     rb_panel_hline(&b, &p[1], level_g, "#555555");
     const char *names[RB_N_LIMITS], *cols[RB_N_LIMITS];
     int n_leg = 0;

@@ -219,6 +219,16 @@ static rb_status motion_sa(const rb_motion *m, double f0, double xi, double *sa)
     return st;
 }
 
+rb_status rb_run_fragility_intensity_ok(const rb_case *c, rb_fragility_intensity im,
+                                        rb_diag *diag)
+{
+    if (im == RB_IM_SA && (c->model.rigid || !(c->model.freq_hz > 0)))
+        return rb_diag_set(diag, RB_ERR_INVALID, NULL, 0, 0, "equipment.frequency",
+                           "spectral acceleration is taken at the cabinet's fixed-base "
+                           "frequency, and a rigid cabinet has none");
+    return RB_OK;
+}
+
 rb_status rb_run_fragility_intensity(const rb_case *c, rb_fragility_intensity im,
                                      rb_case_fragility *f, rb_diag *diag)
 {
@@ -228,10 +238,9 @@ rb_status rb_run_fragility_intensity(const rb_case *c, rb_fragility_intensity im
         return rb_diag_set(diag, RB_ERR_INVALID, NULL, 0, 0, "intensity",
                            "a fragility in peak floor acceleration can be restated in "
                            "spectral acceleration only");
-    if (c->model.rigid || !(c->model.freq_hz > 0))
-        return rb_diag_set(diag, RB_ERR_INVALID, NULL, 0, 0, "equipment.frequency",
-                           "spectral acceleration is taken at the cabinet's fixed-base "
-                           "frequency, and a rigid cabinet has none");
+    rb_status st0 = rb_run_fragility_intensity_ok(c, im, diag);
+    if (st0 != RB_OK)
+        return st0;
     const double xi = 0.05;
     for (size_t m = 0; m < f->n_motions; m++) {
         const rb_motion *mo = &c->motions[m].motion;

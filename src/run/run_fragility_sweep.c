@@ -89,3 +89,12 @@ rb_status rb_run_fragility_gap_sweep(const rb_case *c, const double *gap_ratios,
     }
     return st;
 }
+
+rb_status rb_run_fragility_sweep_intensity(const rb_case *c, rb_fragility_intensity im,
+                                           rb_fragility_sweep *s, rb_diag *diag)
+{
+    rb_status st = RB_OK;
+    for (size_t i = 0; i < s->n_points && st == RB_OK; i++)
+        st = rb_run_fragility_intensity(c, im, &s->points[i], diag);
+    return st;
+}

@@ -10,6 +10,8 @@ Run from the source root. On a suite of two shipped records:
   - the CSV, the table on stdout and the figure hold every point: one
     curve per limit state and panel, a mark per fitted point, placed by
     its value, the medians on a log axis;
+  - with --intensity sa each point is `fragility --intensity sa` on that
+    case, to the last bit, and a rigid cabinet (no f0) is refused;
   - a bad range is refused before any search with one line naming
     --sweep-gap and the form it expects, exit 2 and nothing written; so
     are a gap the case's plate cannot take, a case without bolts and
@@ -141,6 +143,41 @@ for k, s in enumerate(STATES):
 page = open(out["html"]).read()
 if page.count("<svg") != 1 or "P(level)" not in page:
     fail("the page lacks the figure or the table")
+
+# in Sa(f0): each point is `fragility --intensity sa` on the case with that
+# gap ratio, to the last bit, and the outputs say which intensity they hold
+sa_out = {k: os.path.join(scratch, "sa." + k) for k in ("json", "svg")}
+r = run("fragility", case, "--sweep-gap", "0.005:0.015:0.005", "--intensity", "sa",
+        "--seed", "3", "-q", *[a for k, p in sa_out.items() for a in ("--" + k, p)])
+if r.returncode != 0:
+    fail(f"--intensity sa: exit {r.returncode}: {r.stderr.strip()[:300]}")
+else:
+    ssw = json.load(open(sa_out["json"]))
+    if ssw["intensity"] != "spectral_acceleration" or ssw.get("intensity_damping") != 0.05:
+        fail(f"the Sa sweep's head: {ssw['intensity']}, {ssw.get('intensity_damping')}")
+    if ssw["level_mps2"] == sw["level_mps2"]:
+        fail("the Sa sweep's level is the peak floor acceleration's")
+    for p in ssw["points"]:
+        c = os.path.join(scratch, f"gap-{p['gap_ratio']!r}.yaml")
+        fj = c[:-5] + ".sa.json"
+        r = run("fragility", c, "--seed", "3", "--intensity", "sa", "--json", fj, "-q")
+        if r.returncode:
+            fail(f"fragility --intensity sa at gap ratio {p['gap_ratio']}: exit {r.returncode}")
+            continue
+        f = json.load(open(fj))
+        if p["limit_states"] != f["limit_states"]:
+            fail(f"gap ratio {p['gap_ratio']}: the Sa sweep's point is not the case's "
+                 f"fragility in Sa")
+        for key in ("level_mps2", "intensity_freq_hz"):
+            if ssw[key] != f[key]:
+                fail(f"Sa {key}: sweep {ssw[key]}, fragility {f[key]}")
+    texts = [t.text for t in ET.parse(sa_out["svg"]).getroot().iter(NS + "text")]
+    if "median Sa(f0) (g), log scale" not in texts:
+        fail("the Sa sweep's figure does not say its medians are Sa(f0)")
+rigid = write("rigid.yaml", f"extends: {case}\nequipment:\n  rigid: true\n")
+r = run("fragility", rigid, "--sweep-gap", "0:0.01:0.005", "--intensity", "sa", "-q")
+if r.returncode != 2 or "a rigid cabinet has none" not in r.stderr:
+    fail(f"an Sa sweep of a rigid cabinet: exit {r.returncode}, {r.stderr.strip()[:200]}")
 
 # bad input: exit 2, one line naming the option and the form, nothing written
 FORM = ("needs FROM:TO:STEP, gap ratios of the lever arm with 0 <= FROM < TO <= 1 and "
