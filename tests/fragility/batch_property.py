@@ -22,25 +22,15 @@ bootstrap seed; then asserts that
     -j 2 (also for one case alone, whose searches then share both threads),
     and merging two shards gives the JSON of the whole list.
 The seed is printed so that a failure can be replayed."""
-import csv, json, os, random, shutil, subprocess, sys
+import csv, json, os, random, sys
 
-rb, scratch = (os.path.abspath(a) for a in sys.argv[1:3])
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from e2e import fail, failures, run, src, start  # noqa: E402
+
+rb, scratch = start()
 n = int(sys.argv[3]) if len(sys.argv) > 3 else 6
 seed = int(sys.argv[4]) if len(sys.argv) > 4 else 20260317
 rng = random.Random(seed)
-src = os.getcwd()
-shutil.rmtree(scratch, ignore_errors=True)
-os.makedirs(scratch)
-failures = []
-
-
-def fail(msg):
-    failures.append(msg)
-    print("FAIL:", msg)
-
-
-def run(*args):
-    return subprocess.run([rb, *args], capture_output=True, text=True)
 
 
 # five windows of the records through buildings: with fewer motions the

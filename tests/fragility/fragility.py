@@ -18,18 +18,12 @@ Run from the source root. On a suite of two shipped records:
     Sa(f0) / peak, with Sa(f0) from `rockbolt spectrum` of the same case
     (another path to the same spectrum), and refits (the closed form where
     no motion is censored); a rigid cabinet refuses it, --sweep-gap takes it."""
-import json, math, os, shutil, subprocess, sys
+import json, math, os, sys
 
-rb, scratch = (os.path.abspath(a) for a in sys.argv[1:3])
-shutil.rmtree(scratch, ignore_errors=True)
-os.makedirs(scratch)
-src = os.getcwd()
-failures = []
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from e2e import fail, failures, run, src, start  # noqa: E402
 
-
-def fail(msg):
-    failures.append(msg)
-    print("FAIL:", msg)
+rb, scratch = start()
 
 
 def write_case(name, extra=""):
@@ -42,10 +36,6 @@ motions:
   - {{type: record, name: taft, file: {src}/cases/records/taft_1952_s69e.txt, format: one-column, units: g, dt: 0.01 s, building: {{frequency: 5 Hz, damping: 5 %}}, peak: 0.3 A*, window: [0 s, 12 s]}}
 {extra}""")
     return p
-
-
-def run(*args):
-    return subprocess.run([rb, *args], capture_output=True, text=True)
 
 
 case = write_case("suite", "design:\n  scan_end: 0.6\n")

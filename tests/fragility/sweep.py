@@ -16,31 +16,14 @@ Run from the source root. On a suite of two shipped records:
     --sweep-gap and the form it expects, exit 2 and nothing written; so
     are a gap the case's plate cannot take, a case without bolts and
     --x-scale, which the sweep's figure has no use for."""
-import json, math, os, shutil, subprocess, sys
+import json, math, os, sys
 import xml.etree.ElementTree as ET
 
-rb, scratch = (os.path.abspath(a) for a in sys.argv[1:3])
-shutil.rmtree(scratch, ignore_errors=True)
-os.makedirs(scratch)
-src = os.getcwd()
-failures = []
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from e2e import fail, failures, run, src, start, write  # noqa: E402
+
+rb, scratch = start()
 STATES = ["first-yield", "usage", "overturn", "lift-off"]
-
-
-def fail(msg):
-    failures.append(msg)
-    print("FAIL:", msg)
-
-
-def run(*args):
-    return subprocess.run([rb, *args], capture_output=True, text=True)
-
-
-def write(name, text):
-    p = os.path.join(scratch, name)
-    with open(p, "w") as f:
-        f.write(text)
-    return p
 
 
 case = write("suite.yaml", f"""extends: {src}/cases/base/reference-cabinet.yaml

@@ -18,30 +18,13 @@ Run from the source root.
     the verdict and usage that check gives the same case.
   - init --ac156 writes a case that loads and whose suite is within.
   - Bad options exit 2 and write nothing."""
-import csv, json, math, os, shutil, subprocess, sys
+import csv, json, math, os, sys
 
-rb, scratch = (os.path.abspath(a) for a in sys.argv[1:3])
-shutil.rmtree(scratch, ignore_errors=True)
-os.makedirs(scratch)
-src = os.getcwd()
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from e2e import fail, failures, run, src, start, write  # noqa: E402
+
+rb, scratch = start()
 G = 9.80665
-failures = []
-
-
-def fail(msg):
-    failures.append(msg)
-    print("FAIL:", msg)
-
-
-def run(*args):
-    return subprocess.run([rb, *args], capture_output=True, text=True)
-
-
-def write(name, text):
-    p = os.path.join(scratch, name)
-    with open(p, "w") as f:
-        f.write(text)
-    return p
 
 
 def nigam_jennings(acc, dt, f, xi, sub=20):

@@ -17,18 +17,12 @@ Run from the source root. On cases/reference-concrete.yaml and variants:
     shards keep byte for byte;
   - the static demand of design.code (row tension, anchor design force as
     shear) is put through the same interaction."""
-import json, os, shutil, subprocess, sys
+import json, os, subprocess, sys
 
-rb, scratch = (os.path.abspath(a) for a in sys.argv[1:3])
-shutil.rmtree(scratch, ignore_errors=True)
-os.makedirs(scratch)
-src = os.getcwd()
-failures = []
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from e2e import fail, failures, src, start  # noqa: E402
 
-
-def fail(msg):
-    failures.append(msg)
-    print("FAIL:", msg)
+rb, scratch = start()
 
 
 def case(name, extra, level="0.4 A*"):

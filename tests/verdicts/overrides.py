@@ -10,8 +10,10 @@ that cannot apply to the base must be an error at the row (exit 2, the
 list's file:line on stderr), never a silent change of the motions."""
 import json, os, subprocess, sys
 
-rb, scratch = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
-os.makedirs(scratch, exist_ok=True)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from e2e import fail, failures, start  # noqa: E402
+
+rb, scratch = start()
 bases = os.path.abspath("tests/verdicts/bases")
 
 # column -> the base's own value, restated
@@ -31,14 +33,6 @@ EXPECT = {
                    "building_frequency": "error"},
 }
 FIELDS = ("usage", "shear_over_w", "force_over_fy", "theta_over_alpha")
-failures = []
-
-
-def fail(msg):
-    failures.append(msg)
-    print("FAIL:", msg)
-
-
 def check_numbers(base):
     out = os.path.join(scratch, base + ".check.json")
     p = subprocess.run([rb, "check", os.path.join(bases, base + ".yaml"), "--json", out,

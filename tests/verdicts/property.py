@@ -21,14 +21,16 @@ past yield) and asserts that
   - no verdict contradicts its own numbers: a passing no-yield run has
     every row force below Fy, a passing no-break run usage below its limit.
 The seed is printed so that a failure can be replayed."""
-import json, os, random, shutil, subprocess, sys
+import json, os, random, subprocess, sys
 
-rb, probe, scratch = (os.path.abspath(a) for a in sys.argv[1:4])
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from e2e import failures, src, start  # noqa: E402
+import e2e  # noqa: E402
+
+rb, probe, scratch = start(3)
 n = int(sys.argv[4]) if len(sys.argv) > 4 else 1000
 seed = int(sys.argv[5]) if len(sys.argv) > 5 else 20261124
 rng = random.Random(seed)
-src = os.getcwd()
-shutil.rmtree(scratch, ignore_errors=True)
 os.makedirs(os.path.join(scratch, "cases"))
 records = {
     "elcentro": "  file: {}/cases/records/elcentro_1940_ns.at2\n  format: at2\n",
@@ -118,13 +120,8 @@ for i in range(n):
         f.write(case(i))
     paths.append(p)
 
-failures = []
-
-
 def fail(msg):
-    failures.append(msg)
-    if len(failures) <= 20:
-        print("FAIL:", msg)
+    e2e.fail(msg, shown=20)
 
 
 # check, one process per case, as a user runs it
