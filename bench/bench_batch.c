@@ -89,8 +89,9 @@ static int time_list_here(const char *path, int threads, const char *label, doub
     return c.unreadable || c.errors ? -1 : 0;
 }
 
-/* The same in a process of its own, as a user's batch runs: a second batch
- * in the process of a first ran 15 % slower (the heap the first left). */
+/* The same in a process of its own, as a user's batch runs: the varied
+ * list run after the first list in one process took 4.05 s against 3.54 s
+ * alone, for a cause not found (run after itself it is not slower). */
 static int time_list(const char *path, int threads, const char *label, double *rate)
 {
     int fds[2];
