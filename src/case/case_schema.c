@@ -325,13 +325,14 @@ static void read_analysis(rb_cctx *c, rb_ynode *an, rb_case *cs)
      * not a history is recorded */
     c->history_dt_node = rb_cv_number(c, an, p, "output_interval", 0, RB_DIM_TIME,
                                       0, 0, (double)NAN, 0, &dt);
+    /* the interval serves every history: the case's own (history: true)
+     * and those --history, --svg and --html ask for; the pipeline drops it
+     * when no history is wanted */
     if (c->history_dt_node)
-        c->history_dt_s = dt;
+        c->history_dt_s = cs->solve.history_dt_s = dt;
     v = rb_cv_get(c, an, p, "history", 0, "");
-    if (v && rb_cv_bool(c, v, "analysis.history", &b)) {
+    if (v && rb_cv_bool(c, v, "analysis.history", &b))
         cs->write_history = b;
-        cs->solve.history_dt_s = b ? dt : 0.0;
-    }
     v = rb_cv_get(c, an, p, "stretch_past_failure", 0, "");
     if (v && rb_cv_bool(c, v, "analysis.stretch_past_failure", &b))
         cs->solve.stretch_past_failure = b;

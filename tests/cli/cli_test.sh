@@ -247,6 +247,14 @@ test_history() {
     # analysis.history), whatever --history asks for
     [ "$(jget "$D/h.json" motions.0.result.cost.history_rows)" = "0" ] ||
         fail "history_rows in JSON depends on --history"
+    # analysis.output_interval sets the rows of --history, with or without
+    # analysis.history
+    printf 'extends: %s/%s\nanalysis:\n  output_interval: 2.5 ms\n' "$(pwd)" "$HARMONIC" \
+        >"$D/fine.yaml"
+    run check "$D/fine.yaml" --quiet --history "$D/fine.csv"
+    [ "$rc" -le 1 ] || fail "output_interval: exit code $rc"
+    awk -F, 'NR == 3 && $2 != 0.0025 { exit 1 }' "$D/fine.csv" ||
+        fail "--history ignores analysis.output_interval: $(sed -n 3p "$D/fine.csv" | cut -c1-40)"
     echo "history: ok ($rows rows)"
 }
 
