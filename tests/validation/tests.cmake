@@ -23,4 +23,10 @@ if(Python3_Interpreter_FOUND)
                    $<TARGET_FILE:rockbolt> ${CMAKE_CURRENT_BINARY_DIR}/convergence-scratch)
   set_tests_properties(validation_convergence PROPERTIES LABELS validation
       WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} TIMEOUT 600)
+  # the Taylor steps against Dormand-Prince at 1e-9 on every shipped case
+  add_test(NAME validation_integrators
+           COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/tests/validation/integrators.py
+                   $<TARGET_FILE:rockbolt> ${CMAKE_CURRENT_BINARY_DIR}/integrators-scratch)
+  set_tests_properties(validation_integrators PROPERTIES LABELS validation
+      WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} TIMEOUT 600)
 endif()
