@@ -16,17 +16,8 @@ set_tests_properties(validation PROPERTIES LABELS validation
 # Samples inserted on a record's own straight lines (dt/10) change no
 # governing result beyond 1e-6, with and without a building (the floor is
 # exact between samples): every shipped record, 5, 8 and 10 Hz buildings.
-find_package(Python3 COMPONENTS Interpreter)
-if(Python3_Interpreter_FOUND)
-  add_test(NAME validation_convergence
-           COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/tests/validation/convergence.py
-                   $<TARGET_FILE:rockbolt> ${CMAKE_CURRENT_BINARY_DIR}/convergence-scratch)
-  set_tests_properties(validation_convergence PROPERTIES LABELS validation
-      WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} TIMEOUT 600)
-  # the Taylor steps against Dormand-Prince at 1e-9 on every shipped case
-  add_test(NAME validation_integrators
-           COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/tests/validation/integrators.py
-                   $<TARGET_FILE:rockbolt> ${CMAKE_CURRENT_BINARY_DIR}/integrators-scratch)
-  set_tests_properties(validation_integrators PROPERTIES LABELS validation
-      WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} TIMEOUT 600)
-endif()
+rb_script_test(NAME validation_convergence SCRIPT tests/validation/convergence.py
+               LABEL validation)
+# the Taylor steps against Dormand-Prince at 1e-9 on every shipped case
+rb_script_test(NAME validation_integrators SCRIPT tests/validation/integrators.py
+               LABEL validation)
