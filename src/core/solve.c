@@ -328,7 +328,8 @@ static int find_event(rb_solver *sv, const rb_rk_step *st, const double *g0,
             }
         }
         /* a Taylor step knows the floor at its check points and end */
-        double x = !st->is_taylor ? (double)NAN : j < n ? st->vcheck[j - 1][RB_TS_X] : st->aux1.x;
+        double x = !st->is_taylor ? (double)NAN
+                   : j < n ? st->vcheck[j - 1][RB_TS_X] : st->aux1.x;
         rb_guard_eval_x(sv, tb, ys[j - 1], x, gb);
         int ev = first_crossing(sv, st, mask, ta, tb, ga, gb, t_event);
         if (ev >= 0)
