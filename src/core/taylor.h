@@ -74,6 +74,14 @@ double rb_taylor_rate_root(const rb_taylor *ts, int c, double a, double b, doubl
 double rb_taylor_angle_root(const rb_taylor *ts, double a, double b, double level,
                             double fa, double fb, double tol);
 
+/* Where a rigid row's force turns in (a, b) (tau) while the plate is held
+ * at theta_hold (stage 4): the force is affine in the floor and U'', and a
+ * peak between two check points can pass Fy (or a trough reach slack)
+ * with both ends short of it. 1 with *tm when its rate changes sign in
+ * (a, b), found by the Illinois method to tol; else 0. */
+int rb_taylor_held_force_turn(const rb_sys *S, const rb_taylor *ts, double a, double b,
+                              double tol, double *tm);
+
 /* The end of the step: state, derivative and aux, as rb_dyn_rhs gives them. */
 void rb_taylor_end(const rb_sys *S, const rb_disc *D, const rb_taylor *ts, double h,
                    double *y1, double *f1, rb_aux *a);
