@@ -347,8 +347,7 @@ static int find_event(rb_solver *sv, const rb_rk_step *st, const double *g0,
         }
         double tau;
         if (force_turns && rb_taylor_held_force_turn(&sv->sys, &st->ts, ta - st->t0,
-                                                     tb - st->t0, 1e-14 * (1 + fabs(tb)),
-                                                     &tau)
+                                                     tb - st->t0, 1e-14, &tau)
             && st->t0 + tau > ta && st->t0 + tau < tb) {
             int ev = guards_at(sv, st, mask, &ta, st->t0 + tau, ga, t_event);
             if (ev >= 0)

@@ -78,7 +78,7 @@ double rb_taylor_angle_root(const rb_taylor *ts, double a, double b, double leve
  * at theta_hold (stage 4): the force is affine in the floor and U'', and a
  * peak between two check points can pass Fy (or a trough reach slack)
  * with both ends short of it. 1 with *tm when its rate changes sign in
- * (a, b), found by the Illinois method to tol; else 0. */
+ * (a, b), found by rb_root_illinois to tol (1 + |tau|); else 0. */
 int rb_taylor_held_force_turn(const rb_sys *S, const rb_taylor *ts, double a, double b,
                               double tol, double *tm);
 

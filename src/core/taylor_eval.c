@@ -3,6 +3,7 @@
  * the angle by Newton's method on a series and its derivative series. */
 #include <math.h>
 #include "bolt.h"
+#include "root.h"
 #include "taylor.h"
 
 /* Horner on components [0, m) side by side: independent chains in local
@@ -235,13 +236,18 @@ double rb_taylor_angle_root(const rb_taylor *ts, double a, double b, double leve
 /* The held force's rate up to a constant factor, in_th x' - F* U''' (the
  * force is (Q_th - F* U'') / lever with Q_th = in_th x + const at the held
  * angle; the mirror's sign and the lever do not move its roots). */
-static double held_force_rate(const rb_taylor *ts, double in_th, double fstar, double tau)
+typedef struct {
+    const rb_taylor *ts;
+    double in_th, fstar;
+} held_force;
+
+static double held_force_rate(const void *ctx, double tau)
 {
-    const double (*p)[RB_TS_N] = (const double (*)[RB_TS_N])ts->p;
-    int n = ts->order;
+    const held_force *h = ctx;
+    const double (*p)[RB_TS_N] = (const double (*)[RB_TS_N])h->ts->p;
     double r = 0;
-    for (int k = n; k >= 1; k--)
-        r = r * tau + k * (in_th * p[k][RB_TS_X] - fstar * p[k][RB_TS_UDD]);
+    for (int k = h->ts->order; k >= 1; k--)
+        r = r * tau + k * (h->in_th * p[k][RB_TS_X] - h->fstar * p[k][RB_TS_UDD]);
     return r;
 }
 
@@ -249,35 +255,12 @@ int rb_taylor_held_force_turn(const rb_sys *S, const rb_taylor *ts, double a, do
                               double tol, double *tm)
 {
     double c = ts->p[0][RB_TS_COS], sn = ts->p[0][RB_TS_SIN];
-    double in_th = S->form == RB_FORM_SMALL ? S->M * S->d.R : S->M * (S->h * c + S->b * sn);
-    double fa = held_force_rate(ts, in_th, S->d.Fstar, a);
-    double fb = held_force_rate(ts, in_th, S->d.Fstar, b);
+    held_force h = {ts, S->form == RB_FORM_SMALL ? S->M * S->d.R
+                                                : S->M * (S->h * c + S->b * sn),
+                    S->d.Fstar};
+    double fa = held_force_rate(&h, a), fb = held_force_rate(&h, b);
     if (!(fa != 0 && fb != 0 && (fa < 0) != (fb < 0)))
         return 0;
-    int last = 0;
-    for (int it = 0; it < 100 && b - a > tol; it++) {
-        double m = (a * fb - b * fa) / (fb - fa);
-        if (!(m > a && m < b))
-            m = 0.5 * (a + b);
-        double fm = held_force_rate(ts, in_th, S->d.Fstar, m);
-        if (fm == 0) {
-            a = b = m;
-            break;
-        }
-        if ((fm < 0) == (fa < 0)) {
-            a = m;
-            fa = fm;
-            if (last == 1)
-                fb *= 0.5;
-            last = 1;
-        } else {
-            b = m;
-            fb = fm;
-            if (last == -1)
-                fa *= 0.5;
-            last = -1;
-        }
-    }
-    *tm = 0.5 * (a + b);
+    *tm = rb_root_illinois(held_force_rate, &h, a, b, fa, fb, tol);
     return 1;
 }

@@ -9,6 +9,7 @@
 #include <string.h>
 #include "rockbolt/aci17.h"
 #include "bolt.h"
+#include "root.h"
 #include "solver.h"
 
 static void note_displacements(rb_solver *sv, const double *y)
@@ -165,39 +166,29 @@ void rb_track_point(rb_solver *sv, double t, const double *y)
     rb_track_aux(sv, t, y, &a);
 }
 
+/* Component c of a Dormand-Prince step's dense output at t. */
+typedef struct {
+    const rb_rk_step *st;
+    int c;
+} dense_component;
+
+static double dense_at(const void *ctx, double t)
+{
+    const dense_component *d = ctx;
+    return rb_rk_dense_one(d->st, t, d->c);
+}
+
 /* Root of component c of the dense output in [a, b], where it changes sign
- * from fa to fb: Illinois steps, which converge superlinearly on these
- * quartics, to the resolution the bisection this replaces reached. */
+ * from fa to fb: Newton on a Taylor step's series, Illinois steps (which
+ * converge superlinearly on these quartics) on Dormand-Prince's. */
 static double dense_root(const rb_rk_step *st, int c, double a, double b, double fa,
                          double fb)
 {
     if (st->is_taylor)
         return st->t0 + rb_taylor_rate_root(&st->ts, c, a - st->t0, b - st->t0, fa, fb,
                                             1e-14 * (1 + fabs(b)));
-    int last = 0, hugged = 0;
-    for (int i = 0; i < 100 && b - a > 1e-14 * (1 + fabs(b)); i++) {
-        double m = (a * fb - b * fa) / (fb - fa);
-        /* bisect only on a second hug in a row (see locate in solve.c) */
-        int hug = !(m > a + 1e-3 * (b - a) && m < b - 1e-3 * (b - a));
-        if (!(m > a && m < b) || (hug && hugged))
-            m = 0.5 * (a + b);
-        hugged = hug;
-        double fm = rb_rk_dense_one(st, m, c);
-        if (fm == 0)
-            return m;
-        if ((fm < 0) == (fa < 0)) {
-            a = m;
-            fa = fm;
-            if (last == 1) fb *= 0.5;
-            last = 1;
-        } else {
-            b = m;
-            fb = fm;
-            if (last == -1) fa *= 0.5;
-            last = -1;
-        }
-    }
-    return 0.5 * (a + b);
+    dense_component d = {st, c};
+    return rb_root_illinois(dense_at, &d, a, b, fa, fb, 1e-14);
 }
 
 void rb_track_interval(rb_solver *sv, const rb_rk_step *st, double ta, double tb,

@@ -1,0 +1,15 @@
+/* Internal: a root of a function of one variable inside a bracket, for the
+ * solver's readers of dense output (track.c, taylor_eval.c). */
+#ifndef RB_ROOT_H
+#define RB_ROOT_H
+
+/* Root in [a, b] of f, which is fa at a and fb at b, of opposite signs:
+ * Illinois (modified regula falsi) steps, which converge superlinearly on
+ * the low-order polynomials of a step, halving the bracket only when the
+ * secant hugs an end twice in a row (once is superlinear convergence,
+ * which halving would slow), until the bracket is within tol (1 + |b|), or
+100 steps. */
+double rb_root_illinois(double (*f)(const void *ctx, double x), const void *ctx, double a,
+                        double b, double fa, double fb, double tol);
+
+#endif
