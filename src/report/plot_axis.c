@@ -163,6 +163,16 @@ double rb_panel_y(const rb_panel *p, double y)
     return isfinite(v) ? v : p->y0 + p->h;
 }
 
+void rb_panel_stacked(rb_panel *p, int k, const rb_axis *xa)
+{
+    memset(p, 0, sizeof *p);
+    p->x0 = RB_STACK_LEFT;
+    p->w = RB_STACK_FIG_W - RB_STACK_LEFT - RB_STACK_RIGHT;
+    p->y0 = RB_STACK_TOP + k * (RB_STACK_PANEL_H + RB_STACK_PANEL_GAP);
+    p->h = RB_STACK_PANEL_H;
+    p->xa = *xa;
+}
+
 void rb_panel_draw(rb_strbuf *b, const rb_panel *p, const char *y_title,
                    int x_labels, const char *x_title)
 {

@@ -5,26 +5,12 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 #include "plot_internal.h"
 #include "rockbolt/names.h"
 
-#define FIG_W 900.0
-#define LEFT 100.0
-#define RIGHT 32.0
-#define TOP 70.0
-#define PANEL_H 240.0
-#define PANEL_GAP 24.0
-
-static void panel_at(rb_panel *p, int k, const rb_axis *xa)
-{
-    memset(p, 0, sizeof *p);
-    p->x0 = LEFT;
-    p->w = FIG_W - LEFT - RIGHT;
-    p->y0 = TOP + k * (PANEL_H + PANEL_GAP);
-    p->h = PANEL_H;
-    p->xa = *xa;
-}
+#define FIG_W RB_STACK_FIG_W
+#define LEFT RB_STACK_LEFT
+#define PANEL_H RB_STACK_PANEL_H
 
 /* Limit state k's probability at the level (median = 0) or its median in
  * g (median = 1) at each point; NaN where it is not fitted. */
@@ -80,9 +66,9 @@ rb_status rb_plot_fragility_sweep_svg(const rb_fragility_sweep *s, const char *t
             mhi = fmax(mhi, c);
         }
     }
-    panel_at(&p[0], 0, &xa);
+    rb_panel_stacked(&p[0], 0, &xa);
     rb_axis_nice(&p[0].ya, 0, 1, 5, 1);
-    panel_at(&p[1], 1, &xa);
+    rb_panel_stacked(&p[1], 1, &xa);
     rb_axis_log(&p[1].ya, mlo, mhi);
     double bottom = p[1].y0 + PANEL_H;
 

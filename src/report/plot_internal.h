@@ -64,6 +64,18 @@ typedef struct {
     rb_axis xa, ya;
 } rb_panel;
 
+/* The sweep figures' layout (a design sweep, a fragility against the gap
+ * ratio): panels of one x axis stacked in a column. */
+#define RB_STACK_FIG_W 900.0
+#define RB_STACK_LEFT 100.0
+#define RB_STACK_RIGHT 32.0
+#define RB_STACK_TOP 70.0
+#define RB_STACK_PANEL_H 240.0
+#define RB_STACK_PANEL_GAP 24.0
+/* Panel k (0 at the top) of that column, with x axis xa; its y axis is the
+ * caller's to set. */
+void rb_panel_stacked(rb_panel *p, int k, const rb_axis *xa);
+
 double rb_panel_x(const rb_panel *p, double x);
 double rb_panel_y(const rb_panel *p, double y);
 

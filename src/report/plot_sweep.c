@@ -6,12 +6,9 @@
 #include <stdlib.h>
 #include "plot_internal.h"
 
-#define FIG_W 900.0
-#define LEFT 100.0
-#define RIGHT 32.0
-#define TOP 70.0
-#define PANEL_H 240.0
-#define PANEL_GAP 24.0
+#define FIG_W RB_STACK_FIG_W
+#define LEFT RB_STACK_LEFT
+#define PANEL_H RB_STACK_PANEL_H
 
 /* The y values of one series, NaN where the point has no result, so that
  * rb_series_path breaks the curve there. */
@@ -76,11 +73,7 @@ static void layout(rb_panel *p, int k, const rb_axis *xa, const double *const *y
 {
     double lo = 0, hi = must_hi, a, c;
     int i;
-    p->x0 = LEFT;
-    p->w = FIG_W - LEFT - RIGHT;
-    p->y0 = TOP + k * (PANEL_H + PANEL_GAP);
-    p->h = PANEL_H;
-    p->xa = *xa;
+    rb_panel_stacked(p, k, xa);
     for (i = 0; i < n_ys; i++)
         if (rb_series_range(ys[i], n, 1, &a, &c)) {
             lo = fmin(lo, a);
