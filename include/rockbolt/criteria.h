@@ -17,6 +17,25 @@ typedef enum {
     RB_VALIDITY_FAIL        /* fails the run */
 } rb_validity_mode;
 
+/* When a passing verdict is confirmed by solving the motion again at
+ * tighter tolerances (docs/criteria.md, "Confirmation"): near grazing the
+ * response does not converge with the tolerance, and a pass the
+ * tolerance can turn into a fail is no pass. */
+typedef enum {
+    RB_CONFIRM_MARGINAL = 0,   /* a pass within confirm_band of a limit */
+    RB_CONFIRM_ALWAYS,         /* every pass */
+    RB_CONFIRM_OFF
+} rb_confirm_mode;
+
+/* The default band of a marginal pass: a governing number within this
+ * fraction of its limit. */
+#define RB_CONFIRM_BAND_DEFAULT 0.25
+/* The confirming runs of a pass: the run's own integrator at a tenth and
+ * a hundredth of its tolerance, but no tighter than RB_CONFIRM_RTOL_MIN
+ * (what double precision can meet). */
+#define RB_CONFIRM_RUNS 2
+#define RB_CONFIRM_RTOL_MIN 1e-13
+
 typedef struct {
     rb_criterion_kind kind;
     double usage_limit;            /* default 1.0 */
@@ -34,6 +53,8 @@ typedef struct {
     /* the checks that validity: fail counts (bit 1 << rb_check); default
      * all. A fragility's lift-off limit state counts lift-off alone. */
     unsigned validity_mask;
+    rb_confirm_mode confirm;       /* default RB_CONFIRM_MARGINAL */
+    double confirm_band;           /* default RB_CONFIRM_BAND_DEFAULT */
 } rb_criteria;
 
 void rb_criteria_init(rb_criteria *c);
@@ -43,13 +64,15 @@ typedef enum {
     RB_CHECK_LIFT_OFF = 0,  /* the base stays on the floor: reaction > 0 */
     RB_CHECK_SLIDING,       /* friction holds: demand <= friction_coefficient */
     RB_CHECK_BOLT_IMPACT,   /* a rigid stop is fair: elastic impact force < Fy */
+    RB_CHECK_CONVERGENCE,   /* a confirmed pass held in every confirming run */
     RB_N_CHECKS
 } rb_check;
 
 typedef enum {
     RB_CHECK_OK = 0,
     RB_CHECK_WARNING,
-    RB_CHECK_NOT_CHECKED    /* no friction coefficient; bolts that are not rigid */
+    RB_CHECK_NOT_CHECKED    /* no friction coefficient; bolts that are not rigid;
+                               a verdict not confirmed */
 } rb_check_status;
 
 typedef struct {
@@ -66,6 +89,50 @@ typedef struct {
  * the usage reaches its limit; then the optional limits; then, with
  * validity: fail, any validity warning. */
 void rb_judge(const rb_criteria *c, const rb_result *r, rb_verdict *v);
+
+/* How far a run is from failing: the smallest relative distance of its
+ * governing numbers from their limits (usage or bolt force, rotation
+ * towards overturning, the optional limits, the concrete's utilization,
+ * and with validity: fail the checks it counts), 0 for a run that fails.
+ * A pass within c->confirm_band of it is marginal. */
+double rb_verdict_margin(const rb_criteria *c, const rb_result *r);
+
+/* Whether v, rb_judge's verdict of r, is to be confirmed by reruns
+ * (rb_confirm_mode): only a pass is, since a confirmation can only turn a
+ * pass into a fail. */
+int rb_verdict_wants_confirm(const rb_criteria *c, const rb_result *r, const rb_verdict *v);
+
+/* One confirming run: how it was solved and rb_judge's verdict of it. */
+typedef struct {
+    int integrator;        /* rb_integrator */
+    double rtol;
+    int solved;            /* 0: the solver stopped (status) */
+    int status;            /* rb_status when not solved */
+    rb_verdict verdict;    /* when solved */
+    double usage;          /* the larger row's */
+    double max_bolt_force_over_fy, max_theta_over_alpha;
+} rb_confirm_run;
+
+/* How a confirmation solves a run: rb_solve_run, or a caller's cache of
+ * it (the design searches' memo). 0 in diag's stead: no diagnostics. */
+typedef rb_status (*rb_solve_fn)(void *ctx, const rb_model *model, const rb_motion *motion,
+                                 const rb_solve_opts *opts, rb_result *out);
+
+/* The one verdict of a run, for every command and search: rb_judge of r
+ * (model under motion, solved with opts), and for a pass that wants it
+ * (rb_verdict_wants_confirm) the confirming runs, solved by solve (NULL:
+ * rb_solve_run) without a history and folded in by rb_verdict_confirm.
+ * runs has room for RB_CONFIRM_RUNS; *n_runs is how many were made. */
+void rb_judge_run(const rb_criteria *c, const rb_model *model, const rb_motion *motion,
+                  const rb_solve_opts *opts, const rb_result *r, rb_solve_fn solve,
+                  void *ctx, rb_verdict *v, rb_confirm_run *runs, size_t *n_runs);
+
+/* Fold the confirming runs into v (a pass of rb_judge): the convergence
+ * check is ok when every run passes too, else a warning, and the verdict
+ * fails with the first failing run's reason (a run the solver could not
+ * finish fails as well). n = 0 leaves v as it is, with the check not
+ * checked. */
+void rb_verdict_confirm(rb_verdict *v, const rb_confirm_run *runs, size_t n);
 
 /* A check's name for people ("lift-off") and its JSON key ("lift_off"). */
 const char *rb_check_name(rb_check k);

@@ -29,12 +29,13 @@ void rb_design_opts_defaults(rb_design_opts *o);
 
 /* One run as every search makes it: the motion's shape at peak floor
  * acceleration level_mps2 (the motion itself at its own level), solved
- * without a history and judged by rb_judge. out is overwritten and owns
- * nothing. */
+ * without a history and judged by rb_judge_run, whose confirming runs go
+ * to runs (room for RB_CONFIRM_RUNS) and their count to *n_runs. out is
+ * overwritten and owns nothing. */
 rb_status rb_design_run_at(const rb_model *model, const rb_motion *motion,
                            const rb_solve_opts *opts, const rb_criteria *criteria,
                            double level_mps2, rb_result *out, rb_verdict *verdict,
-                           rb_diag *diag);
+                           rb_confirm_run *runs, size_t *n_runs, rb_diag *diag);
 
 /* Number of threads used for n_threads <= 0: the online processors (>= 1). */
 int rb_design_threads_default(void);

@@ -16,6 +16,7 @@ extern const rb_enum_name rb_formulation_names[];   /* rb_formulation */
 extern const rb_enum_name rb_integrator_names[];    /* rb_integrator */
 extern const rb_enum_name rb_criterion_names[];     /* rb_criterion_kind */
 extern const rb_enum_name rb_validity_mode_names[]; /* rb_validity_mode */
+extern const rb_enum_name rb_confirm_mode_names[];  /* rb_confirm_mode */
 extern const rb_enum_name rb_motion_type_names[];   /* rb_motion_kind: harmonic,
                                                        pulse, record (sampled) */
 extern const rb_enum_name rb_case_motion_type_names[]; /* rb_case_motion_type (case.h):

@@ -26,14 +26,19 @@
 
 /* ---- What a report is made of ------------------------------------------ */
 
-/* Room for "PASS (3 validity warnings: lift-off, sliding, bolt impact)". */
+/* Room for "FAIL (4 validity warnings: lift-off, sliding, bolt impact,
+ * convergence)". */
 #define RB_HEADLINE_MAX 96
 
 /* One motion of a case, solved and judged. */
 typedef struct {
     const rb_case_motion *motion; /* borrowed: name, source, rb_motion */
     const rb_result *result;      /* borrowed: the solver's result */
-    rb_verdict verdict;           /* rb_judge of the result */
+    rb_verdict verdict;           /* rb_judge of the result, confirmed */
+    /* the runs that confirmed a pass (rb_verdict_confirm); n_confirm 0
+     * when the verdict was not confirmed */
+    rb_confirm_run confirm[RB_CONFIRM_RUNS];
+    size_t n_confirm;
 } rb_report_motion;
 
 typedef struct {

@@ -39,7 +39,7 @@ static const char *const anchorage_keys[] = {
     NULL};
 static const char *const criteria_keys[] = {
     "kind", "usage_limit", "max_shear_over_w", "max_rotation_over_alpha",
-    "friction_coefficient", "validity", "concrete", NULL};
+    "friction_coefficient", "validity", "concrete", "confirm", "confirm_band", NULL};
 static const char *const analysis_keys[] = {
     "formulation", "integrator", "tolerance", "output_interval", "history",
     "stretch_past_failure", NULL};
@@ -302,6 +302,10 @@ static void read_criteria(rb_cctx *c, rb_ynode *cr, rb_criteria *k)
     v = rb_cv_get(c, cr, p, "validity", 0, "");
     if (v && rb_cv_enum_table(c, v, "criteria.validity", rb_validity_mode_names, 0, &i))
         k->validity = (rb_validity_mode)i;
+    v = rb_cv_get(c, cr, p, "confirm", 0, "");
+    if (v && rb_cv_enum_table(c, v, "criteria.confirm", rb_confirm_mode_names, 0, &i))
+        k->confirm = (rb_confirm_mode)i;
+    rb_cv_number(c, cr, p, "confirm_band", 0, RB_DIM_RATIO, 0, 0, 1, 1, &k->confirm_band);
     v = rb_cv_get(c, cr, p, "concrete", 0, "");
     if (v && rb_cv_bool(c, v, "criteria.concrete", &i))
         c->judge_concrete = i;

@@ -2,10 +2,12 @@
  * elastic, or they may yield but must keep their toughness usage below a
  * limit and the cabinet must not overturn; beside it, whether the model's
  * own assumptions held (docs/solver.md, Validity). */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "rockbolt/criteria.h"
+#include "rockbolt/names.h"
 
 void rb_criteria_init(rb_criteria *c)
 {
@@ -19,6 +21,8 @@ void rb_criteria_init(rb_criteria *c)
     c->validity_mask = (1u << RB_N_CHECKS) - 1;
     c->friction_coefficient = 0;
     c->validity = RB_VALIDITY_WARN;
+    c->confirm = RB_CONFIRM_MARGINAL;
+    c->confirm_band = RB_CONFIRM_BAND_DEFAULT;
 }
 
 const char *rb_check_name(rb_check k)
@@ -27,6 +31,7 @@ const char *rb_check_name(rb_check k)
     case RB_CHECK_LIFT_OFF: return "lift-off";
     case RB_CHECK_SLIDING: return "sliding";
     case RB_CHECK_BOLT_IMPACT: return "bolt impact";
+    case RB_CHECK_CONVERGENCE: return "convergence";
     case RB_N_CHECKS: break;
     }
     return "?";
@@ -38,6 +43,7 @@ const char *rb_check_key(rb_check k)
     case RB_CHECK_LIFT_OFF: return "lift_off";
     case RB_CHECK_SLIDING: return "sliding";
     case RB_CHECK_BOLT_IMPACT: return "bolt_impact";
+    case RB_CHECK_CONVERGENCE: return "convergence";
     case RB_N_CHECKS: break;
     }
     return "?";
@@ -121,6 +127,8 @@ static void validity(const rb_criteria *c, const rb_result *r, rb_verdict *v)
     else
         v->check[RB_CHECK_BOLT_IMPACT] = r->max_bolt_impact_n >= r->fy_row_n
                                          ? RB_CHECK_WARNING : RB_CHECK_OK;
+    /* one run cannot confirm itself: rb_verdict_confirm sets it */
+    v->check[RB_CHECK_CONVERGENCE] = RB_CHECK_NOT_CHECKED;
     v->warnings = 0;
     for (int k = 0; k < RB_N_CHECKS; k++)
         if (v->check[k] == RB_CHECK_WARNING)
@@ -198,6 +206,78 @@ void rb_judge(const rb_criteria *c, const rb_result *r, rb_verdict *v)
         char w[128];
         rb_warnings_str(v->warnings & c->validity_mask, w, sizeof w);
         snprintf(v->reason, sizeof v->reason, "%s (criteria: validity: fail)", w);
+        v->pass = 0;
+    }
+}
+
+/* How far value is below limit, as a fraction of the limit. */
+static double below(double value, double limit)
+{
+    return 1 - value / limit;
+}
+
+double rb_verdict_margin(const rb_criteria *c, const rb_result *r)
+{
+    double usage = larger(r->usage[0], r->usage[1]);
+    double force = r->fy_row_n > 0
+                   ? larger(r->max_bolt_force_n[0], r->max_bolt_force_n[1]) / r->fy_row_n : 0;
+    double shear = r->weight_n > 0 ? r->max_shear_elastic_n / r->weight_n : 0;
+    if (r->overturned || r->broken[0] || r->broken[1])
+        return 0;
+    /* overturning is a limit of every criterion */
+    double m = below(r->max_theta_over_alpha, 1);
+    if (c->kind == RB_CRIT_NO_YIELD)
+        m = r->yielded[0] || r->yielded[1] ? 0 : fmin(m, below(force, 1));
+    else
+        m = fmin(m, below(usage, c->usage_limit));
+    if (c->max_shear_over_w > 0)
+        m = fmin(m, below(shear, c->max_shear_over_w));
+    if (c->max_theta_over_alpha > 0)
+        m = fmin(m, below(r->max_theta_over_alpha, c->max_theta_over_alpha));
+    if (c->concrete && r->anchor_checked)
+        m = fmin(m, below(r->anchor_max_ratio, 1));
+    if (c->validity == RB_VALIDITY_FAIL) {
+        unsigned mask = c->validity_mask;
+        if ((mask >> RB_CHECK_LIFT_OFF) & 1u && r->weight_n > 0)
+            m = fmin(m, r->min_vertical_reaction_n / r->weight_n);
+        if ((mask >> RB_CHECK_SLIDING) & 1u && c->friction_coefficient > 0)
+            m = fmin(m, below(r->max_friction_demand, c->friction_coefficient));
+        if ((mask >> RB_CHECK_BOLT_IMPACT) & 1u && r->rigid_bolts && r->fy_row_n > 0)
+            m = fmin(m, below(r->max_bolt_impact_n, r->fy_row_n));
+    }
+    /* a NaN (no number to judge by) is as marginal as can be */
+    return m > 0 ? m : 0;
+}
+
+int rb_verdict_wants_confirm(const rb_criteria *c, const rb_result *r, const rb_verdict *v)
+{
+    if (!v->pass || c->confirm == RB_CONFIRM_OFF)
+        return 0;
+    return c->confirm == RB_CONFIRM_ALWAYS || rb_verdict_margin(c, r) < c->confirm_band;
+}
+
+void rb_verdict_confirm(rb_verdict *v, const rb_confirm_run *runs, size_t n)
+{
+    if (!n)
+        return;
+    v->check[RB_CHECK_CONVERGENCE] = RB_CHECK_OK;
+    for (size_t i = 0; i < n; i++) {
+        const rb_confirm_run *cr = &runs[i];
+        if (cr->solved && cr->verdict.pass)
+            continue;
+        v->check[RB_CHECK_CONVERGENCE] = RB_CHECK_WARNING;
+        v->warnings |= 1u << RB_CHECK_CONVERGENCE;
+        if (!v->pass)
+            continue;
+        /* the first run that fails says why; the others only warn */
+        const char *how = rb_enum_str(rb_integrator_names, cr->integrator);
+        if (cr->solved)
+            snprintf(v->reason, sizeof v->reason, "not confirmed: at tolerance %.3g (%s), %s",
+                     cr->rtol, how, cr->verdict.reason);
+        else
+            snprintf(v->reason, sizeof v->reason, "not confirmed: the run at tolerance "
+                     "%.3g (%s) stopped: %s", cr->rtol, how,
+                     rb_status_str((rb_status)cr->status));
         v->pass = 0;
     }
 }

@@ -22,6 +22,9 @@ const rb_enum_name rb_criterion_names[] = {
     {"no-yield", RB_CRIT_NO_YIELD}, {"no-break", RB_CRIT_NO_BREAK}, {NULL, 0}};
 const rb_enum_name rb_validity_mode_names[] = {
     {"warn", RB_VALIDITY_WARN}, {"fail", RB_VALIDITY_FAIL}, {NULL, 0}};
+const rb_enum_name rb_confirm_mode_names[] = {
+    {"marginal", RB_CONFIRM_MARGINAL}, {"always", RB_CONFIRM_ALWAYS},
+    {"off", RB_CONFIRM_OFF}, {NULL, 0}};
 /* the critical excitation of chapter 3 has no case type: tests build it */
 const rb_enum_name rb_motion_type_names[] = {
     {"harmonic", RB_MOTION_HARMONIC}, {"pulse", RB_MOTION_PULSE},

@@ -73,22 +73,36 @@ void rb_design_motion_at(const rb_design_ctx *ctx, double level_mps2, rb_motion 
         out->amplitude_mps2 = copysign(level_mps2, ctx->motion->amplitude_mps2);
 }
 
+/* A solve through the search's memo: the searches of one design share
+ * their runs, confirming runs included. */
+static rb_status solve_memo(void *vctx, const rb_model *model, const rb_motion *motion,
+                            const rb_solve_opts *opts, rb_result *out)
+{
+    const rb_design_ctx *ctx = vctx;
+    rb_status st;
+    if (rb_design_memo_get(ctx->memo, model, motion, opts, &st, out))
+        return st;
+    st = rb_solve_run(model, motion, opts, out, NULL);
+    /* no history was asked for, but free whatever the result might own */
+    rb_result_free(out);
+    out->history = NULL;
+    rb_design_memo_put(ctx->memo, model, motion, opts, st, out);
+    return st;
+}
+
 void rb_design_run_one(const rb_design_ctx *ctx, const rb_model *model,
                        const rb_motion *motion, rb_design_run *out)
 {
     memset(out, 0, sizeof *out);
-    if (!rb_design_memo_get(ctx->memo, model, motion, &ctx->opts, &out->status, &out->r)) {
-        out->status = rb_solve_run(model, motion, &ctx->opts, &out->r, NULL);
-        /* no history was asked for, but free whatever the result might own */
-        rb_result_free(&out->r);
-        out->r.history = NULL;
-        rb_design_memo_put(ctx->memo, model, motion, &ctx->opts, out->status, &out->r);
-    }
+    out->status = solve_memo((void *)ctx, model, motion, &ctx->opts, &out->r);
     out->meets = -1;
     if (out->status == RB_OK && ctx->criteria)
     {
         rb_verdict v;
-        rb_judge(ctx->criteria, &out->r, &v);
+        rb_confirm_run runs[RB_CONFIRM_RUNS];
+        size_t n_runs;
+        rb_judge_run(ctx->criteria, model, motion, &ctx->opts, &out->r, solve_memo,
+                     (void *)ctx, &v, runs, &n_runs);
         out->meets = v.pass;
         _Static_assert(sizeof out->reason == sizeof v.reason, "one reason, one size");
         memcpy(out->reason, v.reason, sizeof out->reason);
@@ -101,17 +115,18 @@ void rb_design_run_one(const rb_design_ctx *ctx, const rb_model *model,
 rb_status rb_design_run_at(const rb_model *model, const rb_motion *motion,
                            const rb_solve_opts *opts, const rb_criteria *criteria,
                            double level_mps2, rb_result *out, rb_verdict *verdict,
-                           rb_diag *diag)
+                           rb_confirm_run *runs, size_t *n_runs, rb_diag *diag)
 {
     rb_design_ctx ctx;
     rb_motion at;
     memset(out, 0, sizeof *out);
+    *n_runs = 0;
     rb_status st = rb_design_ctx_init(&ctx, model, motion, opts, criteria, diag);
     if (st != RB_OK)
         return st;
     rb_design_motion_at(&ctx, level_mps2, &at);
     st = rb_solve_run(model, &at, &ctx.opts, out, diag);
     if (st == RB_OK)
-        rb_judge(criteria, out, verdict);
+        rb_judge_run(criteria, model, &at, &ctx.opts, out, NULL, NULL, verdict, runs, n_runs);
     return st;
 }

@@ -99,6 +99,8 @@ static void add_settings(rb_jctx *cx, cJSON *root, const rb_case *c)
     rb_j_opt(cx, o, "friction_coefficient", k->friction_coefficient > 0,
              k->friction_coefficient);
     rb_j_str(cx, o, "validity", rb_enum_str(rb_validity_mode_names, (int)k->validity));
+    rb_j_str(cx, o, "confirm", rb_enum_str(rb_confirm_mode_names, (int)k->confirm));
+    rb_j_num(cx, o, "confirm_band", k->confirm_band);
     if (c->has_concrete)
         rb_j_bool(cx, o, "concrete", k->concrete);
 }

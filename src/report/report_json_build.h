@@ -39,6 +39,8 @@ void rb_report_json_motion_design(rb_jctx *cx, cJSON *motion_o, const rb_report 
  * names of the checks in a warnings mask. */
 void rb_report_json_validity(rb_jctx *cx, cJSON *motion_o, const rb_report *r,
                              const rb_report_motion *m);
+void rb_report_json_convergence(rb_jctx *cx, cJSON *validity_o, const rb_report *r,
+                                const rb_report_motion *m);
 void rb_j_warnings(rb_jctx *cx, cJSON *o, const char *key, unsigned warnings);
 
 /* report_json_anchor.c: the concrete check, for a case with concrete:. */

@@ -69,4 +69,41 @@ void rb_report_json_validity(rb_jctx *cx, cJSON *motion_o, const rb_report *r,
     rb_j_opt(cx, k, "row_stiffness_npm", res->rigid_bolts, r->derived.k_row_npm);
     rb_j_opt(cx, k, "effective_mass_kg", res->rigid_bolts,
              r->derived.Io / (r->kase->model.lever_arm_m * r->kase->model.lever_arm_m));
+    rb_report_json_convergence(cx, o, r, m);
+}
+
+/* The confirmation of a pass (docs/criteria.md, "Confirmation"): how the
+ * case asks for it, how far the run was from failing, and each
+ * confirming run with its verdict. */
+void rb_report_json_convergence(rb_jctx *cx, cJSON *validity_o, const rb_report *r,
+                                const rb_report_motion *m)
+{
+    const rb_criteria *c = &r->kase->criteria;
+    cJSON *o = check_obj(cx, validity_o, &m->verdict, RB_CHECK_CONVERGENCE);
+    rb_j_str(cx, o, "confirm", rb_enum_str(rb_confirm_mode_names, (int)c->confirm));
+    rb_j_num(cx, o, "band", c->confirm_band);
+    rb_j_num(cx, o, "margin", rb_verdict_margin(c, m->result));
+    cJSON *runs = cx->st == RB_OK ? cJSON_AddArrayToObject(o, "runs") : NULL;
+    rb_j_oom(cx, runs);
+    for (size_t i = 0; runs && i < m->n_confirm && cx->st == RB_OK; i++) {
+        const rb_confirm_run *cr = &m->confirm[i];
+        cJSON *x = cJSON_CreateObject();
+        if (!x || !cJSON_AddItemToArray(runs, x)) {
+            cJSON_Delete(x);
+            cx->st = RB_ERR_NOMEM;
+            return;
+        }
+        rb_j_str(cx, x, "integrator", rb_enum_str(rb_integrator_names, cr->integrator));
+        rb_j_num(cx, x, "tolerance", cr->rtol);
+        rb_j_bool(cx, x, "solved", cr->solved);
+        if (!cr->solved) {
+            rb_j_str(cx, x, "error", rb_status_str((rb_status)cr->status));
+            continue;
+        }
+        rb_j_bool(cx, x, "pass", cr->verdict.pass);
+        rb_j_str(cx, x, "reason", cr->verdict.reason);
+        rb_j_num(cx, x, "usage", cr->usage);
+        rb_j_num(cx, x, "max_bolt_force_over_fy", cr->max_bolt_force_over_fy);
+        rb_j_num(cx, x, "max_theta_over_alpha", cr->max_theta_over_alpha);
+    }
 }

@@ -251,8 +251,42 @@ static void motion_outcome_vars(rb_tvars *t, const rb_result *res,
     rb_tv_int(t, "events", res->events);
 }
 
+/* What confirmed a pass, in one line: the runs and their governing
+ * numbers, or why there were none (docs/criteria.md, "Confirmation"). */
+static void convergence_text(const rb_criteria *c, const rb_report_motion *rm, char *buf,
+                             size_t n)
+{
+    size_t len = 0;
+    if (rm->n_confirm == 0) {
+        if (c->confirm == RB_CONFIRM_OFF)
+            snprintf(buf, n, "not confirmed (confirm: off)");
+        else if (!rm->verdict.pass)
+            snprintf(buf, n, "a failing run is not confirmed");
+        else
+            snprintf(buf, n, "not needed: %.3f of the nearest limit to spare (band %.3g)",
+                     rb_verdict_margin(c, rm->result), c->confirm_band);
+        return;
+    }
+    buf[0] = '\0';
+    for (size_t i = 0; i < rm->n_confirm && len < n; i++) {
+        const rb_confirm_run *cr = &rm->confirm[i];
+        const char *how = rb_enum_str(rb_integrator_names, cr->integrator);
+        if (!cr->solved)
+            len += (size_t)snprintf(buf + len, n - len, "%s%s at %.3g: stopped (%s)",
+                                    i ? "; " : "", how, cr->rtol,
+                                    rb_status_str((rb_status)cr->status));
+        else
+            len += (size_t)snprintf(buf + len, n - len, "%s%s at %.3g: %s, usage %.4f, "
+                                    "force %.4f Fy, rotation %.4f alpha", i ? "; " : "",
+                                    how, cr->rtol, cr->verdict.pass ? "pass" : "fail",
+                                    cr->usage, cr->max_bolt_force_over_fy,
+                                    cr->max_theta_over_alpha);
+    }
+}
+
 /* The checks of the model's assumptions (docs/report-format.md, Validity). */
-static void motion_validity_vars(rb_tvars *t, const rb_report *r, const rb_report_motion *rm)
+static rb_status motion_validity_vars(rb_tvars *t, const rb_report *r,
+                                      const rb_report_motion *rm, rb_txt_arena *arena)
 {
     const rb_result *res = rm->result;
     const rb_criteria *c = &r->kase->criteria;
@@ -275,6 +309,15 @@ static void motion_validity_vars(rb_tvars *t, const rb_report *r, const rb_repor
     const rb_out_units *u = out_units(r);
     rb_tv_opt(t, "impact_force", res->rigid_bolts, res->max_bolt_impact_n / u->force_f);
     rb_tv_opt(t, "k_row", res->rigid_bolts, r->derived.k_row_npm / u->stiffness_f);
+    /* the variables borrow their text until the template is rendered */
+    enum { CONV_MAX = 320 };
+    char *conv = rb_txt_arena_alloc(arena, CONV_MAX, 1);
+    if (!conv)
+        return RB_ERR_NOMEM;
+    convergence_text(c, rm, conv, CONV_MAX);
+    rb_tv_str(t, "convergence_status", rb_check_status_str(v->check[RB_CHECK_CONVERGENCE]));
+    rb_tv_str(t, "convergence", conv);
+    return RB_OK;
 }
 
 rb_status rb_report_text_render(const rb_report *r, const char *tmpl,
@@ -310,7 +353,8 @@ rb_status rb_report_text_render(const rb_report *r, const char *tmpl,
                          srcs[i], sizeof srcs[i]);
         motion_row_vars(&t, r->motions[i].result, &norms, out_units(r));
         motion_outcome_vars(&t, r->motions[i].result, out_units(r));
-        motion_validity_vars(&t, r, &r->motions[i]);
+        if (motion_validity_vars(&t, r, &r->motions[i], arena) != RB_OK)
+            goto done;
         rb_report_text_motion_anchorage(&t, r, &r->motions[i]);
         items[i].vars = t.v;
         items[i].n_vars = t.n;

@@ -15,7 +15,8 @@ rb_status rb_run_motion(const rb_case *c, size_t i, int want_history, rb_result 
         return st;
     rm->motion = &c->motions[i];
     rm->result = r;
-    rb_judge(&c->criteria, r, &rm->verdict);
+    rb_judge_run(&c->criteria, &c->model, &c->motions[i].motion, &so, r, NULL, NULL,
+                 &rm->verdict, rm->confirm, &rm->n_confirm);
     return RB_OK;
 }
 

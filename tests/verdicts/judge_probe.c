@@ -67,7 +67,7 @@ static int probe(const char *path, long *runs)
         }
         const rb_motion *mo = &c.motions[i].motion;
         if (rb_design_run_at(&c.model, mo, &c.solve, &c.criteria, rb_motion_peak(mo), &r2,
-                             &rm2.verdict, &d) != RB_OK) {
+                             &rm2.verdict, rm2.confirm, &rm2.n_confirm, &d) != RB_OK) {
             printf("%s: motion %zu: the search's run fails: %s\n", path, i + 1, d.msg);
             bad = 1;
         } else {

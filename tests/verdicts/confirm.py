@@ -1,0 +1,172 @@
+#!/usr/bin/env python3
+"""The confirmation of a pass (docs/criteria.md, "Confirmation"), end to end.
+
+    python3 tests/verdicts/confirm.py ROCKBOLT SCRATCH
+
+Run from the source root. On tests/verdicts/cases/marginal-pass.yaml, a
+pass at the default tolerance whose usage reaches the limit at a tighter
+one, and on shipped cases:
+  - unconfirmed (confirm: off) the marginal case passes; confirmed (the
+    default) it fails, with the convergence warning and the failing run's
+    reason, in check, batch (table, CSV, JSON) and the design's own
+    factor alike;
+  - each confirming run is what it says: check at that tolerance with
+    confirmation off gives the same verdict, usage, force and rotation,
+    to the last bit;
+  - only a pass within the band of a limit is confirmed (margin as the
+    report gives it), every pass with confirm: always, none with off;
+  - a pass far from its limits and a fail are not rerun;
+  - bad values of the two keys are errors naming file, line, key and
+    the expected form."""
+import csv, json, os, sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from e2e import fail, failures, finish, run, src, start, write  # noqa: E402
+
+rb, scratch = start()
+MARGINAL = os.path.join(src, "tests/verdicts/cases/marginal-pass.yaml")
+
+
+def variant(name, criteria="", analysis="", base=MARGINAL):
+    text = f"extends: {base}\nname: {name}\n"
+    if criteria:
+        text += "criteria:\n" + "".join(f"  {line}\n" for line in criteria.split(";"))
+    if analysis:
+        text += "analysis:\n" + "".join(f"  {line}\n" for line in analysis.split(";"))
+    return write(name + ".yaml", text)
+
+
+def check(path):
+    out = os.path.join(scratch, os.path.basename(path) + ".json")
+    p = run("check", path, "--json", out, "--quiet")
+    if p.returncode not in (0, 1):
+        fail(f"{path}: exit {p.returncode}: {p.stderr.strip()}")
+        return None, p.returncode
+    with open(out) as f:
+        return json.load(f), p.returncode
+
+
+def conv(d, i=0):
+    return d["motions"][i]["validity"]["convergence"]
+
+
+# 1. the marginal case: a pass unconfirmed, a fail confirmed
+off, rc_off = check(variant("off", "confirm: off"))
+on, rc_on = check(MARGINAL)
+if off and on:
+    if rc_off != 0 or off["verdict"]["result"] != "PASS":
+        fail(f"unconfirmed, the marginal case should pass: exit {rc_off}, "
+             f"{off['verdict']['reason']}")
+    if conv(off)["status"] != "not-checked" or conv(off)["runs"]:
+        fail(f"confirm: off still confirmed: {conv(off)}")
+    if rc_on != 1 or on["verdict"]["result"] != "FAIL":
+        fail(f"confirmed, the marginal case should fail: exit {rc_on}")
+    if "convergence" not in on["verdict"]["validity_warnings"]:
+        fail(f"no convergence warning: {on['verdict']['validity_warnings']}")
+    c = conv(on)
+    if c["status"] != "warning" or len(c["runs"]) != 2:
+        fail(f"convergence check: {c}")
+    if [r["tolerance"] for r in c["runs"]] != [1e-8, 1e-9]:
+        fail(f"confirming tolerances {[r['tolerance'] for r in c['runs']]}, "
+             "expected a tenth and a hundredth of 1e-7")
+    failing = [r for r in c["runs"] if not r["pass"]]
+    if not failing:
+        fail("no confirming run fails")
+    elif not on["motions"][0]["verdict"]["reason"].startswith(
+            f"not confirmed: at tolerance {failing[0]['tolerance']:g} (auto), "
+            + failing[0]["reason"]):
+        fail(f"reason '{on['motions'][0]['verdict']['reason']}' does not name the "
+             f"failing run ({failing[0]})")
+    # the run as solved is the same with and without confirmation
+    if on["motions"][0]["result"] != off["motions"][0]["result"]:
+        fail("confirmation changed the reported run")
+    if abs(c["margin"] - (1 - on["motions"][0]["result"]["bolts"]["usage"]["right"])) > 1e-15:
+        fail(f"margin {c['margin']} is not 1 - the usage")
+
+    # 2. each confirming run is check at its tolerance
+    for r in c["runs"]:
+        d, _ = check(variant(f"at-{r['tolerance']:g}", "confirm: off",
+                             f"tolerance: {r['tolerance']:g}"))
+        if not d:
+            continue
+        res = d["motions"][0]["result"]
+        same = (d["verdict"]["result"] == ("PASS" if r["pass"] else "FAIL")
+                and max(res["bolts"]["usage"].values()) == r["usage"]
+                and max(res["peaks"]["max_bolt_force_over_fy"].values())
+                == r["max_bolt_force_over_fy"]
+                and res["peaks"]["max_theta_over_alpha"] == r["max_theta_over_alpha"])
+        if not same:
+            fail(f"the confirming run at {r['tolerance']:g} is not check at that "
+                 f"tolerance: {r} against {d['verdict']['reason']}")
+
+    # 3. the band: a margin of 0.0166 is outside a band of 0.01
+    m = c["margin"]
+    narrow, rc = check(variant("narrow", f"confirm_band: {m / 2:.6g}"))
+    if narrow and (rc != 0 or conv(narrow)["runs"]):
+        fail(f"a band below the margin still confirmed (exit {rc})")
+    wide, rc = check(variant("wide", f"confirm_band: {min(1, 2 * m):.6g}"))
+    if wide and (rc != 1 or len(conv(wide)["runs"]) != 2):
+        fail(f"a band above the margin did not confirm (exit {rc})")
+
+# 4. shipped cases: a confirmed pass stays a pass; a pass far from its
+#    limits and a fail are not rerun, but are with confirm: always
+taft, rc = check(os.path.join(src, "cases/reference-taft.yaml"))
+if taft:
+    c = conv(taft)
+    if not (rc == 0 and c["margin"] < c["band"] and c["status"] == "ok"
+            and all(r["pass"] for r in c["runs"]) and len(c["runs"]) == 2):
+        fail(f"reference-taft (usage 0.91) should pass confirmed: exit {rc}, {c}")
+free, rc = check(os.path.join(src, "cases/free-standing.yaml"))
+if free:
+    c = conv(free)
+    if not (rc == 0 and c["margin"] >= c["band"] and c["status"] == "not-checked"
+            and not c["runs"]):
+        fail(f"free-standing (margin {c['margin']}) should not be rerun: {c}")
+always, rc = check(variant("always", "confirm: always",
+                           base=os.path.join(src, "cases/free-standing.yaml")))
+if always and (rc != 0 or conv(always)["status"] != "ok" or len(conv(always)["runs"]) != 2):
+    fail(f"confirm: always did not confirm a clear pass: {conv(always)}")
+elc, rc = check(os.path.join(src, "cases/reference-elcentro.yaml"))
+if elc and (rc != 1 or conv(elc)["runs"] or conv(elc)["status"] != "not-checked"):
+    fail(f"a failing run was rerun: {conv(elc)}")
+
+# 5. batch and design judge the same way
+csv_out = os.path.join(scratch, "b.csv")
+p = run("batch", MARGINAL, os.path.join(src, "cases/reference-taft.yaml"),
+        "--csv", csv_out, "--quiet")
+if p.returncode != 1:
+    fail(f"batch of the marginal case and taft: exit {p.returncode}, expected 1")
+else:
+    with open(csv_out) as f:
+        rows = {r["tag"]: r for r in csv.DictReader(f)}
+    mp = rows.get("marginal-pass", {})
+    if mp.get("verdict") != "fail" or "convergence" not in mp.get("validity_warnings", ""):
+        fail(f"batch row of the marginal case: {mp}")
+    if rows.get("reference-taft", {}).get("verdict") != "pass":
+        fail(f"batch row of taft: {rows.get('reference-taft')}")
+des = os.path.join(scratch, "design.json")
+p = run("design", MARGINAL, "--json", des, "--quiet")
+if p.returncode not in (0, 1):
+    fail(f"design of the marginal case: exit {p.returncode}: {p.stderr.strip()}")
+else:
+    with open(des) as f:
+        dd = json.load(f)
+    nb = dd["motions"][0]["design"]["design_factor"]["no_break"]
+    level = dd["motions"][0]["motion"]["peak_floor_over_a_star"]
+    if not nb["level_astar"] < level:
+        fail(f"the design passes up to {nb['level_astar']} A*, beyond the case's own "
+             f"{level} A*, which check fails confirmed")
+
+# 6. bad values
+for key, value, expected in (("confirm", "maybe", "one of marginal, always, off"),
+                             ("confirm_band", "0", "> 0 and <= 1"),
+                             ("confirm_band", "1.5", "> 0 and <= 1")):
+    path = variant(f"bad-{key}-{value}", f"{key}: {value}")
+    p = run("check", path, "--quiet")
+    msg = p.stderr
+    col = 5 + len(key)  # the value, after "  key: "
+    if p.returncode != 2 or not msg.startswith(f"{path}:4:{col}: error: criteria.{key}: ") \
+            or expected not in msg:
+        fail(f"criteria.{key}: {value}: exit {p.returncode}, '{msg.strip()}'")
+
+finish(f"confirm: {len(failures)} failures")
