@@ -59,7 +59,10 @@ size_t rb_design_memo_runs(rb_design_memo *m); /* runs held (0 for NULL) */
  * scan_end, stop at the first failing level, bisect between the last passing
  * and that failing level until they are at most resolution apart. If
  * scan_start already fails the bisection starts from 0 (a motion of zero
- * amplitude is taken to pass without a run). */
+ * amplitude is taken to pass without a run). The scan and bisection judge
+ * by rb_judge; the pass they end on is then confirmed as rb_judge_run
+ * does, and one that does not hold becomes the failing end of a new
+ * bisection from the pass before it. */
 typedef struct {
     double a_star_mps2;         /* A* of the model */
     double level_mps2;          /* largest passing peak floor acceleration found */
@@ -81,6 +84,9 @@ typedef struct {
     long scan_runs, bisect_runs;/* runs = scan_runs + bisect_runs */
     long runs_speculative;      /* runs made ahead by idle threads and not
                                    used; depends on n_threads */
+    long confirm_fails;         /* ends of the search whose pass a
+                                   confirmation turned into a fail, each
+                                   followed by a new bisection below it */
     char pass_reason[256];      /* criteria verdict at level ("" if level 0) */
     char fail_reason[256];      /* verdict at fail ("" if no failure) */
 } rb_design_factor_result;

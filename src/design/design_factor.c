@@ -4,7 +4,13 @@
  * grid, stops at the first failing level and bisects below it. Threads
  * evaluate scan levels and bisection midpoints ahead of need; the decisions
  * read them in the order a single thread would, so the result is the
- * single-threaded one whatever the thread count. */
+ * single-threaded one whatever the thread count.
+ *
+ * The scan and the bisection judge their runs without confirming a
+ * marginal pass (docs/report-format.md, Confirmation): a confirmation can
+ * only turn a pass into a fail, so only the pass the search ends on needs
+ * one. When it does not hold, that level becomes the failing end and the
+ * search bisects again below it, down from the pass before it. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -34,7 +40,26 @@ typedef struct {
     int n_threads;
     double lo, hi;         /* current bracket in A*; hi = HUGE_VAL before a failure */
     double scan_end;
+    double *passes;        /* every lo taken, increasing: where to go back to */
+    size_t n_passes, cap_passes;
 } factor_search;
+
+/* Take level as the bracket's passing end, remembering the one before. */
+static rb_status take_pass(factor_search *s, double level, const rb_design_run *run)
+{
+    if (s->n_passes == s->cap_passes) {
+        size_t cap = s->cap_passes ? 2 * s->cap_passes : 32;
+        double *p = realloc(s->passes, cap * sizeof *p);
+        if (!p)
+            return RB_ERR_NOMEM;
+        s->passes = p;
+        s->cap_passes = cap;
+    }
+    s->passes[s->n_passes++] = level;
+    s->lo = level;
+    memcpy(s->out->pass_reason, run->reason, sizeof s->out->pass_reason);
+    return RB_OK;
+}
 
 static rb_status batch_job(void *v, size_t i)
 {
@@ -95,8 +120,8 @@ static rb_status scan(factor_search *s, const rb_design_opts *d, rb_diag *diag)
             if ((st = check_run(run, s->levels[j], diag)) != RB_OK)
                 return st;
             if (run->meets) {
-                s->lo = s->levels[j];
-                memcpy(out->pass_reason, run->reason, sizeof out->pass_reason);
+                if ((st = take_pass(s, s->levels[j], run)) != RB_OK)
+                    return st;
                 continue;
             }
             s->hi = out->first_fail_astar = s->levels[j];
@@ -150,8 +175,8 @@ static rb_status bisect(factor_search *s, double res, rb_diag *diag)
             if ((st = check_run(run, s->levels[k], diag)) != RB_OK)
                 return st;
             if (run->meets) {
-                s->lo = s->levels[k];
-                memcpy(out->pass_reason, run->reason, sizeof out->pass_reason);
+                if ((st = take_pass(s, s->levels[k], run)) != RB_OK)
+                    return st;
                 k = 2 * k + 2;
             } else {
                 s->hi = s->levels[k];
@@ -162,6 +187,41 @@ static rb_status bisect(factor_search *s, double res, rb_diag *diag)
         out->runs_speculative += (long)(m - used);
     }
 #undef RB_SPLITTABLE
+    return RB_OK;
+}
+
+/* Confirm the pass the search ended on; while it does not hold, make it
+ * the failing end and bisect again from the pass before it (0 when there
+ * is none, as when the scan fails at its first level). */
+static rb_status confirm_pass(factor_search *s, double res, rb_diag *diag)
+{
+    rb_design_factor_result *out = s->out;
+    rb_design_ctx full = *s->ctx;
+    full.defer_confirm = 0;
+    while (s->lo > 0) {
+        rb_motion m;
+        rb_design_run run;
+        rb_design_motion_at(&full, s->lo * full.a_star_mps2, &m);
+        rb_design_run_one(&full, full.model, &m, &run);
+        rb_status st = check_run(&run, s->lo, diag);
+        if (st != RB_OK)
+            return st;
+        if (run.meets)
+            return RB_OK;
+        /* the pass is not confirmed: a fail at that level */
+        s->hi = s->lo;
+        memcpy(out->fail_reason, run.reason, sizeof out->fail_reason);
+        if (out->no_failure) {
+            out->no_failure = 0;
+            out->first_fail_astar = s->hi;
+        }
+        s->n_passes--;
+        s->lo = s->n_passes ? s->passes[s->n_passes - 1] : 0;
+        out->pass_reason[0] = '\0';
+        out->confirm_fails++;
+        if ((st = bisect(s, res, diag)) != RB_OK)
+            return st;
+    }
     return RB_OK;
 }
 
@@ -198,6 +258,7 @@ rb_status rb_design_factor(const rb_model *model, const rb_motion *motion,
         || (st = rb_design_ctx_init(&ctx, model, motion, opts, criteria, diag)) != RB_OK)
         return st;
     ctx.memo = memo;
+    ctx.defer_confirm = 1;
     memset(&s, 0, sizeof s);
     s.ctx = &ctx;
     s.out = out;
@@ -214,9 +275,12 @@ rb_status rb_design_factor(const rb_model *model, const rb_motion *motion,
     if (st == RB_OK && !out->no_failure)
         st = bisect(&s, design->resolution, diag);
     if (st == RB_OK)
+        st = confirm_pass(&s, design->resolution, diag);
+    if (st == RB_OK)
         finish(&s, ctx.a_star_mps2, design->resolution);
     free(s.levels);
     free(s.runs);
+    free(s.passes);
     return st;
 }
 

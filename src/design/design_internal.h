@@ -19,6 +19,9 @@ typedef struct {
     double a_star_mps2;
     double shape_peak;           /* peak of the shape's samples (sampled) */
     rb_design_memo *memo;        /* may be NULL */
+    /* judge by rb_judge alone, without confirming a marginal pass: a
+     * search that confirms the pass it ends on (design_factor.c) */
+    int defer_confirm;
 } rb_design_ctx;
 
 /* Prepare ctx: derive the model, copy the options (NULL -> defaults) with

@@ -40,6 +40,7 @@ static void add_factor(rb_jctx *cx, cJSON *parent, const char *key,
     rb_j_num(cx, o, "runs", (double)f->runs);
     rb_j_num(cx, o, "scan_runs", (double)f->scan_runs);
     rb_j_num(cx, o, "bisect_runs", (double)f->bisect_runs);
+    rb_j_num(cx, o, "confirm_fails", (double)f->confirm_fails);
     rb_j_str(cx, o, "pass_reason", f->pass_reason);
     rb_j_str(cx, o, "fail_reason", f->fail_reason);
     rb_j_str(cx, o, "summary", sentence);

@@ -107,10 +107,112 @@ static void validity(void)
     }
 }
 
+/* The margin is the nearest limit's, relative to it, and 0 for a fail. */
+static void margin(void)
+{
+    rb_criteria c;
+    rb_result r;
+    rb_criteria_init(&c);
+    base_result(&r);
+    r.usage[1] = 0.9;
+    r.max_theta_over_alpha = 0.5;
+    CHECK_NEAR(rb_verdict_margin(&c, &r), 0.1, 1e-15);
+    c.usage_limit = 2;
+    CHECK_NEAR(rb_verdict_margin(&c, &r), 0.5, 1e-15);    /* 1 - 0.5 alpha */
+    r.max_theta_over_alpha = 0.8;
+    CHECK_NEAR(rb_verdict_margin(&c, &r), 0.2, 1e-15);    /* overturning nearest */
+    c.max_theta_over_alpha = 0.85;
+    CHECK_NEAR(rb_verdict_margin(&c, &r), 1 - 0.8 / 0.85, 1e-15);
+    c.kind = RB_CRIT_NO_YIELD;
+    c.max_theta_over_alpha = 0;
+    r.max_theta_over_alpha = 0;
+    r.max_bolt_force_n[0] = 0.7 * r.fy_row_n;
+    CHECK_NEAR(rb_verdict_margin(&c, &r), 0.3, 1e-15);
+    r.yielded[0] = 1;
+    CHECK(rb_verdict_margin(&c, &r) == 0);
+    r.yielded[0] = 0;
+    /* with validity: fail the checks it counts are limits too */
+    c.validity = RB_VALIDITY_FAIL;
+    c.friction_coefficient = 0.5;
+    r.max_friction_demand = 0.45;
+    CHECK_NEAR(rb_verdict_margin(&c, &r), 0.1, 1e-15);
+    c.validity_mask = 1u << RB_CHECK_LIFT_OFF;   /* sliding not counted */
+    CHECK_NEAR(rb_verdict_margin(&c, &r), 0.3, 1e-15);
+    r.min_vertical_reaction_n = 0.05 * r.weight_n;
+    CHECK_NEAR(rb_verdict_margin(&c, &r), 0.05, 1e-15);
+    r.broken[1] = 1;
+    CHECK(rb_verdict_margin(&c, &r) == 0);
+}
+
+/* Which passes are confirmed, and how the confirming runs fold in. */
+static void confirmation(void)
+{
+    rb_criteria c;
+    rb_result r;
+    rb_verdict v;
+    rb_confirm_run runs[RB_CONFIRM_RUNS];
+    rb_criteria_init(&c);
+    base_result(&r);
+    r.usage[0] = 0.75;           /* margin 0.25, exactly the default band */
+    rb_judge(&c, &r, &v);
+    CHECK(v.pass && !rb_verdict_wants_confirm(&c, &r, &v));
+    c.confirm_band = 0.3;
+    CHECK(rb_verdict_wants_confirm(&c, &r, &v));
+    c.confirm = RB_CONFIRM_ALWAYS;
+    CHECK(rb_verdict_wants_confirm(&c, &r, &v));
+    c.confirm = RB_CONFIRM_OFF;
+    c.confirm_band = 1;
+    CHECK(!rb_verdict_wants_confirm(&c, &r, &v));
+    c.confirm = RB_CONFIRM_ALWAYS;
+    r.usage[0] = 1.2;            /* a fail is never rerun */
+    rb_judge(&c, &r, &v);
+    CHECK(!rb_verdict_wants_confirm(&c, &r, &v));
+    CHECK(v.check[RB_CHECK_CONVERGENCE] == RB_CHECK_NOT_CHECKED);
+
+    /* both runs pass: the verdict stands, the check is ok */
+    r.usage[0] = 0.8;
+    rb_judge(&c, &r, &v);
+    char reason[sizeof v.reason];
+    memcpy(reason, v.reason, sizeof reason);
+    memset(runs, 0, sizeof runs);
+    for (int k = 0; k < RB_CONFIRM_RUNS; k++) {
+        runs[k].solved = 1;
+        runs[k].rtol = k ? 1e-9 : 1e-8;
+        rb_judge(&c, &r, &runs[k].verdict);
+    }
+    rb_verdict v2 = v;
+    rb_verdict_confirm(&v2, runs, 0);
+    CHECK(v2.pass && v2.check[RB_CHECK_CONVERGENCE] == RB_CHECK_NOT_CHECKED);
+    rb_verdict_confirm(&v2, runs, RB_CONFIRM_RUNS);
+    CHECK(v2.pass && v2.check[RB_CHECK_CONVERGENCE] == RB_CHECK_OK && !v2.warnings);
+    CHECK(strcmp(v2.reason, reason) == 0);
+    /* the second fails: the verdict fails with its reason */
+    rb_result r2 = r;
+    r2.usage[0] = 1.05;
+    rb_judge(&c, &r2, &runs[1].verdict);
+    v2 = v;
+    rb_verdict_confirm(&v2, runs, RB_CONFIRM_RUNS);
+    CHECK(!v2.pass && v2.criteria_pass);
+    CHECK(v2.check[RB_CHECK_CONVERGENCE] == RB_CHECK_WARNING);
+    CHECK(v2.warnings == 1u << RB_CHECK_CONVERGENCE);
+    CHECK(strstr(v2.reason, "not confirmed: at tolerance 1e-09 (auto), bolt toughness "
+                 "usage 1.05 reaches") == v2.reason);
+    /* a run the solver could not finish fails it too */
+    runs[1] = runs[0];
+    runs[0].solved = 0;
+    runs[0].status = RB_ERR_WORK_LIMIT;
+    v2 = v;
+    rb_verdict_confirm(&v2, runs, RB_CONFIRM_RUNS);
+    CHECK(!v2.pass && strstr(v2.reason, "stopped") != NULL);
+    CHECK(strstr(v2.reason, "1e-08") != NULL);
+}
+
 int main(void)
 {
     no_yield_whatever_the_model();
     usage_beside_its_limit();
     validity();
+    margin();
+    confirmation();
     TEST_MAIN_END();
 }

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The confirmation of a pass (docs/criteria.md, "Confirmation"), end to end.
 
-    python3 tests/verdicts/confirm.py ROCKBOLT SCRATCH
+    python3 tests/verdicts/confirm.py ROCKBOLT JUDGE_PROBE SCRATCH
 
 Run from the source root. On tests/verdicts/cases/marginal-pass.yaml, a
 pass at the default tolerance whose usage reaches the limit at a tighter
@@ -16,14 +16,19 @@ one, and on shipped cases:
   - only a pass within the band of a limit is confirmed (margin as the
     report gives it), every pass with confirm: always, none with off;
   - a pass far from its limits and a fail are not rerun;
+  - the design searches end on a confirmed pass: at the ends of each
+    final bracket the one judge passes (confirmed) and fails
+    (judge_probe --design), also where the search's last pass was not
+    confirmed and it went on below it
+    (tests/verdicts/cases/design-confirm.yaml);
   - bad values of the two keys are errors naming file, line, key and
     the expected form."""
-import csv, json, os, sys
+import csv, json, os, re, subprocess, sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from e2e import fail, failures, finish, run, src, start, write  # noqa: E402
 
-rb, scratch = start()
+rb, probe, scratch = start(3)
 MARGINAL = os.path.join(src, "tests/verdicts/cases/marginal-pass.yaml")
 
 
@@ -157,7 +162,26 @@ else:
         fail(f"the design passes up to {nb['level_astar']} A*, beyond the case's own "
              f"{level} A*, which check fails confirmed")
 
-# 6. bad values
+# 6. the design searches end on a confirmed pass
+DESIGN = os.path.join(src, "tests/verdicts/cases/design-confirm.yaml")
+p = subprocess.run([probe, "--design", DESIGN, MARGINAL], capture_output=True, text=True)
+print(p.stdout, end="")
+if p.returncode != 0:
+    fail("judge_probe --design: the judge disagrees with a bracket's end")
+fails = [int(x) for x in re.findall(r"design-confirm.yaml: motion 1 no-break: .*"
+                                    r"confirm_fails (\d+)", p.stdout)]
+if not fails or fails[0] < 1:
+    fail(f"design-confirm: the no-break search should have gone on below an "
+         f"unconfirmed pass: {fails}")
+dj = os.path.join(scratch, "dc.json")
+p = run("design", DESIGN, "--json", dj, "--quiet")
+if p.returncode in (0, 1):
+    with open(dj) as f:
+        nb = json.load(f)["motions"][0]["design"]["design_factor"]["no_break"]
+    if fails and nb["confirm_fails"] != fails[0]:
+        fail(f"the design report's confirm_fails {nb['confirm_fails']} is not the search's")
+
+# 7. bad values
 for key, value, expected in (("confirm", "maybe", "one of marginal, always, off"),
                              ("confirm_band", "0", "> 0 and <= 1"),
                              ("confirm_band", "1.5", "> 0 and <= 1")):

@@ -7,7 +7,15 @@
  * (rb_design_run_at) must give the same verdict and the same numbers: the
  * "verdict", "validity" and "result" parts of the motion's JSON report are
  * compared as text. Prints one line per mismatch and a count; exit 1 when
- * anything differs or a case does not run. */
+ * anything differs or a case does not run.
+ *
+ *   judge_probe --design CASE.yaml...
+ *
+ * For every motion, the design factors against no yield and no break
+ * (rb_run_design_criteria) and then the one judge at the ends of each
+ * final bracket, the same scaled motion as the search's: the passing end
+ * must pass confirmed (rb_design_run_at), the failing end fail. Prints
+ * each factor with its confirm_fails. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -90,10 +98,75 @@ static int probe(const char *path, long *runs)
     return bad;
 }
 
+/* The verdict rb_design_run_at gives at level: 1 pass, 0 fail, -1 error. */
+static int verdict_at(const rb_case *c, size_t i, const rb_criteria *cr, double level,
+                      size_t *n_confirm)
+{
+    rb_result r;
+    rb_verdict v;
+    rb_confirm_run runs[RB_CONFIRM_RUNS];
+    const rb_motion *mo = &c->motions[i].motion;
+    if (rb_design_run_at(&c->model, mo, &c->solve, cr, level, &r, &v, runs, n_confirm,
+                         NULL) != RB_OK)
+        return -1;
+    rb_result_free(&r);
+    return v.pass;
+}
+
+static int probe_design(const char *path)
+{
+    rb_case c;
+    rb_diag_list diags = {0};
+    rb_case_design cd;
+    int bad = 0;
+    if (rb_case_load(path, &c, &diags) != RB_OK) {
+        printf("%s: does not load\n", path);
+        rb_diag_list_free(&diags);
+        return 1;
+    }
+    rb_diag_list_free(&diags);
+    memset(&cd, 0, sizeof cd);
+    rb_run_design_criteria(&c, &cd);
+    for (size_t i = 0; i < c.n_motions; i++) {
+        const rb_criteria *crit[2] = {&cd.no_yield, &cd.no_break};
+        for (int k = 0; k < 2; k++) {
+            rb_design_factor_result f;
+            size_t n_pass = 0, n_fail = 0;
+            if (rb_design_factor(&c.model, &c.motions[i].motion, &c.solve, crit[k],
+                                 &c.design, 2, NULL, &f, NULL) != RB_OK) {
+                printf("%s: motion %zu: the search fails\n", path, i + 1);
+                bad = 1;
+                continue;
+            }
+            int at_pass = f.level_mps2 > 0
+                          ? verdict_at(&c, i, crit[k], f.level_mps2, &n_pass) : 1;
+            int at_fail = f.no_failure ? 0 : verdict_at(&c, i, crit[k], f.fail_mps2, &n_fail);
+            printf("%s: motion %zu %s: level %.9g A*, fails at %.9g A*, confirm_fails %ld, "
+                   "confirming runs at the level %zu\n", path, i + 1,
+                   k ? "no-break" : "no-yield", f.level_astar, f.fail_astar,
+                   f.confirm_fails, n_pass);
+            if (at_pass != 1 || at_fail != 0 || n_fail != 0) {
+                printf("  FAIL: the judge at the bracket's ends gives %d (pass) and %d "
+                       "(fail)\n", at_pass, at_fail);
+                bad = 1;
+            }
+        }
+    }
+    rb_case_design_free(&cd);
+    rb_case_free(&c);
+    return bad;
+}
+
 int main(int argc, char **argv)
 {
     int bad = 0;
     long runs = 0;
+    if (argc > 1 && strcmp(argv[1], "--design") == 0) {
+        for (int k = 2; k < argc; k++)
+            bad += probe_design(argv[k]);
+        printf("judge_probe --design: %d of %d cases differ\n", bad, argc - 2);
+        return bad ? 1 : 0;
+    }
     for (int k = 1; k < argc; k++)
         bad += probe(argv[k], &runs);
     printf("judge_probe: %ld runs of %d cases, %d cases differ\n", runs, argc - 1, bad);

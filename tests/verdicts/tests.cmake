@@ -18,4 +18,5 @@ rb_script_test(NAME verdict_concrete SCRIPT tests/verdicts/concrete.py LABEL ver
 rb_script_test(NAME verdict_property SCRIPT tests/verdicts/property.py LABEL verdicts
                TOOLS $<TARGET_FILE:judge_probe> AFTER 1000 TIMEOUT 1800)
 # the confirmation of marginal passes at tighter tolerances
-rb_script_test(NAME verdict_confirm SCRIPT tests/verdicts/confirm.py LABEL verdicts)
+rb_script_test(NAME verdict_confirm SCRIPT tests/verdicts/confirm.py LABEL verdicts
+               TOOLS $<TARGET_FILE:judge_probe>)
