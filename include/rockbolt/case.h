@@ -147,6 +147,8 @@ typedef struct {
 } rb_diag_list;
 
 void rb_diag_list_free(rb_diag_list *l);
+/* A new diagnostic at the end of l, zeroed; NULL when out of memory. */
+rb_diag *rb_diag_list_add(rb_diag_list *l);
 
 /* Load and validate a case. Returns RB_OK, or RB_ERR_PARSE / RB_ERR_INVALID
  * / RB_ERR_IO with every problem found appended to diags. On error *out is

@@ -10,16 +10,15 @@
 #include <string.h>
 #include <sys/stat.h>
 #include "batch_internal.h"
+#include "util/grow.h"
 
 rb_batch_item *rb_batch_list_push(rb_batch_list *l, const char *source)
 {
     if (l->n == l->cap) {
-        size_t cap = l->cap ? 2 * l->cap : 16;
-        rb_batch_item *p = realloc(l->items, cap * sizeof *p);
+        rb_batch_item *p = rb_grow(l->items, &l->cap, sizeof *p, 16);
         if (!p)
             return NULL;
         l->items = p;
-        l->cap = cap;
     }
     rb_batch_item *it = &l->items[l->n];
     memset(it, 0, sizeof *it);

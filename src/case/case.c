@@ -11,6 +11,7 @@
 #include <string.h>
 #include "case_internal.h"
 #include "rockbolt/sandbox.h"
+#include "util/grow.h"
 
 void rb_diag_list_free(rb_diag_list *l)
 {
@@ -21,21 +22,24 @@ void rb_diag_list_free(rb_diag_list *l)
     l->n = l->cap = 0;
 }
 
-static rb_diag *cctx_push(rb_cctx *c)
+rb_diag *rb_diag_list_add(rb_diag_list *l)
 {
-    rb_diag_list *l = c->diags;
     if (l->n == l->cap) {
-        size_t cap = l->cap ? 2 * l->cap : 8;
-        rb_diag *p = realloc(l->items, cap * sizeof *p);
-        if (!p) {
-            c->nomem = 1;
+        rb_diag *p = rb_grow(l->items, &l->cap, sizeof *p, 8);
+        if (!p)
             return NULL;
-        }
         l->items = p;
-        l->cap = cap;
     }
     rb_diag *d = &l->items[l->n++];
     memset(d, 0, sizeof *d);
+    return d;
+}
+
+static rb_diag *cctx_push(rb_cctx *c)
+{
+    rb_diag *d = rb_diag_list_add(c->diags);
+    if (!d)
+        c->nomem = 1;
     return d;
 }
 

@@ -15,6 +15,7 @@
 #include "rockbolt/case_overrides.h"
 #include "util/strbuf.h"
 #include "rockbolt/datadir.h"
+#include "util/grow.h"
 
 #define RB_OV_MAX_DEPTH 4
 #define RB_OV_COMP_MAX 64
@@ -104,14 +105,12 @@ static void gen_line_end(rb_ovgen *g, int ov_index)
     rb_strbuf_putn(&g->sb, "\n", 1);
     g->line++;
     if ((size_t)g->line >= g->line_cap) {
-        size_t cap = g->line_cap ? 2 * g->line_cap : 32;
-        int *p = realloc(g->line_ov, cap * sizeof *p);
+        int *p = rb_grow(g->line_ov, &g->line_cap, sizeof *p, 32);
         if (!p) {
             g->sb.oom = 1;
             return;
         }
         g->line_ov = p;
-        g->line_cap = cap;
     }
     g->line_ov[g->line] = ov_index;
 }
@@ -217,16 +216,9 @@ static char *dup_str(const char *s)
 static rb_status push_diag(rb_diag_list *l, const char *file, int line, int col,
                            const char *key, const char *msg)
 {
-    if (l->n == l->cap) {
-        size_t cap = l->cap ? 2 * l->cap : 8;
-        rb_diag *p = realloc(l->items, cap * sizeof *p);
-        if (!p)
-            return RB_ERR_NOMEM;
-        l->items = p;
-        l->cap = cap;
-    }
-    rb_diag *d = &l->items[l->n++];
-    memset(d, 0, sizeof *d);
+    rb_diag *d = rb_diag_list_add(l);
+    if (!d)
+        return RB_ERR_NOMEM;
     snprintf(d->file, sizeof d->file, "%s", file);
     d->line = line;
     d->col = col;

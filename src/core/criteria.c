@@ -272,7 +272,7 @@ void rb_verdict_confirm(rb_verdict *v, const rb_confirm_run *runs, size_t n)
         /* the first run that fails says why; the others only warn */
         const char *how = rb_enum_str(rb_integrator_names, cr->integrator);
         if (cr->solved)
-            snprintf(v->reason, sizeof v->reason, "not confirmed: at tolerance %.3g (%s), %s",
+            snprintf(v->reason, sizeof v->reason, "not confirmed: at tolerance %.3g (%s), %.200s",
                      cr->rtol, how, cr->verdict.reason);
         else
             snprintf(v->reason, sizeof v->reason, "not confirmed: the run at tolerance "

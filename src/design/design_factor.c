@@ -16,6 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "design_internal.h"
+#include "util/grow.h"
 
 /* Largest scan grid accepted: a guard against a step of 1e-12. */
 #define RB_SCAN_MAX_POINTS 100000
@@ -48,12 +49,10 @@ typedef struct {
 static rb_status take_pass(factor_search *s, double level, const rb_design_run *run)
 {
     if (s->n_passes == s->cap_passes) {
-        size_t cap = s->cap_passes ? 2 * s->cap_passes : 32;
-        double *p = realloc(s->passes, cap * sizeof *p);
+        double *p = rb_grow(s->passes, &s->cap_passes, sizeof *p, 32);
         if (!p)
             return RB_ERR_NOMEM;
         s->passes = p;
-        s->cap_passes = cap;
     }
     s->passes[s->n_passes++] = level;
     s->lo = level;

@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "design_internal.h"
+#include "util/grow.h"
 
 typedef struct {
     rb_model model;
@@ -92,15 +93,13 @@ void rb_design_memo_put(rb_design_memo *m, const rb_model *model, const rb_motio
     /* two threads may have solved the same run at once: keep one */
     if (!find(m, model, motion, opts)) {
         if (m->n == m->cap) {
-            size_t cap = m->cap ? 2 * m->cap : 64;
-            memo_entry *e = realloc(m->e, cap * sizeof *e);
+            memo_entry *e = rb_grow(m->e, &m->cap, sizeof *e, 64);
             if (!e) {
                 /* a memo that cannot grow only forgets: the run stands */
                 pthread_mutex_unlock(&m->lock);
                 return;
             }
             m->e = e;
-            m->cap = cap;
         }
         memo_entry *e = &m->e[m->n++];
         e->model = *model;

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "rockbolt/record_cache.h"
+#include "util/grow.h"
 
 #define RB_CACHE_DEFAULT_SAMPLES 50000000u
 
@@ -98,12 +99,10 @@ void rb_record_cache_put(rb_record_cache *c, const char *path, const rb_record_o
     if (s->n > c->max_samples - c->samples)
         goto done;
     if (c->n == c->cap) {
-        size_t cap = c->cap ? 2 * c->cap : 8;
-        entry *items = realloc(c->items, cap * sizeof *items);
+        entry *items = rb_grow(c->items, &c->cap, sizeof *items, 8);
         if (!items)
             goto done;
         c->items = items;
-        c->cap = cap;
     }
     memset(&e, 0, sizeof e);
     e.opts = *opts;

@@ -13,6 +13,7 @@
 #include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
+#include "util/grow.h"
 
 #ifndef PATH_MAX
 #define PATH_MAX 4096
@@ -550,12 +551,11 @@ static rb_status add_out(rb_outplan *p, const char *opt, const char *path, int r
         }
     }
     if (st == RB_OK && p->n == p->cap) {
-        size_t cap = p->cap ? 2 * p->cap : 8;
-        rb_out *n = realloc(p->outs, cap * sizeof *n);
+        rb_out *n = rb_grow(p->outs, &p->cap, sizeof *n, 8);
         if (!n)
             st = RB_ERR_NOMEM;
         else
-            p->outs = n, p->cap = cap;
+            p->outs = n;
     }
     for (k = 0; st == RB_OK && k < nk; k++)
         st = idx_put(p, keys[k], (long)p->n);
@@ -594,11 +594,10 @@ rb_status rb_outplan_add_input(rb_outplan *p, const char *path, rb_diag *d)
         return clash_input(&p->outs[*v], &in, d);
     }
     if (p->n_in == p->cap_in) {
-        size_t cap = p->cap_in ? 2 * p->cap_in : 16;
-        rb_out_input *n = realloc(p->ins, cap * sizeof *n);
+        rb_out_input *n = rb_grow(p->ins, &p->cap_in, sizeof *n, 16);
         if (!n)
             return RB_ERR_NOMEM;
-        p->ins = n, p->cap_in = cap;
+        p->ins = n;
     }
     in.dev = sb.st_dev;
     in.ino = sb.st_ino;
@@ -812,10 +811,9 @@ rb_status rb_outplan_stage_data(rb_outplan *p, const char *path, const char *dat
     if (t) {
         pthread_mutex_lock(&p->lock);
         if (p->n_extra == p->cap_extra) {
-            size_t cap = p->cap_extra ? 2 * p->cap_extra : 16;
-            struct rb_out_temp **n = realloc(p->extra, cap * sizeof *n);
+            struct rb_out_temp **n = rb_grow(p->extra, &p->cap_extra, sizeof *n, 16);
             if (n)
-                p->extra = n, p->cap_extra = cap;
+                p->extra = n;
         }
         if (p->n_extra < p->cap_extra)
             p->extra[p->n_extra++] = t, t = NULL;

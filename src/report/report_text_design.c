@@ -8,6 +8,7 @@
 #include <string.h>
 #include "rockbolt/names.h"
 #include "report_internal.h"
+#include "util/grow.h"
 
 struct rb_txt_arena {
     void **blocks;
@@ -21,14 +22,12 @@ static void *arena_alloc(rb_txt_arena *a, size_t n, size_t size)
     if (a->nomem)
         return NULL;
     if (a->n == a->cap) {
-        size_t cap = a->cap ? 2 * a->cap : 16;
-        void **b = realloc(a->blocks, cap * sizeof *b);
+        void **b = rb_grow(a->blocks, &a->cap, sizeof *b, 16);
         if (!b) {
             a->nomem = 1;
             return NULL;
         }
         a->blocks = b;
-        a->cap = cap;
     }
     if (!(p = calloc(n ? n : 1, size))) {
         a->nomem = 1;

@@ -16,6 +16,7 @@
 #include "util/strbuf.h"
 #include "rockbolt/report.h"
 #include "rockbolt/textsafe.h"
+#include "util/grow.h"
 
 #define TMPL_MAX_DEPTH 8   /* nested sections; the report needs two */
 #define TMPL_MAX_WIDTH 64
@@ -58,12 +59,10 @@ static rb_status fail(rb_diag *diag, const tok *t, const char *msg)
 static tok *toks_push(toklist *l)
 {
     if (l->n == l->cap) {
-        size_t cap = l->cap ? 2 * l->cap : 64;
-        tok *v = realloc(l->v, cap * sizeof *v);
+        tok *v = rb_grow(l->v, &l->cap, sizeof *v, 64);
         if (!v)
             return NULL;
         l->v = v;
-        l->cap = cap;
     }
     memset(&l->v[l->n], 0, sizeof l->v[0]);
     return &l->v[l->n++];
