@@ -79,6 +79,8 @@ static void case_vars(rb_tvars *t, const rb_report *r)
     rb_tv_str(t, "description", r->kase->description);
     rb_tv_str(t, "criterion", rb_enum_str(rb_criterion_names, (int)r->kase->criteria.kind));
     rb_tv_num(t, "usage_limit", r->kase->criteria.usage_limit);
+    rb_tv_str(t, "confirm", rb_enum_str(rb_confirm_mode_names, (int)r->kase->criteria.confirm));
+    rb_tv_num(t, "confirm_band", r->kase->criteria.confirm_band);
     rb_tv_str(t, "formulation", rb_enum_str(rb_formulation_names, (int)r->kase->solve.formulation));
     rb_tv_str(t, "integrator", rb_enum_str(rb_integrator_names, (int)r->kase->solve.integrator));
     rb_tv_int(t, "n_motions", (long)r->n_motions);

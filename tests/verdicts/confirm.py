@@ -15,7 +15,8 @@ one, and on shipped cases:
     to the last bit;
   - only a pass within the band of a limit is confirmed (margin as the
     report gives it), every pass with confirm: always, none with off;
-  - a pass far from its limits and a fail are not rerun;
+  - a pass far from its limits and a fail are not rerun; the confirming
+    tolerances stop at 1e-13;
   - the design searches end on a confirmed pass: at the ends of each
     final bracket the one judge passes (confirmed) and fails
     (judge_probe --design), also where the search's last pass was not
@@ -131,6 +132,11 @@ always, rc = check(variant("always", "confirm: always",
                            base=os.path.join(src, "cases/free-standing.yaml")))
 if always and (rc != 0 or conv(always)["status"] != "ok" or len(conv(always)["runs"]) != 2):
     fail(f"confirm: always did not confirm a clear pass: {conv(always)}")
+# near the tightest tolerance the runs stop at 1e-13, what doubles can meet
+tight, rc = check(variant("tight", "confirm: always", "tolerance: 1e-12",
+                          base=os.path.join(src, "cases/free-standing.yaml")))
+if tight and [r["tolerance"] for r in conv(tight)["runs"]] != [1e-13, 1e-13]:
+    fail(f"confirming tolerances at 1e-12: {[r['tolerance'] for r in conv(tight)['runs']]}")
 elc, rc = check(os.path.join(src, "cases/reference-elcentro.yaml"))
 if elc and (rc != 1 or conv(elc)["runs"] or conv(elc)["status"] != "not-checked"):
     fail(f"a failing run was rerun: {conv(elc)}")
