@@ -13,8 +13,12 @@ points, which the Taylor steps once missed (fig-5.17, 3.3e-3 in theta),
 fails the theta peak. Each row's first yield, where there is one, at
 the same time within 1e-6 s: a held row's force that passed Fy between
 two check points went unseen (tests/validation/cases/held-force-graze.yaml,
-whose numbers after that yield are sensitive and not compared). Printed,
-not asserted: the largest difference in
+whose numbers after that yield are sensitive and not compared). Where
+Dormand-Prince sees at most FEW_UPLIFTS uplifts, the same count and the
+same time on the floor within 1e-6 s: an uplift guard that turned
+positive and back between two check points of a fixed-base step went
+unseen (tests/validation/cases/stage1-uplift-graze.yaml: 2 uplifts
+against 3). Printed, not asserted: the largest difference in
 the count of bolt impacts, which moves with the tolerance within either
 integrator (reference-taft: 147, 143, 148 with Dormand-Prince at 1e-7,
 1e-9, 1e-11), as the hops of a decaying series do."""
@@ -30,6 +34,9 @@ cases = sorted(glob.glob("cases/*.yaml") + glob.glob("cases/thesis/*.yaml")
 # the first yield of a row, to this many seconds: it comes before any
 # sensitivity the yield itself starts
 YIELD_TOL_S = 1e-6
+# uplifts few enough to be events, not a decaying hop series whose count
+# moves with the tolerance
+FEW_UPLIFTS = 5
 
 
 def check(path, tag):
@@ -77,6 +84,11 @@ for c in cases:
             if (u is None) != (v is None) or (u is not None and abs(u - v) > YIELD_TOL_S):
                 fail(f"{what}: the {side} row first yields at {u} s as shipped, {v} s "
                      f"with rk45")
+        na, nb = x["outcome"]["uplifts"], y["outcome"]["uplifts"]
+        fa, fb = x["outcome"]["stage_time_s"]["fixed"], y["outcome"]["stage_time_s"]["fixed"]
+        if nb <= FEW_UPLIFTS and (na != nb or abs(fa - fb) > YIELD_TOL_S):
+            fail(f"{what}: {na} uplifts and {fa} s on the floor as shipped, {nb} and "
+                 f"{fb} s with rk45")
         if events_only:
             continue
         for key, u, v in pairs:
