@@ -307,4 +307,8 @@ void rb_design_factor_describe(const rb_design_factor_result *f, const rb_out_un
                  "resolution %.4g A*; %ld runs", f->factor, f->level_astar,
                  k * f->level_mps2, unit, f->fail_astar, f->first_fail_astar,
                  f->resolution_astar, f->runs);
+    size_t len = strlen(buf);
+    if (f->confirm_fails > 0 && len < n)
+        snprintf(buf + len, n - len, "; %ld higher pass%s not confirmed at tighter "
+                 "tolerances", f->confirm_fails, f->confirm_fails == 1 ? "" : "es");
 }
