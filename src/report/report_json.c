@@ -234,11 +234,8 @@ static void add_energy_cost(rb_jctx *cx, cJSON *res_o, const rb_result *r,
 /* One column of a history as a JSON array of numbers. */
 static void j_column(rb_jctx *cx, cJSON *o, const char *key, const double *v, size_t n)
 {
-    cJSON *a = cx->st == RB_OK ? cJSON_AddArrayToObject(o, key) : NULL;
-    size_t i;
-    rb_j_oom(cx, a);
-    for (i = 0; i < n && cx->st == RB_OK; i++) {
-        cJSON *x;
+    cJSON *a = rb_j_arr(cx, o, key);
+    for (size_t i = 0; i < n && cx->st == RB_OK; i++) {
         if (!isfinite(v[i])) {
             cx->st = RB_ERR_NONFINITE;
             snprintf(cx->bad_key, sizeof cx->bad_key, "%s.history.%s[%zu]",
@@ -247,11 +244,7 @@ static void j_column(rb_jctx *cx, cJSON *o, const char *key, const double *v, si
         }
         char buf[RB_JSONNUM_MAX];
         rb_json_number(v[i], buf);
-        x = cJSON_CreateRaw(buf);
-        if (!x || !cJSON_AddItemToArray(a, x)) {
-            cJSON_Delete(x);
-            cx->st = RB_ERR_NOMEM;
-        }
+        rb_j_append(cx, a, cJSON_CreateRaw(buf));
     }
 }
 
@@ -279,15 +272,9 @@ static void add_history(rb_jctx *cx, cJSON *parent, const rb_history *h)
     j_column(cx, o, "kinetic_j", h->kinetic, h->n);
     j_column(cx, o, "potential_j", h->potential, h->n);
     j_column(cx, o, "strain_j", h->strain, h->n);
-    a = cx->st == RB_OK ? cJSON_AddArrayToObject(o, "stage") : NULL;
-    rb_j_oom(cx, a);
-    for (i = 0; i < h->n && cx->st == RB_OK; i++) {
-        cJSON *x = cJSON_CreateNumber(h->stage[i]);
-        if (!x || !cJSON_AddItemToArray(a, x)) {
-            cJSON_Delete(x);
-            cx->st = RB_ERR_NOMEM;
-        }
-    }
+    a = rb_j_arr(cx, o, "stage");
+    for (i = 0; i < h->n && cx->st == RB_OK; i++)
+        rb_j_append(cx, a, cJSON_CreateNumber(h->stage[i]));
 }
 
 static void add_motion(rb_jctx *cx, cJSON *arr, const rb_report *r, size_t i)
@@ -295,13 +282,8 @@ static void add_motion(rb_jctx *cx, cJSON *arr, const rb_report *r, size_t i)
     const rb_report_motion *m = &r->motions[i];
     rb_report_norms n;
     cJSON *o, *v;
-    if (cx->st != RB_OK)
+    if (!(o = rb_j_item(cx, arr)))
         return;
-    if (!(o = cJSON_CreateObject()) || !cJSON_AddItemToArray(arr, o)) {
-        cJSON_Delete(o);
-        cx->st = RB_ERR_NOMEM;
-        return;
-    }
     snprintf(cx->where_buf, sizeof cx->where_buf, "motions[%zu]", i);
     cx->where = cx->where_buf;
     rb_report_norms_compute(r, m, &n);

@@ -36,16 +36,10 @@ void rb_report_json_anchorage(rb_jctx *cx, cJSON *root, const rb_report *r)
     rb_j_bool(cx, o, "judged", c->criteria.concrete);
     rb_j_num(cx, o, "anchor_diameter_m", a->da_m);
     rb_j_num(cx, o, "head_bearing_area_m2", a->abrg_m2);
-    cJSON *modes = cJSON_AddArrayToObject(o, "modes");
-    rb_j_oom(cx, modes);
-    for (int k = 0; modes && k < RB_ANCHOR_N_MODES && cx->st == RB_OK; k++) {
+    cJSON *modes = rb_j_arr(cx, o, "modes");
+    for (int k = 0; k < RB_ANCHOR_N_MODES && cx->st == RB_OK; k++) {
         const rb_anchor_mode_strength *s = &a->mode[k];
-        cJSON *m = cJSON_CreateObject();
-        if (!m || !cJSON_AddItemToArray(modes, m)) {
-            cJSON_Delete(m);
-            cx->st = RB_ERR_NOMEM;
-            return;
-        }
+        cJSON *m = rb_j_item(cx, modes);
         rb_j_str(cx, m, "mode", rb_enum_str(rb_anchor_mode_names, k));
         rb_j_str(cx, m, "clause", rb_anchor_clause((rb_anchor_mode)k));
         rb_j_bool(cx, m, "applies", s->applies);

@@ -22,6 +22,29 @@ cJSON *rb_j_obj(rb_jctx *cx, cJSON *parent, const char *key)
     return o;
 }
 
+cJSON *rb_j_arr(rb_jctx *cx, cJSON *parent, const char *key)
+{
+    cJSON *a = cx->st == RB_OK ? cJSON_AddArrayToObject(parent, key) : NULL;
+    rb_j_oom(cx, a);
+    return a;
+}
+
+void rb_j_append(rb_jctx *cx, cJSON *arr, cJSON *item)
+{
+    if (cx->st != RB_OK || !arr || !item || !cJSON_AddItemToArray(arr, item)) {
+        cJSON_Delete(item);
+        if (cx->st == RB_OK)
+            cx->st = RB_ERR_NOMEM;
+    }
+}
+
+cJSON *rb_j_item(rb_jctx *cx, cJSON *arr)
+{
+    cJSON *o = cx->st == RB_OK ? cJSON_CreateObject() : NULL;
+    rb_j_append(cx, arr, o);
+    return cx->st == RB_OK ? o : NULL;
+}
+
 void rb_j_num(rb_jctx *cx, cJSON *o, const char *key, double v)
 {
     if (cx->st != RB_OK)

@@ -16,6 +16,14 @@ typedef struct {
 
 void rb_j_oom(rb_jctx *cx, const void *added);
 cJSON *rb_j_obj(rb_jctx *cx, cJSON *parent, const char *key);
+/* An array under key; NULL (and cx->st set) when out of memory. */
+cJSON *rb_j_arr(rb_jctx *cx, cJSON *parent, const char *key);
+/* item at the end of arr, which takes it; an item NULL, or one that cannot
+ * be added, is out of memory (the item is then freed). Nothing after an
+ * earlier error. */
+void rb_j_append(rb_jctx *cx, cJSON *arr, cJSON *item);
+/* A new object at the end of arr; NULL after an error. */
+cJSON *rb_j_item(rb_jctx *cx, cJSON *arr);
 void rb_j_num(rb_jctx *cx, cJSON *o, const char *key, double v);
 void rb_j_null(rb_jctx *cx, cJSON *o, const char *key);
 void rb_j_opt(rb_jctx *cx, cJSON *o, const char *key, int have, double v);

@@ -48,17 +48,11 @@ static void add_factor(rb_jctx *cx, cJSON *parent, const char *key,
 
 static void add_gap_points(rb_jctx *cx, cJSON *o, const rb_gap_result *g)
 {
-    cJSON *arr = cx->st == RB_OK ? cJSON_AddArrayToObject(o, "grid") : NULL;
+    cJSON *arr = rb_j_arr(cx, o, "grid");
     size_t i;
-    rb_j_oom(cx, arr);
     for (i = 0; i < g->n_points && cx->st == RB_OK; i++) {
         const rb_gap_point *p = &g->points[i];
-        cJSON *q = cJSON_CreateObject();
-        if (!q || !cJSON_AddItemToArray(arr, q)) {
-            cJSON_Delete(q);
-            cx->st = RB_ERR_NOMEM;
-            return;
-        }
+        cJSON *q = rb_j_item(cx, arr);
         rb_j_num(cx, q, "gap_ratio", p->gap_ratio);
         rb_j_bool(cx, q, "evaluated", p->evaluated);
         if (!p->evaluated)
@@ -106,16 +100,9 @@ static void add_gap(rb_jctx *cx, cJSON *parent, const rb_motion_design *md,
 static void add_sweeps(rb_jctx *cx, cJSON *parent, const char *key, const rb_sweep *s,
                        size_t n)
 {
-    cJSON *arr = cx->st == RB_OK ? cJSON_AddArrayToObject(parent, key) : NULL;
-    size_t i;
-    rb_j_oom(cx, arr);
-    for (i = 0; i < n && cx->st == RB_OK; i++) {
-        cJSON *o = rb_sweep_to_json(&s[i]);
-        if (!o || !cJSON_AddItemToArray(arr, o)) {
-            cJSON_Delete(o);
-            cx->st = RB_ERR_NOMEM;
-        }
-    }
+    cJSON *arr = rb_j_arr(cx, parent, key);
+    for (size_t i = 0; i < n && cx->st == RB_OK; i++)
+        rb_j_append(cx, arr, rb_sweep_to_json(&s[i]));
 }
 
 void rb_report_json_motion_design(rb_jctx *cx, cJSON *motion_o, const rb_report *r,

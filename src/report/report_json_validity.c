@@ -10,24 +10,10 @@
 
 void rb_j_warnings(rb_jctx *cx, cJSON *o, const char *key, unsigned warnings)
 {
-    cJSON *a;
-    if (cx->st != RB_OK)
-        return;
-    if (!(a = cJSON_AddArrayToObject(o, key))) {
-        rb_j_oom(cx, a);
-        return;
-    }
-    for (int k = 0; k < RB_N_CHECKS && cx->st == RB_OK; k++) {
-        cJSON *s;
-        if (!((warnings >> k) & 1u))
-            continue;
-        s = cJSON_CreateString(rb_check_name((rb_check)k));
-        rb_j_oom(cx, s);
-        if (s && !cJSON_AddItemToArray(a, s)) {
-            cJSON_Delete(s);
-            rb_j_oom(cx, NULL);
-        }
-    }
+    cJSON *a = rb_j_arr(cx, o, key);
+    for (int k = 0; k < RB_N_CHECKS && cx->st == RB_OK; k++)
+        if ((warnings >> k) & 1u)
+            rb_j_append(cx, a, cJSON_CreateString(rb_check_name((rb_check)k)));
 }
 
 static cJSON *check_obj(rb_jctx *cx, cJSON *parent, const rb_verdict *v, rb_check k)
@@ -83,16 +69,10 @@ void rb_report_json_convergence(rb_jctx *cx, cJSON *validity_o, const rb_report 
     rb_j_str(cx, o, "confirm", rb_enum_str(rb_confirm_mode_names, (int)c->confirm));
     rb_j_num(cx, o, "band", c->confirm_band);
     rb_j_num(cx, o, "margin", rb_verdict_margin(c, m->result));
-    cJSON *runs = cx->st == RB_OK ? cJSON_AddArrayToObject(o, "runs") : NULL;
-    rb_j_oom(cx, runs);
-    for (size_t i = 0; runs && i < m->n_confirm && cx->st == RB_OK; i++) {
+    cJSON *runs = rb_j_arr(cx, o, "runs");
+    for (size_t i = 0; i < m->n_confirm && cx->st == RB_OK; i++) {
         const rb_confirm_run *cr = &m->confirm[i];
-        cJSON *x = cJSON_CreateObject();
-        if (!x || !cJSON_AddItemToArray(runs, x)) {
-            cJSON_Delete(x);
-            cx->st = RB_ERR_NOMEM;
-            return;
-        }
+        cJSON *x = rb_j_item(cx, runs);
         rb_j_str(cx, x, "integrator", rb_enum_str(rb_integrator_names, cr->integrator));
         rb_j_num(cx, x, "tolerance", cr->rtol);
         rb_j_bool(cx, x, "solved", cr->solved);
