@@ -18,7 +18,7 @@ typedef enum {
 } rb_validity_mode;
 
 /* When a passing verdict is confirmed by solving the motion again at
- * tighter tolerances (docs/criteria.md, "Confirmation"): near grazing the
+ * tighter tolerances (docs/report-format.md, "Confirmation"): near grazing the
  * response does not converge with the tolerance, and a pass the
  * tolerance can turn into a fail is no pass. */
 typedef enum {

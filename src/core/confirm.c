@@ -1,5 +1,5 @@
 /* Confirming a pass by solving again at tighter tolerances
- * (include/rockbolt/criteria.h, docs/criteria.md "Confirmation"). The
+ * (include/rockbolt/criteria.h, docs/report-format.md, "Confirmation"). The
  * judge itself is criteria.c's; this only makes the runs it folds. */
 #include <math.h>
 #include <stdio.h>

@@ -58,7 +58,7 @@ void rb_report_json_validity(rb_jctx *cx, cJSON *motion_o, const rb_report *r,
     rb_report_json_convergence(cx, o, r, m);
 }
 
-/* The confirmation of a pass (docs/criteria.md, "Confirmation"): how the
+/* The confirmation of a pass (docs/report-format.md, "Confirmation"): how the
  * case asks for it, how far the run was from failing, and each
  * confirming run with its verdict. */
 void rb_report_json_convergence(rb_jctx *cx, cJSON *validity_o, const rb_report *r,

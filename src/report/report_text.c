@@ -254,7 +254,7 @@ static void motion_outcome_vars(rb_tvars *t, const rb_result *res,
 }
 
 /* What confirmed a pass, in one line: the runs and their governing
- * numbers, or why there were none (docs/criteria.md, "Confirmation"). */
+ * numbers, or why there were none (docs/report-format.md, "Confirmation"). */
 static void convergence_text(const rb_criteria *c, const rb_report_motion *rm, char *buf,
                              size_t n)
 {

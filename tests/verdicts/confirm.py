@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The confirmation of a pass (docs/criteria.md, "Confirmation"), end to end.
+"""The confirmation of a pass (docs/report-format.md, "Confirmation"), end to end.
 
     python3 tests/verdicts/confirm.py ROCKBOLT JUDGE_PROBE SCRATCH
 
