@@ -18,6 +18,9 @@ past yield) and asserts that
   - `rockbolt batch --design` gives every motion of the first 16 cases the
     design factor (against the case's own criteria), its bound and the
     recommended gap that `rockbolt design` reports, to the last bit;
+  - on those cases, the ends of each design factor's final bracket get the
+    one judge's verdicts: the passing end passes, confirmed where it is
+    marginal, and the failing end fails (judge_probe --design);
   - no verdict contradicts its own numbers: a passing no-yield run has
     every row force below Fy, a passing no-break run usage below its limit.
 The seed is printed so that a failure can be replayed."""
@@ -223,6 +226,11 @@ if r.returncode != 0:
 
 # batch --design against design, on the first cases (the searches are slow)
 some = [p for p in paths if p in check_json][:16]
+r = subprocess.run([probe, "--design", *some], capture_output=True, text=True)
+print(r.stdout.strip().splitlines()[-1] if r.stdout.strip() else "judge_probe --design: no output")
+if r.returncode != 0:
+    fail("judge_probe --design: " + "\n".join(
+        line for line in r.stdout.splitlines() if "FAIL" in line or "does not" in line)[:2000])
 bj = os.path.join(scratch, "design-batch.json")
 r = subprocess.run([rb, "batch", *some, "--design", "--json", bj, "-q"],
                    capture_output=True, text=True)
