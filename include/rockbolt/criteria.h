@@ -90,6 +90,14 @@ typedef struct {
  * validity: fail, any validity warning. */
 void rb_judge(const rb_criteria *c, const rb_result *r, rb_verdict *v);
 
+/* The numbers of a run the criteria read, worked out once for the judge,
+ * the margin and the confirming runs: the larger row's usage, the larger
+ * row force over Fy (0 without rows), the elastic frame shear over W. */
+typedef struct {
+    double usage, force_over_fy, shear_over_w;
+} rb_governing;
+rb_governing rb_result_governing(const rb_result *r);
+
 /* How far a run is from failing: the smallest relative distance of its
  * governing numbers from their limits (usage or bolt force, rotation
  * towards overturning, the optional limits, the concrete's utilization,

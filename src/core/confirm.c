@@ -39,10 +39,10 @@ static void confirm_one(const rb_criteria *c, const rb_model *model, const rb_mo
     out->status = (int)st;
     out->solved = st == RB_OK;
     if (out->solved) {
+        rb_governing g = rb_result_governing(&r);
         rb_judge(c, &r, &out->verdict);
-        out->usage = fmax(r.usage[0], r.usage[1]);
-        out->max_bolt_force_over_fy = r.fy_row_n > 0
-            ? fmax(r.max_bolt_force_n[0], r.max_bolt_force_n[1]) / r.fy_row_n : 0;
+        out->usage = g.usage;
+        out->max_bolt_force_over_fy = g.force_over_fy;
         out->max_theta_over_alpha = r.max_theta_over_alpha;
     }
     rb_result_free(&r);

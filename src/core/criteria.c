@@ -152,13 +152,22 @@ static const char *beside(double v, double limit, char *buf, size_t n)
 #define SAY(v, pass_, ...) \
     ((void)snprintf((v)->reason, sizeof (v)->reason, __VA_ARGS__), (v)->criteria_pass = (pass_))
 
+rb_governing rb_result_governing(const rb_result *r)
+{
+    rb_governing g;
+    g.usage = larger(r->usage[0], r->usage[1]);
+    g.force_over_fy = r->fy_row_n > 0
+                      ? larger(r->max_bolt_force_n[0], r->max_bolt_force_n[1]) / r->fy_row_n
+                      : 0;
+    g.shear_over_w = r->weight_n > 0 ? r->max_shear_elastic_n / r->weight_n : 0;
+    return g;
+}
+
 static void criteria(const rb_criteria *c, const rb_result *r, rb_verdict *v)
 {
     char num[32];
-    double usage = larger(r->usage[0], r->usage[1]);
-    double shear = r->weight_n > 0 ? r->max_shear_elastic_n / r->weight_n : 0;
-    double force = r->fy_row_n > 0
-                   ? larger(r->max_bolt_force_n[0], r->max_bolt_force_n[1]) / r->fy_row_n : 0;
+    rb_governing g = rb_result_governing(r);
+    double usage = g.usage, shear = g.shear_over_w, force = g.force_over_fy;
     if (r->overturned)
         SAY(v, 0, "the cabinet overturns at t = %.3f s", r->overturn_s);
     else if (r->broken[0] || r->broken[1])
@@ -218,10 +227,8 @@ static double below(double value, double limit)
 
 double rb_verdict_margin(const rb_criteria *c, const rb_result *r)
 {
-    double usage = larger(r->usage[0], r->usage[1]);
-    double force = r->fy_row_n > 0
-                   ? larger(r->max_bolt_force_n[0], r->max_bolt_force_n[1]) / r->fy_row_n : 0;
-    double shear = r->weight_n > 0 ? r->max_shear_elastic_n / r->weight_n : 0;
+    rb_governing g = rb_result_governing(r);
+    double usage = g.usage, shear = g.shear_over_w, force = g.force_over_fy;
     if (r->overturned || r->broken[0] || r->broken[1])
         return 0;
     /* overturning is a limit of every criterion */
