@@ -307,6 +307,26 @@ static int reads_force_turns(const rb_solver *sv, const rb_rk_step *st)
                              || (sv->disc.stage == RB_STAGE_HELD && sv->sys.bolt->rigid_stop));
 }
 
+/* Whether the guards of a force that turns inside a check interval of
+ * length dt stay short of their boundaries at the turn, so that the turn
+ * need not be found: most turns on the floor are far below uplift (a
+ * sixth of the time of a run that never lifts went to finding them).
+ * Over a check interval, an eighth of the fastest period, the rate is
+ * monotone about its zero (as for the peaks in track.c), so from either
+ * end the guard moves by at most dt times that end's rate; the bound
+ * takes twice that, from both ends. */
+static int force_turn_stays(const rb_taylor *ts, unsigned mask,
+                            double dt, const double *ga, const double *gb,
+                            const double *rate)
+{
+    double scale = 2 * dt * rb_taylor_held_force_scale(ts);
+    double reach_a = scale * fabs(rate[0]), reach_b = scale * fabs(rate[1]);
+    for (int k = 0; k < G_COUNT; k++)
+        if ((mask & 1u << k) && !rb_guard_stays(k, ga[k], reach_a, gb[k], reach_b))
+            return 0;
+    return 1;
+}
+
 /* The guards at tm inside [*ta, tb]: the crossing over [*ta, tm] if any;
  * else the interval goes on from tm. */
 static int guards_at(rb_solver *sv, const rb_rk_step *st, unsigned mask, double *ta,
@@ -335,7 +355,7 @@ static int find_event(rb_solver *sv, const rb_rk_step *st, const double *g0,
     memcpy(ga, g0, sizeof ga);
     rb_guard_nudge(ga);
     int n = st->n_sub, turns = reads_turns(sv, st), force_turns = reads_force_turns(sv, st);
-    double dt = st->h / n;
+    double dt = st->h / n, rate[2] = {0, 0};
     const double *ya = st->y0;
     for (int j = 1; j <= n; j++) {
         double ta = st->t0 + dt * (j - 1);
@@ -349,18 +369,23 @@ static int find_event(rb_solver *sv, const rb_rk_step *st, const double *g0,
             if (ev >= 0)
                 return ev;
         }
-        double tau;
-        if (force_turns && rb_taylor_held_force_turn(&sv->sys, &st->ts, ta - st->t0,
-                                                     tb - st->t0, 1e-14, &tau)
-            && st->t0 + tau > ta && st->t0 + tau < tb) {
-            int ev = guards_at(sv, st, mask, &ta, st->t0 + tau, ga, t_event);
-            if (ev >= 0)
-                return ev;
-        }
         /* a Taylor step knows the floor at its check points and end */
         double x = !st->is_taylor ? (double)NAN
                    : j < n ? st->vcheck[j - 1][RB_TS_X] : st->aux1.x;
         rb_guard_eval_x(sv, tb, ys[j - 1], x, gb);
+        if (force_turns) {
+            /* the rate at a check point serves both intervals it bounds */
+            rate[0] = j == 1 ? rb_taylor_held_force_rate(&sv->sys, &st->ts, 0) : rate[1];
+            rate[1] = rb_taylor_held_force_rate(&sv->sys, &st->ts, tb - st->t0);
+        }
+        if (force_turns && rate[0] != 0 && rate[1] != 0 && (rate[0] < 0) != (rate[1] < 0)
+            && !force_turn_stays(&st->ts, mask, tb - ta, ga, gb, rate)) {
+            double tm = st->t0 + rb_taylor_held_force_turn(&sv->sys, &st->ts, ta - st->t0,
+                                                           tb - st->t0, rate, 1e-14);
+            int ev = tm > ta && tm < tb ? guards_at(sv, st, mask, &ta, tm, ga, t_event) : -1;
+            if (ev >= 0)
+                return ev;
+        }
         int ev = first_crossing(sv, st, mask, ta, tb, ga, gb, t_event);
         if (ev >= 0)
             return ev;

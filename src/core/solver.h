@@ -74,6 +74,11 @@ void rb_guard_eval_x(const rb_solver *sv, double t, const double *y, double x, d
 /* One guard; what locating its root needs. */
 double rb_guard_one(const rb_solver *sv, int guard, double t, const double *y);
 int rb_guard_crossed(int guard, double before, double after);
+/* Whether a guard that reads ga and gb at the ends of an interval, and
+ * can move by at most reach_a and reach_b from them inside it, stays on
+ * its side throughout (both bounds must hold); 0 for a guard with no
+ * side (the critical excitation's switch). */
+int rb_guard_stays(int guard, double ga, double reach_a, double gb, double reach_b);
 /* Whether a guard is the mirrored angle passing a level, and the level of
  * the physical angle where it does: such a root is found on theta alone. */
 int rb_guard_angle(const rb_solver *sv, int guard, double *level);

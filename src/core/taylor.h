@@ -75,12 +75,19 @@ double rb_taylor_angle_root(const rb_taylor *ts, double a, double b, double leve
                             double fa, double fb, double tol);
 
 /* Where a rigid row's force turns in (a, b) (tau) while the plate is held
- * at theta_hold (stage 4): the force is affine in the floor and U'', and a
- * peak between two check points can pass Fy (or a trough reach slack)
- * with both ends short of it. 1 with *tm when its rate changes sign in
- * (a, b), found by rb_root_illinois to tol (1 + |tau|); else 0. */
-int rb_taylor_held_force_turn(const rb_sys *S, const rb_taylor *ts, double a, double b,
-                              double tol, double *tm);
+ * at theta_hold (stage 4), or the uplift moment on the floor (stage 1):
+ * the force is affine in the floor and U'', and a peak between two check
+ * points can pass Fy (or a trough reach slack) with both ends short of
+ * it. rb_taylor_held_force_rate gives its rate at tau, up to a constant
+ * factor; times rb_taylor_held_force_scale, the magnitude of the rate of
+ * the stage's guards (the uplift guards', or the row's force).
+ * rb_taylor_held_force_turn finds the root where that rate changes sign
+ * from rate[0] at a to rate[1] at b, by rb_root_illinois to
+ * tol (1 + |tau|). */
+double rb_taylor_held_force_rate(const rb_sys *S, const rb_taylor *ts, double tau);
+double rb_taylor_held_force_scale(const rb_taylor *ts);
+double rb_taylor_held_force_turn(const rb_sys *S, const rb_taylor *ts, double a, double b,
+                                 const double *rate, double tol);
 
 /* The end of the step: state, derivative and aux, as rb_dyn_rhs gives them. */
 void rb_taylor_end(const rb_sys *S, const rb_disc *D, const rb_taylor *ts, double h,

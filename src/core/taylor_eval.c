@@ -251,16 +251,29 @@ static double held_force_rate(const void *ctx, double tau)
     return r;
 }
 
-int rb_taylor_held_force_turn(const rb_sys *S, const rb_taylor *ts, double a, double b,
-                              double tol, double *tm)
+static held_force held_force_of(const rb_sys *S, const rb_taylor *ts)
 {
     double c = ts->p[0][RB_TS_COS], sn = ts->p[0][RB_TS_SIN];
     held_force h = {ts, S->form == RB_FORM_SMALL ? S->M * S->d.R
                                                 : S->M * (S->h * c + S->b * sn),
                     S->d.Fstar};
-    double fa = held_force_rate(&h, a), fb = held_force_rate(&h, b);
-    if (!(fa != 0 && fb != 0 && (fa < 0) != (fb < 0)))
-        return 0;
-    *tm = rb_root_illinois(held_force_rate, &h, a, b, fa, fb, tol);
-    return 1;
+    return h;
+}
+
+double rb_taylor_held_force_rate(const rb_sys *S, const rb_taylor *ts, double tau)
+{
+    held_force h = held_force_of(S, ts);
+    return held_force_rate(&h, tau);
+}
+
+double rb_taylor_held_force_scale(const rb_taylor *ts)
+{
+    return ts->lever_hold > 0 ? 1 / ts->lever_hold : 1;
+}
+
+double rb_taylor_held_force_turn(const rb_sys *S, const rb_taylor *ts, double a, double b,
+                                 const double *rate, double tol)
+{
+    held_force h = held_force_of(S, ts);
+    return rb_root_illinois(held_force_rate, &h, a, b, rate[0], rate[1], tol);
 }

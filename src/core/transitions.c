@@ -34,6 +34,15 @@ int rb_guard_crossed(int guard, double a, double b)
     }
 }
 
+int rb_guard_stays(int guard, double ga, double reach_a, double gb, double reach_b)
+{
+    switch (guard_dir[guard]) {
+    case 1: return ga + reach_a < 0 && gb + reach_b < 0;
+    case -1: return ga - reach_a > 0 && gb - reach_b > 0;
+    default: return 0;
+    }
+}
+
 /* A guard that starts a step exactly on its boundary (theta = 0 right after
  * a floor impact or an uplift, the chord = gap right after a release) is
  * counted as just inside its inactive side; otherwise a short excursion that
