@@ -81,7 +81,8 @@ int main(int argc, char **argv)
     printf("median solve        %.3f ms (min %.3f, max %.3f)\n", 1e3 * med, 1e3 * t[0],
            1e3 * t[runs - 1]);
     printf("per simulated s     %.1f us\n", 1e6 * med / 50.0);
-    printf("steps               %ld accepted, %ld rejected\n", r.steps, r.rejected_steps);
+    printf("steps               %ld accepted (%ld exact on the floor), %ld rejected\n",
+           r.steps, r.exact_steps, r.rejected_steps);
     printf("steps per stage     1: %ld  2: %ld  4: %ld  5: %ld\n", r.stage_steps[1],
            r.stage_steps[2], r.stage_steps[4], r.stage_steps[5]);
     printf("rhs evaluations     %ld\n", r.rhs_evals);

@@ -68,6 +68,19 @@ double rb_series_at(const rb_series *s, double t);
  * building). */
 int rb_series_taylor(const rb_series *s, double t0, int n, double *coef);
 
+/* The floor as a linear system from t0 up to the next sample: a line
+ * g0 + slope tau (the ground through a building, else the floor itself)
+ * and, through a building (omega > 0), the building's relative state
+ * (u, v) at t0, the floor being -(2 xi omega v + omega^2 u) then. Exact
+ * transitions of a linear system driven by the floor start from it.
+ * Returns 0 outside the samples. */
+typedef struct {
+    double g0, slope;
+    double u, v;
+    double omega, xi; /* 0 without a building */
+} rb_floor_line;
+int rb_series_floor_line(const rb_series *s, double t0, rb_floor_line *fl);
+
 /* The Arias intensity pi / (2 g) int a^2 dt of a series (over its samples,
  * linear between; a floor through a building is taken at its samples) and
  * the times at which 5 % and 95 % of it have built up. */
@@ -119,6 +132,10 @@ double rb_motion_next_break(const rb_motion *m, double t);
  * polynomial (the last nonzero coefficient can be below it), n for the
  * sines, or -1 for RB_MOTION_CRITICAL, whose sign follows the response. */
 int rb_motion_taylor(const rb_motion *m, double t0, int n, double *coef);
+
+/* rb_series_floor_line of a sampled motion, its scale and polarity
+ * applied; 0 for the closed forms and outside the samples. */
+int rb_motion_floor_line(const rb_motion *m, double t0, rb_floor_line *fl);
 
 /* Largest |x''| the motion can reach (the peak floor acceleration 'a').
  * Non-finite samples are left out: the solver stops where it meets one. */

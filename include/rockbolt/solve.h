@@ -55,6 +55,11 @@ typedef struct {
      * the 17.8 utilization of the loaded row's tension and the horizontal
      * floor reaction, taken together at each instant */
     double anchor_phi_nn_n, anchor_phi_vn_n;
+    /* 1 (default): on the floor under a sampled motion, steps with nothing
+     * to locate inside them are taken by the exact transition of the
+     * frame and the building (docs/solver.md); 0: by Taylor series, the
+     * cross-check of the tests */
+    int exact_floor;
 } rb_solve_opts;
 
 /* Fraction of W the floor's vertical reaction must exceed for a friction
@@ -134,6 +139,7 @@ typedef struct {
            e_plastic, e_coupling;
     /* cost */
     long steps, rejected_steps, events, rhs_evals;
+    long exact_steps;             /* of the steps, those taken exactly on the floor */
     long stage_steps[6];          /* accepted steps (or exact intervals) per stage */
     rb_history *history;          /* owned; NULL unless asked for */
 } rb_result;

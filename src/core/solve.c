@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "bolt.h"
+#include "exact.h"
 #include "solver.h"
 
 void rb_solve_opts_init(rb_solve_opts *o)
@@ -23,6 +24,7 @@ void rb_solve_opts_init(rb_solve_opts *o)
     o->rest_fraction = 1e-6;
     o->max_events_per_s = 20000;
     o->max_steps = 50000000;
+    o->exact_floor = 1;
 }
 
 void rb_result_free(rb_result *r)
@@ -193,6 +195,11 @@ static rb_status setup(rb_solver *sv, const rb_model *model, const rb_motion *mo
         sv->disc.side = sv->opts.theta_init_rad > 0 ? 1 : -1;
         sv->disc.stage = RB_STAGE_UPLIFT;
     }
+    sv->exact.on = rb_exact_applies(sv);
+    if (sv->exact.on && motion->series->bld.ground_mps2) {
+        sv->exact.wb = motion->series->bld.omega_rps;
+        sv->exact.xib = motion->series->bld.xi;
+    }
     if (sv->opts.history_dt_s > 0) {
         out->history = calloc(1, sizeof *out->history);
         if (!out->history)
@@ -307,26 +314,6 @@ static int reads_force_turns(const rb_solver *sv, const rb_rk_step *st)
                              || (sv->disc.stage == RB_STAGE_HELD && sv->sys.bolt->rigid_stop));
 }
 
-/* Whether the guards of a force that turns inside a check interval of
- * length dt stay short of their boundaries at the turn, so that the turn
- * need not be found: most turns on the floor are far below uplift (a
- * sixth of the time of a run that never lifts went to finding them).
- * Over a check interval, an eighth of the fastest period, the rate is
- * monotone about its zero (as for the peaks in track.c), so from either
- * end the guard moves by at most dt times that end's rate; the bound
- * takes twice that, from both ends. */
-static int force_turn_stays(const rb_taylor *ts, unsigned mask,
-                            double dt, const double *ga, const double *gb,
-                            const double *rate)
-{
-    double scale = 2 * dt * rb_taylor_held_force_scale(ts);
-    double reach_a = scale * fabs(rate[0]), reach_b = scale * fabs(rate[1]);
-    for (int k = 0; k < G_COUNT; k++)
-        if ((mask & 1u << k) && !rb_guard_stays(k, ga[k], reach_a, gb[k], reach_b))
-            return 0;
-    return 1;
-}
-
 /* The guards at tm inside [*ta, tb]: the crossing over [*ta, tm] if any;
  * else the interval goes on from tm. */
 static int guards_at(rb_solver *sv, const rb_rk_step *st, unsigned mask, double *ta,
@@ -379,7 +366,10 @@ static int find_event(rb_solver *sv, const rb_rk_step *st, const double *g0,
             rate[1] = rb_taylor_held_force_rate(&sv->sys, &st->ts, tb - st->t0);
         }
         if (force_turns && rate[0] != 0 && rate[1] != 0 && (rate[0] < 0) != (rate[1] < 0)
-            && !force_turn_stays(&st->ts, mask, tb - ta, ga, gb, rate)) {
+            && !rb_force_turn_stays(mask, tb - ta,
+                                    rb_taylor_held_force_scale(&st->ts) * fabs(rate[0]),
+                                    rb_taylor_held_force_scale(&st->ts) * fabs(rate[1]),
+                                    ga, gb)) {
             double tm = st->t0 + rb_taylor_held_force_turn(&sv->sys, &st->ts, ta - st->t0,
                                                            tb - st->t0, rate, 1e-14);
             int ev = tm > ta && tm < tb ? guards_at(sv, st, mask, &ta, tm, ga, t_event) : -1;
@@ -507,15 +497,29 @@ static rb_status advance(rb_solver *sv, rb_rk_step *st, double *g, rb_diag *diag
  * exactly when within reach (a sum of steps would stop a rounding error
  * short of it, and leave a step too small to take); 0 when its series is
  * not finite. */
+static int taut(const rb_solver *sv)
+{
+    return sv->disc.stage == RB_STAGE_HELD && !sv->sys.bolt->rigid_stop;
+}
+
+double rb_step_length(const rb_solver *sv, double target, int *landing)
+{
+    double h_max = taut(sv) ? sv->h_max : sv->h_max_slack;
+    double h_want = target - sv->t;
+    *landing = h_want <= 1.001 * h_max;
+    return *landing ? h_want : h_max;
+}
+
+int rb_step_checks(const rb_solver *sv, double h)
+{
+    int n = (int)ceil(h / (taut(sv) ? sv->check_spacing : sv->check_slack));
+    return n < RB_SUB ? RB_SUB : n > RB_SUB_MAX ? RB_SUB_MAX : n;
+}
+
 static int taylor_step(rb_solver *sv, rb_rk_step *st, double target)
 {
-    int taut = sv->disc.stage == RB_STAGE_HELD && !sv->sys.bolt->rigid_stop;
-    double h_max = taut ? sv->h_max : sv->h_max_slack;
-    double spacing = taut ? sv->check_spacing : sv->check_slack;
-    double h_want = target - sv->t;
-    int landing = h_want <= 1.001 * h_max;
-    if (!landing)
-        h_want = h_max;
+    int landing;
+    double h_want = rb_step_length(sv, target, &landing);
     double h = rb_taylor_step(&sv->sys, &sv->disc, sv->t, sv->y, h_want, sv->atol,
                               sv->opts.rtol, &st->ts);
     if (!(h > 0))
@@ -526,8 +530,7 @@ static int taylor_step(rb_solver *sv, rb_rk_step *st, double target)
     st->t1 = landing && h == h_want ? target : sv->t + h;
     memcpy(st->y0, sv->y, sizeof st->y0);
     rb_taylor_end(&sv->sys, &sv->disc, &st->ts, h, st->y1, st->k[6], &st->aux1);
-    int n = (int)ceil(h / spacing);
-    st->n_sub = n < RB_SUB ? RB_SUB : n > RB_SUB_MAX ? RB_SUB_MAX : n;
+    st->n_sub = rb_step_checks(sv, h);
     sv->res->steps++;
     sv->res->stage_steps[sv->disc.stage]++;
     return 1;
@@ -551,6 +554,9 @@ static rb_status run(rb_solver *sv, rb_diag *diag)
             return nonfinite_trial ? nonfinite_ahead(sv, diag, h)
                    : fail(sv, diag, RB_ERR_STEP_TOO_SMALL, "step size underflow: the "
                           "tolerance cannot be met");
+        if (sv->exact.on && sv->disc.stage == RB_STAGE_FIXED
+            && rb_exact_step(sv, fmin(brk, sv->t_end), g, &s))
+            continue;
         if (sv->opts.integrator == RB_INTEGRATOR_AUTO
             && rb_taylor_applies(&sv->sys, &sv->disc)) {
             if (taylor_step(sv, &st, fmin(brk, sv->t_end))) {

@@ -34,6 +34,27 @@ typedef struct {
     int n;
 } rb_peak_window;
 
+/* The exact steps' transitions for one step length (exact.c): the rows
+ * U, U', u_b, v_b of the transition to each check point, and the
+ * Gramians of U'^2 and of the floor times U' over the whole step. */
+#define RB_EXACT_DIM 6
+#define RB_EXACT_TABLES 4
+typedef struct {
+    double h;
+    int n;
+    double row[RB_SUB_MAX][4][RB_EXACT_DIM];
+    double gvv[RB_EXACT_DIM][RB_EXACT_DIM], gxv[RB_EXACT_DIM][RB_EXACT_DIM];
+} rb_exact_table;
+
+typedef struct {
+    int on;
+    double wb, xib;                       /* the building; 0 without one */
+    rb_exact_table tab[RB_EXACT_TABLES];
+    int n_tab;
+    double seen[RB_EXACT_TABLES];         /* step lengths met once */
+    int n_seen;
+} rb_exact_cache;
+
 typedef struct {
     rb_sys sys;
     rb_disc disc;
@@ -61,6 +82,7 @@ typedef struct {
     double fric_t, fric_h, fric_v;
     int fric_have;
     int done;
+    rb_exact_cache exact;
 } rb_solver;
 
 /* transitions.c */
@@ -95,6 +117,17 @@ double rb_absorbed_now(const rb_solver *sv, int row);
  * points stay as close as the Runge-Kutta steps' ends were. */
 #define RB_SUB 4
 
+/* solve.c: the length of a Taylor or exact step from the current point
+ * towards target (a break or the end), whether it lands there, and the
+ * check points of a step of length h. */
+double rb_step_length(const rb_solver *sv, double target, int *landing);
+int rb_step_checks(const rb_solver *sv, double h);
+/* Whether the guards of a force that turns inside a check interval of
+ * length dt stay short of their boundaries at the turn, given the
+ * magnitudes of their rates at its ends (transitions.c). */
+int rb_force_turn_stays(unsigned mask, double dt, double rate_a, double rate_b,
+                        const double *ga, const double *gb);
+
 /* track.c */
 void rb_track_point(rb_solver *sv, double t, const double *y);
 /* The same with the evaluation at (t, y) already done. */
@@ -106,6 +139,8 @@ void rb_track_reset(rb_solver *sv);
 void rb_track_interval(rb_solver *sv, const rb_rk_step *st, double ta, double tb,
                        const double (*ys)[RB_NY]);
 rb_status rb_history_sample(rb_solver *sv, const rb_rk_step *st, double ta, double tb);
+/* Whether a row of the time history falls at or before tb. */
+int rb_history_due(const rb_solver *sv, double tb);
 rb_status rb_history_push(rb_solver *sv, double t, const double *y);
 
 #endif

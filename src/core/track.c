@@ -303,6 +303,12 @@ rb_status rb_history_push(rb_solver *sv, double t, const double *y)
     return RB_OK;
 }
 
+int rb_history_due(const rb_solver *sv, double tb)
+{
+    double next = (double)sv->hist_k * sv->opts.history_dt_s;
+    return sv->res->history && next <= tb && next <= sv->t_end;
+}
+
 rb_status rb_history_sample(rb_solver *sv, const rb_rk_step *st, double ta, double tb)
 {
     double y[RB_NY];

@@ -43,6 +43,22 @@ int rb_guard_stays(int guard, double ga, double reach_a, double gb, double reach
     }
 }
 
+/* Most turns of the force on the floor are far below uplift (a sixth of
+ * the time of a run that never lifts went to finding them). Over a check
+ * interval, an eighth of the fastest period, the rate is monotone about
+ * its zero (as for the peaks in track.c), so from either end the guard
+ * moves by at most dt times that end's rate; the bound takes twice that,
+ * from both ends. */
+int rb_force_turn_stays(unsigned mask, double dt, double rate_a, double rate_b,
+                        const double *ga, const double *gb)
+{
+    for (int k = 0; k < G_COUNT; k++)
+        if ((mask & 1u << k)
+            && !rb_guard_stays(k, ga[k], 2 * dt * rate_a, gb[k], 2 * dt * rate_b))
+            return 0;
+    return 1;
+}
+
 /* A guard that starts a step exactly on its boundary (theta = 0 right after
  * a floor impact or an uplift, the chord = gap right after a release) is
  * counted as just inside its inactive side; otherwise a short excursion that

@@ -132,6 +132,41 @@ int rb_series_taylor(const rb_series *s, double t0, int n, double *coef)
     return n;
 }
 
+int rb_series_floor_line(const rb_series *s, double t0, rb_floor_line *fl)
+{
+    if (!s || s->n < 2)
+        return 0;
+    long i = interval_of(s, (t0 - s->t0_s) / s->dt_s);
+    if (i < 0)
+        return 0;
+    double tau = t0 - (s->t0_s + (double)i * s->dt_s);
+    if (!s->bld.ground_mps2) {
+        double a0 = s->accel_mps2[i], a1 = s->accel_mps2[i + 1];
+        fl->slope = (a1 - a0) / s->dt_s;
+        fl->g0 = a0 + fl->slope * tau;
+        fl->u = fl->v = fl->omega = fl->xi = 0.0;
+        return 1;
+    }
+    segment g;
+    segment_at(s, (size_t)i, &g);
+    double w2 = g.w * g.w;
+    fl->slope = g.slope;
+    fl->g0 = g.g0 + g.slope * tau;
+    fl->omega = g.w;
+    fl->xi = g.xi;
+    if (tau == 0.0) {
+        fl->u = s->bld.u_m[i];
+        fl->v = s->bld.v_mps[i];
+        return 1;
+    }
+    /* the free vibration plus the particular solution of the line */
+    double uh, vh;
+    free_state(&g, tau, &uh, &vh);
+    fl->u = uh - fl->g0 / w2 + 2.0 * g.xi * g.slope / (w2 * g.w);
+    fl->v = vh - g.slope / w2;
+    return 1;
+}
+
 /* Golden-section search for the largest |floor| on [a, b]. */
 static double refine(const segment *g, double a, double b)
 {

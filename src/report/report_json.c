@@ -224,6 +224,7 @@ static void add_energy_cost(rb_jctx *cx, cJSON *res_o, const rb_result *r,
     rb_j_num(cx, o, "coupling", r->e_coupling);
     o = rb_j_obj(cx, res_o, "cost");
     rb_j_num(cx, o, "steps", (double)r->steps);
+    rb_j_num(cx, o, "exact_steps", (double)r->exact_steps);
     rb_j_num(cx, o, "rejected_steps", (double)r->rejected_steps);
     rb_j_num(cx, o, "events", (double)r->events);
     rb_j_num(cx, o, "rhs_evals", (double)r->rhs_evals);

@@ -1,0 +1,34 @@
+/* Internal: exact steps of the fixed base (stage 1) under a sampled floor.
+ *
+ * On the floor the frame is a linear oscillator driven by the floor, and
+ * the floor is a line between samples or a linear building driven by a
+ * line (motion.h, rb_floor_line). Together they are one linear system
+ * with constant coefficients, z = (U, U', u_b, v_b, g, g'), whose
+ * transition over a step is a matrix exponential: formed once per step
+ * length and run, it carries a step at the cost of a few dot products,
+ * whatever the frame's frequency, where a Taylor step forms a series of
+ * order ten or more. The work integrals (damping, input) are quadratic
+ * forms of z at the step's start, with their Gramians formed alongside.
+ *
+ * The exact step keeps the Taylor step's length and check points, reads
+ * the guards and tracks the sampled quantities at the same instants, and
+ * hands the step back to the Taylor series wherever a root is to be
+ * found inside it: a guard that crosses, a turn of the uplift moment that
+ * could reach uplift, a turn of U' that could be a new peak. */
+#ifndef RB_EXACT_H
+#define RB_EXACT_H
+
+#include "solver.h"
+
+/* Whether the run's floor stage can step exactly (a sampled motion, a
+ * flexible frame, the Taylor steps in use). */
+int rb_exact_applies(const rb_solver *sv);
+
+/* An exact step of stage 1 towards target (the next break or the end):
+ * 1 when taken, with the state, the guards g at its end and the tracked
+ * quantities advanced as a Taylor step without an event would (*status
+ * says whether the time history's rows could be stored); 0 when the step
+ * must be a Taylor step instead (nothing changed). */
+int rb_exact_step(rb_solver *sv, double target, double *g, rb_status *status);
+
+#endif

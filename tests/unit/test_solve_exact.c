@@ -1,0 +1,187 @@
+/* The exact steps of the fixed base (docs/solver.md, "Exact steps on the
+ * floor") against the Taylor steps they replace, over random cabinets:
+ * the same run with rb_solve_opts.exact_floor on and off.
+ *
+ * - Runs that stay on the floor are linear, and the two must agree to
+ *   the Taylor steps' own accuracy: peaks of U and of the total shear,
+ *   the input and damping work, with the floor a record (linear between
+ *   samples) or the record through a 5, 8 or 10 Hz building. Against
+ *   Taylor steps at 1e-11, the exact run at 1e-11 (whose few Taylor steps
+ *   are then as fine) is within 1e-9, and at the default 1e-7 it is at
+ *   least as close as the Taylor steps at 1e-7 are.
+ * - Nearly every step of such a run is exact (the others are the first
+ *   ones of each length, and where U' turns at a new peak).
+ * - Runs that rock: the reference cabinet under El Centro at 0.4 A*,
+ *   whose peak U and usage do not depend on the integrator (docs/solver.md
+ *   table), agree to the tolerance.
+ * - A time history changes nothing in the run: the same bits with and
+ *   without one. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include "harness.h"
+#include "elcentro_floor.h"
+#include "rockbolt/solve.h"
+
+static double rel(double a, double b)
+{
+    return a == b ? 0 : fabs(a - b) / fmax(fabs(a), fabs(b));
+}
+
+static unsigned long long rng_state = 20261124;
+static double uniform(double lo, double hi)
+{
+    rng_state = rng_state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return lo + (hi - lo) * (double)(rng_state >> 11) / 9007199254740992.0;
+}
+
+static rb_status solve(const rb_model *m, const rb_motion *mo, int exact, double rtol,
+                       double history_dt, rb_result *r)
+{
+    rb_solve_opts o;
+    rb_diag d;
+    rb_solve_opts_init(&o);
+    o.stretch_past_failure = 1;
+    o.exact_floor = exact;
+    o.rtol = rtol;
+    o.history_dt_s = history_dt;
+    rb_status st = rb_solve_run(m, mo, &o, r, &d);
+    if (st != RB_OK)
+        printf("  run failed: %s\n", d.msg);
+    return st;
+}
+
+/* A random cabinet at a level below its uplift under the floor s. */
+static void random_floor_run(const rb_series *s, rb_model *m, rb_motion *mo)
+{
+    rb_derived d;
+    rb_model_reference(m);
+    m->mass_kg = uniform(200, 900);
+    m->freq_hz = uniform(3, 15);
+    m->damping = uniform(0.01, 0.05);
+    rb_model_derive(m, &d, NULL);
+    rb_motion_init(mo);
+    mo->kind = RB_MOTION_SAMPLED;
+    mo->series = s;
+    mo->polarity = uniform(0, 1) < 0.5 ? 1 : -1;
+    /* a floor peak below the uplift acceleration keeps it on the floor
+     * (the frame's amplification can still lift it: such runs are
+     * skipped) */
+    mo->scale = uniform(0.05, 0.4) * d.a_uplift_mps2 / rb_series_peak(s);
+    mo->duration_s = s->dt_s * (double)(s->n - 1) + 2.0;
+}
+
+/* worst[0..3]: max U, total shear, input and damping work */
+static void note(double *worst, const rb_result *a, const rb_result *b)
+{
+    worst[0] = fmax(worst[0], rel(a->max_u_m, b->max_u_m));
+    worst[1] = fmax(worst[1], rel(a->max_shear_total_n, b->max_shear_total_n));
+    worst[2] = fmax(worst[2], rel(a->e_input, b->e_input));
+    worst[3] = fmax(worst[3], rel(a->e_damping, b->e_damping));
+}
+
+static int floor_cases(const char *what, const rb_series *s, int n)
+{
+    double exact_fine[4] = {0}, exact_dflt[4] = {0}, taylor_dflt[4] = {0}, least_exact = 1;
+    int runs = 0;
+    for (int i = 0; i < n; i++) {
+        rb_model m;
+        rb_motion mo;
+        rb_result a, b, c, t;
+        random_floor_run(s, &m, &mo);
+        if (solve(&m, &mo, 1, 1e-11, 0, &a) != RB_OK || solve(&m, &mo, 0, 1e-11, 0, &b) != RB_OK
+            || solve(&m, &mo, 1, 1e-7, 0, &c) != RB_OK
+            || solve(&m, &mo, 0, 1e-7, 0, &t) != RB_OK) {
+            CHECK(0);
+            continue;
+        }
+        if (a.uplifts || b.uplifts || c.uplifts || t.uplifts)
+            continue;
+        runs++;
+        note(exact_fine, &a, &b);
+        note(exact_dflt, &c, &b);
+        note(taylor_dflt, &t, &b);
+        least_exact = fmin(least_exact, (double)c.exact_steps / (double)c.steps);
+        CHECK(b.exact_steps == 0 && t.exact_steps == 0);
+    }
+    printf("%s: %d runs on the floor, against Taylor steps at 1e-11 (max U, total shear, "
+           "input work, damping work):\n"
+           "  exact at 1e-11  %.1e %.1e %.1e %.1e\n"
+           "  exact at 1e-7   %.1e %.1e %.1e %.1e\n"
+           "  Taylor at 1e-7  %.1e %.1e %.1e %.1e\n"
+           "  least share of exact steps %.3f\n", what, runs,
+           exact_fine[0], exact_fine[1], exact_fine[2], exact_fine[3],
+           exact_dflt[0], exact_dflt[1], exact_dflt[2], exact_dflt[3],
+           taylor_dflt[0], taylor_dflt[1], taylor_dflt[2], taylor_dflt[3], least_exact);
+    CHECK(runs >= n / 2);
+    for (int k = 0; k < 4; k++) {
+        /* the exact steps are exact to rounding: what is left is the
+         * Taylor steps' at 1e-11, on both sides and in the steps handed
+         * back to them */
+        CHECK(exact_fine[k] <= 1e-9);
+        /* and at the default tolerance at least as close as the Taylor
+         * steps they replace */
+        CHECK(exact_dflt[k] <= fmax(taylor_dflt[k], 1e-9));
+    }
+    CHECK(least_exact >= 0.9);
+    return runs;
+}
+
+static void rocking_reference(const rb_series *s)
+{
+    rb_model m;
+    rb_derived d;
+    rb_motion mo;
+    rb_result a, b, c;
+    elcentro_run_setup(s, RB_BOLT_RIGID_PLASTIC, 0.4, 40.0, &m, &d, &mo);
+    if (solve(&m, &mo, 1, 1e-7, 0, &a) != RB_OK || solve(&m, &mo, 0, 1e-7, 0, &b) != RB_OK
+        || solve(&m, &mo, 1, 1e-7, 0.01, &c) != RB_OK) {
+        CHECK(0);
+        return;
+    }
+    printf("reference cabinet, El Centro 0.4 A*: max U/U_static %.9f / %.9f, usage "
+           "%.9f / %.9f (exact / Taylor), %ld of %ld steps exact\n",
+           a.max_u_over_ustatic, b.max_u_over_ustatic, a.usage[RB_RIGHT], b.usage[RB_RIGHT],
+           a.exact_steps, a.steps);
+    CHECK(a.uplifts > 0);
+    CHECK(a.exact_steps > 0);
+    CHECK(rel(a.max_u_over_ustatic, b.max_u_over_ustatic) <= 1e-6);
+    CHECK(rel(a.usage[RB_RIGHT], b.usage[RB_RIGHT]) <= 1e-6);
+    /* a time history reads the steps without changing them */
+    CHECK(c.history != NULL && c.history->n > 3000);
+    CHECK(a.max_u_m == c.max_u_m && a.usage[RB_RIGHT] == c.usage[RB_RIGHT]
+          && a.max_shear_total_n == c.max_shear_total_n && a.e_input == c.e_input
+          && a.steps == c.steps && a.exact_steps == c.exact_steps);
+    rb_result_free(&a);
+    rb_result_free(&b);
+    rb_result_free(&c);
+}
+
+int main(void)
+{
+    rb_series raw, bld;
+    rb_record_opts ro;
+    rb_diag diag;
+    rb_record_opts_init(&ro);
+    if (rb_record_read("cases/records/elcentro_1940_ns.at2", &ro, &raw, &diag) != RB_OK) {
+        fprintf(stderr, "cannot read the El Centro record: %s\n", diag.msg);
+        return 1;
+    }
+    floor_cases("El Centro as the floor", &raw, 12);
+    static const double buildings[3] = {5, 8, 10};
+    for (int i = 0; i < 3; i++) {
+        char what[64];
+        if (rb_series_copy(&raw, &bld) != RB_OK
+            || rb_series_building_filter(&bld, buildings[i], 0.05) != RB_OK) {
+            CHECK(0);
+            continue;
+        }
+        snprintf(what, sizeof what, "El Centro through a %g Hz building", buildings[i]);
+        floor_cases(what, &bld, 12);
+        if (i == 0)
+            rocking_reference(&bld);
+        rb_series_free(&bld);
+    }
+    rb_series_free(&raw);
+    TEST_MAIN_END();
+}
