@@ -19,8 +19,8 @@ enum { ZU, ZV, ZUB, ZVB, ZG, ZS, ZN = RB_EXACT_DIM };
 
 /* Gauss-Legendre, 8 points on [-1, 1]: exact for polynomials of degree
  * 15; the integrands (products of the frame's and the building's
- * oscillations over at most a tenth of the frame's period, or a sample
- * interval) are then integrated to rounding. */
+ * oscillations) are integrated to rounding over panels of up to 1.5 rad
+ * of the fastest of them. */
 static const double gl_x[8] = {
     -0.9602898564975363, -0.7966664774136267, -0.5255324099163290, -0.1834346424956498,
     0.1834346424956498,  0.5255324099163290,  0.7966664774136267,  0.9602898564975363};
@@ -93,9 +93,15 @@ static void build_table(const rb_solver *sv, double h, int n, rb_exact_table *t)
     }
     memset(t->gvv, 0, sizeof t->gvv);
     memset(t->gxv, 0, sizeof t->gxv);
-    for (int q = 0; q < 8; q++) {
-        double rx[ZN] = {0}, wq = 0.5 * h * gl_w[q];
-        transition(a, dscale, h, 0.5 * (1 + gl_x[q]), e);
+    /* panels of at most 1.5 rad of the fastest oscillation, whose squares
+     * the 8 points integrate to rounding (a stiff building under a coarse
+     * record turns several times in one step) */
+    int panels = (int)ceil(fmax(sv->sys.d.omega, c->wb) * h / 1.5);
+    if (panels < 1)
+        panels = 1;
+    for (int q = 0; q < 8 * panels; q++) {
+        double rx[ZN] = {0}, wq = 0.5 * h / panels * gl_w[q % 8];
+        transition(a, dscale, h, (q / 8 + 0.5 * (1 + gl_x[q % 8])) / panels, e);
         for (int i = 0; i < ZN; i++)
             for (int j = 0; j < ZN; j++)
                 rx[j] += x[i] * e[i][j];

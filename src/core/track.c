@@ -36,6 +36,10 @@ static double peak_push(rb_peak_window *w, double t, double v)
     w->n++;
     if (w->n < 3 || !(w->v[1] >= w->v[0] && w->v[1] >= w->v[2]))
         return v;
+    /* a flat window (the floor's reaction on the floor) has no vertex:
+     * what the slopes below would give, without their three divisions */
+    if (w->v[0] == w->v[1] && w->v[1] == w->v[2])
+        return fmax(v, w->v[1]);
     double h0 = w->t[1] - w->t[0], h1 = w->t[2] - w->t[1];
     if (!(h0 > 0 && h1 > 0))
         return v;
