@@ -186,7 +186,8 @@ if p.returncode in (0, 1):
         nb = json.load(f)["motions"][0]["design"]["design_factor"]["no_break"]
     if fails and nb["confirm_fails"] != fails[0]:
         fail(f"the design report's confirm_fails {nb['confirm_fails']} is not the search's")
-    if f"; {nb['confirm_fails']} higher passes not confirmed" not in nb["summary"]:
+    n = nb["confirm_fails"]
+    if f"; {n} higher pass{'es' if n != 1 else ''} not confirmed" not in nb["summary"]:
         fail(f"the design's summary does not say so: {nb['summary']}")
 
 # 7. bad values
