@@ -243,8 +243,26 @@ void rb_dyn_uplift_guards(const rb_sys *S, double t, const double *y, double *g)
 
 void rb_dyn_uplift_guards_x(const rb_sys *S, double x, const double *y, double *g)
 {
-    g[0] = uplift_guard_at(S, x, y, 1);
-    g[1] = uplift_guard_at(S, x, y, -1);
+    if (S->form != RB_FORM_LARGE) {
+        g[0] = uplift_guard_at(S, x, y, 1);
+        g[1] = uplift_guard_at(S, x, y, -1);
+        return;
+    }
+    /* At theta = 0 the large formulation's loads are x M h - W b and
+     * N* x - K* U, and the mirror negates x, U and U' exactly, so the
+     * other edge's guard is made of the same products with their signs
+     * turned: the same bits as uplift_guard_at for each side, at half the
+     * cost (the floor stage reads both at every check point). */
+    const rb_derived *d = &S->d;
+    double p = x * (S->M * S->h), q = d->W * S->b;
+    if (S->model->rigid) {
+        g[0] = p - q;
+        g[1] = -p - q;
+        return;
+    }
+    double udd = (d->Nstar * x - d->Kstar * y[RB_Y_U] - d->Cstar * y[RB_Y_UD]) / d->Mstar;
+    g[0] = (p - q) - d->Fstar * udd;
+    g[1] = (-p - q) + d->Fstar * udd;
 }
 
 double rb_dyn_kinetic(const rb_sys *S, const rb_disc *D, const double *y)
