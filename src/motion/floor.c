@@ -90,21 +90,37 @@ double rb_series_at(const rb_series *s, double t)
     return floor_at(&g, f * s->dt_s);
 }
 
+/* The interval a step from t0 belongs to, and t0's offset tau in it;
+ * -1 outside the samples. */
+static long step_interval(const rb_series *s, double t0, double *tau)
+{
+    if (!s || s->n < 2)
+        return -1;
+    long i = interval_of(s, (t0 - s->t0_s) / s->dt_s);
+    if (i >= 0)
+        *tau = t0 - (s->t0_s + (double)i * s->dt_s);
+    return i;
+}
+
+/* A floor with no building: the straight line of interval i at tau. */
+static void sample_line(const rb_series *s, long i, double tau, double *value,
+                        double *slope)
+{
+    double a0 = s->accel_mps2[i], a1 = s->accel_mps2[i + 1];
+    *slope = (a1 - a0) / s->dt_s;
+    *value = a0 + *slope * tau;
+}
+
 int rb_series_taylor(const rb_series *s, double t0, int n, double *coef)
 {
+    double tau = 0;
     for (int k = 0; k <= n; k++)
         coef[k] = 0.0;
-    if (!s || s->n < 2 || n < 1)
-        return 0;
-    long i = interval_of(s, (t0 - s->t0_s) / s->dt_s);
+    long i = n < 1 ? -1 : step_interval(s, t0, &tau);
     if (i < 0)
         return 0;
-    double tau = t0 - (s->t0_s + (double)i * s->dt_s);
     if (!s->bld.ground_mps2) {
-        double a0 = s->accel_mps2[i], a1 = s->accel_mps2[i + 1];
-        double slope = (a1 - a0) / s->dt_s;
-        coef[0] = a0 + slope * tau;
-        coef[1] = slope;
+        sample_line(s, i, tau, &coef[0], &coef[1]);
         return 1;
     }
     segment g;
@@ -134,16 +150,12 @@ int rb_series_taylor(const rb_series *s, double t0, int n, double *coef)
 
 int rb_series_floor_line(const rb_series *s, double t0, rb_floor_line *fl)
 {
-    if (!s || s->n < 2)
-        return 0;
-    long i = interval_of(s, (t0 - s->t0_s) / s->dt_s);
+    double tau = 0;
+    long i = step_interval(s, t0, &tau);
     if (i < 0)
         return 0;
-    double tau = t0 - (s->t0_s + (double)i * s->dt_s);
     if (!s->bld.ground_mps2) {
-        double a0 = s->accel_mps2[i], a1 = s->accel_mps2[i + 1];
-        fl->slope = (a1 - a0) / s->dt_s;
-        fl->g0 = a0 + fl->slope * tau;
+        sample_line(s, i, tau, &fl->g0, &fl->slope);
         fl->u = fl->v = fl->omega = fl->xi = 0.0;
         return 1;
     }
