@@ -175,7 +175,9 @@ static void build_table(const rb_solver *sv, double h, int n, rb_exact_table *t)
  * table is only formed for a length met before. Lengths equal to 1e-12
  * and to a few roundings of the time share a table: a sample interval's
  * length, or what is left of it after a capped step, rounds differently
- * from one sample to the next (a shift of 1e-12 s in a 40 s run). */
+ * from one sample to the next (a shift of 1e-12 s in a 40 s run). A run
+ * keeps RB_EXACT_TABLES tables; a length met after they are taken (a
+ * record of uneven steps) is stepped by Taylor series, as before. */
 static int same_length(double a, double b, double t)
 {
     return fabs(a - b) <= 1e-12 * a + 8 * DBL_EPSILON * t;
