@@ -343,6 +343,7 @@ static int find_event(rb_solver *sv, const rb_rk_step *st, const double *g0,
     rb_guard_nudge(ga);
     int n = st->n_sub, turns = reads_turns(sv, st), force_turns = reads_force_turns(sv, st);
     double dt = st->h / n, rate[2] = {0, 0};
+    double scale = force_turns ? rb_taylor_held_force_scale(&st->ts) : 0;
     const double *ya = st->y0;
     for (int j = 1; j <= n; j++) {
         double ta = st->t0 + dt * (j - 1);
@@ -366,10 +367,8 @@ static int find_event(rb_solver *sv, const rb_rk_step *st, const double *g0,
             rate[1] = rb_taylor_held_force_rate(&sv->sys, &st->ts, tb - st->t0);
         }
         if (force_turns && rate[0] != 0 && rate[1] != 0 && (rate[0] < 0) != (rate[1] < 0)
-            && !rb_force_turn_stays(mask, tb - ta,
-                                    rb_taylor_held_force_scale(&st->ts) * fabs(rate[0]),
-                                    rb_taylor_held_force_scale(&st->ts) * fabs(rate[1]),
-                                    ga, gb)) {
+            && !rb_force_turn_stays(mask, tb - ta, scale * fabs(rate[0]),
+                                    scale * fabs(rate[1]), ga, gb)) {
             double tm = st->t0 + rb_taylor_held_force_turn(&sv->sys, &st->ts, ta - st->t0,
                                                            tb - st->t0, rate, 1e-14);
             int ev = tm > ta && tm < tb ? guards_at(sv, st, mask, &ta, tm, ga, t_event) : -1;

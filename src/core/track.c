@@ -307,27 +307,30 @@ rb_status rb_history_push(rb_solver *sv, double t, const double *y)
     return RB_OK;
 }
 
+/* The time of the next history row: k dt rather than a running sum, so
+ * long runs do not drift. */
+static double history_next(const rb_solver *sv)
+{
+    return (double)sv->hist_k * sv->opts.history_dt_s;
+}
+
 int rb_history_due(const rb_solver *sv, double tb)
 {
-    double next = (double)sv->hist_k * sv->opts.history_dt_s;
+    double next = history_next(sv);
     return sv->res->history && next <= tb && next <= sv->t_end;
 }
 
 rb_status rb_history_sample(rb_solver *sv, const rb_rk_step *st, double ta, double tb)
 {
     double y[RB_NY];
-    if (!sv->res->history)
-        return RB_OK;
-    for (;;) {
-        /* k dt rather than a running sum, so long runs do not drift */
-        double next = (double)sv->hist_k * sv->opts.history_dt_s;
-        if (next > tb || next > sv->t_end)
-            return RB_OK;
+    while (rb_history_due(sv, tb)) {
+        double next = history_next(sv);
         rb_rk_dense_eval(st, next < ta ? ta : next, y);
         if (rb_history_push(sv, next, y) != RB_OK)
             return RB_ERR_NOMEM;
         sv->hist_k++;
     }
+    return RB_OK;
 }
 
 void rb_history_free(rb_history *h)
