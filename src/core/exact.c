@@ -206,12 +206,22 @@ static const rb_exact_table *table_for(rb_solver *sv, double h, int n)
     return &c->tab[c->n_tab++];
 }
 
-int rb_exact_applies(const rb_solver *sv)
+void rb_exact_setup(rb_solver *sv)
 {
     const rb_motion *m = sv->sys.motion;
-    return m->kind == RB_MOTION_SAMPLED && m->series && !sv->sys.model->rigid
-           && sv->opts.integrator == RB_INTEGRATOR_AUTO && sv->opts.exact_floor
-           && sv->sys.form != RB_FORM_CONSISTENT;
+    const rb_derived *d = &sv->sys.d;
+    rb_exact_cache *c = &sv->exact;
+    c->on = m->kind == RB_MOTION_SAMPLED && m->series && !sv->sys.model->rigid
+            && sv->opts.integrator == RB_INTEGRATOR_AUTO && sv->opts.exact_floor
+            && sv->sys.form != RB_FORM_CONSISTENT;
+    if (!c->on)
+        return;
+    if (m->series->bld.ground_mps2) {
+        c->wb = m->series->bld.omega_rps;
+        c->xib = m->series->bld.xi;
+    }
+    c->inv_ms = 1 / d->Mstar;
+    c->in_th = sv->sys.form == RB_FORM_SMALL ? sv->sys.M * d->R : sv->sys.M * sv->sys.h;
 }
 
 /* One check point: the state, the floor, U'' and the rate of the uplift
@@ -234,11 +244,9 @@ static void point_at(const rb_solver *sv, const double *z, point *p)
         p->x = z[ZG];
         xd = z[ZS];
     }
-    double inv_ms = 1 / d->Mstar;
-    p->udd = (d->Nstar * p->x - d->Kstar * z[ZU] - d->Cstar * z[ZV]) * inv_ms;
-    double uddd = (d->Nstar * xd - d->Kstar * z[ZV] - d->Cstar * p->udd) * inv_ms;
-    double in_th = sv->sys.form == RB_FORM_SMALL ? sv->sys.M * d->R : sv->sys.M * sv->sys.h;
-    p->rate = in_th * xd - d->Fstar * uddd;
+    p->udd = (d->Nstar * p->x - d->Kstar * z[ZU] - d->Cstar * z[ZV]) * c->inv_ms;
+    double uddd = (d->Nstar * xd - d->Kstar * z[ZV] - d->Cstar * p->udd) * c->inv_ms;
+    p->rate = c->in_th * xd - d->Fstar * uddd;
     /* the angle stays as the floor stage keeps it (as a Taylor step) */
     memcpy(p->y, sv->y, sizeof p->y);
     p->y[RB_Y_U] = z[ZU];

@@ -20,9 +20,10 @@
 
 #include "solver.h"
 
-/* Whether the run's floor stage can step exactly (a sampled motion, a
- * flexible frame, the Taylor steps in use). */
-int rb_exact_applies(const rb_solver *sv);
+/* Decide whether the run's floor stage steps exactly (a sampled motion, a
+ * flexible frame, the Taylor steps in use) and keep what every step reads:
+ * the building and the run's constants. */
+void rb_exact_setup(rb_solver *sv);
 
 /* An exact step of stage 1 towards target (the next break or the end):
  * 1 when taken, with the state, the guards g at its end and the tracked

@@ -195,11 +195,7 @@ static rb_status setup(rb_solver *sv, const rb_model *model, const rb_motion *mo
         sv->disc.side = sv->opts.theta_init_rad > 0 ? 1 : -1;
         sv->disc.stage = RB_STAGE_UPLIFT;
     }
-    sv->exact.on = rb_exact_applies(sv);
-    if (sv->exact.on && motion->series->bld.ground_mps2) {
-        sv->exact.wb = motion->series->bld.omega_rps;
-        sv->exact.xib = motion->series->bld.xi;
-    }
+    rb_exact_setup(sv);
     if (sv->opts.history_dt_s > 0) {
         out->history = calloc(1, sizeof *out->history);
         if (!out->history)

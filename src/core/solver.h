@@ -49,6 +49,7 @@ typedef struct {
 typedef struct {
     int on;
     double wb, xib;                       /* the building; 0 without one */
+    double inv_ms, in_th;                 /* 1 / M*, the floor's lever M h */
     rb_exact_table tab[RB_EXACT_TABLES];
     int n_tab;
     double seen[RB_EXACT_TABLES];         /* step lengths met once */
