@@ -362,6 +362,7 @@ int rb_exact_step(rb_solver *sv, double target, double *g, rb_status *status)
     /* taken: what advance and rb_track_interval do with a step that has no
      * event and no peak to locate */
     rb_aux a;
+    rb_track_span_series(sv, t0, sv->y, h, t1);
     for (int j = 1; j < n; j++) {
         aux_of(sv, &p[j], &a);
         rb_track_aux(sv, t0 + dt_track * j, p[j].y, &a);
@@ -388,5 +389,6 @@ int rb_exact_step(rb_solver *sv, double target, double *g, rb_status *status)
     sv->f[RB_Y_WCPL] = 0;
     memcpy(g, gs[n], sizeof gs[n]);
     rb_track_aux(sv, t1, sv->y, &a);
+    rb_track_span_none(sv);
     return 1;
 }

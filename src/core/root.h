@@ -12,4 +12,13 @@
 double rb_root_illinois(double (*f)(const void *ctx, double x), const void *ctx, double a,
                         double b, double fa, double fb, double tol);
 
+/* The largest value of f inside [t[0], t[n-1]] (a local maximum; the ends
+ * are not evaluated, callers know them) and where it is (*at): Brent's
+ * method (golden sections and parabolic steps) on -f, seeded with the n
+ * points t (ascending) where f is known to be ft, until the bracket is
+ * within about 4 tol. GSL has the same method, but its licence is not the
+ * project's. */
+double rb_max_brent(double (*f)(const void *ctx, double x), const void *ctx,
+                    const double *t, const double *ft, int n, double tol, double *at);
+
 #endif

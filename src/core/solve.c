@@ -443,6 +443,7 @@ static rb_status restart(rb_solver *sv, double *g, rb_diag *diag)
         return nonfinite(sv, diag, sv->t, sv->y);
     rb_guard_eval(sv, sv->t, sv->y, g);
     rb_track_reset(sv);
+    rb_track_span_none(sv);
     rb_track_point(sv, sv->t, sv->y);
     return RB_OK;
 }
@@ -470,6 +471,7 @@ static rb_status advance(rb_solver *sv, rb_rk_step *st, double *g, rb_diag *diag
     int ev = find_event(sv, st, g, ys, &t_event, g_end);
     if (ev >= 0)
         tb = t_event;
+    rb_track_span(sv, st, st->t0, tb);
     rb_track_interval(sv, st, st->t0, tb, ev < 0 ? (const double (*)[RB_NY])ys : NULL);
     if (rb_history_sample(sv, st, st->t0, tb) != RB_OK)
         return RB_ERR_NOMEM;
@@ -480,10 +482,12 @@ static rb_status advance(rb_solver *sv, rb_rk_step *st, double *g, rb_diag *diag
         memcpy(sv->f, st->k[6], sizeof sv->f);
         memcpy(g, g_end, sizeof g_end);
         rb_track_aux(sv, sv->t, sv->y, &st->aux1);
+        rb_track_span_none(sv);
         return RB_OK;
     }
     rb_rk_dense_eval(st, tb, sv->y);
     rb_track_point(sv, sv->t, sv->y);
+    rb_track_span_none(sv);
     rb_transition(sv, ev);
     return restart(sv, g, diag);
 }

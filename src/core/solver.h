@@ -34,6 +34,18 @@ typedef struct {
     int n;
 } rb_peak_window;
 
+/* The dense output of the step whose points are being tracked, over
+ * [t0, t1]: a live step (st), or a Taylor series built from (t0, y0) over
+ * h only if a peak needs it (the exact steps, which carry none); st NULL
+ * and lazy 0 between steps. */
+typedef struct {
+    double t0, t1;
+    const rb_rk_step *st;
+    int lazy;                   /* 1: to build, 2: built, -1: failed */
+    double h, y0[RB_NY];
+    rb_rk_step series;
+} rb_span;
+
 /* The exact steps' transitions for one step length (exact.c): the rows
  * U, U', u_b, v_b of the transition to each check point, and the
  * Gramians of U'^2 and of the floor times U' over the whole step. */
@@ -74,7 +86,14 @@ typedef struct {
     long hist_k;                /* next history row is at hist_k * dt */
     /* sampled peaks of |shear|, friction demand and bolt force, reset at
      * every transition (a peak is only interpolated where it is smooth) */
-    rb_peak_window win_shear, win_friction, win_bolt, win_vertical;
+    rb_peak_window win_shear, win_friction, win_bolt, win_vertical, win_anchor;
+    /* the step whose points are being tracked, where a sampled peak is
+     * located between them */
+    rb_span span;
+    /* the last point tracked and the floor acceleration there, to see a
+     * pulse's end jump at a step's start */
+    double track_t, track_x;
+    int track_have;
     /* the last point's floor reaction, for the time spent at or below 0 */
     double lift_t, lift_v;
     int lift_have;
@@ -129,12 +148,21 @@ int rb_step_checks(const rb_solver *sv, double h);
 int rb_force_turn_stays(unsigned mask, double dt, double rate_a, double rate_b,
                         const double *ga, const double *gb);
 
-/* track.c */
+/* track.c, history.c */
 void rb_track_point(rb_solver *sv, double t, const double *y);
 /* The same with the evaluation at (t, y) already done. */
 void rb_track_aux(rb_solver *sv, double t, const double *y, const rb_aux *a);
 /* A transition: the sampled quantities start afresh. */
 void rb_track_reset(rb_solver *sv);
+/* The points tracked next lie on st's dense output between t0 and t1, or
+ * on the Taylor series from (t0, y0) over h (an exact step); none: on no
+ * step (a transition's point). */
+void rb_track_span(rb_solver *sv, const rb_rk_step *st, double t0, double t1);
+void rb_track_span_series(rb_solver *sv, double t0, const double *y0, double h, double t1);
+void rb_track_span_none(rb_solver *sv);
+/* span.c: the state and what the equations give besides it at t on the
+ * span's dense output; 0 where there is none. */
+int rb_span_state(rb_solver *sv, double t, double *y, rb_aux *a);
 /* Peaks inside [ta, tb] of a step; ys, when not NULL, holds the state at
  * the n_sub check points of the whole step (tb = its end). */
 void rb_track_interval(rb_solver *sv, const rb_rk_step *st, double ta, double tb,

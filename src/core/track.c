@@ -1,9 +1,10 @@
-/* Peaks and time histories of a run.
+/* Peaks of a run.
  *
  * Peaks of U and theta are taken at step ends and, inside a step, at the
  * roots of U' and theta' on the dense output, so a peak between two steps
  * is found to the integrator's accuracy rather than to the step size. Forces
- * and reactions come from the equations at the points visited. */
+ * and reactions come from the equations at the points visited, and their
+ * peaks between those points are located on the same dense output. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -19,12 +20,114 @@ static void note_displacements(rb_solver *sv, const double *y)
     r->max_theta_rad = fmax(r->max_theta_rad, fabs(y[RB_Y_TH]));
 }
 
-/* Shift (t, v) into the window and return the larger of v and, when the
- * middle sample is a local maximum, the vertex of the parabola through the
- * three: the samples are check points of a step (a few per period of the
- * fastest mode), and the vertex takes the peak between them to third order
- * in their spacing instead of first. */
-static double peak_push(rb_peak_window *w, double t, double v)
+/* The quantities tracked between points, each with its window. */
+enum { Q_SHEAR, Q_BOLT, Q_VERTICAL, Q_FRICTION, Q_ANCHOR };
+
+/* What the tracked quantities read at one point: the floor's reactions,
+ * the floor's share of the vertical one, a loaded row's force. */
+typedef struct {
+    double H, V, floor_v, tension, bolt;
+} sample;
+
+static void sample_of(const rb_solver *sv, const double *y, const rb_aux *a, sample *s)
+{
+    rb_dyn_reactions(&sv->sys, &sv->disc, y, a, &s->H, &s->V);
+    s->tension = a->bolt_force > 0 ? a->bolt_force : 0;
+    /* V is what floor and bolt give together; the floor presses on the
+     * plate with that plus the tension of a loaded bolt, which pulls the
+     * plate onto it, and friction works with the floor's share alone. */
+    s->floor_v = s->V + s->tension;
+    s->bolt = sv->disc.side != 0 ? s->tension : 0;
+}
+
+static double anchor_ratio(const rb_solver *sv, const sample *s, int *which)
+{
+    return rb_aci17_interaction(s->tension, sv->opts.anchor_phi_nn_n, fabs(s->H),
+                                sv->opts.anchor_phi_vn_n, which);
+}
+
+/* Each quantity as the larger the worse: the least floor reaction as the
+ * peak of its negative. */
+static double quantity(const rb_solver *sv, int q, const sample *s)
+{
+    double floor = RB_FRICTION_FLOOR * sv->sys.d.W;
+    int which;
+    switch (q) {
+    case Q_SHEAR:
+        return fabs(s->H);
+    case Q_BOLT:
+        return s->bolt;
+    case Q_VERTICAL:
+        return -s->floor_v;
+    case Q_FRICTION:
+        return s->floor_v > floor ? fabs(s->H) / s->floor_v : 0;
+    default:
+        return anchor_ratio(sv, s, &which);
+    }
+}
+
+static int span_sample(rb_solver *sv, double t, sample *s)
+{
+    double y[RB_NY] = {0};
+    rb_aux a;
+    if (!rb_span_state(sv, t, y, &a))
+        return 0;
+    sample_of(sv, y, &a, s);
+    return 1;
+}
+
+typedef struct {
+    rb_solver *sv;
+    int q;
+} refine_ctx;
+
+static double refine_at(const void *ctx, double t)
+{
+    const refine_ctx *c = ctx;
+    sample s;
+    return span_sample(c->sv, t, &s) ? quantity(c->sv, c->q, &s) : -HUGE_VAL;
+}
+
+/* The largest value of quantity q between the first and the last of the
+ * n points (t, v) on the span's dense output, and where it is; -HUGE_VAL
+ * where there is none. A tenth of a per mille of the interval puts the
+ * value within about 1e-9 of the peak's height relative to its
+ * curvature. */
+static double refine(rb_solver *sv, int q, const double *t, const double *v, int n,
+                     double *at)
+{
+    const rb_span *sp = &sv->span;
+    double ts[3], vs[3];
+    int m = 0;
+    /* a window reaches back into the last step at most by its first point,
+     * whose part of the peak that step's rising end took */
+    for (int i = 0; i < n; i++)
+        if (t[i] >= sp->t0 && t[i] <= sp->t1) {
+            ts[m] = t[i];
+            vs[m++] = v[i];
+        }
+    if (m < 2 || !(ts[m - 1] > ts[0]) || (!sp->st && sp->lazy <= 0))
+        return -HUGE_VAL;
+    refine_ctx c = {sv, q};
+    return rb_max_brent(refine_at, &c, ts, vs, m, 3e-5 * (ts[m - 1] - ts[0]), at);
+}
+
+/* Shift (t, v) into the window and return the largest value of the
+ * quantity since the window's last point, and where it is (*at). The
+ * points are check points of a step (a few per period of the fastest
+ * mode) and step ends; between them a peak that could pass the running
+ * one (best) is located on the step's dense output: where the middle of
+ * the three points is the largest, over the three, and where a step ends
+ * rising, over its last interval (the next step's window cannot reach
+ * back into it). Between points a third of a period apart a sinusoid
+ * exceeds the larger by at most a third of their difference (a fifth at a
+ * quarter period; the points are an eighth of the fastest mode's period
+ * apart, a quarter of the period of its square), so a peak is located
+ * where the larger point and half the difference pass the running peak. Where
+ * the span has no dense output, the vertex of the parabola through the
+ * three points takes the peak to third order in their spacing. */
+static double peak_push(rb_solver *sv, rb_peak_window *w, int q, double t, double v,
+                        double best, double *at)
 {
     if (w->n == 3) {
         w->t[0] = w->t[1]; w->v[0] = w->v[1];
@@ -34,12 +137,31 @@ static double peak_push(rb_peak_window *w, double t, double v)
     w->t[w->n] = t;
     w->v[w->n] = v;
     w->n++;
-    if (w->n < 3 || !(w->v[1] >= w->v[0] && w->v[1] >= w->v[2]))
+    *at = t;
+    double tr, vr;
+    if (w->n < 3 || !(w->v[1] >= w->v[0] && w->v[1] >= w->v[2])) {
+        if (w->n < 2)
+            return v;
+        int k = w->n - 2;
+        double vk = w->v[k];
+        /* a window's first interval, after a transition, falling; or a
+         * step's last, rising */
+        if (!((w->n == 2 && v < vk) || (v > vk && t == sv->span.t1)))
+            return v;
+        double hi = v > vk ? v : vk, reach = v > vk ? v - vk : vk - v;
+        if (hi + 0.5 * reach > best && (vr = refine(sv, q, w->t + k, w->v + k, 2, &tr)) > v) {
+            *at = tr;
+            return vr;
+        }
         return v;
-    /* a flat window (the floor's reaction on the floor) has no vertex:
-     * what the slopes below would give, without their three divisions */
-    if (w->v[0] == w->v[1] && w->v[1] == w->v[2])
-        return fmax(v, w->v[1]);
+    }
+    double up = w->v[1] - w->v[0], down = w->v[1] - w->v[2], reach = up > down ? up : down;
+    if (!(reach > 0) || !(w->v[1] + 0.5 * reach > best))
+        return w->v[1];
+    if ((vr = refine(sv, q, w->t, w->v, 3, &tr)) > -HUGE_VAL) {
+        *at = vr > v ? tr : t;
+        return fmax(v, vr);
+    }
     double h0 = w->t[1] - w->t[0], h1 = w->t[2] - w->t[1];
     if (!(h0 > 0 && h1 > 0))
         return v;
@@ -87,47 +209,83 @@ static void note_liftoff(rb_solver *sv, double t, double v)
 void rb_track_reset(rb_solver *sv)
 {
     sv->win_shear.n = sv->win_friction.n = sv->win_bolt.n = sv->win_vertical.n = 0;
+    sv->win_anchor.n = 0;
     sv->fric_have = 0;
+}
+
+static double floor_excess_at(const void *ctx, double t)
+{
+    rb_solver *sv = (rb_solver *)ctx;
+    sample s;
+    return span_sample(sv, t, &s) ? s.floor_v - RB_FRICTION_FLOOR * sv->sys.d.W : (double)NAN;
 }
 
 /* The friction demand |H| / V where V > floor. Near the floor it is large
  * and steep, so its largest value is often where V crosses the floor: that
- * point is found between two points (both linear there), or the largest
- * value would be whichever point happened to fall just past the crossing. */
-static void note_friction(rb_solver *sv, double t, double H, double v, double floor)
+ * point is found between two points (on the step's dense output where the
+ * demand there could pass the running one, else both linear), or the
+ * largest value would be whichever point happened to fall just past the
+ * crossing. */
+static void note_friction(rb_solver *sv, double t, const sample *s)
 {
     rb_result *r = sv->res;
+    double floor = RB_FRICTION_FLOOR * sv->sys.d.W, H = s->H, v = s->floor_v;
     if (sv->fric_have && t > sv->fric_t && (sv->fric_v > floor) != (v > floor)) {
         double f = (floor - sv->fric_v) / (v - sv->fric_v);
         double h = fabs(sv->fric_h + f * (H - sv->fric_h));
+        const rb_span *sp = &sv->span;
+        if ((h + fabs(H - sv->fric_h)) / floor > r->max_friction_demand
+            && sv->fric_t >= sp->t0 && t <= sp->t1 && (sp->st || sp->lazy > 0)) {
+            double tc = rb_root_illinois(floor_excess_at, sv, sv->fric_t, t,
+                                         sv->fric_v - floor, v - floor, 1e-14);
+            sample c;
+            if (span_sample(sv, tc, &c))
+                h = fabs(c.H);
+        }
         r->max_friction_demand = fmax(r->max_friction_demand, h / floor);
     }
     sv->fric_have = 1;
     sv->fric_t = t;
     sv->fric_h = H;
     sv->fric_v = v;
+    double at;
     if (v > floor)
-        r->max_friction_demand = fmax(r->max_friction_demand,
-                                      peak_push(&sv->win_friction, t, fabs(H) / v));
+        r->max_friction_demand
+            = fmax(r->max_friction_demand,
+                   peak_push(sv, &sv->win_friction, Q_FRICTION, t, fabs(H) / v,
+                             r->max_friction_demand, &at));
     else
         sv->win_friction.n = 0;
 }
 
+static void anchor_record(rb_result *r, double t, double u, int which, const sample *s)
+{
+    r->anchor_max_ratio = u;
+    r->anchor_max_s = t;
+    r->anchor_tension_n = s->tension;
+    r->anchor_shear_n = fabs(s->H);
+    r->anchor_clause = which;
+}
+
 /* The anchorage's demand: tension and shear at the same instant, in the
- * interaction of 17.8, not the largest of each taken apart. */
-static void note_anchor(rb_solver *sv, double t, double tension, double shear)
+ * interaction of 17.8, not the largest of each taken apart; a peak between
+ * points is kept only where it was located, so that its components are
+ * those of one instant. */
+static void note_anchor(rb_solver *sv, double t, const sample *s)
 {
     rb_result *r = sv->res;
     int which;
-    double u = rb_aci17_interaction(tension, sv->opts.anchor_phi_nn_n, shear,
-                                    sv->opts.anchor_phi_vn_n, &which);
+    double u = anchor_ratio(sv, s, &which), at;
     r->anchor_checked = 1;
-    if (u > r->anchor_max_ratio) {
-        r->anchor_max_ratio = u;
-        r->anchor_max_s = t;
-        r->anchor_tension_n = tension;
-        r->anchor_shear_n = shear;
-        r->anchor_clause = which;
+    double best = r->anchor_max_ratio;
+    if (u > best)
+        anchor_record(r, t, u, which, s);
+    double ur = peak_push(sv, &sv->win_anchor, Q_ANCHOR, t, u, best, &at);
+    sample c;
+    if (ur > r->anchor_max_ratio && at != t && span_sample(sv, at, &c)) {
+        double uc = anchor_ratio(sv, &c, &which);
+        if (uc > r->anchor_max_ratio)
+            anchor_record(r, at, uc, which, &c);
     }
 }
 
@@ -135,32 +293,37 @@ void rb_track_aux(rb_solver *sv, double t, const double *y, const rb_aux *a)
 {
     const rb_sys *S = &sv->sys;
     rb_result *r = sv->res;
-    double H, V;
+    sample s;
+    double at;
+    sv->track_have = 1;
+    sv->track_t = t;
+    sv->track_x = a->x;
     note_displacements(sv, y);
-    if (sv->disc.side != 0 && a->bolt_force > 0) {
+    sample_of(sv, y, a, &s);
+    if (s.bolt > 0) {
         int row = rb_row_of_side(sv->disc.side);
-        r->max_bolt_force_n[row] = fmax(r->max_bolt_force_n[row],
-                                        peak_push(&sv->win_bolt, t, a->bolt_force));
+        r->max_bolt_force_n[row]
+            = fmax(r->max_bolt_force_n[row], peak_push(sv, &sv->win_bolt, Q_BOLT, t, s.bolt,
+                                                       r->max_bolt_force_n[row], &at));
     }
-    rb_dyn_reactions(S, &sv->disc, y, a, &H, &V);
     if (sv->opts.check_reactions) {
         double Hp, Vp;
         rb_dyn_reactions_points(S, &sv->disc, y, a, &Hp, &Vp);
         r->reaction_mismatch_n = fmax(r->reaction_mismatch_n,
-                                      fmax(fabs(Hp - H), fabs(Vp - V)));
+                                      fmax(fabs(Hp - s.H), fabs(Vp - s.V)));
     }
-    r->max_shear_total_n = fmax(r->max_shear_total_n, peak_push(&sv->win_shear, t, fabs(H)));
-    /* V is what floor and bolt give together; the floor presses on the
-     * plate with that plus the tension of a loaded bolt, which pulls the
-     * plate onto it, and friction works with the floor's share alone. */
-    double floor_v = V + (a->bolt_force > 0 ? a->bolt_force : 0);
+    r->max_shear_total_n = fmax(r->max_shear_total_n,
+                                peak_push(sv, &sv->win_shear, Q_SHEAR, t, fabs(s.H),
+                                          r->max_shear_total_n, &at));
     /* a least value is the peak of its negative */
-    r->min_vertical_reaction_n = fmin(r->min_vertical_reaction_n,
-                                      -peak_push(&sv->win_vertical, t, -floor_v));
-    note_liftoff(sv, t, floor_v);
-    note_friction(sv, t, H, floor_v, RB_FRICTION_FLOOR * S->d.W);
+    r->min_vertical_reaction_n
+        = fmin(r->min_vertical_reaction_n,
+               -peak_push(sv, &sv->win_vertical, Q_VERTICAL, t, -s.floor_v,
+                          -r->min_vertical_reaction_n, &at));
+    note_liftoff(sv, t, s.floor_v);
+    note_friction(sv, t, &s);
     if (sv->opts.anchor_phi_nn_n > 0 && sv->opts.anchor_phi_vn_n > 0)
-        note_anchor(sv, t, a->bolt_force > 0 ? a->bolt_force : 0, fabs(H));
+        note_anchor(sv, t, &s);
 }
 
 void rb_track_point(rb_solver *sv, double t, const double *y)
@@ -253,95 +416,4 @@ void rb_track_interval(rb_solver *sv, const rb_rk_step *st, double ta, double tb
             rb_track_point(sv, t1, cur);
         memcpy(prev, cur, sizeof prev);
     }
-}
-
-static rb_status history_grow(rb_history *h)
-{
-    size_t cap = h->cap ? 2 * h->cap : 1024;
-    double **cols[] = {&h->t, &h->accel, &h->theta, &h->u, &h->bolt_force_left,
-                       &h->bolt_force_right, &h->shear_elastic, &h->shear_total,
-                       &h->energy_left, &h->energy_right, &h->kinetic, &h->potential,
-                       &h->strain};
-    for (size_t i = 0; i < sizeof cols / sizeof cols[0]; i++) {
-        double *p = realloc(*cols[i], cap * sizeof **cols[i]);
-        if (!p)
-            return RB_ERR_NOMEM;
-        *cols[i] = p;
-    }
-    int *s = realloc(h->stage, cap * sizeof *s);
-    if (!s)
-        return RB_ERR_NOMEM;
-    h->stage = s;
-    h->cap = cap;
-    return RB_OK;
-}
-
-rb_status rb_history_push(rb_solver *sv, double t, const double *y)
-{
-    rb_history *h = sv->res->history;
-    const rb_sys *S = &sv->sys;
-    rb_aux a;
-    double H, V;
-    if (!h)
-        return RB_OK;
-    if (h->n == h->cap && history_grow(h) != RB_OK)
-        return RB_ERR_NOMEM;
-    rb_dyn_rhs(S, &sv->disc, t, y, NULL, &a);
-    rb_dyn_reactions(S, &sv->disc, y, &a, &H, &V);
-    size_t i = h->n++;
-    int row = sv->disc.side ? rb_row_of_side(sv->disc.side) : -1;
-    h->t[i] = t;
-    h->accel[i] = a.x;
-    h->theta[i] = y[RB_Y_TH];
-    h->u[i] = y[RB_Y_U];
-    h->bolt_force_left[i] = row == RB_LEFT ? a.bolt_force : 0;
-    h->bolt_force_right[i] = row == RB_RIGHT ? a.bolt_force : 0;
-    h->shear_elastic[i] = S->d.Nstar * S->d.omega * S->d.omega * y[RB_Y_U];
-    h->shear_total[i] = H;
-    h->energy_left[i] = rb_absorbed_now(sv, RB_LEFT);
-    h->energy_right[i] = rb_absorbed_now(sv, RB_RIGHT);
-    h->kinetic[i] = rb_dyn_kinetic(S, &sv->disc, y);
-    h->potential[i] = rb_dyn_potential(S, &sv->disc, y);
-    h->strain[i] = rb_dyn_strain(S, &sv->disc, y);
-    h->stage[i] = sv->disc.stage;
-    return RB_OK;
-}
-
-/* The time of the next history row: k dt rather than a running sum, so
- * long runs do not drift. */
-static double history_next(const rb_solver *sv)
-{
-    return (double)sv->hist_k * sv->opts.history_dt_s;
-}
-
-int rb_history_due(const rb_solver *sv, double tb)
-{
-    double next = history_next(sv);
-    return sv->res->history && next <= tb && next <= sv->t_end;
-}
-
-rb_status rb_history_sample(rb_solver *sv, const rb_rk_step *st, double ta, double tb)
-{
-    double y[RB_NY];
-    while (rb_history_due(sv, tb)) {
-        double next = history_next(sv);
-        rb_rk_dense_eval(st, next < ta ? ta : next, y);
-        if (rb_history_push(sv, next, y) != RB_OK)
-            return RB_ERR_NOMEM;
-        sv->hist_k++;
-    }
-    return RB_OK;
-}
-
-void rb_history_free(rb_history *h)
-{
-    if (!h)
-        return;
-    free(h->t); free(h->accel); free(h->theta); free(h->u);
-    free(h->bolt_force_left); free(h->bolt_force_right);
-    free(h->shear_elastic); free(h->shear_total);
-    free(h->energy_left); free(h->energy_right);
-    free(h->kinetic); free(h->potential); free(h->strain);
-    free(h->stage);
-    free(h);
 }

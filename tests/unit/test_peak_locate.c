@@ -1,0 +1,180 @@
+/* Peaks located between the check points of a step (docs/solver.md,
+ * "Sampled quantities"): the total shear, a row's force, the friction
+ * demand, the least floor reaction and the anchorage's interaction.
+ *
+ * - The search itself (rb_max_brent) on functions whose peak is known: a
+ *   cosine bracketed by three points an eighth of its period apart, a
+ *   peak inside an interval known only at its ends, a monotone function
+ *   (no value above its larger end), and the cost of a seeded search.
+ * - The solver's peaks against a time history of the same run read every
+ *   20 us: the peak is never below a row of the history (the run passes
+ *   through it), and never above the largest row by more than the
+ *   history's own spacing allows (3e-6 relative for the fastest coupled
+ *   mode here; one row's change where an elastic row's fast spring
+ *   mode is cut off by a transition). Before the peaks were located they were read at the check
+ *   points, and the parabola through three of them, which missed peaks
+ *   by up to 1e-3 and overshot kinks at samples by as much. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include "harness.h"
+#include "elcentro_floor.h"
+#include "rockbolt/solve.h"
+#include "../../src/core/root.h"
+
+static int evaluations;
+
+static double cosine(const void *ctx, double t)
+{
+    double peak_at = *(const double *)ctx;
+    evaluations++;
+    return cos(2 * M_PI * (t - peak_at));
+}
+
+static double hump(const void *ctx, double t)
+{
+    (void)ctx;
+    evaluations++;
+    return t * (1 - t) * (1 + t);
+}
+
+static double rising(const void *ctx, double t)
+{
+    (void)ctx;
+    evaluations++;
+    return exp(t);
+}
+
+static void search(void)
+{
+    /* three points an eighth of the period apart, the peak anywhere
+     * between the outer two */
+    for (int i = 0; i < 9; i++) {
+        double peak_at = 0.1 + 0.025 * i, t[3] = {0, 0.125, 0.25}, v[3], at;
+        int best = 0;
+        for (int k = 0; k < 3; k++) {
+            v[k] = cosine(&peak_at, t[k]);
+            best = v[k] > v[best] ? k : best;
+        }
+        if (best == 0 || best == 2)
+            continue;
+        evaluations = 0;
+        double got = rb_max_brent(cosine, &peak_at, t, v, 3, 3e-5 * 0.25, &at);
+        CHECK_NEAR(got, 1.0, 1e-9);
+        CHECK_NEAR(at, peak_at, 1e-4);
+        /* seeded with the three points, a few parabolic steps */
+        CHECK(evaluations <= 12);
+    }
+    /* known only at the ends: x (1 - x) (1 + x) peaks at 1 / sqrt(3) */
+    double t[2] = {0, 1}, v[2] = {hump(NULL, 0), hump(NULL, 1)}, at;
+    double want = 1 / sqrt(3.0);
+    CHECK_NEAR(rb_max_brent(hump, NULL, t, v, 2, 3e-5, &at), want * (1 - want * want), 1e-9);
+    CHECK_NEAR(at, want, 1e-4);
+    /* a monotone function has nothing above its larger end */
+    double r[2] = {rising(NULL, 0), rising(NULL, 1)};
+    CHECK(rb_max_brent(rising, NULL, t, r, 2, 3e-5, &at) <= r[1]);
+    CHECK(at > 0.999);
+}
+
+static unsigned long long rng_state = 20261124;
+static double uniform(double lo, double hi)
+{
+    rng_state = rng_state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return lo + (hi - lo) * (double)(rng_state >> 11) / 9007199254740992.0;
+}
+
+/* The largest |row| of a history column, and the largest change of |row|
+ * from one row to the next (*step). */
+static double history_max(const double *col, size_t n, double *step)
+{
+    double m = 0;
+    *step = 0;
+    for (size_t i = 0; i < n; i++) {
+        m = fmax(m, fabs(col[i]));
+        if (i)
+            *step = fmax(*step, fabs(fabs(col[i]) - fabs(col[i - 1])));
+    }
+    return m;
+}
+
+/* worst[0]: how far below the history a peak came out; worst[1]: above,
+ * beyond what the history's spacing allows: 1e-5 relative for the frame's
+ * modes, and for a row held by its elastic spring (a mode of a few
+ * hundred hertz, whose force a transition cuts off at its steepest) one
+ * row's change. */
+static void compare(const char *what, double peak, const double *col, size_t n, int spring,
+                    double *worst)
+{
+    double step, seen = history_max(col, n, &step);
+    if (!(seen > 0))
+        return;
+    double below = (seen - peak) / seen, above = (peak - seen) / seen;
+    double allowed = spring ? fmax(1e-5, step / seen) : 1e-5;
+    if (below > 1e-9 || above > allowed)
+        printf("  %s: located %.12g, history %.12g\n", what, peak, seen);
+    worst[0] = fmax(worst[0], below);
+    worst[1] = fmax(worst[1], above / allowed * 1e-5);
+}
+
+static void against_history(const rb_series *floor)
+{
+    double worst[2] = {-HUGE_VAL, -HUGE_VAL};
+    int runs = 0, rocked = 0, held = 0;
+    for (int i = 0; i < 8; i++) {
+        rb_model m;
+        rb_derived d;
+        rb_motion mo;
+        rb_solve_opts o;
+        rb_result r;
+        rb_diag diag;
+        rb_model_reference(&m);
+        m.mass_kg = uniform(200, 900);
+        m.freq_hz = uniform(3, 12);
+        m.gap_m *= uniform(0.2, 2);
+        m.bolt_model = i % 2 ? RB_BOLT_ELASTIC_PLASTIC : RB_BOLT_RIGID_PLASTIC;
+        rb_model_derive(&m, &d, NULL);
+        rb_motion_init(&mo);
+        mo.kind = RB_MOTION_SAMPLED;
+        mo.series = floor;
+        mo.scale = uniform(0.02, 0.4) * d.a_star_mps2 / rb_series_peak(floor);
+        mo.duration_s = 5.0;
+        rb_solve_opts_init(&o);
+        o.stretch_past_failure = 1;
+        o.history_dt_s = 2e-5;
+        if (rb_solve_run(&m, &mo, &o, &r, &diag) != RB_OK || !r.history) {
+            printf("run %d failed: %s\n", i, diag.msg);
+            CHECK(0);
+            continue;
+        }
+        const rb_history *h = r.history;
+        runs++;
+        rocked += r.uplifts > 0;
+        held += r.max_bolt_force_n[0] > 0 || r.max_bolt_force_n[1] > 0;
+        int spring = m.bolt_model == RB_BOLT_ELASTIC_PLASTIC;
+        compare("total shear", r.max_shear_total_n, h->shear_total, h->n, spring, worst);
+        compare("left row", r.max_bolt_force_n[RB_LEFT], h->bolt_force_left, h->n, spring,
+                worst);
+        compare("right row", r.max_bolt_force_n[RB_RIGHT], h->bolt_force_right, h->n, spring,
+                worst);
+        rb_result_free(&r);
+    }
+    printf("%d runs (%d rocking, %d with a row held): peaks at most %.1e below a history "
+           "every 20 us, and at most %.2f of what its spacing allows above it\n", runs, rocked,
+           held, worst[0], worst[1] / 1e-5);
+    CHECK(runs == 8 && rocked >= 4 && held >= 2);
+    CHECK(worst[0] <= 1e-9);
+    CHECK(worst[1] <= 1e-5);
+}
+
+int main(void)
+{
+    rb_series floor;
+    search();
+    if (elcentro_floor(&floor) != 0) {
+        fprintf(stderr, "cannot read the El Centro record\n");
+        return 1;
+    }
+    against_history(&floor);
+    rb_series_free(&floor);
+    TEST_MAIN_END();
+}
