@@ -63,7 +63,7 @@ double rb_max_brent(double (*f)(const void *ctx, double x), const void *ctx,
         w = tt;
         gw = gt;
     }
-    double d = 0, e = b - a;
+    double d = b - a, e = b - a;
     for (int i = 0; i < 60; i++) {
         double m = 0.5 * (a + b), tol1 = 1e-15 * fabs(x) + tol, tol2 = 2 * tol1;
         if (fabs(x - m) <= tol2 - 0.5 * (b - a))
@@ -81,11 +81,17 @@ double rb_max_brent(double (*f)(const void *ctx, double x), const void *ctx,
             r = e;
             e = d;
         }
+        int settled = 0;
         if (fabs(p) < fabs(0.5 * q * r) && p > q * (a - x) && p < q * (b - x)) {
             d = p / q;
             double u = x + d;
             if (u - a < tol2 || b - u < tol2)
                 d = x < m ? tol1 : -tol1;
+            /* a parabolic step within the tolerance: the parabolas converge
+             * superlinearly, so the peak is this close; shrinking the
+             * bracket to it as well would take tol-sized steps on both
+             * sides */
+            settled = fabs(d) <= tol1;
         } else {
             e = (x < m ? b : a) - x;
             d = golden * e;
@@ -112,6 +118,8 @@ double rb_max_brent(double (*f)(const void *ctx, double x), const void *ctx,
                 v = u; gv = gu;
             }
         }
+        if (settled)
+            break;
     }
     *at = x;
     return -gx;

@@ -76,6 +76,27 @@ static int span_sample(rb_solver *sv, double t, sample *s)
     return 1;
 }
 
+/* The vertex (tv, vv) of the parabola through three points, where it is a
+ * maximum between the outer two; 0 where it is not. */
+static int parabola_vertex(const double *t, const double *v, double *tv, double *vv)
+{
+    double h0 = t[1] - t[0], h1 = t[2] - t[1];
+    if (!(h0 > 0 && h1 > 0))
+        return 0;
+    double d0 = (v[1] - v[0]) / h0, d1 = (v[2] - v[1]) / h1;
+    double curv = (d1 - d0) / (h0 + h1); /* half the second derivative */
+    if (!(curv < 0))
+        return 0;
+    /* slope at t1 from the parabola, then the vertex */
+    double slope = d0 + curv * h0;
+    double dt = -slope / (2 * curv);
+    if (!(dt >= -h0 && dt <= h1))
+        return 0;
+    *tv = t[1] + dt;
+    *vv = v[1] + slope * dt + curv * dt * dt;
+    return 1;
+}
+
 typedef struct {
     rb_solver *sv;
     int q;
@@ -97,7 +118,7 @@ static double refine(rb_solver *sv, int q, const double *t, const double *v, int
                      double *at)
 {
     const rb_span *sp = &sv->span;
-    double ts[3], vs[3];
+    double ts[4], vs[4];
     int m = 0;
     /* a window reaches back into the last step at most by its first point,
      * whose part of the peak that step's rising end took */
@@ -109,6 +130,42 @@ static double refine(rb_solver *sv, int q, const double *t, const double *v, int
     if (m < 2 || !(ts[m - 1] > ts[0]) || (!sp->st && sp->lazy <= 0))
         return -HUGE_VAL;
     refine_ctx c = {sv, q};
+    if (m == 2) {
+        /* an interval known at its ends only, where the quantity is most
+         * often monotone: its middle, and where the parabola through the
+         * three has its vertex above both ends, the value there, find
+         * whether a peak lies inside, and bracket it */
+        double tm = 0.5 * (ts[0] + ts[1]), vm = refine_at(&c, tm), hi = fmax(vs[0], vs[1]);
+        ts[2] = ts[1];
+        vs[2] = vs[1];
+        ts[1] = tm;
+        vs[1] = vm;
+        m = 3;
+        if (!(vm > hi)) {
+            double tv, vv;
+            if (!parabola_vertex(ts, vs, &tv, &vv) || !(vv > hi) || !(tv > ts[0] && tv < ts[2])
+                || tv == tm) {
+                *at = tm;
+                return vm;
+            }
+            double fv = refine_at(&c, tv);
+            if (!(fv > hi)) {
+                *at = fv > vm ? tv : tm;
+                return fmax(fv, vm);
+            }
+            /* the vertex above both ends and the middle: it and its two
+             * neighbours bracket the peak */
+            int k = tv < tm ? 1 : 2;
+            for (int i = 3; i > k; i--) {
+                ts[i] = ts[i - 1];
+                vs[i] = vs[i - 1];
+            }
+            ts[k] = tv;
+            vs[k] = fv;
+            return rb_max_brent(refine_at, &c, ts + k - 1, vs + k - 1, 3,
+                                3e-5 * (ts[3] - ts[0]), at);
+        }
+    }
     return rb_max_brent(refine_at, &c, ts, vs, m, 3e-5 * (ts[m - 1] - ts[0]), at);
 }
 
@@ -162,19 +219,8 @@ static double peak_push(rb_solver *sv, rb_peak_window *w, int q, double t, doubl
         *at = vr > v ? tr : t;
         return fmax(v, vr);
     }
-    double h0 = w->t[1] - w->t[0], h1 = w->t[2] - w->t[1];
-    if (!(h0 > 0 && h1 > 0))
-        return v;
-    double d0 = (w->v[1] - w->v[0]) / h0, d1 = (w->v[2] - w->v[1]) / h1;
-    double curv = (d1 - d0) / (h0 + h1); /* half the second derivative */
-    if (!(curv < 0))
-        return fmax(v, w->v[1]);
-    /* slope at t1 from the parabola, then the vertex */
-    double slope = d0 + curv * h0;
-    double dt = -slope / (2 * curv);
-    if (!(dt >= -h0 && dt <= h1))
-        return fmax(v, w->v[1]);
-    return fmax(v, w->v[1] + slope * dt + curv * dt * dt);
+    double tv, vv;
+    return parabola_vertex(w->t, w->v, &tv, &vv) ? fmax(v, vv) : fmax(v, w->v[1]);
 }
 
 /* Time with the floor's reaction at or below zero, linear between the
