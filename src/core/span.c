@@ -1,5 +1,6 @@
 /* The dense output of the step whose points are being tracked (solver.h,
  * rb_span): what a peak between two of its points is located on. */
+#include <math.h>
 #include <string.h>
 #include "solver.h"
 
@@ -22,7 +23,10 @@ void rb_track_span(rb_solver *sv, const rb_rk_step *st, double t0, double t1)
         return;
     double y[RB_NY] = {0};
     rb_aux a;
-    if (rb_span_state(sv, t0, y, &a) && a.x != sv->track_x) {
+    /* a step within the pulse starts where the last one ended, to
+     * rounding */
+    if (rb_span_state(sv, t0, y, &a)
+        && fabs(a.x - sv->track_x) > 1e-9 * fmax(fabs(a.x), fabs(sv->track_x))) {
         rb_track_reset(sv);
         rb_track_aux(sv, t0, y, &a);
     }
