@@ -142,6 +142,17 @@ static double refine(rb_solver *sv, int q, const double *t, const double *v, int
         vs[1] = vm;
         m = 3;
         if (!(vm > hi)) {
+            /* whether the quantity moves up from the higher end into the
+             * interval: a peak just inside it (a step's start a few
+             * microseconds short of it) is seen by no other point */
+            int left = vs[0] >= vs[2];
+            double tp = left ? ts[0] + 1e-8 * (ts[2] - ts[0]) : ts[2] - 1e-8 * (ts[2] - ts[0]);
+            double vp = refine_at(&c, tp);
+            if (vp > hi) {
+                double tb[3] = {left ? ts[0] : tm, tp, left ? tm : ts[2]};
+                double vb[3] = {left ? vs[0] : vm, vp, left ? vm : vs[2]};
+                return rb_max_brent(refine_at, &c, tb, vb, 3, 3e-5 * (ts[2] - ts[0]), at);
+            }
             double tv, vv;
             if (!parabola_vertex(ts, vs, &tv, &vv) || !(vv > hi) || !(tv > ts[0] && tv < ts[2])
                 || tv == tm) {
