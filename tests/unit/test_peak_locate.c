@@ -117,6 +117,23 @@ static void compare(const char *what, double peak, const double *col, size_t n, 
     worst[1] = fmax(worst[1], above / allowed * 1e-5);
 }
 
+/* A run with rows stretching past failure and a time history every
+ * 20 us; 0, having said why, when it fails. */
+static int run_with_history(const rb_model *m, const rb_motion *mo, int i, rb_result *r)
+{
+    rb_solve_opts o;
+    rb_diag diag;
+    rb_solve_opts_init(&o);
+    o.stretch_past_failure = 1;
+    o.history_dt_s = 2e-5;
+    if (rb_solve_run(m, mo, &o, r, &diag) != RB_OK || !r->history) {
+        printf("run %d failed: %s\n", i, diag.msg);
+        CHECK(0);
+        return 0;
+    }
+    return 1;
+}
+
 static void against_history(const rb_series *floor)
 {
     double worst[2] = {-HUGE_VAL, -HUGE_VAL};
@@ -125,9 +142,7 @@ static void against_history(const rb_series *floor)
         rb_model m;
         rb_derived d;
         rb_motion mo;
-        rb_solve_opts o;
         rb_result r;
-        rb_diag diag;
         rb_model_reference(&m);
         m.mass_kg = uniform(200, 900);
         m.freq_hz = uniform(3, 12);
@@ -139,14 +154,8 @@ static void against_history(const rb_series *floor)
         mo.series = floor;
         mo.scale = uniform(0.02, 0.4) * d.a_star_mps2 / rb_series_peak(floor);
         mo.duration_s = 5.0;
-        rb_solve_opts_init(&o);
-        o.stretch_past_failure = 1;
-        o.history_dt_s = 2e-5;
-        if (rb_solve_run(&m, &mo, &o, &r, &diag) != RB_OK || !r.history) {
-            printf("run %d failed: %s\n", i, diag.msg);
-            CHECK(0);
+        if (!run_with_history(&m, &mo, i, &r))
             continue;
-        }
         const rb_history *h = r.history;
         runs++;
         rocked += r.uplifts > 0;
@@ -189,9 +198,7 @@ static void closed_forms(void)
         rb_model m;
         rb_derived d;
         rb_motion mo;
-        rb_solve_opts o;
         rb_result r;
-        rb_diag diag;
         rb_model_reference(&m);
         m.mass_kg = i ? uniform(200, 900) : 642.76313887867605;
         m.freq_hz = i ? uniform(3, 12) : 10.059388167596264;
@@ -211,14 +218,8 @@ static void closed_forms(void)
             mo.amplitude_mps2 = (i ? uniform(0.5, 3.0) : 0.93206771974626546) * d.a_star_mps2;
         }
         mo.duration_s = 3.0;
-        rb_solve_opts_init(&o);
-        o.stretch_past_failure = 1;
-        o.history_dt_s = 2e-5;
-        if (rb_solve_run(&m, &mo, &o, &r, &diag) != RB_OK || !r.history) {
-            printf("run %d failed: %s\n", i, diag.msg);
-            CHECK(0);
+        if (!run_with_history(&m, &mo, i, &r))
             continue;
-        }
         const rb_history *h = r.history;
         double peak[3] = {r.max_shear_total_n, r.max_bolt_force_n[RB_LEFT],
                           r.max_bolt_force_n[RB_RIGHT]};
