@@ -234,6 +234,35 @@ static double peak_push(rb_solver *sv, rb_peak_window *w, int q, double t, doubl
     return parabola_vertex(w->t, w->v, &tv, &vv) ? fmax(v, vv) : fmax(v, w->v[1]);
 }
 
+/* The floor's share of the vertical reaction less a level, on the span's
+ * dense output. */
+typedef struct {
+    rb_solver *sv;
+    double level;
+} level_ctx;
+
+static double floor_excess_at(const void *ctx, double t)
+{
+    const level_ctx *c = ctx;
+    sample s;
+    return span_sample(c->sv, t, &s) ? s.floor_v - c->level : (double)NAN;
+}
+
+/* Where the floor's reaction passes the level between the last point
+ * (t0, v0) and (t, v), on the span's dense output; the straight line
+ * between them where the span has none. */
+static double floor_crossing(rb_solver *sv, double t0, double v0, double t, double v,
+                             double level)
+{
+    const rb_span *sp = &sv->span;
+    if (t0 >= sp->t0 && t <= sp->t1 && (sp->st || sp->lazy > 0)
+        && (v0 - level) * (v - level) < 0) {
+        level_ctx c = {sv, level};
+        return rb_root_illinois(floor_excess_at, &c, t0, t, v0 - level, v - level, 1e-14);
+    }
+    return t0 + (t - t0) * (v0 - level) / (v0 - v);
+}
+
 /* Time with the floor's reaction at or below zero, linear between the
  * points visited; a point at the time of the one before (the two sides of
  * a transition) only replaces it. */
@@ -251,8 +280,9 @@ static void note_liftoff(rb_solver *sv, double t, double v)
                 r->liftoff_time_s += tc - t0;
             else {
                 r->liftoff_time_s += t - tc;
+                /* the first is located: one root a run */
                 if (r->liftoff_first_s < 0)
-                    r->liftoff_first_s = tc;
+                    r->liftoff_first_s = floor_crossing(sv, t0, v0, t, v, 0);
             }
         }
     }
@@ -268,13 +298,6 @@ void rb_track_reset(rb_solver *sv)
     sv->win_shear.n = sv->win_friction.n = sv->win_bolt.n = sv->win_vertical.n = 0;
     sv->win_anchor.n = 0;
     sv->fric_have = 0;
-}
-
-static double floor_excess_at(const void *ctx, double t)
-{
-    rb_solver *sv = (rb_solver *)ctx;
-    sample s;
-    return span_sample(sv, t, &s) ? s.floor_v - RB_FRICTION_FLOOR * sv->sys.d.W : (double)NAN;
 }
 
 /* The friction demand |H| / V where V > floor. Near the floor it is large
@@ -293,8 +316,7 @@ static void note_friction(rb_solver *sv, double t, const sample *s)
         const rb_span *sp = &sv->span;
         if ((h + fabs(H - sv->fric_h)) / floor > r->max_friction_demand
             && sv->fric_t >= sp->t0 && t <= sp->t1 && (sp->st || sp->lazy > 0)) {
-            double tc = rb_root_illinois(floor_excess_at, sv, sv->fric_t, t,
-                                         sv->fric_v - floor, v - floor, 1e-14);
+            double tc = floor_crossing(sv, sv->fric_t, sv->fric_v, t, v, floor);
             sample c;
             if (span_sample(sv, tc, &c))
                 h = fabs(c.H);
