@@ -27,8 +27,8 @@ enum {
     G_COUNT
 };
 
-/* The last three samples of a tracked quantity, for the vertex of the
- * parabola through a sampled peak. */
+/* The last three points of a tracked quantity, which bracket a peak
+ * between them. */
 typedef struct {
     double t[3], v[3];
     int n;
@@ -84,8 +84,9 @@ typedef struct {
     double window_start;        /* work bound: events since window_start */
     long window_events;
     long hist_k;                /* next history row is at hist_k * dt */
-    /* sampled peaks of |shear|, friction demand and bolt force, reset at
-     * every transition (a peak is only interpolated where it is smooth) */
+    /* the last three points of each quantity whose peaks are located
+     * between points (track.c), reset at every transition (a peak is only
+     * searched for where the quantity is smooth) */
     rb_peak_window win_shear, win_friction, win_bolt, win_vertical, win_anchor;
     /* the step whose points are being tracked, where a sampled peak is
      * located between them */

@@ -97,16 +97,18 @@ static int parabola_vertex(const double *t, const double *v, double *tv, double 
     return 1;
 }
 
+/* Quantity q less a level (0 for a peak), on the span's dense output. */
 typedef struct {
     rb_solver *sv;
     int q;
+    double level;
 } refine_ctx;
 
 static double refine_at(const void *ctx, double t)
 {
     const refine_ctx *c = ctx;
     sample s;
-    return span_sample(c->sv, t, &s) ? quantity(c->sv, c->q, &s) : -HUGE_VAL;
+    return span_sample(c->sv, t, &s) ? quantity(c->sv, c->q, &s) - c->level : -HUGE_VAL;
 }
 
 /* The largest value of quantity q between the first and the last of the
@@ -129,7 +131,7 @@ static double refine(rb_solver *sv, int q, const double *t, const double *v, int
         }
     if (m < 2 || !(ts[m - 1] > ts[0]) || (!sp->st && sp->lazy <= 0))
         return -HUGE_VAL;
-    refine_ctx c = {sv, q};
+    refine_ctx c = {sv, q, 0};
     if (m == 2) {
         /* an interval known at its ends only, where the quantity is most
          * often monotone: its middle, and where the parabola through the
@@ -234,20 +236,6 @@ static double peak_push(rb_solver *sv, rb_peak_window *w, int q, double t, doubl
     return parabola_vertex(w->t, w->v, &tv, &vv) ? fmax(v, vv) : fmax(v, w->v[1]);
 }
 
-/* The floor's share of the vertical reaction less a level, on the span's
- * dense output. */
-typedef struct {
-    rb_solver *sv;
-    double level;
-} level_ctx;
-
-static double floor_excess_at(const void *ctx, double t)
-{
-    const level_ctx *c = ctx;
-    sample s;
-    return span_sample(c->sv, t, &s) ? s.floor_v - c->level : (double)NAN;
-}
-
 /* Where the floor's reaction passes the level between the last point
  * (t0, v0) and (t, v), on the span's dense output; the straight line
  * between them where the span has none. */
@@ -257,8 +245,9 @@ static double floor_crossing(rb_solver *sv, double t0, double v0, double t, doub
     const rb_span *sp = &sv->span;
     if (t0 >= sp->t0 && t <= sp->t1 && (sp->st || sp->lazy > 0)
         && (v0 - level) * (v - level) < 0) {
-        level_ctx c = {sv, level};
-        return rb_root_illinois(floor_excess_at, &c, t0, t, v0 - level, v - level, 1e-14);
+        /* the least reaction's quantity is the reaction's negative */
+        refine_ctx c = {sv, Q_VERTICAL, -level};
+        return rb_root_illinois(refine_at, &c, t0, t, level - v0, level - v, 1e-14);
     }
     return t0 + (t - t0) * (v0 - level) / (v0 - v);
 }
