@@ -111,6 +111,54 @@ static double refine_at(const void *ctx, double t)
     return span_sample(c->sv, t, &s) ? quantity(c->sv, c->q, &s) - c->level : -HUGE_VAL;
 }
 
+/* The largest value of c's quantity in [ts[0], ts[1]], an interval known
+ * at its ends only, where the quantity is most often monotone: its
+ * middle, a probe 1e-8 of the interval inside the higher end (a peak a few
+ * microseconds into a step is seen by no other point), and the vertex of
+ * the parabola through the three where that lies above both ends tell
+ * whether a peak lies inside, and bracket it for the search. ts and vs
+ * have room for four points. */
+static double edge_peak(const refine_ctx *c, double *ts, double *vs, double *at)
+{
+    double tm = 0.5 * (ts[0] + ts[1]), vm = refine_at(c, tm), hi = fmax(vs[0], vs[1]);
+    ts[2] = ts[1];
+    vs[2] = vs[1];
+    ts[1] = tm;
+    vs[1] = vm;
+    double tol = 3e-5 * (ts[2] - ts[0]);
+    if (vm > hi)
+        return rb_max_brent(refine_at, c, ts, vs, 3, tol, at);
+    int left = vs[0] >= vs[2];
+    double tp = left ? ts[0] + 1e-8 * (ts[2] - ts[0]) : ts[2] - 1e-8 * (ts[2] - ts[0]);
+    double vp = refine_at(c, tp);
+    if (vp > hi) {
+        double tb[3] = {left ? ts[0] : tm, tp, left ? tm : ts[2]};
+        double vb[3] = {left ? vs[0] : vm, vp, left ? vm : vs[2]};
+        return rb_max_brent(refine_at, c, tb, vb, 3, tol, at);
+    }
+    double tv, vv;
+    if (!parabola_vertex(ts, vs, &tv, &vv) || !(vv > hi) || !(tv > ts[0] && tv < ts[2])
+        || tv == tm) {
+        *at = tm;
+        return vm;
+    }
+    double fv = refine_at(c, tv);
+    if (!(fv > hi)) {
+        *at = fv > vm ? tv : tm;
+        return fmax(fv, vm);
+    }
+    /* the vertex above both ends and the middle: it and its two
+     * neighbours bracket the peak */
+    int k = tv < tm ? 1 : 2;
+    for (int i = 3; i > k; i--) {
+        ts[i] = ts[i - 1];
+        vs[i] = vs[i - 1];
+    }
+    ts[k] = tv;
+    vs[k] = fv;
+    return rb_max_brent(refine_at, c, ts + k - 1, vs + k - 1, 3, tol, at);
+}
+
 /* The largest value of quantity q between the first and the last of the
  * n points (t, v) on the span's dense output, and where it is; -HUGE_VAL
  * where there is none. A tenth of a per mille of the interval puts the
@@ -132,53 +180,8 @@ static double refine(rb_solver *sv, int q, const double *t, const double *v, int
     if (m < 2 || !(ts[m - 1] > ts[0]) || (!sp->st && sp->lazy <= 0))
         return -HUGE_VAL;
     refine_ctx c = {sv, q, 0};
-    if (m == 2) {
-        /* an interval known at its ends only, where the quantity is most
-         * often monotone: its middle, and where the parabola through the
-         * three has its vertex above both ends, the value there, find
-         * whether a peak lies inside, and bracket it */
-        double tm = 0.5 * (ts[0] + ts[1]), vm = refine_at(&c, tm), hi = fmax(vs[0], vs[1]);
-        ts[2] = ts[1];
-        vs[2] = vs[1];
-        ts[1] = tm;
-        vs[1] = vm;
-        m = 3;
-        if (!(vm > hi)) {
-            /* whether the quantity moves up from the higher end into the
-             * interval: a peak just inside it (a step's start a few
-             * microseconds short of it) is seen by no other point */
-            int left = vs[0] >= vs[2];
-            double tp = left ? ts[0] + 1e-8 * (ts[2] - ts[0]) : ts[2] - 1e-8 * (ts[2] - ts[0]);
-            double vp = refine_at(&c, tp);
-            if (vp > hi) {
-                double tb[3] = {left ? ts[0] : tm, tp, left ? tm : ts[2]};
-                double vb[3] = {left ? vs[0] : vm, vp, left ? vm : vs[2]};
-                return rb_max_brent(refine_at, &c, tb, vb, 3, 3e-5 * (ts[2] - ts[0]), at);
-            }
-            double tv, vv;
-            if (!parabola_vertex(ts, vs, &tv, &vv) || !(vv > hi) || !(tv > ts[0] && tv < ts[2])
-                || tv == tm) {
-                *at = tm;
-                return vm;
-            }
-            double fv = refine_at(&c, tv);
-            if (!(fv > hi)) {
-                *at = fv > vm ? tv : tm;
-                return fmax(fv, vm);
-            }
-            /* the vertex above both ends and the middle: it and its two
-             * neighbours bracket the peak */
-            int k = tv < tm ? 1 : 2;
-            for (int i = 3; i > k; i--) {
-                ts[i] = ts[i - 1];
-                vs[i] = vs[i - 1];
-            }
-            ts[k] = tv;
-            vs[k] = fv;
-            return rb_max_brent(refine_at, &c, ts + k - 1, vs + k - 1, 3,
-                                3e-5 * (ts[3] - ts[0]), at);
-        }
-    }
+    if (m == 2)
+        return edge_peak(&c, ts, vs, at);
     return rb_max_brent(refine_at, &c, ts, vs, m, 3e-5 * (ts[m - 1] - ts[0]), at);
 }
 
@@ -187,9 +190,10 @@ static double refine(rb_solver *sv, int q, const double *t, const double *v, int
  * points are check points of a step (a few per period of the fastest
  * mode) and step ends; between them a peak that could pass the running
  * one (best) is located on the step's dense output: where the middle of
- * the three points is the largest, over the three, and where a step ends
+ * the three points is the largest, over the three; where a step ends
  * rising, over its last interval (the next step's window cannot reach
- * back into it). Between points a third of a period apart a sinusoid
+ * back into it); and where a window's first interval falls from a
+ * transition, over that interval. Between points a third of a period apart a sinusoid
  * exceeds the larger by at most a third of their difference (a fifth at a
  * quarter period; the points are an eighth of the fastest mode's period
  * apart, a quarter of the period of its square), so a peak is located
