@@ -252,4 +252,16 @@ double rb_aci17_ductility_margin(double n_concrete_n, double n_steel_n);
  * least 8 da. */
 bool rb_aci17_stretch_ok(double stretch_m, double da_m);
 
+/* Least f_uta / f_ya of a ductile steel element with threads that do not
+ * run its whole length and are not upset (17.10.5.3(a)): below it the
+ * threads, whose area is the smaller, reach f_uta before the shank
+ * yields, and the stretch length never stretches. */
+#define RB_ACI17_THREADED_FUTA_OVER_FYA 1.3
+
+/* 17.10.5.3(a): whether specified f_uta over f_ya lets an element with
+ * threads along part of its length, not upset, yield over its stretch
+ * length. Elements threaded over their whole length, or on upset ends,
+ * need no such ratio; the caller asks only for the others. */
+bool rb_aci17_threaded_ratio_ok(double futa_pa, double fya_pa);
+
 #endif

@@ -22,6 +22,17 @@ typedef enum {
     RB_ANCHOR_CAST_IN_HEADED = 0   /* headed bolts or studs; post-installed later */
 } rb_anchor_type;
 
+/* How the anchor's threads run (17.10.5.3(a)): along part of its length
+ * with the threads cut or rolled into the shank (a headed bolt or a rod
+ * threaded at its top: the ratio f_uta / f_ya must be at least 1.3), over
+ * its whole length, or on upset ends (no ratio needed; the upset ends are
+ * not part of the stretch length). */
+typedef enum {
+    RB_THREADS_PARTIAL = 0,
+    RB_THREADS_FULL_LENGTH,
+    RB_THREADS_UPSET
+} rb_anchor_threads;
+
 typedef struct {
     /* the slab */
     double fc_pa;          /* f'c */
@@ -37,6 +48,7 @@ typedef struct {
     double hef_m;          /* effective embedment */
     double spacing_m;      /* between the anchors of a row */
     double futa_pa;        /* specified tensile strength */
+    rb_anchor_threads threads; /* default partial */
     double abrg_m2;        /* bearing area of the head; <= 0: a heavy hex head */
     double ase_m2;         /* effective (tensile stress) area A_se of one
                               anchor, for the steel strengths; <= 0: the
@@ -80,7 +92,11 @@ typedef struct {
      * the stretch length against 8 da */
     double ductility_margin;
     bool stretch_ok;
-    bool ductile;          /* both hold */
+    /* f_uta / f_ya, and whether the threads allow it (1.3 or more where
+     * they run along part of the anchor and are not upset) */
+    double futa_over_fya;
+    bool threads_ok;
+    bool ductile;          /* all three hold */
 } rb_anchor_strength;
 
 /* Strengths of the anchorage of model m (bolts_per_row, bolt area (its

@@ -27,6 +27,7 @@ extern const rb_enum_name rb_ac156_edition_names[]; /* rb_ac156_edition */
 extern const rb_enum_name rb_pulse_shape_names[];   /* rb_pulse_shape */
 extern const rb_enum_name rb_record_format_names[]; /* rb_record_format */
 extern const rb_enum_name rb_anchor_type_names[];   /* rb_anchor_type */
+extern const rb_enum_name rb_anchor_threads_names[]; /* rb_anchor_threads */
 extern const rb_enum_name rb_anchor_mode_names[];   /* rb_anchor_mode */
 extern const rb_enum_name rb_aci17_coef_names[];    /* rb_aci17_coef: si, in-lb */
 extern const rb_enum_name rb_limit_state_names[];   /* rb_limit_state (fragility.h) */

@@ -60,6 +60,9 @@ static void read_anchors(rb_cctx *c, rb_ynode *an, int required, int per_row,
     rb_cv_number(c, an, p, "head_bearing_area", 0, RB_DIM_AREA, 0, 0, 1, 1, &in->abrg_m2);
     rb_cv_number(c, an, p, "tensile_area", 0, RB_DIM_AREA, 0, 0, 1, 1, &in->ase_m2);
     flag(c, an, p, "grout_pad", &in->grout_pad);
+    v = rb_cv_get(c, an, p, "threads", 0, "");
+    if (v && rb_cv_enum_table(c, v, "anchorage.threads", rb_anchor_threads_names, 0, &i))
+        in->threads = (rb_anchor_threads)i;
 }
 
 void rb_case_read_concrete(rb_cctx *c, rb_ynode *root, rb_ynode *an, rb_case *cs)
@@ -108,5 +111,9 @@ void rb_case_resolve_concrete(rb_cctx *c, rb_case *cs)
     cs->solve.anchor_phi_nn_n = cs->anchor.phi_nn_n;
     cs->solve.anchor_phi_vn_n = cs->anchor.phi_vn_n;
     cs->criteria.concrete = c->judge_concrete != 0;
-    cs->criteria.anchor_ductile = cs->anchor.ductile || !cs->anchor_in.seismic;
+    if (cs->anchor_in.seismic)
+        cs->criteria.anchor_not_ductile =
+            (cs->anchor.ductility_margin >= 1 ? 0 : RB_NOT_DUCTILE_CONCRETE)
+            | (cs->anchor.stretch_ok ? 0 : RB_NOT_DUCTILE_STRETCH)
+            | (cs->anchor.threads_ok ? 0 : RB_NOT_DUCTILE_THREADS);
 }

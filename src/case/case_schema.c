@@ -35,7 +35,7 @@ static const char *const anchorage_keys[] = {
     "deformable_length", "lever_arm", "edge_distance", "elastic_modulus",
     /* the concrete check's (case_concrete.c) */
     "type", "embedment", "spacing", "ultimate_stress", "head_bearing_area", "grout_pad",
-    "tensile_area",
+    "tensile_area", "threads",
     NULL};
 static const char *const criteria_keys[] = {
     "kind", "usage_limit", "max_shear_over_w", "max_rotation_over_alpha",

@@ -373,3 +373,10 @@ bool rb_aci17_stretch_ok(double stretch_m, double da_m)
     /* 17.10.5.3(a): stretch length of at least 8 da. */
     return stretch_m >= 8.0 * da_m;
 }
+
+bool rb_aci17_threaded_ratio_ok(double futa_pa, double fya_pa)
+{
+    /* "not less than 1.3": 130 ksi over 100 ksi, each converted to Pa,
+     * is 1.3 to within the rounding of the conversions, not exactly */
+    return futa_pa / fya_pa >= RB_ACI17_THREADED_FUTA_OVER_FYA * (1 - 1e-12);
+}

@@ -182,6 +182,9 @@ rb_status rb_anchor_check(const rb_model *m, const rb_anchor_inputs *in,
     out->ductility_margin = rb_aci17_ductility_margin(concrete_n,
                                                       out->mode[RB_ANCHOR_STEEL_N].nominal_n);
     out->stretch_ok = rb_aci17_stretch_ok(m->deformable_length_m, out->da_m);
-    out->ductile = out->ductility_margin >= 1 && out->stretch_ok;
+    out->futa_over_fya = in->futa_pa / m->yield_stress_pa;
+    out->threads_ok = in->threads != RB_THREADS_PARTIAL
+                      || rb_aci17_threaded_ratio_ok(in->futa_pa, m->yield_stress_pa);
+    out->ductile = out->ductility_margin >= 1 && out->stretch_ok && out->threads_ok;
     return RB_OK;
 }

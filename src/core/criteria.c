@@ -17,7 +17,6 @@ void rb_criteria_init(rb_criteria *c)
     c->usage_limit = 1.0;
     c->max_shear_over_w = 0;
     c->max_theta_over_alpha = 0;
-    c->anchor_ductile = 1;
     c->validity_mask = (1u << RB_N_CHECKS) - 1;
     c->friction_coefficient = 0;
     c->validity = RB_VALIDITY_WARN;
@@ -152,6 +151,27 @@ static const char *beside(double v, double limit, char *buf, size_t n)
 #define SAY(v, pass_, ...) \
     ((void)snprintf((v)->reason, sizeof (v)->reason, __VA_ARGS__), (v)->criteria_pass = (pass_))
 
+/* The conditions of 17.10.5.3(a) an anchorage misses, in words. */
+static const char *not_ductile_why(unsigned why, char *buf, size_t n)
+{
+    static const struct {
+        unsigned bit;
+        const char *text;
+    } conditions[] = {
+        {RB_NOT_DUCTILE_CONCRETE, "the concrete lets go before the bolts yield"},
+        {RB_NOT_DUCTILE_STRETCH, "the stretch length is below 8 da"},
+        {RB_NOT_DUCTILE_THREADS, "f_uta / f_ya is below 1.3 with threads along part of "
+                                 "the anchor, not upset"},
+    };
+    size_t len = 0;
+    buf[0] = 0;
+    for (size_t i = 0; i < sizeof conditions / sizeof conditions[0]; i++)
+        if (why & conditions[i].bit && len < n)
+            len += (size_t)snprintf(buf + len, n - len, "%s%s", len ? "; " : "",
+                                    conditions[i].text);
+    return buf;
+}
+
 rb_governing rb_result_governing(const rb_result *r)
 {
     rb_governing g;
@@ -165,7 +185,7 @@ rb_governing rb_result_governing(const rb_result *r)
 
 static void criteria(const rb_criteria *c, const rb_result *r, rb_verdict *v)
 {
-    char num[32];
+    char num[32], why[256];
     rb_governing g = rb_result_governing(r);
     double usage = g.usage, shear = g.shear_over_w, force = g.force_over_fy;
     if (r->overturned)
@@ -190,9 +210,9 @@ static void criteria(const rb_criteria *c, const rb_result *r, rb_verdict *v)
         SAY(v, 0, "rotation / alpha = %s exceeds its limit %.17g",
             beside(r->max_theta_over_alpha, c->max_theta_over_alpha, num, sizeof num),
             c->max_theta_over_alpha);
-    else if (c->concrete && !c->anchor_ductile)
-        SAY(v, 0, "the anchorage is not ductile: the concrete lets go before the bolts "
-            "yield, or the stretch length is below 8 da (ACI 318-19 17.10.5.3)");
+    else if (c->concrete && c->anchor_not_ductile)
+        SAY(v, 0, "the anchorage is not ductile (ACI 318-19 17.10.5.3(a)): %s",
+            not_ductile_why(c->anchor_not_ductile, why, sizeof why));
     else if (c->concrete && r->anchor_checked && r->anchor_max_ratio >= 1.0)
         SAY(v, 0, "the anchorage reaches its design strength: 17.8.%d utilization %s at "
             "t = %.3f s (tension %.4g kN, shear %.4g kN)", r->anchor_clause,

@@ -47,6 +47,10 @@ const rb_enum_name rb_record_format_names[] = {
 const rb_enum_name rb_anchor_type_names[] = {
     {"cast-in-headed", RB_ANCHOR_CAST_IN_HEADED}, {NULL, 0}};
 
+const rb_enum_name rb_anchor_threads_names[] = {
+    {"partial", RB_THREADS_PARTIAL}, {"full-length", RB_THREADS_FULL_LENGTH},
+    {"upset", RB_THREADS_UPSET}, {NULL, 0}};
+
 const rb_enum_name rb_anchor_mode_names[] = {
     {"steel-tension", RB_ANCHOR_STEEL_N}, {"breakout-tension", RB_ANCHOR_BREAKOUT_N},
     {"pullout", RB_ANCHOR_PULLOUT_N}, {"side-face-blowout", RB_ANCHOR_SIDEFACE_N},

@@ -22,6 +22,7 @@ static void add_inputs(rb_jctx *cx, cJSON *o, const rb_anchor_inputs *in)
     rb_j_num(cx, o, "ultimate_stress_pa", in->futa_pa);
     rb_j_opt(cx, o, "tensile_area_m2", in->ase_m2 > 0, in->ase_m2);
     rb_j_bool(cx, o, "grout_pad", in->grout_pad);
+    rb_j_str(cx, o, "threads", rb_enum_str(rb_anchor_threads_names, (int)in->threads));
 }
 
 void rb_report_json_anchorage(rb_jctx *cx, cJSON *root, const rb_report *r)
@@ -54,6 +55,8 @@ void rb_report_json_anchorage(rb_jctx *cx, cJSON *root, const rb_report *r)
     rb_j_str(cx, o, "shear_governs", rb_enum_str(rb_anchor_mode_names, (int)a->shear_mode));
     rb_j_num(cx, o, "ductility_margin", a->ductility_margin);
     rb_j_bool(cx, o, "stretch_ok", a->stretch_ok);
+    rb_j_num(cx, o, "futa_over_fya", a->futa_over_fya);
+    rb_j_bool(cx, o, "threads_ok", a->threads_ok);
     rb_j_bool(cx, o, "ductile", a->ductile);
 }
 

@@ -71,6 +71,9 @@ rb_status rb_report_text_concrete(const rb_report *r, rb_txt_arena *a, rb_tlist 
     rb_tv_str(&t, "shear_governs", rb_enum_str(rb_anchor_mode_names, (int)s->shear_mode));
     rb_tv_num(&t, "ductility_margin", s->ductility_margin);
     rb_tv_str(&t, "stretch_ok", s->stretch_ok ? "at least 8 da" : "below 8 da");
+    rb_tv_num(&t, "futa_over_fya", s->futa_over_fya);
+    rb_tv_str(&t, "threads", rb_enum_str(rb_anchor_threads_names, (int)in->threads));
+    rb_tv_str(&t, "threads_ok", s->threads_ok ? "ok" : "below 1.3");
     rb_tv_str(&t, "ductile", s->ductile ? "ductile" : "NOT ductile");
     rb_tv_str(&t, "judged", r->kase->criteria.concrete ? "part of the verdict"
                                                         : "reported, not judged");

@@ -10,7 +10,9 @@
  *     "Base Connection Design for Steel Structures", Examples 4.7-3, 4.7-4,
  *     4.7-7 and 4.7-11, to the rounding of the source (three figures);
  *   - the demand a run puts on the anchorage is the 17.8 interaction of
- *     its tension and shear at one instant. */
+ *     its tension and shear at one instant;
+ *   - the threads' condition of 17.10.5.3(a): f_uta / f_ya of at least 1.3
+ *     unless the threads run the whole length or are upset. */
 #include <math.h>
 #include <string.h>
 #include "harness.h"
@@ -262,9 +264,53 @@ static void aisc_dg1(void)
     CHECK3(rb_aci17_ncbg(2, 3560, 2920, 1, 1, 1, 1, 125 * KIP) / KIP, 152);
 }
 
+/* 17.10.5.3(a): ASTM F1554 grade 36 (58 / 36 ksi, 1.61) and grade 55
+ * (75 / 55, 1.36) meet 1.3; grade 105 and A193 B7 (125 / 105, 1.19) do not
+ * unless their threads run the whole length or are upset. The 1/2 in bolts
+ * 12 in deep, far from an edge, with 2 in^2 washers under their heads, so
+ * that breakout and pullout outlast 1.2 times even the grade 105 steel:
+ * only the threads decide. */
+static void threads(void)
+{
+    static const struct {
+        double futa_ksi, fya_ksi;
+        int ok_partial;
+    } grades[] = {{58, 36, 1}, {75, 55, 1}, {125, 105, 0}, {130, 100, 1},
+                  {129.99, 100, 0}};
+    rb_model m;
+    rb_anchor_inputs in;
+    rb_anchor_strength s;
+    rb_diag d;
+    model_2x(&m);
+    rb_anchor_inputs_init(&in);
+    in.coef = RB_ACI17_INLB;
+    in.fc_pa = 5000 * PSI;
+    in.thickness_m = 24 * IN;
+    in.hef_m = 12 * IN;
+    in.spacing_m = 12 * IN;
+    in.abrg_m2 = 2 * IN * IN;
+    CHECK(in.threads == RB_THREADS_PARTIAL);
+    for (size_t g = 0; g < sizeof grades / sizeof grades[0]; g++)
+        for (int t = RB_THREADS_PARTIAL; t <= RB_THREADS_UPSET; t++) {
+            m.yield_stress_pa = grades[g].fya_ksi * 1000 * PSI;
+            in.futa_pa = grades[g].futa_ksi * 1000 * PSI;
+            in.threads = (rb_anchor_threads)t;
+            CHECK(rb_anchor_check(&m, &in, &s, &d) == RB_OK);
+            CHECK_REL(s.futa_over_fya, grades[g].futa_ksi / grades[g].fya_ksi, 1e-12);
+            int ok = t != RB_THREADS_PARTIAL || grades[g].ok_partial;
+            CHECK(s.threads_ok == ok);
+            CHECK(s.ductility_margin >= 1 && s.stretch_ok);
+            CHECK(s.ductile == ok);
+        }
+    /* 1.3 itself meets the clause ("not less than 1.3") */
+    CHECK(rb_aci17_threaded_ratio_ok(1.3 * 250e6, 250e6));
+    CHECK(!rb_aci17_threaded_ratio_ok(1.3 * 250e6 * (1 - 1e-9), 250e6));
+}
+
 int main(void)
 {
     hand_worked();
+    threads();
     sideface_row();
     units_agree();
     aisc_dg1();

@@ -10,6 +10,10 @@ Run from the source root. On cases/reference-concrete.yaml and variants:
     interaction of the largest tension with the largest shear;
   - an anchorage that is not ductile fails a seismic case (17.10.5.3) and
     says so; with `seismic: false` it does not;
+  - bolts whose f_uta / f_ya is below 1.3 (ASTM F1554 grade 105) with
+    threads along part of their length fail a seismic case that is
+    ductile in every other respect, and name the threads; threaded over
+    their whole length or on upset ends they pass;
   - a utilization of 1 or more fails the case; `criteria: concrete: false`
     keeps the check in the report but out of the verdict;
   - the text report and the page show the modes' table, and the batch
@@ -80,6 +84,37 @@ nonseis = case("nonseismic", "concrete:\n  seismic: false\n", "0.02 A*")
 rep, _ = check(nonseis)
 if rep and not rep["motions"][0]["verdict"]["pass"]:
     fail(f"a non-seismic low run fails: {rep['motions'][0]['verdict']['reason']}")
+
+# 17.10.5.3(a)'s threads: grade 105 rods deep in a thick slab with wide
+# washers, so that only the threads can make them brittle
+g105 = ("anchorage:\n  yield_stress: 105 ksi\n"
+        "  ultimate_stress: 125 ksi\n  embedment: 12 in\n  head_bearing_area: 2 in^2\n"
+        "  deformable_length: 8 in\nconcrete:\n  thickness: 24 in\n")
+for threads, ductile in (("", False), ("partial", False), ("full-length", True),
+                         ("upset", True)):
+    extra = g105.replace("  deformable_length", f"  threads: {threads}\n  deformable_length") \
+        if threads else g105
+    txt = os.path.join(scratch, f"g105-{threads or 'default'}.txt")
+    rep, _ = check(case(f"g105-{threads or 'default'}", extra, "0.02 A*"), "--text", txt)
+    if not rep:
+        continue
+    a, v = rep["anchorage_check"], rep["motions"][0]["verdict"]
+    if a["ductility_margin"] < 1 or not a["stretch_ok"]:
+        fail(f"g105 {threads}: the concrete or the stretch length decides "
+             f"(margin {a['ductility_margin']})")
+    if abs(a["futa_over_fya"] - 125 / 105) > 1e-12 or \
+            a["inputs"]["threads"] != (threads or "partial"):
+        fail(f"g105 {threads}: reports {a['futa_over_fya']}, {a['inputs']['threads']}")
+    if a["threads_ok"] != ductile or a["ductile"] != ductile or v["pass"] != ductile:
+        fail(f"g105 {threads}: threads_ok {a['threads_ok']}, ductile {a['ductile']}, "
+             f"pass {v['pass']}: {v['reason']}")
+    if not ductile and ("f_uta / f_ya" not in v["reason"] or "stretch" in v["reason"]
+                        or "concrete lets go" in v["reason"]):
+        fail(f"g105 {threads}: the reason does not name the threads alone: {v['reason']}")
+    want = f"f_uta / f_ya = 1.190 ({threads or 'partial'} threads) " + \
+        ("ok" if ductile else "below 1.3")
+    if want not in open(txt).read():
+        fail(f"g105 {threads}: the text report lacks '{want}'")
 
 # utilization >= 1 fails; criteria: concrete: false takes it out of the verdict
 deep = ("anchorage:\n  deformable_length: 8 in\nconcrete:\n  seismic: false\n"
