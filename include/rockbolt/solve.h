@@ -70,11 +70,13 @@ typedef struct {
 void rb_solve_opts_init(rb_solve_opts *opts);
 
 /* Time history, one row per history_dt_s (and at the end). All arrays have
- * length n and are owned by the rb_history. Forces are tension positive. */
+ * length n and are owned by the rb_history. Forces are tension positive;
+ * vertical is what floor and bolts give together, so that the floor's own
+ * reaction is vertical plus the bolt force of the loaded row. */
 typedef struct {
     size_t n, cap;
     double *t, *accel, *theta, *u, *bolt_force_left, *bolt_force_right,
-           *shear_elastic, *shear_total, *energy_left, *energy_right,
+           *shear_elastic, *shear_total, *vertical, *energy_left, *energy_right,
            *kinetic, *potential, *strain;
     int *stage;
 } rb_history;

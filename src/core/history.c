@@ -8,7 +8,7 @@ static rb_status history_grow(rb_history *h)
     size_t cap = h->cap ? 2 * h->cap : 1024;
     double **cols[] = {&h->t, &h->accel, &h->theta, &h->u, &h->bolt_force_left,
                        &h->bolt_force_right, &h->shear_elastic, &h->shear_total,
-                       &h->energy_left, &h->energy_right, &h->kinetic, &h->potential,
+                       &h->vertical, &h->energy_left, &h->energy_right, &h->kinetic, &h->potential,
                        &h->strain};
     for (size_t i = 0; i < sizeof cols / sizeof cols[0]; i++) {
         double *p = realloc(*cols[i], cap * sizeof **cols[i]);
@@ -46,6 +46,7 @@ rb_status rb_history_push(rb_solver *sv, double t, const double *y)
     h->bolt_force_right[i] = row == RB_RIGHT ? a.bolt_force : 0;
     h->shear_elastic[i] = S->d.Nstar * S->d.omega * S->d.omega * y[RB_Y_U];
     h->shear_total[i] = H;
+    h->vertical[i] = V;
     h->energy_left[i] = rb_absorbed_now(sv, RB_LEFT);
     h->energy_right[i] = rb_absorbed_now(sv, RB_RIGHT);
     h->kinetic[i] = rb_dyn_kinetic(S, &sv->disc, y);
@@ -87,7 +88,7 @@ void rb_history_free(rb_history *h)
         return;
     free(h->t); free(h->accel); free(h->theta); free(h->u);
     free(h->bolt_force_left); free(h->bolt_force_right);
-    free(h->shear_elastic); free(h->shear_total);
+    free(h->shear_elastic); free(h->shear_total); free(h->vertical);
     free(h->energy_left); free(h->energy_right);
     free(h->kinetic); free(h->potential); free(h->strain);
     free(h->stage);

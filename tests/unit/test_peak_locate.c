@@ -134,9 +134,108 @@ static int run_with_history(const rb_model *m, const rb_motion *mo, int i, rb_re
     return 1;
 }
 
+/* The floor's own reaction against the history's: its least value as the
+ * peaks (the negative's), and the time it is at or below zero, which
+ * the history, read every 20 us with the crossings taken linearly, gives
+ * to far better than the check points do. lift[0] is the worst relative
+ * difference of that time, lift[1] the time summed over the runs. */
+static void floor_reaction(const rb_result *r, double weight, double *worst, double *lift)
+{
+    const rb_history *h = r->history;
+    double *neg = malloc(h->n * sizeof *neg), *fric = malloc(h->n * sizeof *fric), off = 0;
+    if (!neg || !fric) {
+        free(neg);
+        free(fric);
+        CHECK(0);
+        return;
+    }
+    for (size_t k = 0; k < h->n; k++) {
+        double v = h->vertical[k] + h->bolt_force_left[k] + h->bolt_force_right[k];
+        neg[k] = v < 0 ? -v : 0;
+        fric[k] = v > RB_FRICTION_FLOOR * weight ? fabs(h->shear_total[k]) / v : 0;
+        if (k > 0) {
+            double v0 = h->vertical[k - 1] + h->bolt_force_left[k - 1]
+                        + h->bolt_force_right[k - 1], dt = h->t[k] - h->t[k - 1];
+            if (v0 <= 0 && v <= 0)
+                off += dt;
+            else if (v0 <= 0 || v <= 0)
+                off += dt * (v0 <= 0 ? v0 : v) / (v0 - v) * (v0 <= 0 ? 1 : -1);
+        }
+    }
+    /* an impact cuts the reaction off where it falls steepest, as a
+     * transition cuts an elastic row's force: a least value at the impact
+     * lies up to one row's change past the rows */
+    if (r->min_vertical_reaction_n < 0)
+        compare("least floor reaction", -r->min_vertical_reaction_n, neg, h->n, 1, worst);
+    /* the friction demand only from below: it is taken where the reaction
+     * exceeds a floor (RB_FRICTION_FLOOR W), and is largest where the
+     * reaction crosses it, between rows */
+    double step, seen = history_max(fric, h->n, &step);
+    if (seen > 0) {
+        double below = (seen - r->max_friction_demand) / seen;
+        if (below > 1e-9)
+            printf("  friction demand: located %.12g, history %.12g\n", r->max_friction_demand,
+                   seen);
+        worst[0] = fmax(worst[0], below);
+    }
+    if (off > 0.05) {
+        double e = fabs(r->liftoff_time_s - off) / off;
+        if (e > 2e-3)
+            printf("  time off the floor: %.9g s, history %.9g s\n", r->liftoff_time_s, off);
+        lift[0] = fmax(lift[0], e);
+        lift[1] += off;
+    }
+    free(neg);
+    free(fric);
+}
+
+/* A cabinet under Taft without a building whose friction demand peaks a
+ * few microseconds after a step's start: the probe of the interval's
+ * start was compared with the last step's value there, which that
+ * step's series leaves up to its tolerance away, and lost the peak (the
+ * demand came out 6.905 against the history's 7.167, 3.7 % low). Its
+ * peaks join against_history's worst. */
+static void step_start_peak(double *worst, double *lift)
+{
+    rb_series taft = {0};
+    rb_record_opts ro;
+    rb_diag diag;
+    rb_record_opts_init(&ro);
+    ro.format = RB_REC_ONE_COLUMN;
+    ro.dt_s = 0.01;
+    ro.units_to_mps2 = 9.80665;
+    if (rb_record_read("cases/records/taft_1952_s69e.txt", &ro, &taft, &diag) != RB_OK) {
+        printf("cannot read the Taft record: %s\n", diag.msg);
+        CHECK(0);
+        return;
+    }
+    rb_model m;
+    rb_derived d;
+    rb_motion mo;
+    rb_result r;
+    rb_model_reference(&m);
+    m.mass_kg = 378.24414968490601;
+    m.freq_hz = 8.1809234619140625;
+    m.bolt_area_m2 = 0.00018220343704630364;
+    m.gap_m = 0.019443824761390689;
+    rb_model_derive(&m, &d, NULL);
+    rb_motion_init(&mo);
+    mo.kind = RB_MOTION_SAMPLED;
+    mo.series = &taft;
+    mo.scale = 0.077814388275146487 * d.a_star_mps2 / rb_series_peak(&taft);
+    mo.duration_s = 8.0;
+    if (run_with_history(&m, &mo, 8, &r)) {
+        printf("Taft, peak at a step's start: friction demand %.9g\n", r.max_friction_demand);
+        CHECK(r.uplifts > 0);
+        floor_reaction(&r, d.W, worst, lift);
+        rb_result_free(&r);
+    }
+    rb_series_free(&taft);
+}
+
 static void against_history(const rb_series *floor)
 {
-    double worst[2] = {-HUGE_VAL, -HUGE_VAL};
+    double worst[2] = {-HUGE_VAL, -HUGE_VAL}, lift[2] = {0, 0};
     int runs = 0, rocked = 0, held = 0;
     for (int i = 0; i < 8; i++) {
         rb_model m;
@@ -166,12 +265,17 @@ static void against_history(const rb_series *floor)
                 worst);
         compare("right row", r.max_bolt_force_n[RB_RIGHT], h->bolt_force_right, h->n, spring,
                 worst);
+        floor_reaction(&r, d.W, worst, lift);
         rb_result_free(&r);
     }
     printf("%d runs (%d rocking, %d with a row held): peaks at most %.1e below a history "
            "every 20 us, and at most %.2f of what its spacing allows above it\n", runs, rocked,
            held, worst[0], worst[1] / 1e-5);
+    step_start_peak(worst, lift);
+    printf("time off the floor, %.3f s over the runs: at most %.1e from the history's\n",
+           lift[1], lift[0]);
     CHECK(runs == 8 && rocked >= 4 && held >= 2);
+    CHECK(lift[1] > 1 && lift[0] <= 2e-3);
     CHECK(worst[0] <= 1e-9);
     CHECK(worst[1] <= 1e-5);
 }

@@ -150,7 +150,10 @@ static void test_history(void)
 {
     double t[2] = { 0, 0.01 }, z[2] = { 0, 1.5 };
     int stage[2] = { 1, 2 };
-    rb_history h = { 2, 2, t, z, z, z, z, z, z, z, z, z, z, z, z, stage };
+    rb_history h = {.n = 2, .cap = 2, .t = t, .accel = z, .theta = z, .u = z,
+                    .bolt_force_left = z, .bolt_force_right = z, .shear_elastic = z,
+                    .shear_total = z, .vertical = z, .energy_left = z, .energy_right = z,
+                    .kinetic = z, .potential = z, .strain = z, .stage = stage};
     FILE *fp = tmpfile();
     char buf[1024] = {0};
     rb_diag d;
