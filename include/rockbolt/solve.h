@@ -60,6 +60,10 @@ typedef struct {
      * frame and the building (docs/solver.md); 0: by Taylor series, the
      * cross-check of the tests */
     int exact_floor;
+    /* the least check points of a Taylor or exact step (default 4, at least
+     * 2): fewer are the tests' way to widen the intervals the guards must
+     * see into */
+    int min_checks;
 } rb_solve_opts;
 
 /* Fraction of W the floor's vertical reaction must exceed for a friction

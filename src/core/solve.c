@@ -25,6 +25,7 @@ void rb_solve_opts_init(rb_solve_opts *o)
     o->max_events_per_s = 20000;
     o->max_steps = 50000000;
     o->exact_floor = 1;
+    o->min_checks = RB_SUB;
 }
 
 void rb_result_free(rb_result *r)
@@ -326,6 +327,51 @@ static int guards_at(rb_solver *sv, const rb_rk_step *st, unsigned mask, double 
     return ev;
 }
 
+static int any_crossed(unsigned mask, const double *ga, const double *gb)
+{
+    for (int k = 0; k < G_COUNT; k++)
+        if ((mask & 1u << k) && rb_guard_crossed(k, ga[k], gb[k]))
+            return 1;
+    return 0;
+}
+
+/* Turns of theta' inside [a, b], whose ends have the same sign (fa, fb):
+ * two turns there let the angle pass a level and come back with both ends
+ * on one side (after a floor impact at 1e-3 rad/s, a hop of 1.3 ms, and
+ * the floor lifting the plate on the far side). theta' can only vanish
+ * inside where |fa| + |fb| is at most the bound of |theta''| over the
+ * step (thdd_max) times the interval; there the interval is halved, down
+ * to a sign change, whose two turns are read, or to halves that cannot
+ * hold one. Crossing levels twice takes a turn on the far side in
+ * between, so the guards are read at the turns alone, in time order
+ * (guards_at from *ta, which moves on). The crossing's index, or -1. */
+static int hidden_turns(rb_solver *sv, const rb_rk_step *st, unsigned mask, double a,
+                        double b, double fa, double fb, double thdd_max, double *ta,
+                        double *ga, double *t_event, int depth)
+{
+    if (fabs(fa) + fabs(fb) > thdd_max * (b - a) || depth == 0)
+        return -1;
+    double tm = 0.5 * (a + b), fm = rb_taylor_one(&st->ts, tm - st->t0, RB_Y_THD);
+    if (fm != 0 && (fm < 0) != (fa < 0)) {
+        double tol = 1e-14 * (1 + fabs(b));
+        double r[2] = {st->t0 + rb_taylor_rate_root(&st->ts, RB_Y_THD, a - st->t0,
+                                                    tm - st->t0, fa, fm, tol),
+                       st->t0 + rb_taylor_rate_root(&st->ts, RB_Y_THD, tm - st->t0,
+                                                    b - st->t0, fm, fb, tol)};
+        for (int i = 0; i < 2; i++) {
+            int ev = r[i] > *ta && r[i] < b ? guards_at(sv, st, mask, ta, r[i], ga, t_event)
+                                            : -1;
+            if (ev >= 0)
+                return ev;
+        }
+        return -1;
+    }
+    int ev = hidden_turns(sv, st, mask, a, tm, fa, fm, thdd_max, ta, ga, t_event, depth - 1);
+    return ev >= 0 ? ev
+                   : hidden_turns(sv, st, mask, tm, b, fm, fb, thdd_max, ta, ga, t_event,
+                                  depth - 1);
+}
+
 /* Earliest guard crossing inside the accepted step, or -1. ys[j] is the
  * state at the end of check interval j of n_sub (ys[n_sub - 1] = y1).
  * Without a crossing, g_end holds the guards at the step's end, which the
@@ -340,6 +386,7 @@ static int find_event(rb_solver *sv, const rb_rk_step *st, const double *g0,
     int n = st->n_sub, turns = reads_turns(sv, st), force_turns = reads_force_turns(sv, st);
     double dt = st->h / n, rate[2] = {0, 0};
     double scale = force_turns ? rb_taylor_held_force_scale(&st->ts) : 0;
+    double thdd_max = turns ? rb_taylor_rate_bound(&st->ts, RB_Y_THD, st->h) : 0;
     const double *ya = st->y0;
     for (int j = 1; j <= n; j++) {
         double ta = st->t0 + dt * (j - 1);
@@ -357,6 +404,13 @@ static int find_event(rb_solver *sv, const rb_rk_step *st, const double *g0,
         double x = !st->is_taylor ? (double)NAN
                    : j < n ? st->vcheck[j - 1][RB_TS_X] : st->aux1.x;
         rb_guard_eval_x(sv, tb, ys[j - 1], x, gb);
+        /* two turns inside, where the ends show no crossing */
+        if (turns && fa != 0 && fb != 0 && (fa < 0) == (fb < 0)
+            && !any_crossed(mask, ga, gb)) {
+            int ev = hidden_turns(sv, st, mask, ta, tb, fa, fb, thdd_max, &ta, ga, t_event, 4);
+            if (ev >= 0)
+                return ev;
+        }
         if (force_turns) {
             /* the rate at a check point serves both intervals it bounds */
             rate[0] = j == 1 ? rb_taylor_held_force_rate(&sv->sys, &st->ts, 0) : rate[1];
@@ -512,7 +566,8 @@ double rb_step_length(const rb_solver *sv, double target, int *landing)
 int rb_step_checks(const rb_solver *sv, double h)
 {
     int n = (int)ceil(h / (taut(sv) ? sv->check_spacing : sv->check_slack));
-    return n < RB_SUB ? RB_SUB : n > RB_SUB_MAX ? RB_SUB_MAX : n;
+    int lo = sv->opts.min_checks < 2 ? 2 : sv->opts.min_checks;
+    return n < lo ? lo : n > RB_SUB_MAX ? RB_SUB_MAX : n;
 }
 
 static int taylor_step(rb_solver *sv, rb_rk_step *st, double target)

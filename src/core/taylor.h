@@ -68,6 +68,10 @@ void rb_taylor_aux(const rb_sys *S, const rb_disc *D, const rb_taylor *ts, const
 double rb_taylor_rate_root(const rb_taylor *ts, int c, double a, double b, double fa,
                            double fb, double tol);
 
+/* A bound on |d/dtau| of component c (RB_Y_*) over [0, h]: the sum of
+ * |k p_k| h^(k-1) over the series' terms. */
+double rb_taylor_rate_bound(const rb_taylor *ts, int c, double h);
+
 /* Where theta (physical) passes level in [a, b] (tau), theta - level
  * being fa and fb at the ends (either may be nudged off zero): Newton's
  * method on theta and theta', kept inside the bracket, to tol in tau. */

@@ -33,6 +33,15 @@ double rb_taylor_one(const rb_taylor *ts, double tau, int c)
     return v;
 }
 
+double rb_taylor_rate_bound(const rb_taylor *ts, int c, double h)
+{
+    int i = state_series[c];
+    double b = 0;
+    for (int k = ts->order; k >= 1; k--)
+        b = b * h + k * fabs(ts->p[k][i]);
+    return b;
+}
+
 /* The still stages' angle, its rate and their trigonometry are constant,
  * and only four series need the Horner pass. */
 void rb_taylor_state(const rb_taylor *ts, double tau, double *y)
