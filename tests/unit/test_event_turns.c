@@ -18,28 +18,20 @@
 #include <math.h>
 #include <stdio.h>
 #include "harness.h"
-#include "rockbolt/record.h"
-#include "rockbolt/solve.h"
+#include "taft_cabinet.h"
 
 static int run(const rb_series *s, int min_checks, rb_integrator integ, double rtol,
                rb_result *r)
 {
+    static const taft_cabinet c = {825.93154907226562, 9.7127823829650879,
+                                   0.00012716710834022934, 0.040883229287624355,
+                                   0.28002117872238158, 5.0};
     rb_model m;
     rb_derived d;
     rb_motion mo;
     rb_solve_opts o;
-    rb_model_reference(&m);
-    m.mass_kg = 825.93154907226562;
-    m.freq_hz = 9.7127823829650879;
-    m.bolt_area_m2 = 0.00012716710834022934;
-    m.gap_m = 0.040883229287624355;
-    if (rb_model_derive(&m, &d, NULL) != RB_OK)
+    if (taft_cabinet_setup(&c, s, &m, &d, &mo) != 0)
         return 0;
-    rb_motion_init(&mo);
-    mo.kind = RB_MOTION_SAMPLED;
-    mo.series = s;
-    mo.scale = 0.28002117872238158 * d.a_star_mps2 / rb_series_peak(s);
-    mo.duration_s = 5.0;
     rb_solve_opts_init(&o);
     o.stretch_past_failure = 1;
     o.min_checks = min_checks;
@@ -51,17 +43,8 @@ static int run(const rb_series *s, int min_checks, rb_integrator integ, double r
 int main(void)
 {
     rb_series s = {0};
-    rb_record_opts ro;
-    rb_diag diag;
-    rb_record_opts_init(&ro);
-    ro.format = RB_REC_ONE_COLUMN;
-    ro.dt_s = 0.01;
-    ro.units_to_mps2 = 9.80665;
-    if (rb_record_read("cases/records/taft_1952_s69e.txt", &ro, &s, &diag) != RB_OK
-        || rb_series_building_filter(&s, 6.6534668803215027, 0.05) != RB_OK) {
-        fprintf(stderr, "cannot read the Taft record\n");
+    if (taft_record(&s) != 0 || rb_series_building_filter(&s, 6.6534668803215027, 0.05) != RB_OK)
         return 1;
-    }
     rb_result ref;
     CHECK(run(&s, 4, RB_INTEGRATOR_RK45, 1e-11, &ref));
     printf("Dormand-Prince at 1e-11: %ld uplifts, %ld floor impacts, %ld bolt impacts, "

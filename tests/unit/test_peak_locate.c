@@ -20,6 +20,7 @@
 #include <stdlib.h>
 #include "harness.h"
 #include "elcentro_floor.h"
+#include "taft_cabinet.h"
 #include "rockbolt/solve.h"
 #include "../../src/core/root.h"
 
@@ -197,33 +198,19 @@ static void floor_reaction(const rb_result *r, double weight, double *worst, dou
  * peaks join against_history's worst. */
 static void step_start_peak(double *worst, double *lift)
 {
+    static const taft_cabinet c = {378.24414968490601, 8.1809234619140625,
+                                   0.00018220343704630364, 0.019443824761390689,
+                                   0.077814388275146487, 8.0};
     rb_series taft = {0};
-    rb_record_opts ro;
-    rb_diag diag;
-    rb_record_opts_init(&ro);
-    ro.format = RB_REC_ONE_COLUMN;
-    ro.dt_s = 0.01;
-    ro.units_to_mps2 = 9.80665;
-    if (rb_record_read("cases/records/taft_1952_s69e.txt", &ro, &taft, &diag) != RB_OK) {
-        printf("cannot read the Taft record: %s\n", diag.msg);
-        CHECK(0);
-        return;
-    }
     rb_model m;
     rb_derived d;
     rb_motion mo;
     rb_result r;
-    rb_model_reference(&m);
-    m.mass_kg = 378.24414968490601;
-    m.freq_hz = 8.1809234619140625;
-    m.bolt_area_m2 = 0.00018220343704630364;
-    m.gap_m = 0.019443824761390689;
-    rb_model_derive(&m, &d, NULL);
-    rb_motion_init(&mo);
-    mo.kind = RB_MOTION_SAMPLED;
-    mo.series = &taft;
-    mo.scale = 0.077814388275146487 * d.a_star_mps2 / rb_series_peak(&taft);
-    mo.duration_s = 8.0;
+    if (taft_record(&taft) != 0 || taft_cabinet_setup(&c, &taft, &m, &d, &mo) != 0) {
+        CHECK(0);
+        rb_series_free(&taft);
+        return;
+    }
     if (run_with_history(&m, &mo, 8, &r)) {
         printf("Taft, peak at a step's start: friction demand %.9g\n", r.max_friction_demand);
         CHECK(r.uplifts > 0);
