@@ -43,8 +43,12 @@ static int run(const rb_series *s, int min_checks, rb_integrator integ, double r
 int main(void)
 {
     rb_series s = {0};
-    if (taft_record(&s) != 0 || rb_series_building_filter(&s, 6.6534668803215027, 0.05) != RB_OK)
+    if (taft_record(&s) != 0)
         return 1;
+    if (rb_series_building_filter(&s, 6.6534668803215027, 0.05) != RB_OK) {
+        rb_series_free(&s);
+        return 1;
+    }
     rb_result ref;
     CHECK(run(&s, 4, RB_INTEGRATOR_RK45, 1e-11, &ref));
     printf("Dormand-Prince at 1e-11: %ld uplifts, %ld floor impacts, %ld bolt impacts, "
