@@ -335,6 +335,22 @@ static int any_crossed(unsigned mask, const double *ga, const double *gb)
     return 0;
 }
 
+/* Whether the angle at the turn r could have passed one of the guards
+ * since ta: a guard that is not an angle, or an angle level between the
+ * two. The guards themselves are read only then: two Horner passes in
+ * place of the state, the equations and every guard. */
+static int turn_may_cross(const rb_solver *sv, const rb_rk_step *st, unsigned mask, double ta,
+                          double r)
+{
+    double th_a = rb_taylor_one(&st->ts, ta - st->t0, RB_Y_TH);
+    double th_r = rb_taylor_one(&st->ts, r - st->t0, RB_Y_TH), level;
+    for (int k = 0; k < G_COUNT; k++)
+        if ((mask & 1u << k)
+            && (!rb_guard_angle(sv, k, &level) || (th_a - level) * (th_r - level) <= 0))
+            return 1;
+    return 0;
+}
+
 /* Turns of theta' inside [a, b], whose ends have the same sign (fa, fb):
  * two turns there let the angle pass a level and come back with both ends
  * on one side (after a floor impact at 1e-3 rad/s, a hop of 1.3 ms, and
@@ -359,8 +375,8 @@ static int hidden_turns(rb_solver *sv, const rb_rk_step *st, unsigned mask, doub
                        st->t0 + rb_taylor_rate_root(&st->ts, RB_Y_THD, tm - st->t0,
                                                     b - st->t0, fm, fb, tol)};
         for (int i = 0; i < 2; i++) {
-            int ev = r[i] > *ta && r[i] < b ? guards_at(sv, st, mask, ta, r[i], ga, t_event)
-                                            : -1;
+            int ev = r[i] > *ta && r[i] < b && turn_may_cross(sv, st, mask, *ta, r[i])
+                         ? guards_at(sv, st, mask, ta, r[i], ga, t_event) : -1;
             if (ev >= 0)
                 return ev;
         }
@@ -386,7 +402,7 @@ static int find_event(rb_solver *sv, const rb_rk_step *st, const double *g0,
     int n = st->n_sub, turns = reads_turns(sv, st), force_turns = reads_force_turns(sv, st);
     double dt = st->h / n, rate[2] = {0, 0};
     double scale = force_turns ? rb_taylor_held_force_scale(&st->ts) : 0;
-    double thdd_max = turns ? rb_taylor_rate_bound(&st->ts, RB_Y_THD, st->h) : 0;
+    double thdd_max = -1; /* formed where an interval first needs it */
     const double *ya = st->y0;
     for (int j = 1; j <= n; j++) {
         double ta = st->t0 + dt * (j - 1);
@@ -405,11 +421,15 @@ static int find_event(rb_solver *sv, const rb_rk_step *st, const double *g0,
                    : j < n ? st->vcheck[j - 1][RB_TS_X] : st->aux1.x;
         rb_guard_eval_x(sv, tb, ys[j - 1], x, gb);
         /* two turns inside, where the ends show no crossing */
-        if (turns && fa != 0 && fb != 0 && (fa < 0) == (fb < 0)
-            && !any_crossed(mask, ga, gb)) {
-            int ev = hidden_turns(sv, st, mask, ta, tb, fa, fb, thdd_max, &ta, ga, t_event, 4);
-            if (ev >= 0)
-                return ev;
+        if (turns && fa != 0 && fb != 0 && (fa < 0) == (fb < 0)) {
+            if (thdd_max < 0)
+                thdd_max = rb_taylor_rate_bound(&st->ts, RB_Y_THD, st->h);
+            if (fabs(fa) + fabs(fb) <= thdd_max * (tb - ta) && !any_crossed(mask, ga, gb)) {
+                int ev = hidden_turns(sv, st, mask, ta, tb, fa, fb, thdd_max, &ta, ga, t_event,
+                                      4);
+                if (ev >= 0)
+                    return ev;
+            }
         }
         if (force_turns) {
             /* the rate at a check point serves both intervals it bounds */
