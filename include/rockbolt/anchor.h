@@ -22,6 +22,13 @@ typedef enum {
     RB_ANCHOR_CAST_IN_HEADED = 0   /* headed bolts or studs; post-installed later */
 } rb_anchor_type;
 
+/* The conditions of 17.10.5.3(a) an anchorage can miss, as bits. */
+enum {
+    RB_NOT_DUCTILE_CONCRETE = 1u, /* concrete-governed strength below 1.2 steel */
+    RB_NOT_DUCTILE_STRETCH = 2u,  /* stretch length below 8 da */
+    RB_NOT_DUCTILE_THREADS = 4u   /* partial threads, not upset, f_uta / f_ya below 1.3 */
+};
+
 /* How the anchor's threads run (17.10.5.3(a)): along part of its length
  * with the threads cut or rolled into the shank (a headed bolt or a rod
  * threaded at its top: the ratio f_uta / f_ya must be at least 1.3), over
@@ -96,7 +103,8 @@ typedef struct {
      * they run along part of the anchor and are not upset) */
     double futa_over_fya;
     bool threads_ok;
-    bool ductile;          /* all three hold */
+    unsigned not_ductile;  /* the RB_NOT_DUCTILE_* conditions missed */
+    bool ductile;          /* none missed */
 } rb_anchor_strength;
 
 /* Strengths of the anchorage of model m (bolts_per_row, bolt area (its

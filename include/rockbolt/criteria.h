@@ -36,13 +36,6 @@ typedef enum {
 #define RB_CONFIRM_RUNS 2
 #define RB_CONFIRM_RTOL_MIN 1e-13
 
-/* The conditions of 17.10.5.3(a) an anchorage can miss. */
-enum {
-    RB_NOT_DUCTILE_CONCRETE = 1u, /* concrete-governed strength below 1.2 steel */
-    RB_NOT_DUCTILE_STRETCH = 2u,  /* stretch length below 8 da */
-    RB_NOT_DUCTILE_THREADS = 4u   /* partial threads, not upset, f_uta / f_ya below 1.3 */
-};
-
 typedef struct {
     rb_criterion_kind kind;
     double usage_limit;            /* default 1.0 */
@@ -55,7 +48,8 @@ typedef struct {
      * then fails when the 17.8 utilization of its concurrent tension and
      * shear reaches 1, or, before that, when the anchorage is not ductile
      * where 17.10 asks it to be (anchor_not_ductile, the conditions of
-     * 17.10.5.3(a) it misses, RB_NOT_DUCTILE_*). Default 0 and 0. */
+     * 17.10.5.3(a) it misses: RB_NOT_DUCTILE_* of rockbolt/anchor.h).
+     * Default 0 and 0. */
     int concrete;
     unsigned anchor_not_ductile;
     /* the checks that validity: fail counts (bit 1 << rb_check); default

@@ -111,9 +111,5 @@ void rb_case_resolve_concrete(rb_cctx *c, rb_case *cs)
     cs->solve.anchor_phi_nn_n = cs->anchor.phi_nn_n;
     cs->solve.anchor_phi_vn_n = cs->anchor.phi_vn_n;
     cs->criteria.concrete = c->judge_concrete != 0;
-    if (cs->anchor_in.seismic)
-        cs->criteria.anchor_not_ductile =
-            (cs->anchor.ductility_margin >= 1 ? 0 : RB_NOT_DUCTILE_CONCRETE)
-            | (cs->anchor.stretch_ok ? 0 : RB_NOT_DUCTILE_STRETCH)
-            | (cs->anchor.threads_ok ? 0 : RB_NOT_DUCTILE_THREADS);
+    cs->criteria.anchor_not_ductile = cs->anchor_in.seismic ? cs->anchor.not_ductile : 0;
 }

@@ -185,6 +185,9 @@ rb_status rb_anchor_check(const rb_model *m, const rb_anchor_inputs *in,
     out->futa_over_fya = in->futa_pa / m->yield_stress_pa;
     out->threads_ok = in->threads != RB_THREADS_PARTIAL
                       || rb_aci17_threaded_ratio_ok(in->futa_pa, m->yield_stress_pa);
-    out->ductile = out->ductility_margin >= 1 && out->stretch_ok && out->threads_ok;
+    out->not_ductile = (out->ductility_margin >= 1 ? 0 : RB_NOT_DUCTILE_CONCRETE)
+                       | (out->stretch_ok ? 0 : RB_NOT_DUCTILE_STRETCH)
+                       | (out->threads_ok ? 0 : RB_NOT_DUCTILE_THREADS);
+    out->ductile = out->not_ductile == 0;
     return RB_OK;
 }

@@ -301,6 +301,7 @@ static void threads(void)
             CHECK(s.threads_ok == ok);
             CHECK(s.ductility_margin >= 1 && s.stretch_ok);
             CHECK(s.ductile == ok);
+            CHECK(s.not_ductile == (ok ? 0u : RB_NOT_DUCTILE_THREADS));
         }
     /* 1.3 itself meets the clause ("not less than 1.3") */
     CHECK(rb_aci17_threaded_ratio_ok(1.3 * 250e6, 250e6));
