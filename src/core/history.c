@@ -8,8 +8,8 @@ static rb_status history_grow(rb_history *h)
     size_t cap = h->cap ? 2 * h->cap : 1024;
     double **cols[] = {&h->t, &h->accel, &h->theta, &h->u, &h->bolt_force_left,
                        &h->bolt_force_right, &h->shear_elastic, &h->shear_total,
-                       &h->vertical, &h->energy_left, &h->energy_right, &h->kinetic, &h->potential,
-                       &h->strain};
+                       &h->vertical, &h->energy_left, &h->energy_right, &h->kinetic,
+                       &h->potential, &h->strain};
     for (size_t i = 0; i < sizeof cols / sizeof cols[0]; i++) {
         double *p = realloc(*cols[i], cap * sizeof **cols[i]);
         if (!p)

@@ -140,11 +140,7 @@ static double edge_peak(const refine_ctx *c, double *ts, double *vs, double *at)
         ve = refine_at(c, ts[0]);
     if (vp > hi || (vp > ve && vp >= vm)) {
         double tb[3] = {left ? ts[0] : tm, tp, left ? tm : ts[2]};
-        double vb[3] = {ve, vp, left ? vm : vs[2]};
-        if (!left) {
-            vb[0] = vm;
-            vb[2] = ve;
-        }
+        double vb[3] = {left ? ve : vm, vp, left ? vm : ve};
         return rb_max_brent(refine_at, c, tb, vb, 3, tol, at);
     }
     double tv, vv;
@@ -251,15 +247,20 @@ static double peak_push(rb_solver *sv, rb_peak_window *w, int q, double t, doubl
     return parabola_vertex(w->t, w->v, &tv, &vv) ? fmax(v, vv) : fmax(v, w->v[1]);
 }
 
+/* Whether the span's dense output covers [t0, t]. */
+static int span_covers(const rb_solver *sv, double t0, double t)
+{
+    const rb_span *sp = &sv->span;
+    return t0 >= sp->t0 && t <= sp->t1 && (sp->st || sp->lazy > 0);
+}
+
 /* Where the floor's reaction passes the level between the last point
  * (t0, v0) and (t, v), on the span's dense output; the straight line
  * between them where the span has none. */
 static double floor_crossing(rb_solver *sv, double t0, double v0, double t, double v,
                              double level)
 {
-    const rb_span *sp = &sv->span;
-    if (t0 >= sp->t0 && t <= sp->t1 && (sp->st || sp->lazy > 0)
-        && (v0 - level) * (v - level) < 0) {
+    if (span_covers(sv, t0, t) && (v0 - level) * (v - level) < 0) {
         /* the least reaction's quantity is the reaction's negative */
         refine_ctx c = {sv, Q_VERTICAL, -level};
         return rb_root_illinois(refine_at, &c, t0, t, level - v0, level - v, 1e-14);
@@ -276,9 +277,8 @@ static double floor_crossing(rb_solver *sv, double t0, double v0, double t, doub
  * each. */
 static double falsi_crossing(rb_solver *sv, double t0, double v0, double t, double v)
 {
-    const rb_span *sp = &sv->span;
     double tc = t0 + (t - t0) * v0 / (v0 - v);
-    if (!(t0 >= sp->t0 && t <= sp->t1 && (sp->st || sp->lazy > 0)))
+    if (!span_covers(sv, t0, t))
         return tc;
     refine_ctx c = {sv, Q_VERTICAL, 0};
     double vc = -refine_at(&c, tc);
@@ -339,9 +339,8 @@ static void note_friction(rb_solver *sv, double t, const sample *s)
     if (sv->fric_have && t > sv->fric_t && (sv->fric_v > floor) != (v > floor)) {
         double f = (floor - sv->fric_v) / (v - sv->fric_v);
         double h = fabs(sv->fric_h + f * (H - sv->fric_h));
-        const rb_span *sp = &sv->span;
         if ((h + fabs(H - sv->fric_h)) / floor > r->max_friction_demand
-            && sv->fric_t >= sp->t0 && t <= sp->t1 && (sp->st || sp->lazy > 0)) {
+            && span_covers(sv, sv->fric_t, t)) {
             double tc = floor_crossing(sv, sv->fric_t, sv->fric_v, t, v, floor);
             sample c;
             if (span_sample(sv, tc, &c))
