@@ -45,6 +45,20 @@ static void model_2x(rb_model *m)
     m->deformable_length_m = 8 * IN;
 }
 
+/* The slab and anchors in in-lb: f'c in psi, the slab's thickness, the
+ * embedment and the spacing in inches; the rest as rb_anchor_inputs_init
+ * leaves it. */
+static void inputs_inlb(rb_anchor_inputs *in, double fc_psi, double slab_in, double hef_in,
+                        double spacing_in)
+{
+    rb_anchor_inputs_init(in);
+    in->coef = RB_ACI17_INLB;
+    in->fc_pa = fc_psi * PSI;
+    in->thickness_m = slab_in * IN;
+    in->hef_m = hef_in * IN;
+    in->spacing_m = spacing_in * IN;
+}
+
 /* One row of two bolts 8 in apart, 4 in deep in a 6 in slab, 18 in from
  * the edge, f'c 4000 psi cracked, Abrg 0.467 in^2, in-lb coefficients. */
 static void hand_worked(void)
@@ -54,13 +68,8 @@ static void hand_worked(void)
     rb_anchor_strength s;
     rb_diag d;
     model_2x(&m);
-    rb_anchor_inputs_init(&in);
-    in.coef = RB_ACI17_INLB;
-    in.fc_pa = 4000 * PSI;
-    in.thickness_m = 6 * IN;
+    inputs_inlb(&in, 4000, 6, 4, 8);
     in.edge_m = 18 * IN;
-    in.hef_m = 4 * IN;
-    in.spacing_m = 8 * IN;
     in.futa_pa = 58000 * PSI;
     in.abrg_m2 = 0.467 * IN * IN;
     CHECK(rb_anchor_check(&m, &in, &s, &d) == RB_OK);
@@ -126,13 +135,8 @@ static void sideface_row(void)
     rb_diag d;
     model_2x(&m);
     m.bolts_per_row = 3;
-    rb_anchor_inputs_init(&in);
-    in.coef = RB_ACI17_INLB;
-    in.fc_pa = 4000 * PSI;
-    in.thickness_m = 8 * IN;
+    inputs_inlb(&in, 4000, 8, 6, 8);
     in.edge_m = 2 * IN;
-    in.hef_m = 6 * IN;
-    in.spacing_m = 8 * IN;
     in.futa_pa = 58000 * PSI;
     in.abrg_m2 = 0.467 * IN * IN;
     CHECK(rb_anchor_check(&m, &in, &s, &d) == RB_OK);
@@ -282,12 +286,7 @@ static void threads(void)
     rb_anchor_strength s;
     rb_diag d;
     model_2x(&m);
-    rb_anchor_inputs_init(&in);
-    in.coef = RB_ACI17_INLB;
-    in.fc_pa = 5000 * PSI;
-    in.thickness_m = 24 * IN;
-    in.hef_m = 12 * IN;
-    in.spacing_m = 12 * IN;
+    inputs_inlb(&in, 5000, 24, 12, 12);
     in.abrg_m2 = 2 * IN * IN;
     CHECK(in.threads == RB_THREADS_PARTIAL);
     for (size_t g = 0; g < sizeof grades / sizeof grades[0]; g++)
