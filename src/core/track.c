@@ -319,6 +319,28 @@ static void note_liftoff(rb_solver *sv, double t, double v)
     sv->lift_v = v;
 }
 
+/* A dip of the floor's reaction to zero or below at `at`, which the least
+ * reaction's window located between two points above zero: the points
+ * alone never show it, so its time off the floor (between the crossings
+ * on either side, as note_liftoff takes them) and, where it is the
+ * first, the first lift-off are taken here. The window holds the
+ * reaction's negative. */
+static void note_dip(rb_solver *sv, const rb_peak_window *w, double at, double least)
+{
+    rb_result *r = sv->res;
+    int k = -1;
+    for (int i = 0; i < w->n && w->t[i] < at; i++)
+        k = i;
+    if (k < 0 || k + 1 >= w->n || !(w->v[k] < 0 && w->v[k + 1] < 0))
+        return;
+    double t0 = w->t[k], v0 = -w->v[k], t1 = w->t[k + 1], v1 = -w->v[k + 1];
+    if (r->liftoff_first_s < 0)
+        r->liftoff_first_s = floor_crossing(sv, t0, v0, at, least, 0);
+    if (least < 0)
+        r->liftoff_time_s += falsi_crossing(sv, at, least, t1, v1)
+                             - falsi_crossing(sv, t0, v0, at, least);
+}
+
 void rb_track_reset(rb_solver *sv)
 {
     sv->win_shear.n = sv->win_friction.n = sv->win_bolt.n = sv->win_vertical.n = 0;
@@ -419,11 +441,14 @@ void rb_track_aux(rb_solver *sv, double t, const double *y, const rb_aux *a)
     r->max_shear_total_n = fmax(r->max_shear_total_n,
                                 peak_push(sv, &sv->win_shear, Q_SHEAR, t, fabs(s.H),
                                           r->max_shear_total_n, &at));
-    /* a least value is the peak of its negative */
-    r->min_vertical_reaction_n
-        = fmin(r->min_vertical_reaction_n,
-               -peak_push(sv, &sv->win_vertical, Q_VERTICAL, t, -s.floor_v,
-                          -r->min_vertical_reaction_n, &at));
+    /* a least value is the peak of its negative; a dip is located where
+     * it could pass the least reaction so far or reach zero, for the time
+     * off the floor */
+    double least = -peak_push(sv, &sv->win_vertical, Q_VERTICAL, t, -s.floor_v,
+                              fmin(-r->min_vertical_reaction_n, 0), &at);
+    r->min_vertical_reaction_n = fmin(r->min_vertical_reaction_n, least);
+    if (least <= 0 && at < t)
+        note_dip(sv, &sv->win_vertical, at, least);
     note_liftoff(sv, t, s.floor_v);
     note_friction(sv, t, &s);
     if (sv->opts.anchor_phi_nn_n > 0 && sv->opts.anchor_phi_vn_n > 0)
