@@ -24,12 +24,12 @@ int rb_taylor_applies(const rb_sys *S, const rb_disc *D)
     /* a row in stage 4 is a rigid stop or a spring in its chord */
     if (D->stage == RB_STAGE_HELD)
         return S->bolt->rigid_stop || S->bolt->spring_npm;
-    /* a yielding row pulls with Fy. A spring yields at most impacts (500
-     * Dormand-Prince steps of a 40 s record at 0.4 A*); a rigid row's
-     * stage 5 is a few dozen steps a run, which Dormand-Prince still
-     * takes, so that the rigid rows' results do not move */
+    /* a yielding row pulls with Fy, a spring's or a rigid row's alike. A
+     * usage grows by the stretch, a small difference of two angles, and
+     * Dormand-Prince at the case's tolerance put an error on the angle's
+     * scale into it (docs/solver.md, "Stage 5") */
     if (D->stage == RB_STAGE_YIELD)
-        return S->bolt->spring_npm != NULL;
+        return 1;
     return D->stage == RB_STAGE_FIXED || D->stage == RB_STAGE_UPLIFT;
 }
 
