@@ -374,13 +374,16 @@ static int hidden_turns(rb_solver *sv, const rb_rk_step *st, unsigned mask, doub
                                                     tm - st->t0, fa, fm, tol),
                        st->t0 + rb_taylor_rate_root(&st->ts, RB_Y_THD, tm - st->t0,
                                                     b - st->t0, fm, fb, tol)};
-        for (int i = 0; i < 2; i++) {
-            int ev = r[i] > *ta && r[i] < b && turn_may_cross(sv, st, mask, *ta, r[i])
-                         ? guards_at(sv, st, mask, ta, r[i], ga, t_event) : -1;
-            if (ev >= 0)
-                return ev;
-        }
-        return -1;
+        int ev = r[0] > *ta && r[0] < b && turn_may_cross(sv, st, mask, *ta, r[0])
+                     ? guards_at(sv, st, mask, ta, r[0], ga, t_event) : -1;
+        /* where theta' is itself a guard (a yielding row stops at its
+         * zero), the turns are where it reads zero, on its boundary, so
+         * it is read between them, past it */
+        if (ev < 0 && (mask & 1u << G_UNLOAD) && tm > *ta)
+            ev = guards_at(sv, st, mask, ta, tm, ga, t_event);
+        if (ev < 0 && r[1] > *ta && r[1] < b && turn_may_cross(sv, st, mask, *ta, r[1]))
+            ev = guards_at(sv, st, mask, ta, r[1], ga, t_event);
+        return ev;
     }
     int ev = hidden_turns(sv, st, mask, a, tm, fa, fm, thdd_max, ta, ga, t_event, depth - 1);
     return ev >= 0 ? ev
