@@ -298,8 +298,7 @@ static rb_status history(rb_solver *sv, double t0, const double *y0, double h, d
     st.t0 = t0;
     st.h = h;
     st.t1 = t1;
-    if (!(rb_taylor_step(&sv->sys, &sv->disc, t0, y0, h, sv->atol, sv->opts.rtol, &st.ts)
-          > 0))
+    if (!(rb_exact_dense(sv, t0, y0, h, &st.ts) > 0))
         return RB_ERR_NONFINITE;
     return rb_history_sample(sv, &st, t0, t1);
 }

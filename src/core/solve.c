@@ -119,6 +119,7 @@ static void set_tolerances(rb_solver *sv)
     sv->atol[RB_Y_TH] = rtol * th;
     sv->atol[RB_Y_THD] = rtol * th * fmax(w, p);
     sv->atol[RB_Y_WDAMP] = sv->atol[RB_Y_WIN] = sv->atol[RB_Y_WCPL] = 0;
+    sv->atol_x = rtol * a;
 }
 
 static void fill_constants(rb_solver *sv, const rb_motion *motion)
@@ -598,7 +599,7 @@ static int taylor_step(rb_solver *sv, rb_rk_step *st, double target)
     int landing;
     double h_want = rb_step_length(sv, target, &landing);
     double h = rb_taylor_step(&sv->sys, &sv->disc, sv->t, sv->y, h_want, sv->atol,
-                              sv->opts.rtol, &st->ts);
+                              sv->atol_x, sv->opts.rtol, &st->ts);
     if (!(h > 0))
         return 0;
     st->is_taylor = 1;

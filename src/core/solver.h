@@ -75,6 +75,7 @@ typedef struct {
     rb_result *res;
     double t, y[RB_NY], f[RB_NY];
     double atol[RB_NY];
+    double atol_x;              /* the floor acceleration's, for the series */
     double h, h_max, t_end;
     double check_spacing;       /* largest spacing of a Taylor step's checks */
     /* the same two while no row is a taut spring (bolt.h's frequency_hz) */
@@ -164,6 +165,13 @@ void rb_track_span_none(rb_solver *sv);
 /* span.c: the state and what the equations give besides it at t on the
  * span's dense output; 0 where there is none. */
 int rb_span_state(rb_solver *sv, double t, double *y, rb_aux *a);
+/* An exact step's dense output: the Taylor series from (t0, y0) over h, to
+ * RB_DENSE_TOL_FACTOR of the tolerances (the step itself is exact to
+ * rounding; its peaks and history rows are read from this series).
+ * Returns the length it reaches, 0 if it is not finite. */
+double rb_exact_dense(const rb_solver *sv, double t0, const double *y0, double h,
+                      rb_taylor *ts);
+#define RB_DENSE_TOL_FACTOR 0.1
 /* Peaks inside [ta, tb] of a step; ys, when not NULL, holds the state at
  * the n_sub check points of the whole step (tb = its end). */
 void rb_track_interval(rb_solver *sv, const rb_rk_step *st, double ta, double tb,

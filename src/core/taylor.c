@@ -255,12 +255,13 @@ static void work_series(const consts *K, const series *s, int rocking, int n,
 /* Largest scaled size of the order-k coefficients over a step of hk = h^k.
  * Plain comparisons make branch-free maxima, which drop a NaN; the product
  * 0 * sum keeps a NaN or an infinity, so a non-finite series is caught. */
-static double scaled(const series *s, int k, double hk, const double *tol)
+static double scaled(const series *s, int k, double hk, const double *tol, double tol_x)
 {
     double a = fabs(s->U[k]) * tol[RB_Y_U], b = fabs(s->V[k]) * tol[RB_Y_UD];
     double c = fabs(s->T[k]) * tol[RB_Y_TH], d = fabs(O_(s, k)) * tol[RB_Y_THD];
-    double ab = a > b ? a : b, cd = c > d ? c : d;
-    return (ab > cd ? ab : cd) * hk + 0.0 * (a + b + c + d);
+    double x = fabs(s->X[k]) * tol_x;
+    double ab = a > b ? a : b, cd = c > d ? c : d, abcd = ab > cd ? ab : cd;
+    return (abcd > x ? abcd : x) * hk + 0.0 * (a + b + c + d + x);
 }
 
 /* The floor's series is formed to a first guess of the order a step
@@ -283,7 +284,8 @@ static int floor_series(const rb_motion *m, double t0, double sgn, int n, series
 }
 
 double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double *y0,
-                      double h_want, const double *atol, double rtol, rb_taylor *ts)
+                      double h_want, const double *atol, double atol_x, double rtol,
+                      rb_taylor *ts)
 {
     consts K;
     series s;
@@ -303,6 +305,11 @@ double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double
     /* reciprocals: the test runs once per order */
     for (int i = RB_Y_U; i <= RB_Y_THD; i++)
         tol[i] = 1 / (atol[i] + rtol * fabs(y0[i]));
+    /* the floor's own series too: the reactions and the uplift guards read
+     * it between check points, and through a building stiffer than the
+     * frame (or under a rigid body, which has no frame) it converges more
+     * slowly than the state's */
+    double tol_x = 1 / (atol_x + rtol * fabs(s.X[0]));
 
     double h = h_want, hk = 1, e_prev = HUGE_VAL;
     int n = 0;
@@ -324,7 +331,7 @@ double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double
         s.CSO[k + 1][LANES] = 0;
         n = k + 1;
         hk *= h;
-        double e = scaled(&s, n, hk, tol);
+        double e = scaled(&s, n, hk, tol, tol_x);
         if (!isfinite(e))
             return 0;
         /* two terms in a row, since a series can have a vanishing term */

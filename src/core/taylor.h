@@ -45,10 +45,13 @@ typedef struct {
 int rb_taylor_applies(const rb_sys *S, const rb_disc *D);
 
 /* A step from (t0, y0) towards t0 + h_want (which must not pass a break of
- * the excitation). Returns the step taken, h_want or less when the order
- * bound is met first, or 0 when the series is not finite. */
+ * the excitation), to the absolute tolerances atol of the state and atol_x
+ * of the floor acceleration, and rtol. Returns the step taken, h_want or
+ * less when the order bound is met first, or 0 when the series is not
+ * finite. */
 double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double *y0,
-                      double h_want, const double *atol, double rtol, rb_taylor *ts);
+                      double h_want, const double *atol, double atol_x, double rtol,
+                      rb_taylor *ts);
 
 /* Component c (RB_Y_*) of the state tau after t0; the four mechanical
  * components; the whole state; the first RB_TS_CHECK series. */
