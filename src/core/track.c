@@ -338,6 +338,16 @@ static int dip_bracket(const rb_peak_window *w, double at, double level, double 
     return 1;
 }
 
+/* Whether the points a window keeps when the next one is pushed all hold
+ * a reaction above level (the window holds their negatives). */
+static int window_above(const rb_peak_window *w, double level)
+{
+    for (int i = w->n == 3 ? 1 : 0; i < w->n; i++)
+        if (!(-w->v[i] > level))
+            return 0;
+    return 1;
+}
+
 /* A dip of the floor's reaction to zero or below at `at`, between two
  * points above zero: the points alone never show it, so its time off the
  * floor (between the crossings on either side, as note_liftoff takes
@@ -475,12 +485,17 @@ void rb_track_aux(rb_solver *sv, double t, const double *y, const rb_aux *a)
     r->max_shear_total_n = fmax(r->max_shear_total_n,
                                 peak_push(sv, &sv->win_shear, Q_SHEAR, t, fabs(s.H),
                                           r->max_shear_total_n, &at));
-    /* a least value is the peak of its negative; a dip is located where
-     * it could pass the least reaction so far or the friction floor, for
-     * the time off the floor and the friction demand */
-    double floor = RB_FRICTION_FLOOR * S->d.W;
-    double least = -peak_push(sv, &sv->win_vertical, Q_VERTICAL, t, -s.floor_v,
-                              fmin(-r->min_vertical_reaction_n, -floor), &at);
+    /* a least value is the peak of its negative; where the window's
+     * points all lie above the friction floor, or above zero, a dip is
+     * also located where it could pass that level, for the friction
+     * demand and the time off the floor, which the points never show */
+    double floor = RB_FRICTION_FLOOR * S->d.W, least_v = r->min_vertical_reaction_n;
+    double gate = -least_v;
+    if (least_v < floor && s.floor_v > floor && window_above(&sv->win_vertical, floor))
+        gate = -floor;
+    else if (least_v < 0 && s.floor_v > 0 && window_above(&sv->win_vertical, 0))
+        gate = 0;
+    double least = -peak_push(sv, &sv->win_vertical, Q_VERTICAL, t, -s.floor_v, gate, &at);
     r->min_vertical_reaction_n = fmin(r->min_vertical_reaction_n, least);
     if (least <= 0 && at < t)
         note_dip(sv, at, least);
