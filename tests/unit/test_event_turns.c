@@ -30,19 +30,19 @@
 #include <math.h>
 #include <stdio.h>
 #include "harness.h"
-#include "taft_cabinet.h"
+#include "stress_cabinet.h"
 
 static int run(const rb_series *s, int min_checks, rb_integrator integ, double rtol,
                rb_result *r)
 {
-    static const taft_cabinet c = {825.93154907226562, 9.7127823829650879,
-                                   0.00012716710834022934, 0.040883229287624355,
-                                   0.28002117872238158, 5.0};
+    static const stress_cabinet c = {825.93154907226562, 9.7127823829650879,
+                                     0.00012716710834022934, 0.040883229287624355,
+                                     0.28002117872238158, 5.0};
     rb_model m;
     rb_derived d;
     rb_motion mo;
     rb_solve_opts o;
-    if (taft_cabinet_setup(&c, s, &m, &d, &mo) != 0)
+    if (stress_cabinet_setup(&c, s, &m, &d, &mo) != 0)
         return 0;
     rb_solve_opts_init(&o);
     o.stretch_past_failure = 1;

@@ -20,7 +20,7 @@
 #include <stdlib.h>
 #include "harness.h"
 #include "elcentro_floor.h"
-#include "taft_cabinet.h"
+#include "stress_cabinet.h"
 #include "rockbolt/solve.h"
 #include "../../src/core/root.h"
 
@@ -198,15 +198,15 @@ static void floor_reaction(const rb_result *r, double weight, double *worst, dou
  * peaks join against_history's worst. */
 static void step_start_peak(double *worst, double *lift)
 {
-    static const taft_cabinet c = {378.24414968490601, 8.1809234619140625,
-                                   0.00018220343704630364, 0.019443824761390689,
-                                   0.077814388275146487, 8.0};
+    static const stress_cabinet c = {378.24414968490601, 8.1809234619140625,
+                                     0.00018220343704630364, 0.019443824761390689,
+                                     0.077814388275146487, 8.0};
     rb_series taft = {0};
     rb_model m;
     rb_derived d;
     rb_motion mo;
     rb_result r;
-    if (taft_record(&taft) != 0 || taft_cabinet_setup(&c, &taft, &m, &d, &mo) != 0) {
+    if (taft_record(&taft) != 0 || stress_cabinet_setup(&c, &taft, &m, &d, &mo) != 0) {
         CHECK(0);
         rb_series_free(&taft);
         return;
@@ -242,6 +242,9 @@ static double history_first_liftoff(const rb_history *h)
  * 1.9139 s. */
 static void dip_between_points(void)
 {
+    static const stress_cabinet c = {832.86712169647217, 4.0989010334014893,
+                                     0.00010328195960462803, 0.042343250370979309,
+                                     0.34660350084304808, 2.0};
     rb_series floor = {0};
     rb_model m;
     rb_derived d;
@@ -249,22 +252,12 @@ static void dip_between_points(void)
     rb_result r;
     rb_solve_opts o;
     rb_diag diag;
-    if (elcentro_floor_of(&floor, 7.4852457642555237) != 0) {
+    if (elcentro_floor_of(&floor, 7.4852457642555237) != 0
+        || stress_cabinet_setup(&c, &floor, &m, &d, &mo) != 0) {
         CHECK(0);
         rb_series_free(&floor);
         return;
     }
-    rb_model_reference(&m);
-    m.mass_kg = 832.86712169647217;
-    m.freq_hz = 4.0989010334014893;
-    m.bolt_area_m2 = 0.00010328195960462803;
-    m.gap_m = 0.042343250370979309;
-    CHECK(rb_model_derive(&m, &d, NULL) == RB_OK);
-    rb_motion_init(&mo);
-    mo.kind = RB_MOTION_SAMPLED;
-    mo.series = &floor;
-    mo.scale = 0.34660350084304808 * d.a_star_mps2 / rb_series_peak(&floor);
-    mo.duration_s = 2.0;
     rb_solve_opts_init(&o);
     o.stretch_past_failure = 1;
     o.history_dt_s = 2e-5;
@@ -290,9 +283,9 @@ static void dip_between_points(void)
  * Its peaks join against_history's worst. */
 static void friction_floor_dip(double *worst, double *lift)
 {
-    static const taft_cabinet c = {863.21077346801758, 10.475012540817261,
-                                   0.00015878859056245989, 0.038270883145332335,
-                                   0.50598566532135014, 2.0};
+    static const stress_cabinet c = {863.21077346801758, 10.475012540817261,
+                                     0.00015878859056245989, 0.038270883145332335,
+                                     0.50598566532135014, 2.0};
     rb_series taft = {0};
     rb_model m;
     rb_derived d;
@@ -300,7 +293,7 @@ static void friction_floor_dip(double *worst, double *lift)
     rb_result r;
     if (taft_record(&taft) != 0
         || rb_series_building_filter(&taft, 8.8906859755516052, 0.05) != RB_OK
-        || taft_cabinet_setup(&c, &taft, &m, &d, &mo) != 0) {
+        || stress_cabinet_setup(&c, &taft, &m, &d, &mo) != 0) {
         CHECK(0);
         rb_series_free(&taft);
         return;

@@ -14,25 +14,19 @@
 #include <stdio.h>
 #include "harness.h"
 #include "elcentro_floor.h"
+#include "stress_cabinet.h"
 
 static int run(const rb_series *floor, rb_integrator integ, double rtol, rb_result *r)
 {
+    static const stress_cabinet c = {826.43823623657227, 8.696718692779541,
+                                     0.00019520432225834448, 0.049430402075290682,
+                                     0.54261856079101567, 5.0};
     rb_model m;
     rb_derived d;
     rb_motion mo;
     rb_solve_opts o;
-    rb_model_reference(&m);
-    m.mass_kg = 826.43823623657227;
-    m.freq_hz = 8.696718692779541;
-    m.bolt_area_m2 = 0.00019520432225834448;
-    m.gap_m = 0.049430402075290682;
-    if (rb_model_derive(&m, &d, NULL) != RB_OK)
+    if (stress_cabinet_setup(&c, floor, &m, &d, &mo) != 0)
         return 0;
-    rb_motion_init(&mo);
-    mo.kind = RB_MOTION_SAMPLED;
-    mo.series = floor;
-    mo.scale = 0.54261856079101567 * d.a_star_mps2 / rb_series_peak(floor);
-    mo.duration_s = 5.0;
     rb_solve_opts_init(&o);
     o.stretch_past_failure = 1;
     o.integrator = integ;

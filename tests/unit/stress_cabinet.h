@@ -1,9 +1,9 @@
-/* A cabinet of the random stress runs under the Taft record, for the
- * solver tests that hold one such run: the record (in g, 0.01 s), and the
- * reference cabinet with another mass, frame frequency, bolt area and gap,
- * scaled to a level in A*. */
-#ifndef RB_TEST_TAFT_CABINET_H
-#define RB_TEST_TAFT_CABINET_H
+/* A cabinet of the random stress runs, for the solver tests that hold one
+ * such run: the reference cabinet with another mass, frame frequency, bolt
+ * area and gap, under a floor motion scaled to a level in A*; and the Taft
+ * record (in g, 0.01 s) that many of them ran under. */
+#ifndef RB_TEST_STRESS_CABINET_H
+#define RB_TEST_STRESS_CABINET_H
 
 #include <stdio.h>
 #include "rockbolt/record.h"
@@ -28,12 +28,12 @@ static inline int taft_record(rb_series *s)
 
 typedef struct {
     double mass_kg, freq_hz, bolt_area_m2, gap_m, level, duration_s;
-} taft_cabinet;
+} stress_cabinet;
 
 /* The model and motion of c under s; d gets the model's constants. 0, or
  * -1 when the model is refused. */
-static inline int taft_cabinet_setup(const taft_cabinet *c, const rb_series *s, rb_model *m,
-                                     rb_derived *d, rb_motion *mo)
+static inline int stress_cabinet_setup(const stress_cabinet *c, const rb_series *s,
+                                       rb_model *m, rb_derived *d, rb_motion *mo)
 {
     rb_model_reference(m);
     m->mass_kg = c->mass_kg;
