@@ -230,6 +230,10 @@ static double peak_push(rb_solver *sv, rb_peak_window *w, int q, double t, doubl
         if (!((w->n == 2 && v < vk) || (v > vk && t == sv->span.t1)))
             return v;
         double hi = v > vk ? v : vk, reach = v > vk ? v - vk : vk - v;
+        /* two ends alike say nothing of a crest between them: the
+         * window's other interval bounds the slope there */
+        if (w->n == 3)
+            reach = fmax(reach, fabs(w->v[1] - w->v[0]));
         if (hi + 0.5 * reach > best && (vr = refine(sv, q, w->t + k, w->v + k, 2, &tr)) > v) {
             *at = tr;
             return vr;
