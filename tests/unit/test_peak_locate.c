@@ -190,6 +190,27 @@ static void floor_reaction(const rb_result *r, double weight, double *worst, dou
     free(fric);
 }
 
+/* Cabinet c under Taft, through a building of building_hz (5 % damping;
+ * none where 0), run i of run_with_history; weight gets its W. 0, having
+ * said why, when it fails. */
+static int taft_run(const stress_cabinet *c, double building_hz, int i, rb_result *r,
+                    double *weight)
+{
+    rb_series taft = {0};
+    rb_model m;
+    rb_derived d;
+    rb_motion mo;
+    int set = taft_record(&taft) == 0
+              && (building_hz == 0
+                  || rb_series_building_filter(&taft, building_hz, 0.05) == RB_OK)
+              && stress_cabinet_setup(c, &taft, &m, &d, &mo) == 0;
+    CHECK(set);
+    *weight = set ? d.W : 0;
+    int ok = set && run_with_history(&m, &mo, i, r);
+    rb_series_free(&taft);
+    return ok;
+}
+
 /* A cabinet under Taft without a building whose friction demand peaks a
  * few microseconds after a step's start: the probe of the interval's
  * start was compared with the last step's value there, which that
@@ -201,23 +222,14 @@ static void step_start_peak(double *worst, double *lift)
     static const stress_cabinet c = {378.24414968490601, 8.1809234619140625,
                                      0.00018220343704630364, 0.019443824761390689,
                                      0.077814388275146487, 8.0};
-    rb_series taft = {0};
-    rb_model m;
-    rb_derived d;
-    rb_motion mo;
     rb_result r;
-    if (taft_record(&taft) != 0 || stress_cabinet_setup(&c, &taft, &m, &d, &mo) != 0) {
-        CHECK(0);
-        rb_series_free(&taft);
-        return;
-    }
-    if (run_with_history(&m, &mo, 8, &r)) {
+    double weight;
+    if (taft_run(&c, 0, 8, &r, &weight)) {
         printf("Taft, peak at a step's start: friction demand %.9g\n", r.max_friction_demand);
         CHECK(r.uplifts > 0);
-        floor_reaction(&r, d.W, worst, lift);
+        floor_reaction(&r, weight, worst, lift);
         rb_result_free(&r);
     }
-    rb_series_free(&taft);
 }
 
 /* The first instant at which the history's floor reaction is at or below
@@ -286,26 +298,15 @@ static void friction_floor_dip(double *worst, double *lift)
     static const stress_cabinet c = {863.21077346801758, 10.475012540817261,
                                      0.00015878859056245989, 0.038270883145332335,
                                      0.50598566532135014, 2.0};
-    rb_series taft = {0};
-    rb_model m;
-    rb_derived d;
-    rb_motion mo;
     rb_result r;
-    if (taft_record(&taft) != 0
-        || rb_series_building_filter(&taft, 8.8906859755516052, 0.05) != RB_OK
-        || stress_cabinet_setup(&c, &taft, &m, &d, &mo) != 0) {
-        CHECK(0);
-        rb_series_free(&taft);
-        return;
-    }
-    if (run_with_history(&m, &mo, 9, &r)) {
+    double weight;
+    if (taft_run(&c, 8.8906859755516052, 9, &r, &weight)) {
         printf("Taft, a dip below the friction floor: friction demand %.9g\n",
                r.max_friction_demand);
         CHECK(r.max_friction_demand > 4.03);
-        floor_reaction(&r, d.W, worst, lift);
+        floor_reaction(&r, weight, worst, lift);
         rb_result_free(&r);
     }
-    rb_series_free(&taft);
 }
 
 /* A rigid cabinet that stays on the floor, through a 15.8 Hz building: its
