@@ -166,8 +166,9 @@ void rb_track_span_none(rb_solver *sv);
  * span's dense output; 0 where there is none. */
 int rb_span_state(rb_solver *sv, double t, double *y, rb_aux *a);
 /* An exact step's dense output: the Taylor series from (t0, y0) over h, to
- * RB_DENSE_TOL_FACTOR of the tolerances (the step itself is exact to
- * rounding; its peaks and history rows are read from this series).
+ * RB_DENSE_TOL_FACTOR of the tolerances, not below RB_RTOL_MIN (the step
+ * itself is exact to rounding; its peaks and history rows are read from
+ * this series).
  * Returns the length it reaches, 0 if it is not finite. */
 double rb_exact_dense(const rb_solver *sv, double t0, const double *y0, double h,
                       rb_taylor *ts);

@@ -52,12 +52,13 @@ void rb_track_span_none(rb_solver *sv)
 double rb_exact_dense(const rb_solver *sv, double t0, const double *y0, double h,
                       rb_taylor *ts)
 {
-    double atol[RB_NY];
+    /* never past what double precision can meet, where the series would
+     * run to its longest and stop short of the step */
+    double f = fmax(RB_DENSE_TOL_FACTOR, fmin(1, RB_RTOL_MIN / sv->opts.rtol)), atol[RB_NY];
     for (int i = 0; i < RB_NY; i++)
-        atol[i] = RB_DENSE_TOL_FACTOR * sv->atol[i];
-    return rb_taylor_step(&sv->sys, &sv->disc, t0, y0, h, atol,
-                          RB_DENSE_TOL_FACTOR * sv->atol_x,
-                          RB_DENSE_TOL_FACTOR * sv->opts.rtol, ts);
+        atol[i] = f * sv->atol[i];
+    return rb_taylor_step(&sv->sys, &sv->disc, t0, y0, h, atol, f * sv->atol_x,
+                          f * sv->opts.rtol, ts);
 }
 
 /* The state and what the equations give besides it at t on the span's
