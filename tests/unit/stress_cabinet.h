@@ -32,15 +32,22 @@ typedef struct {
 
 /* The model and motion of c under s; d gets the model's constants. 0, or
  * -1 when the model is refused. */
-static inline int stress_cabinet_setup(const stress_cabinet *c, const rb_series *s,
-                                       rb_model *m, rb_derived *d, rb_motion *mo)
+/* The model of c alone, for a run under a closed-form motion; d gets its
+ * constants. 0, or -1 when the model is refused. */
+static inline int stress_cabinet_model(const stress_cabinet *c, rb_model *m, rb_derived *d)
 {
     rb_model_reference(m);
     m->mass_kg = c->mass_kg;
     m->freq_hz = c->freq_hz;
     m->bolt_area_m2 = c->bolt_area_m2;
     m->gap_m = c->gap_m;
-    if (rb_model_derive(m, d, NULL) != RB_OK)
+    return rb_model_derive(m, d, NULL) == RB_OK ? 0 : -1;
+}
+
+static inline int stress_cabinet_setup(const stress_cabinet *c, const rb_series *s,
+                                       rb_model *m, rb_derived *d, rb_motion *mo)
+{
+    if (stress_cabinet_model(c, m, d) != 0)
         return -1;
     rb_motion_init(mo);
     mo->kind = RB_MOTION_SAMPLED;

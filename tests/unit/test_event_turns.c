@@ -55,23 +55,21 @@ static int run(const rb_series *s, int min_checks, rb_integrator integ, double r
 /* The pulse cabinet of stage 5 at a tolerance, with an integrator. */
 static int pulse_run(rb_integrator integ, double rtol, rb_result *r)
 {
+    static const stress_cabinet c = {695.33435106277466, 8.3479313850402832,
+                                     8.8105437973833576e-05, 0.012790230319976805,
+                                     0.84587353467941284, 1.0};
     rb_model m;
     rb_derived d;
     rb_motion mo;
     rb_solve_opts o;
-    rb_model_reference(&m);
-    m.mass_kg = 695.33435106277466;
-    m.freq_hz = 8.3479313850402832;
-    m.bolt_area_m2 = 8.8105437973833576e-05;
-    m.gap_m = 0.012790230319976805;
-    if (rb_model_derive(&m, &d, NULL) != RB_OK)
+    if (stress_cabinet_model(&c, &m, &d) != 0)
         return 0;
     rb_motion_init(&mo);
     mo.kind = RB_MOTION_PULSE;
     mo.pulse = RB_PULSE_RECT;
     mo.pulse_s = 0.51036021113395691;
-    mo.amplitude_mps2 = 0.84587353467941284 * d.a_star_mps2;
-    mo.duration_s = 1.0;
+    mo.amplitude_mps2 = c.level * d.a_star_mps2;
+    mo.duration_s = c.duration_s;
     rb_solve_opts_init(&o);
     o.stretch_past_failure = 1;
     o.formulation = RB_FORM_SMALL;

@@ -368,23 +368,21 @@ static void rigid_through_building(void)
  * there. */
 static void crest_at_step_end(void)
 {
+    static const stress_cabinet c = {794.38948035240173, 10.604849338531494,
+                                     8.3791827826764343e-05, 0.0098088914165496838,
+                                     0.41868467926979069, 4.1};
     rb_model m;
     rb_derived d;
     rb_motion mo;
     rb_solve_opts o;
     rb_result r;
-    rb_model_reference(&m);
-    m.mass_kg = 794.38948035240173;
-    m.freq_hz = 10.604849338531494;
-    m.bolt_area_m2 = 8.3791827826764343e-05;
-    m.gap_m = 0.0098088914165496838;
-    CHECK(rb_model_derive(&m, &d, NULL) == RB_OK);
+    CHECK(stress_cabinet_model(&c, &m, &d) == 0);
     rb_motion_init(&mo);
     mo.kind = RB_MOTION_HARMONIC;
     mo.freq_hz = 6.6344279646873474;
-    mo.amplitude_mps2 = 0.41868467926979069 * d.a_star_mps2;
+    mo.amplitude_mps2 = c.level * d.a_star_mps2;
     mo.ramp_s = 1.0;
-    mo.duration_s = 4.1;
+    mo.duration_s = c.duration_s;
     rb_solve_opts_init(&o);
     o.stretch_past_failure = 1;
     o.formulation = RB_FORM_SMALL;
