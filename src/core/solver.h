@@ -118,6 +118,8 @@ void rb_guard_eval_x(const rb_solver *sv, double t, const double *y, double x, d
 /* One guard; what locating its root needs. */
 double rb_guard_one(const rb_solver *sv, int guard, double t, const double *y);
 int rb_guard_crossed(int guard, double before, double after);
+/* The way a guard crosses: +1 upward, -1 downward, 0 either way. */
+int rb_guard_direction(int guard);
 /* Whether a guard that reads ga and gb at the ends of an interval, and
  * can move by at most reach_a and reach_b from them inside it, stays on
  * its side throughout (both bounds must hold); 0 for a guard with no

@@ -34,6 +34,11 @@ int rb_guard_crossed(int guard, double a, double b)
     }
 }
 
+int rb_guard_direction(int guard)
+{
+    return guard_dir[guard];
+}
+
 int rb_guard_stays(int guard, double ga, double reach_a, double gb, double reach_b)
 {
     switch (guard_dir[guard]) {
