@@ -122,6 +122,9 @@ static void set_tolerances(rb_solver *sv)
     sv->atol[RB_Y_THD] = rtol * th * fmax(w, p);
     sv->atol[RB_Y_WDAMP] = sv->atol[RB_Y_WIN] = sv->atol[RB_Y_WCPL] = 0;
     sv->atol_x = rtol * a;
+    sv->rtol_rk = fmax(rtol * RB_RK_TOL_FACTOR, fmin(rtol, RB_RTOL_MIN));
+    for (int i = 0; i < RB_NY; i++)
+        sv->atol_rk[i] = sv->atol[i] * (sv->rtol_rk / rtol);
 }
 
 static void fill_constants(rb_solver *sv, const rb_motion *motion)
@@ -723,7 +726,7 @@ static rb_status run(rb_solver *sv, rb_diag *diag)
              * meets the same values and says where they come from */
         }
         double err = rb_rk_step_try(&sv->sys, &sv->disc, sv->t, sv->y, sv->f, h,
-                                    sv->atol, sv->opts.rtol, &st);
+                                    sv->atol_rk, sv->rtol_rk, &st);
         st.n_sub = RB_SUB;
         sv->res->rhs_evals += 6;
         nonfinite_trial = err == HUGE_VAL;

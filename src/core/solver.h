@@ -11,6 +11,11 @@
  * dominates and steps shrink to underflow. */
 #define RB_RTOL_MIN 1e-13
 #define RB_RTOL_MAX 1e-2
+/* A Dormand-Prince step is held to this fraction of the case's tolerance
+ * (never below RB_RTOL_MIN), so that it meets the accuracy the Taylor
+ * steps meet at the tolerance itself (docs/solver.md, "Tolerance of the
+ * Dormand-Prince steps"). */
+#define RB_RK_TOL_FACTOR 1e-3
 
 /* Guard functions: a stage ends where one crosses zero in its direction. */
 enum {
@@ -76,6 +81,8 @@ typedef struct {
     double t, y[RB_NY], f[RB_NY];
     double atol[RB_NY];
     double atol_x;              /* the floor acceleration's, for the series */
+    /* what a Dormand-Prince step is held to (set_tolerances in solve.c) */
+    double rtol_rk, atol_rk[RB_NY];
     double h, h_max, t_end;
     double check_spacing;       /* largest spacing of a Taylor step's checks */
     /* the same two while no row is a taut spring (bolt.h's frequency_hz) */
