@@ -143,9 +143,10 @@ void rb_transition(rb_solver *sv, int guard);
 int rb_transition_immediate(rb_solver *sv);
 double rb_absorbed_now(const rb_solver *sv, int row);
 
-/* Guards and peaks are checked at n_sub equally spaced points of a step:
- * RB_SUB for a Runge-Kutta step, more for a long Taylor step so that the
- * points stay as close as the Runge-Kutta steps' ends were. */
+/* Guards and peaks are checked at n_sub equally spaced points of a step,
+ * as many as the check spacing asks for: at least the option min_checks
+ * (default RB_SUB) for a Taylor or exact step, at least two and at most
+ * RB_SUB for a Runge-Kutta step, whose steps are short. */
 #define RB_SUB 4
 
 /* solve.c: the length of a Taylor or exact step from the current point
