@@ -34,7 +34,10 @@ typedef enum {
 typedef struct {
     rb_formulation formulation;
     rb_integrator integrator;
-    double rtol;             /* integrator relative tolerance (default 1e-7) */
+    double rtol;             /* relative tolerance (default 1e-7): the Taylor
+                                and exact steps are held to it, Dormand-Prince
+                                steps to a thousandth of it (never below
+                                1e-13), which meets the same accuracy */
     double event_tol;        /* transitions to this fraction of the normalising
                                 quantity (default 1e-3, sec. 5.7), tightened
                                 internally to 1e-9 in time */
