@@ -342,9 +342,11 @@ int rb_exact_step(rb_solver *sv, double target, double *g, rb_status *status)
         double tj = j == n ? t1 : t0 + dt_guard * j;
         rb_guard_eval_x(sv, tj, p[j].y, p[j].x, gs[j]);
         /* a root inside: the Taylor step finds it */
-        for (int k = 0; k < G_COUNT; k++)
-            if ((mask & 1u << k) && rb_guard_crossed(k, gs[j - 1][k], gs[j][k]))
+        for (unsigned m = mask; m;) {
+            int k = rb_guard_next(&m);
+            if (rb_guard_crossed(k, gs[j - 1][k], gs[j][k]))
                 return 0;
+        }
         double ra = p[j - 1].rate, rb = p[j].rate;
         if (ra != 0 && rb != 0 && (ra < 0) != (rb < 0)
             && !rb_force_turn_stays(mask, dt_guard, fabs(ra), fabs(rb), gs[j - 1], gs[j]))

@@ -277,8 +277,9 @@ static int first_crossing(rb_solver *sv, const rb_rk_step *st, unsigned mask, do
 {
     int best = -1;
     double tbest = HUGE_VAL;
-    for (int k = 0; k < G_COUNT; k++) {
-        if (!(mask & 1u << k) || !rb_guard_crossed(k, ga[k], gb[k]))
+    for (unsigned m = mask; m;) {
+        int k = rb_guard_next(&m);
+        if (!rb_guard_crossed(k, ga[k], gb[k]))
             continue;
         double tk = locate(sv, st, k, ta, tb, ga[k], gb[k]);
         if (tk < tbest) {
@@ -335,9 +336,11 @@ static int guards_at(rb_solver *sv, const rb_rk_step *st, unsigned mask, double 
 
 static int any_crossed(unsigned mask, const double *ga, const double *gb)
 {
-    for (int k = 0; k < G_COUNT; k++)
-        if ((mask & 1u << k) && rb_guard_crossed(k, ga[k], gb[k]))
+    for (unsigned m = mask; m;) {
+        int k = rb_guard_next(&m);
+        if (rb_guard_crossed(k, ga[k], gb[k]))
             return 1;
+    }
     return 0;
 }
 

@@ -32,6 +32,16 @@ enum {
     G_COUNT
 };
 
+/* The lowest guard of the set m, taken out of it: the loops over the
+ * active guards (two or three of G_COUNT) run at every check interval.
+ * m must not be empty. */
+static inline int rb_guard_next(unsigned *m)
+{
+    int k = __builtin_ctz(*m);
+    *m &= *m - 1;
+    return k;
+}
+
 /* The last three points of a tracked quantity, which bracket a peak
  * between them. */
 typedef struct {

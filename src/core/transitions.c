@@ -57,10 +57,11 @@ int rb_guard_stays(int guard, double ga, double reach_a, double gb, double reach
 int rb_force_turn_stays(unsigned mask, double dt, double rate_a, double rate_b,
                         const double *ga, const double *gb)
 {
-    for (int k = 0; k < G_COUNT; k++)
-        if ((mask & 1u << k)
-            && !rb_guard_stays(k, ga[k], 2 * dt * rate_a, gb[k], 2 * dt * rate_b))
+    for (unsigned m = mask; m;) {
+        int k = rb_guard_next(&m);
+        if (!rb_guard_stays(k, ga[k], 2 * dt * rate_a, gb[k], 2 * dt * rate_b))
             return 0;
+    }
     return 1;
 }
 
@@ -200,9 +201,10 @@ void rb_guard_eval_x(const rb_solver *sv, double t, const double *y, double x, d
             rb_dyn_uplift_guards_x(&sv->sys, x, y, g + G_UP_POS);
         mask &= ~(1u << G_UP_POS | 1u << G_UP_NEG);
     }
-    for (int k = 0; k < G_COUNT; k++)
-        if (mask & 1u << k)
-            g[k] = rb_guard_one(sv, k, t, y);
+    for (unsigned m = mask; m;) {
+        int k = rb_guard_next(&m);
+        g[k] = rb_guard_one(sv, k, t, y);
+    }
 }
 
 static void count_event(rb_solver *sv)
