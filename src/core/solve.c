@@ -122,7 +122,7 @@ static void set_tolerances(rb_solver *sv)
     sv->atol[RB_Y_THD] = rtol * th * fmax(w, p);
     sv->atol[RB_Y_WDAMP] = sv->atol[RB_Y_WIN] = sv->atol[RB_Y_WCPL] = 0;
     sv->atol_x = rtol * a;
-    sv->rtol_rk = fmax(rtol * RB_RK_TOL_FACTOR, fmin(rtol, RB_RTOL_MIN));
+    sv->rtol_rk = fmax(rtol * RB_RK_TOL_FACTOR, RB_RTOL_MIN); /* rtol >= RB_RTOL_MIN */
     for (int i = 0; i < RB_NY; i++)
         sv->atol_rk[i] = sv->atol[i] * (sv->rtol_rk / rtol);
 }
@@ -437,14 +437,14 @@ static int grazes(rb_solver *sv, const rb_rk_step *st, unsigned mask, double *ta
         return ev;
     double peak_t[G_COUNT];
     int n = 0, order[G_COUNT];
-    for (int k = 0; k < G_COUNT; k++) {
-        int dir = rb_guard_direction(k);
+    for (unsigned m = mask; m;) {
+        int k = rb_guard_next(&m), dir = rb_guard_direction(k);
         /* a guard a transition left on its boundary (nudged, see
          * rb_guard_nudge) leaves it: what the dense output shows of it
          * turning back at once is its own error (a 4e-15 rad rise past
          * the bolt heads right after a release, read as an impact that
          * released again, without end) */
-        if (!(mask & 1u << k) || dir == 0 || fabs(ga[k]) == DBL_MIN)
+        if (dir == 0 || fabs(ga[k]) == DBL_MIN)
             continue;
         double qa = dir * ga[k], qm = dir * gm[k], qb = dir * gb[k];
         double c = qa - 2 * qm + qb; /* second difference over half intervals */
@@ -671,22 +671,26 @@ double rb_step_length(const rb_solver *sv, double target, int *landing)
     return *landing ? h_want : h_max;
 }
 
-int rb_step_checks(const rb_solver *sv, double h)
+/* The check points a step of length h needs at the check spacing, within
+ * [lo, hi]. */
+static int checks_within(const rb_solver *sv, double h, int lo, int hi)
 {
     int n = (int)ceil(h / (taut(sv) ? sv->check_spacing : sv->check_slack));
-    int lo = sv->opts.min_checks < 2 ? 2 : sv->opts.min_checks;
-    return n < lo ? lo : n > RB_SUB_MAX ? RB_SUB_MAX : n;
+    return n < lo ? lo : n > hi ? hi : n;
 }
 
-/* The check points of a Dormand-Prince step of length h: as many as the
- * spacing asks for, at least two and at most RB_SUB. Held to a thousandth
- * of the tolerance its steps are a small fraction of the spacing, and four
- * points a step read the guards and the peaks far closer than the Taylor
- * steps' points are. */
+int rb_step_checks(const rb_solver *sv, double h)
+{
+    return checks_within(sv, h, sv->opts.min_checks < 2 ? 2 : sv->opts.min_checks,
+                         RB_SUB_MAX);
+}
+
+/* A Dormand-Prince step, held to a thousandth of the tolerance, is a small
+ * fraction of the spacing: two points read its guards and peaks far closer
+ * than the Taylor steps' points are. */
 static int rk_checks(const rb_solver *sv, double h)
 {
-    int n = (int)ceil(h / (taut(sv) ? sv->check_spacing : sv->check_slack));
-    return n < 2 ? 2 : n > RB_SUB ? RB_SUB : n;
+    return checks_within(sv, h, 2, RB_SUB);
 }
 
 static int taylor_step(rb_solver *sv, rb_rk_step *st, double target)
