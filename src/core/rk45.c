@@ -20,8 +20,8 @@ static const double D1 = -12715105075.0 / 11282082432, D3 = 87487479700.0 / 3270
                     D6 = -1453857185.0 / 822651844, D7 = 69997945.0 / 29380423;
 
 double rb_rk_step_try(const rb_sys *S, const rb_disc *D, double t0, const double *y0,
-                      const double *f0, double h, const double *atol, double rtol,
-                      rb_rk_step *st)
+                      const double *f0, double h, double t_end, const double *atol,
+                      double rtol, rb_rk_step *st)
 {
     double (*k)[RB_NY] = st->k, yt[RB_NY];
     int i;
@@ -44,11 +44,11 @@ double rb_rk_step_try(const rb_sys *S, const rb_disc *D, double t0, const double
     for (i = 0; i < RB_NY; i++)
         yt[i] = y0[i] + h * (A61 * k[0][i] + A62 * k[1][i] + A63 * k[2][i] + A64 * k[3][i]
                              + A65 * k[4][i]);
-    rb_dyn_rhs(S, D, t0 + h, yt, k[5], NULL);
+    rb_dyn_rhs(S, D, t_end, yt, k[5], NULL);
     for (i = 0; i < RB_NY; i++)
         st->y1[i] = y0[i] + h * (A71 * k[0][i] + A73 * k[2][i] + A74 * k[3][i]
                                  + A75 * k[4][i] + A76 * k[5][i]);
-    rb_dyn_rhs(S, D, t0 + h, st->y1, k[6], &st->aux1);
+    rb_dyn_rhs(S, D, t_end, st->y1, k[6], &st->aux1);
     double err = 0;
     for (i = 0; i < RB_NY; i++) {
         if (atol[i] <= 0)

@@ -30,10 +30,13 @@ typedef struct {
 
 /* Take a step of size h from (t0, y0) whose derivative f0 is known. Writes
  * the 5th-order solution to st->y1 and returns the scaled error norm
- * (accept when <= 1). scale[i] <= 0 leaves component i out of the norm. */
+ * (accept when <= 1). scale[i] <= 0 leaves component i out of the norm.
+ * The two stages at the step's end are evaluated at t_end: t0 + h, or just
+ * short of a break the step lands on, so that they see the excitation's
+ * value before a jump there (a pulse's end), not after it. */
 double rb_rk_step_try(const rb_sys *S, const rb_disc *D, double t0, const double *y0,
-                      const double *f0, double h, const double *atol, double rtol,
-                      rb_rk_step *st);
+                      const double *f0, double h, double t_end, const double *atol,
+                      double rtol, rb_rk_step *st);
 
 /* Prepare the dense output of an accepted step. */
 void rb_rk_dense_init(rb_rk_step *st);

@@ -726,25 +726,35 @@ static rb_status run(rb_solver *sv, rb_diag *diag)
         if ((s = check_work(sv, diag)) != RB_OK)
             break;
         double brk = rb_motion_next_break(sv->sys.motion, sv->t);
-        double h = fmin(fmin(sv->h, sv->h_max), fmin(brk, sv->t_end) - sv->t);
+        double target = fmin(brk, sv->t_end), h = fmin(fmin(sv->h, sv->h_max), target - sv->t);
         if (!(h > 1e-14 * (1 + sv->t)))
             return nonfinite_trial ? nonfinite_ahead(sv, diag, h)
                    : fail(sv, diag, RB_ERR_STEP_TOO_SMALL, "step size underflow: the "
                           "tolerance cannot be met");
         if (sv->exact.on && sv->disc.stage == RB_STAGE_FIXED
-            && rb_exact_step(sv, fmin(brk, sv->t_end), g, &s))
+            && rb_exact_step(sv, target, g, &s))
             continue;
         if (sv->opts.integrator == RB_INTEGRATOR_AUTO
             && rb_taylor_applies(&sv->sys, &sv->disc)) {
-            if (taylor_step(sv, &st, fmin(brk, sv->t_end))) {
+            if (taylor_step(sv, &st, target)) {
                 s = advance(sv, &st, g, diag);
                 continue;
             }
             /* a series that is not finite: the Runge-Kutta step below
              * meets the same values and says where they come from */
         }
+        /* a step to the break or the end lands on it exactly (t + (target -
+         * t) can round short of it, leaving a step a rounding error long),
+         * and its last stages see the excitation from before the break: a
+         * pulse that ends at its peak drops to zero there, and read after
+         * the drop it put an error of h times the drop into the step, which
+         * held to a tight tolerance shrank the steps to underflow */
+        int landing = h == target - sv->t;
         double err = rb_rk_step_try(&sv->sys, &sv->disc, sv->t, sv->y, sv->f, h,
+                                    landing ? nextafter(target, -HUGE_VAL) : sv->t + h,
                                     sv->atol_rk, sv->rtol_rk, &st);
+        if (landing)
+            st.t1 = target;
         st.n_sub = rk_checks(sv, h);
         sv->res->rhs_evals += 6;
         nonfinite_trial = err == HUGE_VAL;
@@ -758,6 +768,9 @@ static rb_status run(rb_solver *sv, rb_diag *diag)
         sv->res->stage_steps[sv->disc.stage]++;
         rb_rk_dense_init(&st);
         s = advance(sv, &st, g, diag);
+        /* the next step starts from the excitation after the break */
+        if (s == RB_OK && landing && sv->t == target && !sv->done)
+            rb_dyn_rhs(&sv->sys, &sv->disc, sv->t, sv->y, sv->f, NULL);
         sv->h = fmax(h, 1e-14) * fmin(5, fmax(0.2, fac));
     }
     return s;
