@@ -127,6 +127,11 @@ double rb_motion_accel(const rb_motion *m, double t, double theta_dot);
  * never steps across one. */
 double rb_motion_next_break(const rb_motion *m, double t);
 
+/* Whether x'' jumps at t (t > 0): a rectangular pulse, or one that ends at
+ * its peak, drops to zero at its end. Everywhere else the breaks are kinks,
+ * across which x'' is continuous. */
+int rb_motion_jumps_at(const rb_motion *m, double t);
+
 /* Taylor coefficients of x''(t0 + tau), valid for tau from 0 up to the
  * next break: coef[k] for k = 0..n (n >= 1). Returns the degree of the
  * polynomial (the last nonzero coefficient can be below it), n for the

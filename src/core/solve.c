@@ -610,6 +610,21 @@ static rb_status restart(rb_solver *sv, double *g, rb_diag *diag)
     return RB_OK;
 }
 
+/* A jump of the excitation at a break a step landed on (a pulse that ends
+ * at its peak) can carry a guard across its boundary: the uplift moment, a
+ * held row's force. A Taylor step reads its guards before the jump and the
+ * next step would start after it, so no interval holds the crossing, and
+ * one that comes back within the next check interval would be missed. The
+ * run restarts at the break as after a transition, which settles what the
+ * jump set off and starts the peaks' windows afresh (no parabola through a
+ * jump). */
+static rb_status after_landing(rb_solver *sv, double target, double *g, rb_diag *diag)
+{
+    if (sv->t != target || sv->done || !rb_motion_jumps_at(sv->sys.motion, target))
+        return RB_OK;
+    return restart(sv, g, diag);
+}
+
 static rb_status advance(rb_solver *sv, rb_rk_step *st, double *g, rb_diag *diag)
 {
     double t_event, tb = st->t1;
@@ -738,6 +753,8 @@ static rb_status run(rb_solver *sv, rb_diag *diag)
             && rb_taylor_applies(&sv->sys, &sv->disc)) {
             if (taylor_step(sv, &st, target)) {
                 s = advance(sv, &st, g, diag);
+                if (s == RB_OK)
+                    s = after_landing(sv, target, g, diag);
                 continue;
             }
             /* a series that is not finite: the Runge-Kutta step below
@@ -771,6 +788,8 @@ static rb_status run(rb_solver *sv, rb_diag *diag)
         /* the next step starts from the excitation after the break */
         if (s == RB_OK && landing && sv->t == target && !sv->done)
             rb_dyn_rhs(&sv->sys, &sv->disc, sv->t, sv->y, sv->f, NULL);
+        if (s == RB_OK && landing)
+            s = after_landing(sv, target, g, diag);
         sv->h = fmax(h, 1e-14) * fmin(5, fmax(0.2, fac));
     }
     return s;

@@ -93,6 +93,12 @@ double rb_motion_next_break(const rb_motion *m, double t)
     return HUGE_VAL;
 }
 
+int rb_motion_jumps_at(const rb_motion *m, double t)
+{
+    return m->kind == RB_MOTION_PULSE && t == m->pulse_s && m->amplitude_mps2 != 0
+           && (m->pulse == RB_PULSE_RECT || m->pulse == RB_PULSE_TRI_INC);
+}
+
 double rb_motion_peak(const rb_motion *m)
 {
     switch (m->kind) {
