@@ -617,10 +617,11 @@ static rb_status restart(rb_solver *sv, double *g, rb_diag *diag)
  * one that comes back within the next check interval would be missed. The
  * run restarts at the break as after a transition, which settles what the
  * jump set off and starts the peaks' windows afresh (no parabola through a
- * jump). */
+ * jump). A run that ends there ends before the jump. */
 static rb_status after_landing(rb_solver *sv, double target, double *g, rb_diag *diag)
 {
-    if (sv->t != target || sv->done || !rb_motion_jumps_at(sv->sys.motion, target))
+    if (sv->t != target || sv->done || !(target < sv->t_end)
+        || !rb_motion_jumps_at(sv->sys.motion, target))
         return RB_OK;
     return restart(sv, g, diag);
 }
