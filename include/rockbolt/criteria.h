@@ -121,6 +121,7 @@ typedef struct {
     rb_verdict verdict;    /* when solved */
     double usage;          /* the larger row's */
     double max_bolt_force_over_fy, max_theta_over_alpha;
+    double margin;         /* rb_verdict_margin of the run */
 } rb_confirm_run;
 
 /* How a confirmation solves a run: rb_solve_run, or a caller's cache of
@@ -137,12 +138,17 @@ void rb_judge_run(const rb_criteria *c, const rb_model *model, const rb_motion *
                   const rb_solve_opts *opts, const rb_result *r, rb_solve_fn solve,
                   void *ctx, rb_verdict *v, rb_confirm_run *runs, size_t *n_runs);
 
-/* Fold the confirming runs into v (a pass of rb_judge): the convergence
- * check is ok when every run passes too, else a warning, and the verdict
- * fails with the first failing run's reason (a run the solver could not
- * finish fails as well). n = 0 leaves v as it is, with the check not
+/* Fold the confirming runs into v (a pass of rb_judge of a run whose
+ * rb_verdict_margin is margin, solved at tolerance rtol): the convergence
+ * check is ok when every run passes too and the runs agree, else a
+ * warning, and the verdict fails with the first failing run's reason (a
+ * run the solver could not finish fails as well). Runs that all pass but
+ * whose margins spread by as much as the least of them have not converged
+ * so far from the limit that the next tolerance could not reach it: the
+ * verdict fails too. n = 0 leaves v as it is, with the check not
  * checked. */
-void rb_verdict_confirm(rb_verdict *v, const rb_confirm_run *runs, size_t n);
+void rb_verdict_confirm(rb_verdict *v, double margin, double rtol, const rb_confirm_run *runs,
+                        size_t n);
 
 /* A check's name for people ("lift-off") and its JSON key ("lift_off"). */
 const char *rb_check_name(rb_check k);

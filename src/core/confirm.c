@@ -44,6 +44,7 @@ static void confirm_one(const rb_criteria *c, const rb_model *model, const rb_mo
         out->usage = g.usage;
         out->max_bolt_force_over_fy = g.force_over_fy;
         out->max_theta_over_alpha = r.max_theta_over_alpha;
+        out->margin = rb_verdict_margin(c, &r);
     }
     rb_result_free(&r);
 }
@@ -59,5 +60,5 @@ void rb_judge_run(const rb_criteria *c, const rb_model *model, const rb_motion *
     for (int k = 0; k < RB_CONFIRM_RUNS; k++)
         confirm_one(c, model, motion, opts, k, solve ? solve : solve_plain, ctx, &runs[k]);
     *n_runs = RB_CONFIRM_RUNS;
-    rb_verdict_confirm(v, runs, *n_runs);
+    rb_verdict_confirm(v, rb_verdict_margin(c, r), opts->rtol, runs, *n_runs);
 }

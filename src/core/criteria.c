@@ -284,7 +284,8 @@ int rb_verdict_wants_confirm(const rb_criteria *c, const rb_result *r, const rb_
     return c->confirm == RB_CONFIRM_ALWAYS || rb_verdict_margin(c, r) < c->confirm_band;
 }
 
-void rb_verdict_confirm(rb_verdict *v, const rb_confirm_run *runs, size_t n)
+void rb_verdict_confirm(rb_verdict *v, double margin, double rtol, const rb_confirm_run *runs,
+                        size_t n)
 {
     if (!n)
         return;
@@ -308,4 +309,31 @@ void rb_verdict_confirm(rb_verdict *v, const rb_confirm_run *runs, size_t n)
                      rb_status_str((rb_status)cr->status));
         v->pass = 0;
     }
+    if (!v->pass)
+        return;
+    /* Every run passes. A response that converges gives them all one
+     * margin; one that does not (near grazing, a yielding row's usage under
+     * a long excitation) scatters, and a next tolerance is another draw
+     * from that scatter: the pass stands only where the least margin is
+     * larger than the scatter seen. */
+    double lo = margin, hi = margin, rt_lo = rtol, rt_hi = rtol;
+    for (size_t i = 0; i < n; i++) {
+        if (runs[i].margin < lo) {
+            lo = runs[i].margin;
+            rt_lo = runs[i].rtol;
+        }
+        if (runs[i].margin > hi) {
+            hi = runs[i].margin;
+            rt_hi = runs[i].rtol;
+        }
+    }
+    if (hi - lo < lo)
+        return;
+    v->check[RB_CHECK_CONVERGENCE] = RB_CHECK_WARNING;
+    v->warnings |= 1u << RB_CHECK_CONVERGENCE;
+    snprintf(v->reason, sizeof v->reason, "not confirmed: %.3g to spare of the nearest limit "
+             "at tolerance %.3g but %.3g at %.3g (%s); the run does not converge, and its "
+             "scatter is as large as what it has to spare", lo, rt_lo, hi, rt_hi,
+             rb_enum_str(rb_integrator_names, runs[0].integrator));
+    v->pass = 0;
 }

@@ -279,10 +279,11 @@ static void convergence_text(const rb_criteria *c, const rb_report_motion *rm, c
                                     rb_status_str((rb_status)cr->status));
         else
             len += (size_t)snprintf(buf + len, n - len, "%s%s at %.3g: %s, usage %.4f, "
-                                    "force %.4f Fy, rotation %.4f alpha", i ? "; " : "",
-                                    how, cr->rtol, cr->verdict.pass ? "pass" : "fail",
-                                    cr->usage, cr->max_bolt_force_over_fy,
-                                    cr->max_theta_over_alpha);
+                                    "force %.4f Fy, rotation %.4f alpha, %.3f to spare",
+                                    i ? "; " : "", how, cr->rtol,
+                                    cr->verdict.pass ? "pass" : "fail", cr->usage,
+                                    cr->max_bolt_force_over_fy, cr->max_theta_over_alpha,
+                                    cr->margin);
     }
 }
 

@@ -144,6 +144,43 @@ static void margin(void)
     CHECK(rb_verdict_margin(&c, &r) == 0);
 }
 
+/* Runs that all pass but scatter: a cabinet under El Centro through a
+ * building (elastic-plastic rows, docs/report-format.md, "Confirmation")
+ * used 0.765, 0.795 and 0.957 of its toughness at 1e-7, 1e-8 and 1e-9,
+ * and broke a row at 1e-10. v is a pass; runs has room for
+ * RB_CONFIRM_RUNS. */
+static void scatter(const rb_verdict *v, rb_confirm_run *runs)
+{
+    static const double usage[3] = {0.765, 0.795, 0.957};
+    for (int k = 0; k < RB_CONFIRM_RUNS; k++) {
+        memset(&runs[k], 0, sizeof runs[k]);
+        runs[k].solved = 1;
+        runs[k].rtol = k ? 1e-9 : 1e-8;
+        runs[k].verdict = *v;
+        runs[k].margin = 1 - usage[k + 1];
+    }
+    rb_verdict v2 = *v;
+    rb_verdict_confirm(&v2, 1 - usage[0], 1e-7, runs, RB_CONFIRM_RUNS);
+    printf("scatter: %s\n", v2.reason);
+    CHECK(!v2.pass && v2.criteria_pass);
+    CHECK(v2.check[RB_CHECK_CONVERGENCE] == RB_CHECK_WARNING);
+    CHECK(v2.warnings == 1u << RB_CHECK_CONVERGENCE);
+    CHECK(strstr(v2.reason, "not confirmed: 0.043 to spare of the nearest limit at tolerance "
+                 "1e-09 but 0.235 at 1e-07 (auto)") == v2.reason);
+    /* the same scatter with more to spare: a spread of 0.192 against 0.2 */
+    for (int k = 0; k < RB_CONFIRM_RUNS; k++)
+        runs[k].margin = 1 - (usage[k + 1] - 0.157);
+    v2 = *v;
+    rb_verdict_confirm(&v2, 1 - (usage[0] - 0.157), 1e-7, runs, RB_CONFIRM_RUNS);
+    CHECK(v2.pass && v2.check[RB_CHECK_CONVERGENCE] == RB_CHECK_OK && !v2.warnings);
+    /* a spread as large as the least margin fails, whichever run has it */
+    runs[0].margin = 0.1;
+    runs[1].margin = 0.2;
+    v2 = *v;
+    rb_verdict_confirm(&v2, 0.15, 1e-7, runs, RB_CONFIRM_RUNS);
+    CHECK(!v2.pass && strstr(v2.reason, "0.1 to spare") && strstr(v2.reason, "0.2 at 1e-09"));
+}
+
 /* Which passes are confirmed, and how the confirming runs fold in. */
 static void confirmation(void)
 {
@@ -175,15 +212,17 @@ static void confirmation(void)
     char reason[sizeof v.reason];
     memcpy(reason, v.reason, sizeof reason);
     memset(runs, 0, sizeof runs);
+    double m0 = rb_verdict_margin(&c, &r);
     for (int k = 0; k < RB_CONFIRM_RUNS; k++) {
         runs[k].solved = 1;
         runs[k].rtol = k ? 1e-9 : 1e-8;
         rb_judge(&c, &r, &runs[k].verdict);
+        runs[k].margin = m0;
     }
     rb_verdict v2 = v;
-    rb_verdict_confirm(&v2, runs, 0);
+    rb_verdict_confirm(&v2, m0, 1e-7, runs, 0);
     CHECK(v2.pass && v2.check[RB_CHECK_CONVERGENCE] == RB_CHECK_NOT_CHECKED);
-    rb_verdict_confirm(&v2, runs, RB_CONFIRM_RUNS);
+    rb_verdict_confirm(&v2, m0, 1e-7, runs, RB_CONFIRM_RUNS);
     CHECK(v2.pass && v2.check[RB_CHECK_CONVERGENCE] == RB_CHECK_OK && !v2.warnings);
     CHECK(strcmp(v2.reason, reason) == 0);
     /* the second fails: the verdict fails with its reason */
@@ -191,7 +230,7 @@ static void confirmation(void)
     r2.usage[0] = 1.05;
     rb_judge(&c, &r2, &runs[1].verdict);
     v2 = v;
-    rb_verdict_confirm(&v2, runs, RB_CONFIRM_RUNS);
+    rb_verdict_confirm(&v2, m0, 1e-7, runs, RB_CONFIRM_RUNS);
     CHECK(!v2.pass && v2.criteria_pass);
     CHECK(v2.check[RB_CHECK_CONVERGENCE] == RB_CHECK_WARNING);
     CHECK(v2.warnings == 1u << RB_CHECK_CONVERGENCE);
@@ -202,9 +241,10 @@ static void confirmation(void)
     runs[0].solved = 0;
     runs[0].status = RB_ERR_WORK_LIMIT;
     v2 = v;
-    rb_verdict_confirm(&v2, runs, RB_CONFIRM_RUNS);
+    rb_verdict_confirm(&v2, m0, 1e-7, runs, RB_CONFIRM_RUNS);
     CHECK(!v2.pass && strstr(v2.reason, "stopped") != NULL);
     CHECK(strstr(v2.reason, "1e-08") != NULL);
+    scatter(&v, runs);
 }
 
 int main(void)

@@ -22,6 +22,11 @@ one, and on shipped cases:
     (judge_probe --design), also where the search's last pass was not
     confirmed and it went on below it
     (tests/verdicts/cases/design-confirm.yaml);
+  - on tests/verdicts/cases/scatter-pass.yaml, whose three runs all
+    pass but scatter by more than the least of their margins, the pass
+    is not signed: check fails it with the convergence warning and a
+    reason naming both margins, each run's margin is check's at its
+    tolerance, and with confirm: off it passes;
   - bad values of the two keys are errors naming file, line, key and
     the expected form."""
 import csv, json, os, re, subprocess, sys
@@ -190,7 +195,42 @@ if p.returncode in (0, 1):
     if f"; {n} higher pass{'es' if n != 1 else ''} not confirmed" not in nb["summary"]:
         fail(f"the design's summary does not say so: {nb['summary']}")
 
-# 7. bad values
+# 7. runs that all pass and scatter: not signed
+SCATTER = os.path.join(src, "tests/verdicts/cases/scatter-pass.yaml")
+sc, rc = check(SCATTER)
+sc_off, rc_off = check(variant("scatter-off", "confirm: off", base=SCATTER))
+if sc and sc_off:
+    c = conv(sc)
+    reason = sc["motions"][0]["verdict"]["reason"]
+    margins = [c["margin"]] + [r["margin"] for r in c["runs"]]
+    print(f"scatter-pass: margins {margins}; {reason}")
+    if rc_off != 0 or sc_off["verdict"]["result"] != "PASS":
+        fail(f"unconfirmed, the scatter case should pass: exit {rc_off}")
+    if not all(r["pass"] for r in c["runs"]) or len(c["runs"]) != 2:
+        fail(f"every confirming run of the scatter case should pass: {c['runs']}")
+    if not max(margins) - min(margins) >= min(margins):
+        fail(f"the margins {margins} do not scatter by their least")
+    if rc != 1 or sc["verdict"]["result"] != "FAIL" or c["status"] != "warning" \
+            or "convergence" not in sc["verdict"]["validity_warnings"]:
+        fail(f"the scatter case should fail with a convergence warning: exit {rc}, {c}")
+    lo = min(c["runs"], key=lambda r: r["margin"])
+    hi = max(c["runs"] + [{"margin": c["margin"], "tolerance": 1e-7}],
+             key=lambda r: r["margin"])
+    want = (f"not confirmed: {lo['margin']:.3g} to spare of the nearest limit at tolerance "
+            f"{lo['tolerance']:.3g} but {hi['margin']:.3g} at {hi['tolerance']:.3g} (auto); "
+            "the run does not converge")
+    if not reason.startswith(want):
+        fail(f"reason '{reason}', expected it to start '{want}'")
+    if sc["motions"][0]["result"] != sc_off["motions"][0]["result"]:
+        fail("confirmation changed the reported run")
+    for r in c["runs"]:
+        d, _ = check(variant(f"scatter-at-{r['tolerance']:g}", "confirm: off",
+                             f"tolerance: {r['tolerance']:g}", base=SCATTER))
+        if d and conv(d)["margin"] != r["margin"]:
+            fail(f"the run at {r['tolerance']:g} has margin {r['margin']}, check at that "
+                 f"tolerance {conv(d)['margin']}")
+
+# 8. bad values
 for key, value, expected in (("confirm", "maybe", "one of marginal, always, off"),
                              ("confirm_band", "0", "> 0 and <= 1"),
                              ("confirm_band", "1.5", "> 0 and <= 1")):
