@@ -107,9 +107,14 @@ rb_governing rb_result_governing(const rb_result *r);
  * A pass within c->confirm_band of it is marginal. */
 double rb_verdict_margin(const rb_criteria *c, const rb_result *r);
 
+/* Whether r's plate came within the fraction band of the contact angle of
+ * rows it never met (their limits untouched, but a touch would load them). */
+int rb_result_near_contact(const rb_result *r, double band);
+
 /* Whether v, rb_judge's verdict of r, is to be confirmed by reruns
  * (rb_confirm_mode): only a pass is, since a confirmation can only turn a
- * pass into a fail. */
+ * pass into a fail; with marginal, a pass within the band of a limit or
+ * near the bolt heads it never met (rb_result_near_contact). */
 int rb_verdict_wants_confirm(const rb_criteria *c, const rb_result *r, const rb_verdict *v);
 
 /* One confirming run: how it was solved and rb_judge's verdict of it. */

@@ -181,6 +181,51 @@ static void scatter(const rb_verdict *v, rb_confirm_run *runs)
     CHECK(!v2.pass && strstr(v2.reason, "0.1 to spare") && strstr(v2.reason, "0.2 at 1e-09"));
 }
 
+/* A plate that rocked near bolt heads it never met is confirmed: an
+ * elastic-plastic cabinet under an 8.7 Hz harmonic reached 0.877 of the
+ * contact angle at 1e-7 and passed no-yield with its rows untouched, where
+ * 1e-8 and tighter met the rows and 1e-8 yielded one. */
+static void near_contact(void)
+{
+    rb_criteria c;
+    rb_result r;
+    rb_verdict v;
+    rb_criteria_init(&c);
+    c.kind = RB_CRIT_NO_YIELD;
+    base_result(&r);
+    r.alpha_rad = 0.430852;
+    r.theta0_rad = 0.00899938;
+    r.max_theta_rad = 0.877 * r.theta0_rad;
+    r.max_theta_over_alpha = r.max_theta_rad / r.alpha_rad;
+    rb_judge(&c, &r, &v);
+    CHECK(v.pass && rb_verdict_margin(&c, &r) > 0.9);
+    CHECK(rb_result_near_contact(&r, c.confirm_band));
+    CHECK(rb_verdict_wants_confirm(&c, &r, &v));
+    /* a miss by more than the band is not */
+    r.max_theta_rad = 0.74 * r.theta0_rad;
+    CHECK(!rb_result_near_contact(&r, c.confirm_band));
+    CHECK(!rb_verdict_wants_confirm(&c, &r, &v));
+    c.confirm_band = 0.3;
+    CHECK(rb_verdict_wants_confirm(&c, &r, &v));
+    c.confirm_band = 0.25;
+    /* rows met: their force and usage are the margin's, not the near miss */
+    r.max_theta_rad = 0.95 * r.theta0_rad;
+    CHECK(rb_result_near_contact(&r, c.confirm_band));
+    r.bolt_impacts = 1;
+    CHECK(!rb_result_near_contact(&r, c.confirm_band));
+    r.bolt_impacts = 0;
+    r.max_bolt_force_n[0] = 1; /* held from the start, with no gap */
+    CHECK(!rb_result_near_contact(&r, c.confirm_band));
+    r.max_bolt_force_n[0] = 0;
+    /* no rows: nothing to meet */
+    r.theta0_rad = HUGE_VAL;
+    CHECK(!rb_result_near_contact(&r, c.confirm_band));
+    /* confirm: off confirms nothing */
+    r.theta0_rad = 0.00899938;
+    c.confirm = RB_CONFIRM_OFF;
+    CHECK(!rb_verdict_wants_confirm(&c, &r, &v));
+}
+
 /* Which passes are confirmed, and how the confirming runs fold in. */
 static void confirmation(void)
 {
@@ -253,6 +298,7 @@ int main(void)
     usage_beside_its_limit();
     validity();
     margin();
+    near_contact();
     confirmation();
     TEST_MAIN_END();
 }
