@@ -113,8 +113,9 @@ int rb_result_near_contact(const rb_result *r, double band);
 
 /* Whether v, rb_judge's verdict of r, is to be confirmed by reruns
  * (rb_confirm_mode): only a pass is, since a confirmation can only turn a
- * pass into a fail; with marginal, a pass within the band of a limit or
- * near the bolt heads it never met (rb_result_near_contact). */
+ * pass into a fail; with marginal, a pass within the band of a limit or,
+ * under no-yield, near the bolt heads it never met
+ * (rb_result_near_contact). */
 int rb_verdict_wants_confirm(const rb_criteria *c, const rb_result *r, const rb_verdict *v);
 
 /* One confirming run: how it was solved and rb_judge's verdict of it. */

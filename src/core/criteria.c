@@ -279,10 +279,10 @@ double rb_verdict_margin(const rb_criteria *c, const rb_result *r)
 
 /* A plate that rocked near the bolt heads and never met them leaves every
  * limit of the rows untouched, yet the response jumps where it would meet
- * them: a touch loads a row, which can yield it at once. Under a long
- * excitation a run that rocks that far is often chaotic (docs/report-format.md,
- * "Confirmation"), and such a near miss is as marginal as a number near its
- * limit. */
+ * them: a touch loads a row, which can reach Fy at once. Under no-yield
+ * such a near miss is as marginal as a force near Fy (docs/report-format.md,
+ * "Confirmation"); under no-break a touch starts a usage at zero, which
+ * the margin already measures. */
 int rb_result_near_contact(const rb_result *r, double band)
 {
     return r->theta0_rad > 0 && r->bolt_impacts == 0 && r->max_bolt_force_n[0] == 0
@@ -294,7 +294,7 @@ int rb_verdict_wants_confirm(const rb_criteria *c, const rb_result *r, const rb_
     if (!v->pass || c->confirm == RB_CONFIRM_OFF)
         return 0;
     return c->confirm == RB_CONFIRM_ALWAYS || rb_verdict_margin(c, r) < c->confirm_band
-           || rb_result_near_contact(r, c->confirm_band);
+           || (c->kind == RB_CRIT_NO_YIELD && rb_result_near_contact(r, c->confirm_band));
 }
 
 void rb_verdict_confirm(rb_verdict *v, double margin, double rtol, const rb_confirm_run *runs,

@@ -201,6 +201,12 @@ static void near_contact(void)
     CHECK(v.pass && rb_verdict_margin(&c, &r) > 0.9);
     CHECK(rb_result_near_contact(&r, c.confirm_band));
     CHECK(rb_verdict_wants_confirm(&c, &r, &v));
+    /* under no-break a touch starts the usage at zero: the margin says it */
+    c.kind = RB_CRIT_NO_BREAK;
+    rb_judge(&c, &r, &v);
+    CHECK(v.pass && !rb_verdict_wants_confirm(&c, &r, &v));
+    c.kind = RB_CRIT_NO_YIELD;
+    rb_judge(&c, &r, &v);
     /* a miss by more than the band is not */
     r.max_theta_rad = 0.74 * r.theta0_rad;
     CHECK(!rb_result_near_contact(&r, c.confirm_band));
