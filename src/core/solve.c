@@ -243,6 +243,13 @@ static double locate(rb_solver *sv, const rb_rk_step *st, int guard, double a, d
         if (x >= b)
             return b;
     }
+    /* a start nudged off the boundary (rb_guard_nudge) that reads exactly
+     * 0 again has not moved: the crossing lies further on. Taken for one,
+     * a plate released from the bolt heads, which the floor then pressed
+     * back onto them, met them again at the release itself, and the state
+     * went back and forth between stages 2 and 4, 1e-12 s a cycle, until
+     * the work bound stopped the run (Dormand-Prince, 20 491 events) */
+    int from_nudge = fabs(ga) == DBL_MIN;
     int last = 0, hugged = 1;
     for (int i = 0; i < 200 && b - a > 1e-13 * (1 + fabs(b)); i++) {
         double m = (a * gb - b * ga) / (gb - ga);
@@ -255,14 +262,17 @@ static double locate(rb_solver *sv, const rb_rk_step *st, int guard, double a, d
         hugged = hug;
         rb_rk_dense_state(st, m, y);
         double gm = rb_guard_one(sv, guard, m, y);
-        if (rb_guard_crossed(guard, ga, gm) || gm == 0) {
+        if (gm == 0 ? !from_nudge : rb_guard_crossed(guard, ga, gm)) {
             b = m;
             gb = gm;
             if (last == -1) ga *= 0.5;
             last = -1;
         } else {
             a = m;
-            ga = gm;
+            if (gm != 0) {
+                ga = gm;
+                from_nudge = 0;
+            }
             if (last == 1) gb *= 0.5;
             last = 1;
         }
