@@ -28,8 +28,15 @@ typedef enum {
 } rb_confirm_mode;
 
 /* The default band of a marginal pass: a governing number within this
- * fraction of its limit. */
-#define RB_CONFIRM_BAND_DEFAULT 0.25
+ * fraction of its limit. A run that does not converge with the tolerance
+ * moved its margin by up to 0.33 of the limit between tolerances and
+ * integrators in 2 100 random passes (docs/report-format.md,
+ * "Confirmation"); the band is half as wide again. */
+#define RB_CONFIRM_BAND_DEFAULT 0.5
+/* How far apart the margins of a pass's runs may lie, as a fraction of the
+ * limit, for the run to count as converged: a run that converges agrees
+ * with itself to a few parts in a million. */
+#define RB_CONFIRM_SPREAD 1e-3
 /* The confirming runs of a pass: the run's own integrator at a tenth and
  * a hundredth of its tolerance, but no tighter than RB_CONFIRM_RTOL_MIN
  * (what double precision can meet). */
@@ -145,16 +152,17 @@ void rb_judge_run(const rb_criteria *c, const rb_model *model, const rb_motion *
                   void *ctx, rb_verdict *v, rb_confirm_run *runs, size_t *n_runs);
 
 /* Fold the confirming runs into v (a pass of rb_judge of a run whose
- * rb_verdict_margin is margin, solved at tolerance rtol): the convergence
- * check is ok when every run passes too and the runs agree, else a
- * warning, and the verdict fails with the first failing run's reason (a
- * run the solver could not finish fails as well). Runs that all pass but
- * whose margins spread by as much as the least of them have not converged
- * so far from the limit that the next tolerance could not reach it: the
- * verdict fails too. n = 0 leaves v as it is, with the check not
- * checked. */
-void rb_verdict_confirm(rb_verdict *v, double margin, double rtol, const rb_confirm_run *runs,
-                        size_t n);
+ * rb_verdict_margin is margin, solved at tolerance rtol, judged with the
+ * confirm band band): the convergence check is ok when every run passes
+ * too and the runs agree, else a warning, and the verdict fails with the
+ * first failing run's reason (a run the solver could not finish fails as
+ * well). Runs that all pass but whose margins lie more than
+ * RB_CONFIRM_SPREAD apart have not converged, and the next tolerance is
+ * another draw from their scatter: the verdict fails too unless every run
+ * has at least band to spare and more than the spread. n = 0 leaves v as
+ * it is, with the check not checked. */
+void rb_verdict_confirm(rb_verdict *v, double margin, double band, double rtol,
+                        const rb_confirm_run *runs, size_t n);
 
 /* A check's name for people ("lift-off") and its JSON key ("lift_off"). */
 const char *rb_check_name(rb_check k);

@@ -60,5 +60,5 @@ void rb_judge_run(const rb_criteria *c, const rb_model *model, const rb_motion *
     for (int k = 0; k < RB_CONFIRM_RUNS; k++)
         confirm_one(c, model, motion, opts, k, solve ? solve : solve_plain, ctx, &runs[k]);
     *n_runs = RB_CONFIRM_RUNS;
-    rb_verdict_confirm(v, rb_verdict_margin(c, r), opts->rtol, runs, *n_runs);
+    rb_verdict_confirm(v, rb_verdict_margin(c, r), c->confirm_band, opts->rtol, runs, *n_runs);
 }

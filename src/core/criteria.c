@@ -297,8 +297,8 @@ int rb_verdict_wants_confirm(const rb_criteria *c, const rb_result *r, const rb_
            || (c->kind == RB_CRIT_NO_YIELD && rb_result_near_contact(r, c->confirm_band));
 }
 
-void rb_verdict_confirm(rb_verdict *v, double margin, double rtol, const rb_confirm_run *runs,
-                        size_t n)
+void rb_verdict_confirm(rb_verdict *v, double margin, double band, double rtol,
+                        const rb_confirm_run *runs, size_t n)
 {
     if (!n)
         return;
@@ -327,8 +327,11 @@ void rb_verdict_confirm(rb_verdict *v, double margin, double rtol, const rb_conf
     /* Every run passes. A response that converges gives them all one
      * margin; one that does not (near grazing, a yielding row's usage under
      * a long excitation) scatters, and a next tolerance is another draw
-     * from that scatter: the pass stands only where the least margin is
-     * larger than the scatter seen. */
+     * from that scatter, which three draws do not bound: passes whose runs
+     * agreed within a twentieth of the limit broke a row in one of six
+     * more. A pass whose runs agree within RB_CONFIRM_SPREAD has
+     * converged; one whose runs do not stands only where every run keeps
+     * the band to spare, and more than the scatter seen. */
     double lo = margin, hi = margin, rt_lo = rtol, rt_hi = rtol;
     for (size_t i = 0; i < n; i++) {
         if (runs[i].margin < lo) {
@@ -340,13 +343,13 @@ void rb_verdict_confirm(rb_verdict *v, double margin, double rtol, const rb_conf
             rt_hi = runs[i].rtol;
         }
     }
-    if (hi - lo < lo)
+    if (hi - lo <= RB_CONFIRM_SPREAD || (lo >= band && hi - lo < lo))
         return;
     v->check[RB_CHECK_CONVERGENCE] = RB_CHECK_WARNING;
     v->warnings |= 1u << RB_CHECK_CONVERGENCE;
     snprintf(v->reason, sizeof v->reason, "not confirmed: %.3g to spare of the nearest limit "
-             "at tolerance %.3g but %.3g at %.3g (%s); the run does not converge, and its "
-             "scatter is as large as what it has to spare", lo, rt_lo, hi, rt_hi,
+             "at tolerance %.3g but %.3g at %.3g (%s); the run does not converge with the "
+             "tolerance, and a further one can take more than that", lo, rt_lo, hi, rt_hi,
              rb_enum_str(rb_integrator_names, runs[0].integrator));
     v->pass = 0;
 }

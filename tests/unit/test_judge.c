@@ -149,36 +149,61 @@ static void margin(void)
  * used 0.765, 0.795 and 0.957 of its toughness at 1e-7, 1e-8 and 1e-9,
  * and broke a row at 1e-10. v is a pass; runs has room for
  * RB_CONFIRM_RUNS. */
-static void scatter(const rb_verdict *v, rb_confirm_run *runs)
+static void scatter_runs(rb_confirm_run *runs, const rb_verdict *v, double m1, double m2)
 {
-    static const double usage[3] = {0.765, 0.795, 0.957};
     for (int k = 0; k < RB_CONFIRM_RUNS; k++) {
         memset(&runs[k], 0, sizeof runs[k]);
         runs[k].solved = 1;
         runs[k].rtol = k ? 1e-9 : 1e-8;
         runs[k].verdict = *v;
-        runs[k].margin = 1 - usage[k + 1];
+        runs[k].margin = k ? m2 : m1;
     }
+}
+
+static void scatter(const rb_verdict *v, rb_confirm_run *runs)
+{
+    const double band = RB_CONFIRM_BAND_DEFAULT;
+    scatter_runs(runs, v, 1 - 0.795, 1 - 0.957);
     rb_verdict v2 = *v;
-    rb_verdict_confirm(&v2, 1 - usage[0], 1e-7, runs, RB_CONFIRM_RUNS);
+    rb_verdict_confirm(&v2, 1 - 0.765, band, 1e-7, runs, RB_CONFIRM_RUNS);
     printf("scatter: %s\n", v2.reason);
     CHECK(!v2.pass && v2.criteria_pass);
     CHECK(v2.check[RB_CHECK_CONVERGENCE] == RB_CHECK_WARNING);
     CHECK(v2.warnings == 1u << RB_CHECK_CONVERGENCE);
     CHECK(strstr(v2.reason, "not confirmed: 0.043 to spare of the nearest limit at tolerance "
                  "1e-09 but 0.235 at 1e-07 (auto)") == v2.reason);
-    /* the same scatter with more to spare: a spread of 0.192 against 0.2 */
-    for (int k = 0; k < RB_CONFIRM_RUNS; k++)
-        runs[k].margin = 1 - (usage[k + 1] - 0.157);
+    /* a scatter smaller than what every run has to spare, but inside the
+     * band: a cabinet under Taft used 0.845, 0.821 and 0.821 of its
+     * toughness and broke a row under rk45 at 1e-7 */
+    scatter_runs(runs, v, 1 - 0.821, 1 - 0.821);
     v2 = *v;
-    rb_verdict_confirm(&v2, 1 - (usage[0] - 0.157), 1e-7, runs, RB_CONFIRM_RUNS);
+    rb_verdict_confirm(&v2, 1 - 0.845, band, 1e-7, runs, RB_CONFIRM_RUNS);
+    CHECK(!v2.pass && v2.check[RB_CHECK_CONVERGENCE] == RB_CHECK_WARNING);
+    CHECK(strstr(v2.reason, "0.155 to spare") && strstr(v2.reason, "0.179 at 1e-08"));
+    /* the same with the band to spare in every run stands */
+    v2 = *v;
+    rb_verdict_confirm(&v2, 1 - 0.845, 0.15, 1e-7, runs, RB_CONFIRM_RUNS);
     CHECK(v2.pass && v2.check[RB_CHECK_CONVERGENCE] == RB_CHECK_OK && !v2.warnings);
-    /* a spread as large as the least margin fails, whichever run has it */
-    runs[0].margin = 0.1;
-    runs[1].margin = 0.2;
+    /* runs within RB_CONFIRM_SPREAD of each other have converged, however
+     * near the limit */
+    scatter_runs(runs, v, 0.0505, 0.0509);
     v2 = *v;
-    rb_verdict_confirm(&v2, 0.15, 1e-7, runs, RB_CONFIRM_RUNS);
-    CHECK(!v2.pass && strstr(v2.reason, "0.1 to spare") && strstr(v2.reason, "0.2 at 1e-09"));
+    rb_verdict_confirm(&v2, 0.05, band, 1e-7, runs, RB_CONFIRM_RUNS);
+    CHECK(v2.pass && v2.check[RB_CHECK_CONVERGENCE] == RB_CHECK_OK && !v2.warnings);
+    runs[1].margin = 0.05 + 1.01 * RB_CONFIRM_SPREAD;
+    v2 = *v;
+    rb_verdict_confirm(&v2, 0.05, band, 1e-7, runs, RB_CONFIRM_RUNS);
+    CHECK(!v2.pass && strstr(v2.reason, "0.05 to spare"));
+    /* beyond the band, a spread as large as the least margin fails,
+     * whichever run has it */
+    scatter_runs(runs, v, 0.5, 0.9);
+    v2 = *v;
+    rb_verdict_confirm(&v2, 0.7, band, 1e-7, runs, RB_CONFIRM_RUNS);
+    CHECK(v2.pass);
+    runs[1].margin = 1.0;
+    v2 = *v;
+    rb_verdict_confirm(&v2, 0.7, band, 1e-7, runs, RB_CONFIRM_RUNS);
+    CHECK(!v2.pass && strstr(v2.reason, "0.5 to spare") && strstr(v2.reason, "1 at 1e-09"));
 }
 
 /* A plate that rocked near bolt heads it never met is confirmed: an
@@ -208,12 +233,12 @@ static void near_contact(void)
     c.kind = RB_CRIT_NO_YIELD;
     rb_judge(&c, &r, &v);
     /* a miss by more than the band is not */
-    r.max_theta_rad = 0.74 * r.theta0_rad;
+    r.max_theta_rad = 0.49 * r.theta0_rad;
     CHECK(!rb_result_near_contact(&r, c.confirm_band));
     CHECK(!rb_verdict_wants_confirm(&c, &r, &v));
-    c.confirm_band = 0.3;
+    c.confirm_band = 0.55;
     CHECK(rb_verdict_wants_confirm(&c, &r, &v));
-    c.confirm_band = 0.25;
+    c.confirm_band = RB_CONFIRM_BAND_DEFAULT;
     /* rows met: their force and usage are the margin's, not the near miss */
     r.max_theta_rad = 0.95 * r.theta0_rad;
     CHECK(rb_result_near_contact(&r, c.confirm_band));
@@ -241,10 +266,10 @@ static void confirmation(void)
     rb_confirm_run runs[RB_CONFIRM_RUNS];
     rb_criteria_init(&c);
     base_result(&r);
-    r.usage[0] = 0.75;           /* margin 0.25, exactly the default band */
+    r.usage[0] = 0.5;            /* margin 0.5, exactly the default band */
     rb_judge(&c, &r, &v);
     CHECK(v.pass && !rb_verdict_wants_confirm(&c, &r, &v));
-    c.confirm_band = 0.3;
+    c.confirm_band = 0.55;
     CHECK(rb_verdict_wants_confirm(&c, &r, &v));
     c.confirm = RB_CONFIRM_ALWAYS;
     CHECK(rb_verdict_wants_confirm(&c, &r, &v));
@@ -271,9 +296,9 @@ static void confirmation(void)
         runs[k].margin = m0;
     }
     rb_verdict v2 = v;
-    rb_verdict_confirm(&v2, m0, 1e-7, runs, 0);
+    rb_verdict_confirm(&v2, m0, c.confirm_band, 1e-7, runs, 0);
     CHECK(v2.pass && v2.check[RB_CHECK_CONVERGENCE] == RB_CHECK_NOT_CHECKED);
-    rb_verdict_confirm(&v2, m0, 1e-7, runs, RB_CONFIRM_RUNS);
+    rb_verdict_confirm(&v2, m0, c.confirm_band, 1e-7, runs, RB_CONFIRM_RUNS);
     CHECK(v2.pass && v2.check[RB_CHECK_CONVERGENCE] == RB_CHECK_OK && !v2.warnings);
     CHECK(strcmp(v2.reason, reason) == 0);
     /* the second fails: the verdict fails with its reason */
@@ -281,7 +306,7 @@ static void confirmation(void)
     r2.usage[0] = 1.05;
     rb_judge(&c, &r2, &runs[1].verdict);
     v2 = v;
-    rb_verdict_confirm(&v2, m0, 1e-7, runs, RB_CONFIRM_RUNS);
+    rb_verdict_confirm(&v2, m0, c.confirm_band, 1e-7, runs, RB_CONFIRM_RUNS);
     CHECK(!v2.pass && v2.criteria_pass);
     CHECK(v2.check[RB_CHECK_CONVERGENCE] == RB_CHECK_WARNING);
     CHECK(v2.warnings == 1u << RB_CHECK_CONVERGENCE);
@@ -292,7 +317,7 @@ static void confirmation(void)
     runs[0].solved = 0;
     runs[0].status = RB_ERR_WORK_LIMIT;
     v2 = v;
-    rb_verdict_confirm(&v2, m0, 1e-7, runs, RB_CONFIRM_RUNS);
+    rb_verdict_confirm(&v2, m0, c.confirm_band, 1e-7, runs, RB_CONFIRM_RUNS);
     CHECK(!v2.pass && strstr(v2.reason, "stopped") != NULL);
     CHECK(strstr(v2.reason, "1e-08") != NULL);
     scatter(&v, runs);

@@ -27,6 +27,13 @@ one, and on shipped cases:
     is not signed: check fails it with the convergence warning and a
     reason naming both margins, each run's margin is check's at its
     tolerance, and with confirm: off it passes;
+  - on tests/verdicts/cases/converge-pass.yaml, whose three runs pass
+    and lie closer together than it is from the limit but more than
+    0.001 apart, the pass is not signed either, unless every run keeps
+    the band to spare (confirm: always with a band of 0.15);
+  - tests/verdicts/cases/wide-band-pass.yaml, 0.31 from the limit, is
+    confirmed within the default band of 0.5 and fails (its run at 1e-8
+    breaks a row), where a band of 0.25 signed it unconfirmed;
   - bad values of the two keys are errors naming file, line, key and
     the expected form."""
 import csv, json, os, re, subprocess, sys
@@ -230,7 +237,46 @@ if sc and sc_off:
             fail(f"the run at {r['tolerance']:g} has margin {r['margin']}, check at that "
                  f"tolerance {conv(d)['margin']}")
 
-# 8. bad values
+# 8. runs that agree better than they are from the limit, but do not
+#    converge: not signed within the band
+CONVERGE = os.path.join(src, "tests/verdicts/cases/converge-pass.yaml")
+cv_off, rc_off = check(variant("converge-off", "confirm: off", base=CONVERGE))
+cv, rc = check(CONVERGE)
+if cv_off and cv:
+    c = conv(cv)
+    margins = [c["margin"]] + [r["margin"] for r in c["runs"]]
+    spread = max(margins) - min(margins)
+    print(f"converge-pass: margins {margins}; {cv['motions'][0]['verdict']['reason']}")
+    if rc_off != 0:
+        fail(f"unconfirmed, the converge case should pass: exit {rc_off}")
+    if len(c["runs"]) != 2 or not all(r["pass"] for r in c["runs"]):
+        fail(f"every confirming run of the converge case should pass: {c['runs']}")
+    if not 1e-3 < spread < min(margins):
+        fail(f"the margins {margins} should lie more than 0.001 apart, and less than "
+             "the least of them")
+    if rc != 1 or c["status"] != "warning" \
+            or "does not converge" not in cv["motions"][0]["verdict"]["reason"]:
+        fail(f"the converge case should fail with a convergence warning: exit {rc}, {c}")
+    kept, rc_kept = check(variant("converge-kept", "confirm: always;confirm_band: 0.15",
+                                  base=CONVERGE))
+    if kept and (rc_kept != 0 or conv(kept)["status"] != "ok"):
+        fail(f"with 0.15 to spare in every run the converge case should pass: exit "
+             f"{rc_kept}, {conv(kept)}")
+WIDE = os.path.join(src, "tests/verdicts/cases/wide-band-pass.yaml")
+narrow, rc_narrow = check(variant("wide-narrow", "confirm_band: 0.25", base=WIDE))
+wide, rc = check(WIDE)
+if narrow and wide:
+    m, band = conv(wide)["margin"], conv(wide)["band"]
+    if not 0.25 <= m < band:
+        fail(f"the wide-band case's margin {m} should lie between 0.25 and the default "
+             f"band {band}")
+    if rc_narrow != 0 or conv(narrow)["status"] != "not-checked":
+        fail(f"with a band of 0.25 the wide-band case passes unconfirmed: exit {rc_narrow}")
+    if rc != 1 or conv(wide)["status"] != "warning" \
+            or not any(not r["pass"] for r in conv(wide)["runs"]):
+        fail(f"the wide-band case should be confirmed and fail: exit {rc}, {conv(wide)}")
+
+# 9. bad values
 for key, value, expected in (("confirm", "maybe", "one of marginal, always, off"),
                              ("confirm_band", "0", "> 0 and <= 1"),
                              ("confirm_band", "1.5", "> 0 and <= 1")):
