@@ -253,19 +253,17 @@ static void point_at(const rb_solver *sv, const double *z, point *p)
     p->y[RB_Y_UD] = z[ZV];
 }
 
-/* What rb_dyn_rhs gives besides the derivatives on the floor (as
- * rb_taylor_aux: the plate level, no bolt force, no coupling work). */
+/* What rb_dyn_rhs gives besides the derivatives on the floor, from the
+ * point laid out as a still Taylor step's series are. */
 static void aux_of(const rb_solver *sv, const point *p, rb_aux *a)
 {
-    double sgn = sv->disc.side < 0 ? -1.0 : 1.0;
-    a->x = p->x;
-    a->udd = sgn * p->udd;
-    a->thdd = 0;
-    a->cos_th = 1;
-    a->sin_th = 0;
-    a->bolt_force = 0;
-    a->p_input = p->x * sv->sys.d.Nstar * p->y[RB_Y_UD];
-    a->p_coupling = 0;
+    double v[RB_TS_N] = {0};
+    v[RB_TS_U] = p->y[RB_Y_U];
+    v[RB_TS_UD] = p->y[RB_Y_UD];
+    v[RB_TS_X] = p->x;
+    v[RB_TS_UDD] = p->udd;
+    v[RB_TS_COS] = 1;
+    rb_aux_of_values(&sv->sys, &sv->disc, 0, 0, v, a);
 }
 
 static double quad(const double q[ZN][ZN], const double *z)
@@ -387,7 +385,7 @@ int rb_exact_step(rb_solver *sv, double target, double *g, rb_status *status)
     sv->f[RB_Y_TH] = sv->f[RB_Y_THD] = 0;
     sv->f[RB_Y_WDAMP] = sv->sys.d.Cstar * p[n].y[RB_Y_UD] * p[n].y[RB_Y_UD];
     sv->f[RB_Y_WIN] = a.p_input;
-    sv->f[RB_Y_WCPL] = 0;
+    sv->f[RB_Y_WCPL] = a.p_coupling;
     memcpy(g, gs[n], sizeof gs[n]);
     rb_track_aux(sv, t1, sv->y, &a);
     rb_track_span_none(sv);

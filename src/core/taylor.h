@@ -65,6 +65,12 @@ void rb_taylor_check(const rb_taylor *ts, double tau, double *v);
 void rb_taylor_aux(const rb_sys *S, const rb_disc *D, const rb_taylor *ts, const double *v,
                    rb_aux *a);
 
+/* The same from values v laid out as the series are, for a plate that
+ * rocks or not, held (stage 4) with the lever arm lever_hold: the exact
+ * steps' points give their aux this way. */
+void rb_aux_of_values(const rb_sys *S, const rb_disc *D, int rocking, double lever_hold,
+                      const double *v, rb_aux *a);
+
 /* Root in [a, b] (tau) of U' (c = RB_Y_UD) or theta' (RB_Y_THD), which
  * change sign from fa to fb there: Newton's method on the series and its
  * derivative, kept inside the bracket, to tol in tau. */

@@ -118,9 +118,14 @@ void rb_taylor_all(const rb_taylor *ts, double tau, double *y)
 void rb_taylor_aux(const rb_sys *S, const rb_disc *D, const rb_taylor *ts, const double *v,
                    rb_aux *a)
 {
+    rb_aux_of_values(S, D, ts->rocking, ts->lever_hold, v, a);
+}
+
+void rb_aux_of_values(const rb_sys *S, const rb_disc *D, int rocking, double lever_hold,
+                      const double *v, rb_aux *a)
+{
     const rb_derived *d = &S->d;
     double sgn = D->side < 0 ? -1.0 : 1.0;
-    int rocking = ts->rocking;
     a->x = v[RB_TS_X];
     a->udd = sgn * v[RB_TS_UDD];
     a->thdd = sgn * v[RB_TS_THDD];
@@ -143,7 +148,7 @@ void rb_taylor_aux(const rb_sys *S, const rb_disc *D, const rb_taylor *ts, const
     else if (D->stage == RB_STAGE_HELD) {
         double Qth = small ? xm * in_th - d->W * d->R * (d->alpha - th)
                            : xm * in_th - d->W * (S->b * c - S->h * sn);
-        a->bolt_force = (Qth - d->Fstar * a->udd) / ts->lever_hold;
+        a->bolt_force = (Qth - d->Fstar * a->udd) / lever_hold;
     }
 }
 
