@@ -68,6 +68,29 @@ def conv(d, i=0):
     return d["motions"][i]["validity"]["convergence"]
 
 
+def unconverged(name, path):
+    """A case whose three runs all pass but do not converge: unconfirmed it
+    passes; confirmed it fails with the convergence warning. Its report,
+    convergence check and three margins (None where it could not run)."""
+    on, rc = check(path)
+    off, rc_off = check(variant(f"{name}-off", "confirm: off", base=path))
+    if not (on and off):
+        return None, None, None
+    c = conv(on)
+    margins = [c["margin"]] + [r["margin"] for r in c["runs"]]
+    print(f"{name}: margins {margins}; {on['motions'][0]['verdict']['reason']}")
+    if rc_off != 0 or off["verdict"]["result"] != "PASS":
+        fail(f"unconfirmed, the {name} case should pass: exit {rc_off}")
+    if not all(r["pass"] for r in c["runs"]) or len(c["runs"]) != 2:
+        fail(f"every confirming run of the {name} case should pass: {c['runs']}")
+    if rc != 1 or on["verdict"]["result"] != "FAIL" or c["status"] != "warning" \
+            or "convergence" not in on["verdict"]["validity_warnings"]:
+        fail(f"the {name} case should fail with a convergence warning: exit {rc}, {c}")
+    if off["motions"][0]["result"] != on["motions"][0]["result"]:
+        fail(f"confirmation changed the {name} case's reported run")
+    return on, c, margins
+
+
 # 1. the marginal case: a pass unconfirmed, a fail confirmed
 off, rc_off = check(variant("off", "confirm: off"))
 on, rc_on = check(MARGINAL)
@@ -202,24 +225,13 @@ if p.returncode in (0, 1):
     if f"; {n} higher pass{'es' if n != 1 else ''} not confirmed" not in nb["summary"]:
         fail(f"the design's summary does not say so: {nb['summary']}")
 
-# 7. runs that all pass and scatter: not signed
+# 7. runs that all pass and scatter by more than the least margin: not signed
 SCATTER = os.path.join(src, "tests/verdicts/cases/scatter-pass.yaml")
-sc, rc = check(SCATTER)
-sc_off, rc_off = check(variant("scatter-off", "confirm: off", base=SCATTER))
-if sc and sc_off:
-    c = conv(sc)
+sc, c, margins = unconverged("scatter-pass", SCATTER)
+if sc:
     reason = sc["motions"][0]["verdict"]["reason"]
-    margins = [c["margin"]] + [r["margin"] for r in c["runs"]]
-    print(f"scatter-pass: margins {margins}; {reason}")
-    if rc_off != 0 or sc_off["verdict"]["result"] != "PASS":
-        fail(f"unconfirmed, the scatter case should pass: exit {rc_off}")
-    if not all(r["pass"] for r in c["runs"]) or len(c["runs"]) != 2:
-        fail(f"every confirming run of the scatter case should pass: {c['runs']}")
     if not max(margins) - min(margins) >= min(margins):
         fail(f"the margins {margins} do not scatter by their least")
-    if rc != 1 or sc["verdict"]["result"] != "FAIL" or c["status"] != "warning" \
-            or "convergence" not in sc["verdict"]["validity_warnings"]:
-        fail(f"the scatter case should fail with a convergence warning: exit {rc}, {c}")
     lo = min(c["runs"], key=lambda r: r["margin"])
     hi = max(c["runs"] + [{"margin": c["margin"], "tolerance": 1e-7}],
              key=lambda r: r["margin"])
@@ -228,8 +240,6 @@ if sc and sc_off:
             "the run does not converge")
     if not reason.startswith(want):
         fail(f"reason '{reason}', expected it to start '{want}'")
-    if sc["motions"][0]["result"] != sc_off["motions"][0]["result"]:
-        fail("confirmation changed the reported run")
     for r in c["runs"]:
         d, _ = check(variant(f"scatter-at-{r['tolerance']:g}", "confirm: off",
                              f"tolerance: {r['tolerance']:g}", base=SCATTER))
@@ -240,23 +250,13 @@ if sc and sc_off:
 # 8. runs that agree better than they are from the limit, but do not
 #    converge: not signed within the band
 CONVERGE = os.path.join(src, "tests/verdicts/cases/converge-pass.yaml")
-cv_off, rc_off = check(variant("converge-off", "confirm: off", base=CONVERGE))
-cv, rc = check(CONVERGE)
-if cv_off and cv:
-    c = conv(cv)
-    margins = [c["margin"]] + [r["margin"] for r in c["runs"]]
-    spread = max(margins) - min(margins)
-    print(f"converge-pass: margins {margins}; {cv['motions'][0]['verdict']['reason']}")
-    if rc_off != 0:
-        fail(f"unconfirmed, the converge case should pass: exit {rc_off}")
-    if len(c["runs"]) != 2 or not all(r["pass"] for r in c["runs"]):
-        fail(f"every confirming run of the converge case should pass: {c['runs']}")
-    if not 1e-3 < spread < min(margins):
+cv, c, margins = unconverged("converge-pass", CONVERGE)
+if cv:
+    if not 1e-3 < max(margins) - min(margins) < min(margins):
         fail(f"the margins {margins} should lie more than 0.001 apart, and less than "
              "the least of them")
-    if rc != 1 or c["status"] != "warning" \
-            or "does not converge" not in cv["motions"][0]["verdict"]["reason"]:
-        fail(f"the converge case should fail with a convergence warning: exit {rc}, {c}")
+    if "does not converge" not in cv["motions"][0]["verdict"]["reason"]:
+        fail(f"the converge case's reason: {cv['motions'][0]['verdict']['reason']}")
     kept, rc_kept = check(variant("converge-kept", "confirm: always;confirm_band: 0.15",
                                   base=CONVERGE))
     if kept and (rc_kept != 0 or conv(kept)["status"] != "ok"):
