@@ -15,6 +15,14 @@ static void base_result(rb_result *r)
     r->rigid_bolts = 1;
 }
 
+/* The no-yield criterion with its defaults, judging base_result. */
+static void no_yield_setup(rb_criteria *c, rb_result *r)
+{
+    rb_criteria_init(c);
+    c->kind = RB_CRIT_NO_YIELD;
+    base_result(r);
+}
+
 /* The number after "= " or "usage " in a reason. */
 static double number_in(const char *reason, const char *after)
 {
@@ -27,9 +35,7 @@ static void no_yield_whatever_the_model(void)
     rb_criteria c;
     rb_result r;
     rb_verdict v;
-    rb_criteria_init(&c);
-    c.kind = RB_CRIT_NO_YIELD;
-    base_result(&r);
+    no_yield_setup(&c, &r);
     /* non-yielding bolts record no yield; their force decides */
     r.max_bolt_force_n[1] = 1.392 * r.fy_row_n;
     rb_judge(&c, &r, &v);
@@ -215,9 +221,7 @@ static void near_contact(void)
     rb_criteria c;
     rb_result r;
     rb_verdict v;
-    rb_criteria_init(&c);
-    c.kind = RB_CRIT_NO_YIELD;
-    base_result(&r);
+    no_yield_setup(&c, &r);
     r.alpha_rad = 0.430852;
     r.theta0_rad = 0.00899938;
     r.max_theta_rad = 0.877 * r.theta0_rad;
