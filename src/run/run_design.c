@@ -55,6 +55,7 @@ typedef struct {
     const rb_case_motion *cm;
     int full;
     int n_threads;              /* of each search */
+    int sweep_threads;          /* of the amplitude sweeps */
     const rb_case_design *cd;
     rb_design_memo *memo;
     rb_motion_design *md;
@@ -113,7 +114,7 @@ static rb_status amplitude_sweeps(searches *s, rb_diag *diag)
             continue;
         step(s->pg, s->cm->name, "amplitude sweep");
         rb_status st = rb_sweep_amplitude(&c->model, &s->cm->motion, &c->solve,
-                                          &c->criteria, &c->sweeps[i], s->n_threads,
+                                          &c->criteria, &c->sweeps[i], s->sweep_threads,
                                           s->memo, &md->sweeps[md->n_sweeps++], diag);
         if (st != RB_OK)
             return fail_at(diag, s->cm->name, "amplitude sweep", st);
@@ -146,6 +147,11 @@ static rb_status design_searches(const rb_case *c, const rb_case_motion *cm,
      * the wait (rounding up oversubscribes a little rather than idle) */
     int outer = nt < N_JOBS ? nt : N_JOBS;
     s.n_threads = (nt + outer - 1) / outer;
+    /* the sweeps start last, when one search is done; their points wait
+     * on nothing, so they take every thread and fill the core the other
+     * search leaves when it ends (a search given more threads would
+     * evaluate levels it may not need) */
+    s.sweep_threads = nt;
     rb_status st = rb_pool_map(N_JOBS, outer, search_job, &s, sts);
     for (int i = 0; i < N_JOBS && st == RB_OK; i++)
         if (sts[i] != RB_OK) {
