@@ -109,7 +109,7 @@ static rb_status scan(factor_search *s, const rb_design_opts *d, rb_diag *diag)
     for (size_t k = 0; k < n_grid;) {
         size_t n = n_grid - k < s->nt ? n_grid - k : s->nt;
         for (size_t j = 0; j < n; j++)
-            s->levels[j] = d->scan_start + (double)(k + j) * d->scan_step;
+            s->levels[j] = rb_design_grid_point(d->scan_start + (double)(k + j) * d->scan_step);
         rb_status st = eval_levels(s, n);
         if (st != RB_OK)
             return st;

@@ -34,6 +34,12 @@ rb_status rb_design_ctx_init(rb_design_ctx *ctx, const rb_model *model,
 /* A copy of the shape whose peak floor acceleration is level_mps2. */
 void rb_design_motion_at(const rb_design_ctx *ctx, double level_mps2, rb_motion *out);
 
+/* A grid point (a scan level, a sweep's x) to 12 significant digits:
+ * grids that name the same level by different arithmetic (a scan's
+ * start + k step, a sweep's from + (to - from) i / (n - 1)) then run the
+ * same motion and share its run through the memo. */
+double rb_design_grid_point(double x);
+
 /* Outcome of one run, what the searches keep of an rb_result. */
 typedef struct {
     rb_status status;

@@ -3,6 +3,7 @@
  * that they scale motions and judge runs the same way. */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include "design_internal.h"
 
@@ -57,6 +58,15 @@ rb_status rb_design_ctx_init(rb_design_ctx *ctx, const rb_model *model,
                                   "the sampled motion has no nonzero sample to scale");
     }
     return RB_OK;
+}
+
+double rb_design_grid_point(double x)
+{
+    char buf[32];
+    /* the nearest double to the 12-digit decimal, correctly rounded both
+     * ways, so that two grids agree whenever their decimals do */
+    snprintf(buf, sizeof buf, "%.11e", x);
+    return strtod(buf, NULL);
 }
 
 void rb_design_motion_at(const rb_design_ctx *ctx, double level_mps2, rb_motion *out)

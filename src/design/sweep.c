@@ -45,7 +45,7 @@ static double x_at(const rb_sweep_opts *o, size_t i)
 {
     if (o->n_points < 2)
         return o->from;
-    return o->from + (o->to - o->from) * (double)i / (double)(o->n_points - 1);
+    return rb_design_grid_point(o->from + (o->to - o->from) * (double)i / (double)(o->n_points - 1));
 }
 
 static void keep_point(rb_sweep_point *p, const rb_design_run *run, double a_star)

@@ -422,6 +422,41 @@ static void memo_changes_nothing(const rb_model *m, const rb_motion *mo)
     rb_design_memo_free(memo);
 }
 
+/* A sweep's levels, from + (to - from) i / (n - 1), land on the scan's
+ * start + k step wherever the two name the same level, however the two
+ * round: 0.15, 0.35 and 0.4 of 0.05 to 0.6 in 12 points differ from the
+ * scan's doubles in the last bit. Without criteria nothing is confirmed,
+ * so the sweep's solves are exactly its levels the scan did not reach. */
+static void sweep_levels_meet_scan(const rb_model *m, const rb_motion *mo)
+{
+    rb_criteria cb;
+    rb_design_opts d;
+    rb_sweep_opts so;
+    rb_design_factor_result f;
+    rb_sweep sw;
+    rb_design_memo *memo = rb_design_memo_new();
+    CHECK(memo != NULL);
+    rb_criteria_init(&cb);
+    cb.kind = RB_CRIT_NO_BREAK;
+    rb_design_opts_defaults(&d);
+    rb_sweep_opts_init(&so, RB_SWEEP_AMPLITUDE);
+    so.from = 0.05;
+    so.to = 0.6;
+    so.n_points = 12;
+    CHECK(rb_design_factor(m, mo, NULL, &cb, &d, 2, memo, &f, NULL) == RB_OK);
+    size_t before = rb_design_memo_runs(memo);
+    CHECK(rb_sweep_amplitude(m, mo, NULL, NULL, &so, 2, memo, &sw, NULL) == RB_OK);
+    size_t solved = rb_design_memo_runs(memo) - before, unscanned = 0;
+    for (size_t i = 0; i < sw.n_points; i++)
+        unscanned += sw.points[i].x > f.first_fail_astar * (1 + 1e-12);
+    printf("sweep of 12 levels after a scan to %.2f A*: %zu solved, %zu above the scan\n",
+           f.first_fail_astar, solved, unscanned);
+    CHECK(unscanned < so.n_points);
+    CHECK(solved == unscanned);
+    rb_sweep_free(&sw);
+    rb_design_memo_free(memo);
+}
+
 static void elcentro_checks(void)
 {
     rb_series s = {0};
@@ -433,6 +468,7 @@ static void elcentro_checks(void)
         factor_deterministic(&m, &mo);
         gap_search_consistent(&m, &mo);
         memo_changes_nothing(&m, &mo);
+        sweep_levels_meet_scan(&m, &mo);
     }
     rb_series_free(&s);
 }
