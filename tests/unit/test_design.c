@@ -364,6 +364,20 @@ static void factor_deterministic(const rb_model *m, const rb_motion *mo)
     CHECK(!run_meets(m, &at, &c));
 }
 
+/* What the memo tests search with: no-break criteria, the default scan,
+ * and an amplitude sweep from 0.05 A* to `to` in n points. */
+static void shared_setup(rb_criteria *cb, rb_design_opts *d, rb_sweep_opts *so, double to,
+                         size_t n)
+{
+    rb_criteria_init(cb);
+    cb->kind = RB_CRIT_NO_BREAK;
+    rb_design_opts_defaults(d);
+    rb_sweep_opts_init(so, RB_SWEEP_AMPLITUDE);
+    so->from = 0.05;
+    so->to = to;
+    so->n_points = n;
+}
+
 /* Searches sharing a memo give the results they give alone, bit for bit,
  * and the second factor search finds the first one's scan levels there. */
 static void memo_changes_nothing(const rb_model *m, const rb_motion *mo)
@@ -375,15 +389,9 @@ static void memo_changes_nothing(const rb_model *m, const rb_motion *mo)
     rb_sweep sw_alone, sw_shared;
     rb_design_memo *memo = rb_design_memo_new();
     CHECK(memo != NULL);
-    rb_criteria_init(&cy);
+    shared_setup(&cb, &d, &so, 0.3, 6);
+    cy = cb;
     cy.kind = RB_CRIT_NO_YIELD;
-    cb = cy;
-    cb.kind = RB_CRIT_NO_BREAK;
-    rb_design_opts_defaults(&d);
-    rb_sweep_opts_init(&so, RB_SWEEP_AMPLITUDE);
-    so.from = 0.05;
-    so.to = 0.3;
-    so.n_points = 6;
     CHECK(rb_design_factor(m, mo, NULL, &cy, &d, 2, NULL, &alone[0], NULL) == RB_OK);
     CHECK(rb_design_factor(m, mo, NULL, &cb, &d, 2, NULL, &alone[1], NULL) == RB_OK);
     CHECK(rb_sweep_amplitude(m, mo, NULL, &cb, &so, 2, NULL, &sw_alone, NULL) == RB_OK);
@@ -436,13 +444,7 @@ static void sweep_levels_meet_scan(const rb_model *m, const rb_motion *mo)
     rb_sweep sw;
     rb_design_memo *memo = rb_design_memo_new();
     CHECK(memo != NULL);
-    rb_criteria_init(&cb);
-    cb.kind = RB_CRIT_NO_BREAK;
-    rb_design_opts_defaults(&d);
-    rb_sweep_opts_init(&so, RB_SWEEP_AMPLITUDE);
-    so.from = 0.05;
-    so.to = 0.6;
-    so.n_points = 12;
+    shared_setup(&cb, &d, &so, 0.6, 12);
     CHECK(rb_design_factor(m, mo, NULL, &cb, &d, 2, memo, &f, NULL) == RB_OK);
     size_t before = rb_design_memo_runs(memo);
     CHECK(rb_sweep_amplitude(m, mo, NULL, NULL, &so, 2, memo, &sw, NULL) == RB_OK);
