@@ -6,7 +6,9 @@
  * `rockbolt design cases/reference-elcentro.yaml` runs them, and the whole
  * of cases/reference-design.yaml (its sweeps and code inputs too). Usage:
  * bench_design [RECORD] [THREADS], from the source root. Targets: the
- * whole design in under 1 s, reference-design.yaml in under 0.2 s. */
+ * whole design in under 1 s, reference-design.yaml in under 0.2 s (the
+ * searches here; bench/design-command.sh times the whole command, its
+ * check, loading and report included). */
 #include <stdio.h>
 #include <stdlib.h>
 #include "rockbolt/design.h"
