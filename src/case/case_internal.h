@@ -239,9 +239,10 @@ rb_status rb_case_read_merged_text(rb_cctx *c, const char *name, unsigned char *
 int rb_case_read_synthetic(rb_cctx *c, rb_ynode *map, rb_cmotion *cm);
 /* Make the target cm names (reading a table file); 0 after an error. */
 int rb_case_make_target(rb_cctx *c, const rb_cmotion *cm, rb_case_target *ct);
-/* Generate motion number index of cm's suite into out; 0 after an error. */
-int rb_case_build_synthetic(rb_cctx *c, const rb_cmotion *cm, const rb_case_target *ct,
-                            unsigned index, rb_case_motion *out);
+/* Generate cm's suite of count motions into out[0..count); 0 after an
+ * error, reported at the first motion that could not be made. */
+int rb_case_build_suite(rb_cctx *c, const rb_cmotion *cm, const rb_case_target *ct,
+                        rb_case_motion *out, size_t count);
 /* A file a case names, relative to the directory of the file that named
  * it, or "shipped:NAME" in the data directory (rockbolt/datadir.h); NULL
  * when out of memory. */

@@ -375,10 +375,7 @@ void rb_case_resolve(rb_cctx *c, rb_case *cs, const rb_ynode *root)
                 continue;
             }
             cs->n_targets++;
-            int ok = 1;
-            for (size_t j = first; j < at && ok && !c->nomem; j++)
-                ok = rb_case_build_synthetic(c, cm, ct, (unsigned)(j - first), &cs->motions[j]);
-            if (!ok)
+            if (!rb_case_build_suite(c, cm, ct, &cs->motions[first], at - first))
                 continue;
         } else if (!build_motion(c, cm, &cs->motions[first], &d, have_model)) {
             continue;
