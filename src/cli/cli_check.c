@@ -12,6 +12,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include "cli.h"
+#include "util/pool.h"
 #include "rockbolt/outplan.h"
 #include "rockbolt/plot.h"
 #include "rockbolt/run.h"
@@ -113,25 +114,51 @@ static rb_exit prepare(const rb_cli_opts *o, check_run *r)
     return RB_EXIT_PASS;
 }
 
-/* Solve and judge every motion; a solver failure is exit 3. */
+/* The motions of a case solved side by side: each writes only its own
+ * result, report entry and diagnostic. */
+typedef struct {
+    check_run *r;
+    int figures;
+    rb_diag *diags;
+} motion_jobs;
+
+static rb_status motion_job(void *v, size_t i)
+{
+    motion_jobs *m = v;
+    rb_diag_clear(&m->diags[i]);
+    return rb_run_motion(&m->r->c, i, m->figures, &m->r->results[i], &m->r->rms[i],
+                         &m->diags[i]);
+}
+
+/* Solve and judge every motion; a solver failure is exit 3, reported for
+ * the first motion that failed, as if they had been solved in order. */
 static rb_exit solve_all(const rb_cli_opts *o, check_run *r)
 {
-    int figures = o->history_path || o->svg_path || o->html_path;
-    for (size_t i = 0; i < r->c.n_motions; i++) {
-        rb_diag d;
-        rb_diag_clear(&d);
-        rb_status st = rb_run_motion(&r->c, i, figures, &r->results[i], &r->rms[i], &d);
-        if (st != RB_OK) {
+    size_t n = r->c.n_motions;
+    motion_jobs m = {r, o->history_path || o->svg_path || o->html_path, NULL};
+    rb_status *sts = calloc(n ? n : 1, sizeof *sts);
+    m.diags = calloc(n ? n : 1, sizeof *m.diags);
+    rb_status st = sts && m.diags ? rb_pool_map(n, o->threads, motion_job, &m, sts)
+                                  : RB_ERR_NOMEM;
+    rb_exit e = RB_EXIT_PASS;
+    if (st != RB_OK) {
+        rb_cli_error(o->case_path, NULL, "%s", rb_status_str(st));
+        e = RB_EXIT_INTERNAL;
+    }
+    for (size_t i = 0; i < n && e == RB_EXIT_PASS; i++)
+        if (sts[i] != RB_OK) {
             const char *name = r->c.motions[i].name;
             char key[128];
             snprintf(key, sizeof key, "motion '%.100s'", name ? name : "?");
-            rb_cli_error(o->case_path, key, "%s%s%s", rb_status_str(st),
-                         d.msg[0] ? ": " : "", d.msg);
-            return RB_EXIT_INTERNAL;
+            rb_cli_error(o->case_path, key, "%s%s%s", rb_status_str(sts[i]),
+                         m.diags[i].msg[0] ? ": " : "", m.diags[i].msg);
+            e = RB_EXIT_INTERNAL;
         }
-    }
-    rb_run_conclude(&r->c, r->rms, &r->rep);
-    return RB_EXIT_PASS;
+    free(sts);
+    free(m.diags);
+    if (e == RB_EXIT_PASS)
+        rb_run_conclude(&r->c, r->rms, &r->rep);
+    return e;
 }
 
 static rb_exit render_reports(const rb_cli_opts *o, check_run *r)

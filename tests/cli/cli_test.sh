@@ -328,6 +328,15 @@ test_solver_error() {
     [ -e "$D/h.csv" ] && fail "history written by a failed solve"
     [ -s "$D/out" ] && fail "stdout not empty after a failed solve"
     no_temp_files "$D"
+    # the motions are solved side by side, but the error is the first
+    # failing motion's alone, as if they were solved in order
+    sq='type: record, file: square.txt, format: one-column, units: g, dt: 0.01 ms'
+    printf 'extends: %s/cases/base/reference-cabinet.yaml\nmotions:\n  - {type: harmonic, name: calm, frequency: 2 Hz, amplitude: 0.01 A*, duration: 1 s}\n  - {%s, name: first}\n  - {%s, name: second}\n' \
+        "$(pwd)" "$sq" "$sq" >"$D/two.yaml"
+    run check "$D/two.yaml"
+    expect_rc 3 "solver failure of two motions"
+    [ "$(wc -l <"$D/err")" -eq 1 ] || fail "one diagnostic for two failing motions"
+    grep -q "^$D/two.yaml: error: motion 'first': " "$D/err" || fail "the first failing motion named"
     echo "solver error: ok"
 }
 
