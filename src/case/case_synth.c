@@ -287,7 +287,7 @@ static int build_one(rb_cctx *c, const rb_cmotion *cm, const rb_case_target *ct,
                          RB_CASE_MAX_SAMPLES, n, c->n_samples);
         return 0;
     }
-    /* the cases of a batch that share a suite generate it once */
+    /* a motion made here goes to the cache, for the rows of a batch after it */
     rb_record_opts none;
     rb_record_opts_init(&none);
     rb_status st;
@@ -375,6 +375,7 @@ int rb_case_build_suite(rb_cctx *c, const rb_cmotion *cm, const rb_case_target *
     rb_record_opts none;
     rb_record_opts_init(&none);
     size_t ahead = generated_ahead(c, cm, ct, count), i;
+    /* the cases of a batch that share a suite generate it once */
     for (i = 0; i < count; i++) {
         job_init(cm, ct, (unsigned)i, &jobs[i]);
         jobs[i].cached = i < ahead && jobs[i].keyed
