@@ -1,27 +1,14 @@
 # Robustness of the executable towards its files (label "robustness"):
 # unwritable outputs refused before solving, inputs never modified. See
 # robustness.sh for what each test checks.
-set(RB_ROBUSTNESS_TESTS unwritable inputs over_inputs)
-foreach(t ${RB_ROBUSTNESS_TESTS})
-  add_test(NAME robustness_${t}
-           COMMAND sh ${PROJECT_SOURCE_DIR}/tests/robustness/robustness.sh ${t}
-                   $<TARGET_FILE:rockbolt>
-                   ${CMAKE_CURRENT_BINARY_DIR}/robustness-scratch/${t})
-  set_tests_properties(robustness_${t} PROPERTIES LABELS robustness
-      WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} SKIP_RETURN_CODE 77 TIMEOUT 120)
-endforeach()
+rb_shell_tests(PREFIX robustness SCRIPT tests/robustness/robustness.sh SCRATCH robustness
+               LABEL robustness TIMEOUT 120 TESTS unwritable inputs over_inputs)
 
 # What the executable writes and leaves behind (outputs.sh): clashes with
 # inputs and other outputs, special files, long names, signals, reasons.
-set(RB_OUTPUT_TESTS fanout clashes special names signals reasons)
-foreach(t ${RB_OUTPUT_TESTS})
-  add_test(NAME outputs_${t}
-           COMMAND sh ${PROJECT_SOURCE_DIR}/tests/robustness/outputs.sh ${t}
-                   $<TARGET_FILE:rockbolt>
-                   ${CMAKE_CURRENT_BINARY_DIR}/outputs-scratch/${t})
-  set_tests_properties(outputs_${t} PROPERTIES LABELS robustness
-      WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} SKIP_RETURN_CODE 77 TIMEOUT 120)
-endforeach()
+rb_shell_tests(PREFIX outputs SCRIPT tests/robustness/outputs.sh SCRATCH outputs
+               LABEL robustness TIMEOUT 120
+               TESTS fanout clashes special names signals reasons)
 
 # Property: the exit code and every file written are the same whatever
 # other outputs are asked for (random cases and option sets, 40 s budget).

@@ -1,13 +1,8 @@
 # The verdict of a run (label "verdicts"): one judge for every command, the
 # model's validity checks, and list rows that keep what they do not name.
-foreach(t no_yield validity)
-  add_test(NAME verdict_${t}
-           COMMAND sh ${PROJECT_SOURCE_DIR}/tests/verdicts/verdict_test.sh ${t}
-                   $<TARGET_FILE:rockbolt> $<TARGET_FILE:jsonget>
-                   ${CMAKE_CURRENT_BINARY_DIR}/verdict-scratch/${t})
-  set_tests_properties(verdict_${t} PROPERTIES LABELS verdicts
-      WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} TIMEOUT 300)
-endforeach()
+rb_shell_tests(PREFIX verdict SCRIPT tests/verdicts/verdict_test.sh SCRATCH verdict
+               LABEL verdicts TIMEOUT 300 TOOLS $<TARGET_FILE:jsonget>
+               TESTS no_yield validity)
 add_executable(judge_probe ${PROJECT_SOURCE_DIR}/tests/verdicts/judge_probe.c)
 rb_target_defaults(judge_probe)
 target_link_libraries(judge_probe PRIVATE rb_all PkgConfig::CJSON)
