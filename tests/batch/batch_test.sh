@@ -9,20 +9,8 @@ rb=$2
 s=$3
 rm -rf "$s"
 mkdir -p "$s"
-fail() { echo "FAIL: $*" >&2; exit 1; }
+. tests/expect.sh
 inputs="tests/batch/cases tests/batch/list.csv"
-
-# run EXPECTED_RC ARGS...: rockbolt with stdout/stderr kept in $s
-run() {
-    want=$1
-    shift
-    "$rb" "$@" >"$s/out" 2>"$s/err"
-    rc=$?
-    [ "$rc" -eq "$want" ] || { cat "$s/err" >&2; fail "rockbolt $* exited $rc, expected $want"; }
-}
-
-has() { grep -q -- "$2" "$1" || fail "$1 lacks '$2'"; }
-lacks() { ! grep -q -- "$2" "$1" || fail "$1 has '$2'"; }
 
 check_junit() {
     if command -v python3 >/dev/null 2>&1; then

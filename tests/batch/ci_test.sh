@@ -10,19 +10,9 @@ s=$3
 src=$(pwd)
 rm -rf "$s"
 mkdir -p "$s"
-fail() { echo "FAIL: $*" >&2; exit 1; }
+. tests/expect.sh
 need_python() { command -v python3 >/dev/null 2>&1 || { echo "python3 not found"; exit 77; }; }
 
-# run EXPECTED_RC ARGS...: rockbolt with stdout/stderr kept in $s
-run() {
-    want=$1
-    shift
-    "$rb" "$@" >"$s/out" 2>"$s/err"
-    rc=$?
-    [ "$rc" -eq "$want" ] || { cat "$s/err" >&2; fail "rockbolt $* exited $rc, expected $want"; }
-}
-has() { grep -q -- "$2" "$1" || fail "$1 lacks '$2'"; }
-lacks() { ! grep -q -- "$2" "$1" || fail "$1 has '$2'"; }
 
 # valid_outputs DIR: b.json is UTF-8 JSON, b.xml well-formed XML, b.csv UTF-8
 valid_outputs() {

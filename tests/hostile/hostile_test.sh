@@ -9,20 +9,11 @@ rb=$2
 s=$3
 rm -rf "$s"
 mkdir -p "$s"
-fail() { echo "FAIL: $*" >&2; exit 1; }
+. tests/expect.sh
 base="$PWD/tests/batch/base/harmonic.yaml"
 esc=$(printf '\033')
 cr=$(printf '\r')
 
-run() {
-    want=$1
-    shift
-    "$rb" "$@" >"$s/out" 2>"$s/err"
-    rc=$?
-    [ "$rc" -eq "$want" ] || { cat "$s/err" >&2; fail "rockbolt $* exited $rc, expected $want"; }
-}
-has() { grep -q -- "$2" "$1" || fail "$1 lacks '$2'"; }
-lacks() { ! grep -q -- "$2" "$1" || fail "$1 has '$2'"; }
 # no ESC and no carriage return in a file
 no_ctl() {
     for f in "$@"; do
