@@ -114,16 +114,28 @@ rb_governing rb_result_governing(const rb_result *r);
  * A pass within c->confirm_band of it is marginal. */
 double rb_verdict_margin(const rb_criteria *c, const rb_result *r);
 
+/* The band within which a pass under motion is confirmed: the criteria's
+ * confirm_band, or the whole range (1) under a harmonic. A steady
+ * harmonic keeps a chaotic rocking response going to its end, and another
+ * tolerance took a harmonic's margin further than any band: among 1 362
+ * random harmonic passes under no-break, by up to 0.71 of the limit in
+ * runs that held and from 0.97 to a broken row in one that did not
+ * (docs/report-format.md, "Confirmation"). With a band of 1 every
+ * harmonic pass that moved is confirmed, and stands only where its runs
+ * converge. */
+double rb_confirm_band(const rb_criteria *c, const rb_motion *motion);
+
 /* Whether r's plate came within the fraction band of the contact angle of
  * rows it never met (their limits untouched, but a touch would load them). */
 int rb_result_near_contact(const rb_result *r, double band);
 
 /* Whether v, rb_judge's verdict of r, is to be confirmed by reruns
  * (rb_confirm_mode): only a pass is, since a confirmation can only turn a
- * pass into a fail; with marginal, a pass within the band of a limit or,
- * under no-yield, near the bolt heads it never met
+ * pass into a fail; with marginal, a pass within band (rb_confirm_band)
+ * of a limit or, under no-yield, near the bolt heads it never met
  * (rb_result_near_contact). */
-int rb_verdict_wants_confirm(const rb_criteria *c, const rb_result *r, const rb_verdict *v);
+int rb_verdict_wants_confirm(const rb_criteria *c, double band, const rb_result *r,
+                             const rb_verdict *v);
 
 /* One confirming run: how it was solved and rb_judge's verdict of it. */
 typedef struct {

@@ -53,12 +53,13 @@ void rb_judge_run(const rb_criteria *c, const rb_model *model, const rb_motion *
                   const rb_solve_opts *opts, const rb_result *r, rb_solve_fn solve,
                   void *ctx, rb_verdict *v, rb_confirm_run *runs, size_t *n_runs)
 {
+    double band = rb_confirm_band(c, motion);
     *n_runs = 0;
     rb_judge(c, r, v);
-    if (!rb_verdict_wants_confirm(c, r, v))
+    if (!rb_verdict_wants_confirm(c, band, r, v))
         return;
     for (int k = 0; k < RB_CONFIRM_RUNS; k++)
         confirm_one(c, model, motion, opts, k, solve ? solve : solve_plain, ctx, &runs[k]);
     *n_runs = RB_CONFIRM_RUNS;
-    rb_verdict_confirm(v, rb_verdict_margin(c, r), c->confirm_band, opts->rtol, runs, *n_runs);
+    rb_verdict_confirm(v, rb_verdict_margin(c, r), band, opts->rtol, runs, *n_runs);
 }

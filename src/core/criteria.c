@@ -289,12 +289,18 @@ int rb_result_near_contact(const rb_result *r, double band)
            && r->max_bolt_force_n[1] == 0 && r->max_theta_rad > (1 - band) * r->theta0_rad;
 }
 
-int rb_verdict_wants_confirm(const rb_criteria *c, const rb_result *r, const rb_verdict *v)
+double rb_confirm_band(const rb_criteria *c, const rb_motion *motion)
+{
+    return motion && motion->kind == RB_MOTION_HARMONIC ? 1 : c->confirm_band;
+}
+
+int rb_verdict_wants_confirm(const rb_criteria *c, double band, const rb_result *r,
+                             const rb_verdict *v)
 {
     if (!v->pass || c->confirm == RB_CONFIRM_OFF)
         return 0;
-    return c->confirm == RB_CONFIRM_ALWAYS || rb_verdict_margin(c, r) < c->confirm_band
-           || (c->kind == RB_CRIT_NO_YIELD && rb_result_near_contact(r, c->confirm_band));
+    return c->confirm == RB_CONFIRM_ALWAYS || rb_verdict_margin(c, r) < band
+           || (c->kind == RB_CRIT_NO_YIELD && rb_result_near_contact(r, band));
 }
 
 void rb_verdict_confirm(rb_verdict *v, double margin, double band, double rtol,

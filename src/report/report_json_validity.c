@@ -67,7 +67,7 @@ void rb_report_json_convergence(rb_jctx *cx, cJSON *validity_o, const rb_report 
     const rb_criteria *c = &r->kase->criteria;
     cJSON *o = check_obj(cx, validity_o, &m->verdict, RB_CHECK_CONVERGENCE);
     rb_j_str(cx, o, "confirm", rb_enum_str(rb_confirm_mode_names, (int)c->confirm));
-    rb_j_num(cx, o, "band", c->confirm_band);
+    rb_j_num(cx, o, "band", rb_confirm_band(c, &m->motion->motion));
     rb_j_num(cx, o, "margin", rb_verdict_margin(c, m->result));
     cJSON *runs = rb_j_arr(cx, o, "runs");
     for (size_t i = 0; i < m->n_confirm && cx->st == RB_OK; i++) {

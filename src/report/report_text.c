@@ -266,7 +266,8 @@ static void convergence_text(const rb_criteria *c, const rb_report_motion *rm, c
             snprintf(buf, n, "a failing run is not confirmed");
         else
             snprintf(buf, n, "not needed: %.3f of the nearest limit to spare (band %.3g)",
-                     rb_verdict_margin(c, rm->result), c->confirm_band);
+                     rb_verdict_margin(c, rm->result),
+                     rb_confirm_band(c, &rm->motion->motion));
         return;
     }
     buf[0] = '\0';

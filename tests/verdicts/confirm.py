@@ -15,8 +15,10 @@ one, and on shipped cases:
     to the last bit;
   - only a pass within the band of a limit is confirmed (margin as the
     report gives it), every pass with confirm: always, none with off;
-  - a pass far from its limits and a fail are not rerun; the confirming
-    tolerances stop at 1e-13;
+  - a pass far from its limits under a record and a fail are not rerun;
+    under a harmonic the band is the whole range, so a pass that moved
+    is (cases/free-standing.yaml); the confirming tolerances stop at
+    1e-13;
   - the design searches end on a confirmed pass: at the ends of each
     final bracket the one judge passes (confirmed) and fails
     (judge_probe --design), also where the search's last pass was not
@@ -34,6 +36,10 @@ one, and on shipped cases:
   - tests/verdicts/cases/wide-band-pass.yaml, 0.31 from the limit, is
     confirmed within the default band of 0.5 and fails (its run at 1e-8
     breaks a row), where a band of 0.25 signed it unconfirmed;
+  - tests/verdicts/cases/harmonic-chaos-pass.yaml, a harmonic pass
+    0.937 from its nearest limit whose usage scatters with the tolerance
+    (Dormand-Prince at 1e-7 breaks its row), is confirmed and fails,
+    where unconfirmed it passes;
   - bad values of the two keys are errors naming file, line, key and
     the expected form."""
 import csv, json, os, re, subprocess, sys
@@ -157,12 +163,19 @@ if taft:
     if not (rc == 0 and c["margin"] < c["band"] and c["status"] == "ok"
             and all(r["pass"] for r in c["runs"]) and len(c["runs"]) == 2):
         fail(f"reference-taft (usage 0.91) should pass confirmed: exit {rc}, {c}")
+far, rc = check(os.path.join(src, "cases/thesis/table-5.1-nonyielding-gr0.01.yaml"))
+if far:
+    c = conv(far)
+    if not (rc == 0 and c["band"] == 0.5 and c["margin"] >= c["band"]
+            and c["status"] == "not-checked" and not c["runs"]):
+        fail(f"table-5.1 at gr 0.01 (margin {c['margin']}) should not be rerun: {c}")
+# under a harmonic the band is the whole range: a pass that moved is rerun
 free, rc = check(os.path.join(src, "cases/free-standing.yaml"))
 if free:
     c = conv(free)
-    if not (rc == 0 and c["margin"] >= c["band"] and c["status"] == "not-checked"
-            and not c["runs"]):
-        fail(f"free-standing (margin {c['margin']}) should not be rerun: {c}")
+    if not (rc == 0 and c["band"] == 1 and 0.5 < c["margin"] < 1 and c["status"] == "ok"
+            and len(c["runs"]) == 2 and all(r["pass"] for r in c["runs"])):
+        fail(f"free-standing (a harmonic, margin {c['margin']}) should pass confirmed: {c}")
 always, rc = check(variant("always", "confirm: always",
                            base=os.path.join(src, "cases/free-standing.yaml")))
 if always and (rc != 0 or conv(always)["status"] != "ok" or len(conv(always)["runs"]) != 2):
@@ -276,7 +289,30 @@ if narrow and wide:
             or not any(not r["pass"] for r in conv(wide)["runs"]):
         fail(f"the wide-band case should be confirmed and fail: exit {rc}, {conv(wide)}")
 
-# 9. bad values
+# 9. a harmonic pass far outside the record band whose runs do not
+#    converge: not signed, where the band of 0.5 signed it unconfirmed
+#    and Dormand-Prince breaks its row
+CHAOS = os.path.join(src, "tests/verdicts/cases/harmonic-chaos-pass.yaml")
+hc, rc = check(CHAOS)
+if hc:
+    c = conv(hc)
+    reason = hc["motions"][0]["verdict"]["reason"]
+    if not (rc == 1 and c["band"] == 1 and c["margin"] > 0.9 and c["status"] == "warning"
+            and len(c["runs"]) == 2 and all(r["pass"] for r in c["runs"])
+            and "does not converge" in reason):
+        fail(f"the harmonic chaos case should fail unconverged: exit {rc}, {reason}, {c}")
+    usages = [hc["motions"][0]["result"]["bolts"]["usage"]["right"]] \
+        + [r["usage"] for r in c["runs"]]
+    if not max(usages) > 1.3 * min(usages):
+        fail(f"the harmonic chaos case's usages {usages} should scatter")
+banded, rc_b = check(variant("chaos-off", "confirm: off", base=CHAOS))
+if banded and rc_b != 0:
+    fail(f"unconfirmed, the harmonic chaos case passes as it did: exit {rc_b}")
+dp, rc_dp = check(variant("chaos-rk45", "confirm: off", "integrator: rk45", base=CHAOS))
+if dp and (rc_dp != 1 or not dp["motions"][0]["result"]["bolts"]["broken"]["right"]):
+    fail(f"Dormand-Prince at 1e-7 should break the chaos case's row: exit {rc_dp}")
+
+# 10. bad values
 for key, value, expected in (("confirm", "maybe", "one of marginal, always, off"),
                              ("confirm_band", "0", "> 0 and <= 1"),
                              ("confirm_band", "1.5", "> 0 and <= 1")):
