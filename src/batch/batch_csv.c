@@ -334,19 +334,17 @@ static const char *row_tag(const csv_ctx *cx, const csv_row *r)
     return (size_t)cx->tag_col < r->n ? r->f[cx->tag_col].text : "";
 }
 
-/* A new item for the row at line, tagged by its tag column or, where that
- * is empty, by "line N"; copy makes the tag's string (a plain copy, or
- * one that shows bytes that are not UTF-8 escaped). NULL when out of
- * memory. */
-static rb_batch_item *row_item(csv_ctx *cx, rb_batch_list *l, const csv_row *r, int line,
-                               char *(*copy)(const char *))
+/* A new item for the row at line, tagged by its tag or, where that is
+ * empty, by "line N"; copy makes the tag's string (a plain copy, or one
+ * that shows bytes that are not UTF-8 escaped). NULL when out of memory. */
+static rb_batch_item *row_item(const csv_ctx *cx, rb_batch_list *l, const char *tag,
+                               int line, char *(*copy)(const char *))
 {
     char name[32];
     rb_batch_item *it = rb_batch_list_push(l, cx->path);
     if (!it)
         return NULL;
     it->line = line;
-    const char *tag = row_tag(cx, r);
     snprintf(name, sizeof name, "line %d", line);
     return (it->tag = copy(tag[0] ? tag : name)) ? it : NULL;
 }
@@ -354,8 +352,8 @@ static rb_batch_item *row_item(csv_ctx *cx, rb_batch_list *l, const csv_row *r, 
 static rb_status read_row(csv_ctx *cx, rb_batch_list *l, const csv_row *r, int line)
 {
     char msg[300];
-    rb_batch_item *it = row_item(cx, l, r, line, rb_batch_strdup);
     const char *tag = row_tag(cx, r);
+    rb_batch_item *it = row_item(cx, l, tag, line, rb_batch_strdup);
     if (!it)
         return RB_ERR_NOMEM;
     if (r->n != cx->n_cols) {
@@ -466,7 +464,7 @@ static rb_status bad_encoding_row(csv_ctx *cx, rb_batch_list *l, const csv_row *
                                   int line, int col, unsigned char byte)
 {
     char msg[300];
-    rb_batch_item *it = row_item(cx, l, r, line, rb_utf8_fix);
+    rb_batch_item *it = row_item(cx, l, row_tag(cx, r), line, rb_utf8_fix);
     if (!it)
         return RB_ERR_NOMEM;
     snprintf(msg, sizeof msg, "byte 0x%02X is not UTF-8: " RB_CSV_HINT, byte);
