@@ -305,6 +305,12 @@ if hc:
         + [r["usage"] for r in c["runs"]]
     if not max(usages) > 1.3 * min(usages):
         fail(f"the harmonic chaos case's usages {usages} should scatter")
+# the text report's header says which band a harmonic is confirmed within
+head = run("check", CHAOS).stdout
+if "passes confirmed: marginal (band 0.50; 1 under a harmonic)" not in head:
+    fail(f"the chaos case's header does not give the harmonic band: {head[:400]}")
+if "under a harmonic" in run("check", os.path.join(src, "cases/reference-taft.yaml")).stdout:
+    fail("a record case's header speaks of a harmonic")
 banded, rc_b = check(variant("chaos-off", "confirm: off", base=CHAOS))
 if banded and rc_b != 0:
     fail(f"unconfirmed, the harmonic chaos case passes as it did: exit {rc_b}")
