@@ -81,12 +81,13 @@ static void case_vars(rb_tvars *t, const rb_report *r)
     rb_tv_num(t, "usage_limit", r->kase->criteria.usage_limit);
     rb_tv_str(t, "confirm", rb_enum_str(rb_confirm_mode_names, (int)r->kase->criteria.confirm));
     rb_tv_num(t, "confirm_band", r->kase->criteria.confirm_band);
-    /* a harmonic's passes are confirmed over the whole range whatever
-     * confirm_band says (rb_confirm_band): the header says so */
-    int harmonic = 0;
+    /* the judge's band of a motion (rb_confirm_band) can be wider than the
+     * case's, under a harmonic: the header says so */
+    int wider = 0;
     for (i = 0; i < r->n_motions; i++)
-        harmonic |= r->motions[i].motion->motion.kind == RB_MOTION_HARMONIC;
-    rb_tv_int(t, "has_harmonic", harmonic);
+        wider |= rb_confirm_band(&r->kase->criteria, &r->motions[i].motion->motion)
+                 > r->kase->criteria.confirm_band;
+    rb_tv_int(t, "has_harmonic", wider);
     rb_tv_str(t, "formulation", rb_enum_str(rb_formulation_names, (int)r->kase->solve.formulation));
     rb_tv_str(t, "integrator", rb_enum_str(rb_integrator_names, (int)r->kase->solve.integrator));
     rb_tv_int(t, "n_motions", (long)r->n_motions);
