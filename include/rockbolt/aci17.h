@@ -41,14 +41,15 @@ typedef enum {
 /* ---- Materials (17.6.1.2, 17.7.1.2) ---- */
 
 /* futa used in the steel strengths: at most 1.9 fya and 125 ksi
- * (861.8 MPa), 17.6.1.2 and 17.7.1.2. */
-double rb_aci17_futa_used(double futa_pa, double fya_pa);
+ * (in-lb edition; 861.8 MPa) or 860 MPa (ACI 318M-19), 17.6.1.2 and
+ * 17.7.1.2. */
+double rb_aci17_futa_used(rb_aci17_coef coef, double futa_pa, double fya_pa);
 
 /* ---- Tension ---- */
 
 /* 17.6.1.2, Eq. (17.6.1.2): Nsa = Ase,N futa (futa limited as above), one
  * anchor. */
-double rb_aci17_nsa(double ase_n_m2, double futa_pa, double fya_pa);
+double rb_aci17_nsa(rb_aci17_coef coef, double ase_n_m2, double futa_pa, double fya_pa);
 
 /* Table 17.6.2.2.1 / 17.6.2.2.1: kc for cast-in anchors, 24 (in-lb) or 10
  * (SI), in the units of coef. */
@@ -79,13 +80,22 @@ double rb_aci17_nb_cast_in(rb_aci17_coef coef, double lambda_a, double fc_pa,
  * not apply (fewer than three edges closer than 1.5 hef). */
 double rb_aci17_hef_limited(double hef_m, const double edges_m[4], double s_max_m);
 
-/* 17.6.2.1, Fig. R17.6.2.1(b): projected failure area A_Nc of a rectangular
- * group: (min(cx1, 1.5 hef) + sx + min(cx2, 1.5 hef)) x (min(cy1, 1.5 hef)
- * + sy + min(cy2, 1.5 hef)). sx, sy: distance between the outer anchors in
- * each direction (0 for a single anchor or a single row); c: edge
- * distances of the outer anchors (INFINITY: no edge). */
-double rb_aci17_anc(double hef_m, double cx1_m, double cx2_m, double sx_m,
-                    double cy1_m, double cy2_m, double sy_m);
+/* Length of the union of the intervals [x_i - r, x_i + r] of n points
+ * pitch apart, cut c_lo before the first point and c_hi after the last
+ * (INFINITY: no edge): min(c_lo, r) + (n - 1) min(pitch, 2 r) + min(c_hi, r).
+ * The side of a projected area along one direction: where the points are
+ * more than 2 r apart the concrete between their regions belongs to none. */
+double rb_aci17_span(int n, double pitch_m, double r_m, double c_lo_m, double c_hi_m);
+
+/* 17.6.2.1: projected failure area A_Nc of a grid of nx by ny anchors,
+ * sx and sy apart (adjacent anchors), as the union of each anchor's square
+ * of 1.5 hef each side cut by the edges (cx1, cx2 beyond the outer anchors
+ * in x, cy1, cy2 in y; INFINITY: no edge). A grid's union is the product
+ * of the spans of its two directions. Below 3 hef spacing it is the one
+ * rectangle of Fig. R17.6.2.1(b); beyond, the concrete between the cones
+ * is not counted. */
+double rb_aci17_anc(double hef_m, int nx, double sx_m, double cx1_m, double cx2_m,
+                    int ny, double sy_m, double cy1_m, double cy2_m);
 
 /* 17.6.2.1.4, Eq. (17.6.2.1.4): A_Nco = 9 hef^2. */
 double rb_aci17_anco(double hef_m);
@@ -139,7 +149,7 @@ double rb_aci17_nsbg(int n, double s_outer_m, double ca1_m, double nsb_n);
 /* 17.7.1.2, Eqs. (17.7.1.2a, b): Vsa = Ase,V futa for cast-in headed studs,
  * 0.6 Ase,V futa for cast-in headed bolts; times 0.8 on a grout pad
  * (17.7.1.2.1). futa limited as above. */
-double rb_aci17_vsa(double ase_v_m2, double futa_pa, double fya_pa,
+double rb_aci17_vsa(rb_aci17_coef coef, double ase_v_m2, double futa_pa, double fya_pa,
                     bool headed_stud, bool grout_pad);
 
 /* 17.7.2.2.1: load-bearing length le = hef, at most 8 da. */
@@ -162,10 +172,11 @@ double rb_aci17_vb_b(rb_aci17_coef coef, double lambda_a, double fc_pa,
 double rb_aci17_ca1_limited(double ca1_m, double ca2a_m, double ca2b_m,
                             double ha_m, double s_max_m);
 
-/* 17.7.2.1, Fig. R17.7.2.1b: projected area A_Vc of a row of anchors
- * parallel to the edge: (min(ca2a, 1.5 ca1) + s + min(ca2b, 1.5 ca1)) x
- * min(1.5 ca1, ha). s: distance between the outer anchors of the row. */
-double rb_aci17_avc(double ca1_m, double ca2a_m, double ca2b_m, double s_m,
+/* 17.7.2.1, Fig. R17.7.2.1b: projected area A_Vc of a row of n anchors s
+ * apart, parallel to the edge at ca1: the union of 1.5 ca1 each side of
+ * each anchor (rb_aci17_span), cut by the side edges ca2a and ca2b beyond
+ * the outer anchors, times min(1.5 ca1, ha). */
+double rb_aci17_avc(double ca1_m, int n, double s_m, double ca2a_m, double ca2b_m,
                     double ha_m);
 
 /* 17.7.2.1.3, Eq. (17.7.2.1.3): A_Vco = 4.5 ca1^2. */
@@ -234,6 +245,28 @@ double rb_aci17_seismic_factor(rb_aci17_mode mode, bool seismic);
  * <= 1 passes. *which: 1, 2 or 3 for the clause used (may be NULL). */
 double rb_aci17_interaction(double nua_n, double phi_nn_n, double vua_n,
                             double phi_vn_n, int *which);
+
+/* The interaction rule a check applies: the trilinear rule of 17.8.1-17.8.3,
+ * or the 5/3-power rule of R17.8, (N/phi Nn)^(5/3) + (V/phi Vn)^(5/3) <= 1
+ * (Hilti PROFIS's default). */
+typedef enum {
+    RB_ACI17_TRILINEAR = 0,
+    RB_ACI17_POWER
+} rb_aci17_interaction_rule;
+
+/* Which value of rb_aci17_interaction_by's *which the power rule gives. */
+#define RB_ACI17_WHICH_POWER 4
+
+/* The utilization under rule: rb_aci17_interaction for the trilinear rule;
+ * for the power rule ((N/phi Nn)^(5/3) + (V/phi Vn)^(5/3))^(3/5), which
+ * scales with the loads as the trilinear one does and reaches 1 where the
+ * sum of R17.8 does; *which = RB_ACI17_WHICH_POWER. */
+double rb_aci17_interaction_by(rb_aci17_interaction_rule rule, double nua_n,
+                               double phi_nn_n, double vua_n, double phi_vn_n, int *which);
+
+/* The clause a *which of rb_aci17_interaction_by names: "17.8.1",
+ * "17.8.2", "17.8.3" or "R17.8"; never NULL. */
+const char *rb_aci17_interaction_clause(int which);
 
 /* ---- Seismic ductility, 17.10.5.3(a) ---- */
 

@@ -6,10 +6,15 @@
  * spacing s, the rows 2 (l - b) apart (each row l - b from the plate's
  * centre), one slab edge parallel to the rows at c_a1 from the nearer row,
  * the slab h_a thick. Tension: the loaded row, as a group of n (the other
- * row is slack whenever one is loaded). Shear: the whole horizontal floor
- * reaction, no friction counted (ASCE 7 13.4); steel over all 2n anchors,
- * breakout of the row nearer the edge towards it, pryout of both rows.
- * Units SI throughout (rockbolt/aci17.h). */
+ * row is slack whenever one is loaded), taken as the row nearer the edge.
+ * Shear: the whole horizontal floor reaction, no friction counted (ASCE 7
+ * 13.4), shared as in Fig. R17.7.2.1b: where the rows are closer together
+ * than c_a1 (Case 3) the row nearer the edge takes all of it, steel and
+ * breakout alike; otherwise steel is shared by all 2n anchors and breakout
+ * is the worse of the front row with half of it at c_a1 (Case 1) and the
+ * rear row with all of it at c_a1 + 2 (l - b) (Case 2). Pryout: both rows.
+ * Projected areas are unions of the anchors' own regions
+ * (rb_aci17_anc, rb_aci17_avc). Units SI throughout (rockbolt/aci17.h). */
 #ifndef ROCKBOLT_ANCHOR_H
 #define ROCKBOLT_ANCHOR_H
 
@@ -28,6 +33,44 @@ enum {
     RB_NOT_DUCTILE_STRETCH = 2u,  /* stretch length below 8 da */
     RB_NOT_DUCTILE_THREADS = 4u   /* partial threads, not upset, f_uta / f_ya below 1.3 */
 };
+
+/* The route of 17.10.5.3 by which the anchorage meets the seismic
+ * requirements where 17.10.5.2 asks for them (docs/code-check.md):
+ *   AUTO        (a) where the run yields the bolts (they are the fuse),
+ *               otherwise the run's own tension history stands for the
+ *               amplified demand of (d);
+ *   DUCTILE     (a): ductile steel governs (concrete over 1.2 steel,
+ *               stretch length, threads);
+ *   ATTACHMENT  (b)/(c): the concrete-governed design strengths at least
+ *               the largest tension the bolts can pass on, 1.2 times the
+ *               row's yield force;
+ *   OMEGA       (d): the static check with Omega_0 (design.code). */
+typedef enum {
+    RB_ROUTE_AUTO = 0,
+    RB_ROUTE_DUCTILE,
+    RB_ROUTE_ATTACHMENT,
+    RB_ROUTE_OMEGA
+} rb_seismic_route;
+
+/* What a judge made of 17.10 for one run (rb_verdict.anchor_route): the
+ * route it applied, or why none was needed. */
+typedef enum {
+    RB_ROUTE_APPLIED_NONE = 0,  /* no concrete check, or 17.10 off (seismic: false) */
+    RB_ROUTE_APPLIED_EXEMPT,    /* 17.10.5.2: the bolts carried no tension */
+    RB_ROUTE_APPLIED_DUCTILE,   /* (a) */
+    RB_ROUTE_APPLIED_ATTACHMENT,/* (b)/(c) */
+    RB_ROUTE_APPLIED_OMEGA,     /* (d), static with Omega_0 */
+    RB_ROUTE_APPLIED_DYNAMIC    /* auto, no yield: the run's tension for (d)'s demand */
+} rb_route_applied;
+
+/* Reinforcement between the anchors and the edge (17.7.2.5.1, psi_c,V in
+ * cracked concrete): none (1.0), a No. 4 bar or larger (1.2), and that bar
+ * enclosed by stirrups at 4 in or less (1.4). */
+typedef enum {
+    RB_EDGE_REINF_NONE = 0,
+    RB_EDGE_REINF_BAR,
+    RB_EDGE_REINF_BAR_STIRRUPS
+} rb_edge_reinforcement;
 
 /* How the anchor's threads run (17.10.5.3(a)): along part of its length
  * with the threads cut or rolled into the shank (a headed bolt or a rod
@@ -62,10 +105,14 @@ typedef struct {
                               model's bolt area */
     bool grout_pad;        /* shear through a grout pad (17.7.1.2.1) */
     rb_aci17_coef coef;    /* coefficients of the SI or the in-lb edition */
+    rb_edge_reinforcement edge_reinforcement; /* psi_c,V (17.7.2.5.1) */
+    rb_aci17_interaction_rule interaction;    /* 17.8 or R17.8 */
+    rb_seismic_route route;                   /* 17.10.5.3 */
 } rb_anchor_inputs;
 
 /* Defaults: cracked, lambda_a 1, seismic, no edge, condition B, no grout
- * pad, cast-in headed, SI coefficients; the rest zero (required). */
+ * pad, cast-in headed, SI coefficients, no edge reinforcement, the
+ * trilinear interaction, route auto; the rest zero (required). */
 void rb_anchor_inputs_init(rb_anchor_inputs *in);
 
 typedef enum {
@@ -73,11 +120,17 @@ typedef enum {
     RB_ANCHOR_BREAKOUT_N,   /* 17.6.2 */
     RB_ANCHOR_PULLOUT_N,    /* 17.6.3 */
     RB_ANCHOR_SIDEFACE_N,   /* 17.6.4 */
+    RB_ANCHOR_BOND_N,       /* 17.6.5, adhesive anchors */
     RB_ANCHOR_STEEL_V,      /* 17.7.1 */
     RB_ANCHOR_BREAKOUT_V,   /* 17.7.2 */
     RB_ANCHOR_PRYOUT_V,     /* 17.7.3 */
     RB_ANCHOR_N_MODES
 } rb_anchor_mode;
+
+/* Whether a mode is one of tension (17.6) or of shear (17.7), and whether
+ * the steel of the anchors, not the concrete, governs it. */
+bool rb_anchor_mode_in_tension(rb_anchor_mode mode);
+bool rb_anchor_mode_is_steel(rb_anchor_mode mode);
 
 typedef struct {
     bool applies;          /* side-face blowout: only near an edge */
@@ -91,9 +144,24 @@ typedef struct {
     rb_anchor_mode_strength mode[RB_ANCHOR_N_MODES];
     double da_m;           /* anchor diameter, from the bolt's area */
     double abrg_m2;        /* bearing area used */
+    double ase_m2;         /* effective tensile area used */
     double phi_nn_n;       /* least design tension strength of a row */
     double phi_vn_n;       /* least design shear strength of the anchorage */
     rb_anchor_mode tension_mode, shear_mode; /* which governs each */
+    /* the same over the modes governed by concrete alone: what a run's
+     * dynamic demand is judged against (the bolts' steel is judged by the
+     * run's own criterion, yield or break, and by the static check) */
+    double phi_nn_concrete_n, phi_vn_concrete_n;
+    rb_anchor_mode concrete_tension_mode, concrete_shear_mode;
+    /* Fig. R17.7.2.1b: 3 where the rows are closer than c_a1, else 1 (the
+     * two cases 1 and 2 both checked); 0 without an edge. The nominal
+     * breakout of the front row at c_a1 and, for cases 1 and 2, of the
+     * rear row at c_a1 + the rows' distance. */
+    int shear_case;
+    double vcbg_front_n, vcbg_rear_n;
+    /* 17.10.5.3(c): the least concrete-governed design tension strength
+     * over 1.2 times the row's yield force (>= 1 meets it) */
+    double attachment_margin;
     /* 17.10.5.3: the row's concrete-governed nominal tension strength
      * over 1.2 x its steel strength (>= 1: the steel yields first), and
      * the stretch length against 8 da */

@@ -122,6 +122,12 @@ typedef struct {
     int has_concrete;
     rb_anchor_inputs anchor_in;
     rb_anchor_strength anchor;
+    /* with design.code too: the 17.8 utilization of the code-static demand
+     * (T and the anchor design force, with Omega_0p) against every mode,
+     * steel included, and its clause (rb_aci17_interaction_by) */
+    int has_anchor_static;
+    double anchor_static_utilization;
+    int anchor_static_clause;
     rb_case_motion *motions;  /* owned array of n_motions (>= 1) */
     size_t n_motions;
     rb_case_target *targets;  /* owned array: the synthetic motions' targets */

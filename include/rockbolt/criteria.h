@@ -53,12 +53,22 @@ typedef struct {
     /* The concrete check (ACI 318-19 Chapter 17, rockbolt/anchor.h): set by
      * a case with concrete: (criteria: concrete: false clears it). A run
      * then fails when the 17.8 utilization of its concurrent tension and
-     * shear reaches 1, or, before that, when the anchorage is not ductile
-     * where 17.10 asks it to be (anchor_not_ductile, the conditions of
-     * 17.10.5.3(a) it misses: RB_NOT_DUCTILE_* of rockbolt/anchor.h).
-     * Default 0 and 0. */
+     * shear on the concrete-governed strengths reaches 1, or, before that,
+     * when the route of 17.10.5.3 it is judged by is not met (where 17.10
+     * applies, anchor_seismic, and 17.10.5.2 does not exempt it: a run
+     * whose bolts carry no tension is exempt):
+     *   route (a), asked, or by auto or any route when the run yields
+     *   the bolts: fails on anchor_not_ductile (RB_NOT_DUCTILE_*);
+     *   route (b)/(c): fails where anchor_attachment_margin < 1;
+     *   route (d): fails where anchor_static_utilization >= 1;
+     *   auto without yield: the run's own demand is the check.
+     * Default 0 throughout. */
     int concrete;
+    int anchor_seismic;
+    int anchor_route;                 /* rb_seismic_route */
     unsigned anchor_not_ductile;
+    double anchor_attachment_margin;
+    double anchor_static_utilization;
     /* the checks that validity: fail counts (bit 1 << rb_check); default
      * all. A fragility's lift-off limit state counts lift-off alone. */
     unsigned validity_mask;
@@ -90,6 +100,7 @@ typedef struct {
     rb_check_status check[RB_N_CHECKS];
     unsigned warnings;                 /* bit 1 << k for each check k that warns */
     char reason[256];                  /* one line saying what governed */
+    int anchor_route;                  /* rb_route_applied: 17.10.5.3 as judged */
 } rb_verdict;
 
 /* The one judge of a run: every command and search gets its verdict here.

@@ -30,6 +30,10 @@ extern const rb_enum_name rb_anchor_type_names[];   /* rb_anchor_type */
 extern const rb_enum_name rb_anchor_threads_names[]; /* rb_anchor_threads */
 extern const rb_enum_name rb_anchor_mode_names[];   /* rb_anchor_mode */
 extern const rb_enum_name rb_aci17_coef_names[];    /* rb_aci17_coef: si, in-lb */
+extern const rb_enum_name rb_seismic_route_names[]; /* rb_seismic_route */
+extern const rb_enum_name rb_route_applied_names[]; /* rb_route_applied */
+extern const rb_enum_name rb_edge_reinforcement_names[]; /* rb_edge_reinforcement */
+extern const rb_enum_name rb_interaction_names[];   /* rb_aci17_interaction_rule */
 extern const rb_enum_name rb_limit_state_names[];   /* rb_limit_state (fragility.h) */
 extern const rb_enum_name rb_intensity_names[];     /* rb_fragility_intensity: pfa, sa */
 /* the same, as the JSON reports spell it: peak_floor_acceleration,

@@ -54,10 +54,13 @@ typedef struct {
     int check_reactions;     /* 1: also sum the reactions over mass points and
                                 report the largest mismatch (tests) */
     /* > 0: the design tension strength of a row and the design shear
-     * strength of the anchorage (rockbolt/anchor.h); the run then follows
-     * the 17.8 utilization of the loaded row's tension and the horizontal
-     * floor reaction, taken together at each instant */
+     * strength of the anchorage in the modes concrete governs
+     * (rockbolt/anchor.h); the run then follows the 17.8 utilization of the
+     * loaded row's tension and the horizontal floor reaction, taken
+     * together at each instant, under anchor_interaction (default the
+     * trilinear rule) */
     double anchor_phi_nn_n, anchor_phi_vn_n;
+    int anchor_interaction;  /* rb_aci17_interaction_rule */
     /* 1 (default): on the floor under a sampled motion, steps with nothing
      * to locate inside them are taken by the exact transition of the
      * frame and the building (docs/solver.md); 0: by Taylor series, the
@@ -126,7 +129,7 @@ typedef struct {
      * anchor_checked 0 and the rest 0 otherwise */
     int anchor_checked;
     double anchor_max_ratio, anchor_max_s, anchor_tension_n, anchor_shear_n;
-    int anchor_clause;
+    int anchor_clause;       /* as rb_aci17_interaction_by's *which */
     double max_bolt_force_n[2];   /* [RB_LEFT], [RB_RIGHT] */
     /* per bolt row */
     double final_gap_m[2];

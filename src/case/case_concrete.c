@@ -5,10 +5,12 @@
 #include <math.h>
 #include <string.h>
 #include "case_internal.h"
+#include "rockbolt/design.h"
+#include "rockbolt/names.h"
 
 static const char *const concrete_keys[] = {
     "strength", "cracked", "lightweight", "thickness", "edge_distance", "reinforcement",
-    "seismic", "coefficients", NULL};
+    "edge_reinforcement", "seismic", "seismic_route", "interaction", "coefficients", NULL};
 
 static void flag(rb_cctx *c, rb_ynode *m, const char *path, const char *key, bool *out)
 {
@@ -34,7 +36,19 @@ static void read_slab(rb_cctx *c, rb_ynode *cn, rb_anchor_inputs *in)
     rb_ynode *v = rb_cv_get(c, cn, p, "reinforcement", 0, "");
     if (v && rb_cv_enum(c, v, "concrete.reinforcement", reinforcement, &i))
         in->condition_a = i == 1;
+    v = rb_cv_get(c, cn, p, "edge_reinforcement", 0, "");
+    if (v && rb_cv_enum_table(c, v, "concrete.edge_reinforcement", rb_edge_reinforcement_names,
+                              0, &i))
+        in->edge_reinforcement = (rb_edge_reinforcement)i;
     flag(c, cn, p, "seismic", &in->seismic);
+    v = rb_cv_get(c, cn, p, "seismic_route", 0, "");
+    if (v && rb_cv_enum_table(c, v, "concrete.seismic_route", rb_seismic_route_names, 0, &i)) {
+        in->route = (rb_seismic_route)i;
+        c->seismic_route_node = v;
+    }
+    v = rb_cv_get(c, cn, p, "interaction", 0, "");
+    if (v && rb_cv_enum_table(c, v, "concrete.interaction", rb_interaction_names, 0, &i))
+        in->interaction = (rb_aci17_interaction_rule)i;
     v = rb_cv_get(c, cn, p, "coefficients", 0, "");
     if (v && rb_cv_enum_table(c, v, "concrete.coefficients", rb_aci17_coef_names, 0, &i)) {
         in->coef = (rb_aci17_coef)i;
@@ -93,6 +107,26 @@ static const rb_ynode *node_of(rb_cctx *c, const char *key)
     return e ? e->value : c->concrete_node;
 }
 
+/* The code-static demand on the anchorage (design.code): the row tension
+ * T and the anchor design force as shear, both with Omega_0p where the
+ * anchorage is in concrete, against the design strengths of every mode,
+ * steel included. Route (d) of 17.10.5.3 and `design` read it. */
+static void static_check(rb_cctx *c, rb_case *cs)
+{
+    rb_code_result k;
+    rb_diag d;
+    rb_diag_clear(&d);
+    cs->has_anchor_static = 0;
+    if (rb_code_static(&cs->model, &cs->code, &k, &d) != RB_OK)
+        return;   /* the design's own run reports the code inputs' error */
+    cs->has_anchor_static = 1;
+    cs->anchor_static_utilization = rb_aci17_interaction_by(
+        cs->anchor_in.interaction, k.tension_n, cs->anchor.phi_nn_n, k.fp_anchor_n,
+        cs->anchor.phi_vn_n, &cs->anchor_static_clause);
+    cs->criteria.anchor_static_utilization = cs->anchor_static_utilization;
+    (void)c;
+}
+
 void rb_case_resolve_concrete(rb_cctx *c, rb_case *cs)
 {
     rb_diag d;
@@ -108,8 +142,22 @@ void rb_case_resolve_concrete(rb_cctx *c, rb_case *cs)
         rb_cctx_error(c, node_of(c, d.key), d.key, "%s", d.msg);
         return;
     }
-    cs->solve.anchor_phi_nn_n = cs->anchor.phi_nn_n;
-    cs->solve.anchor_phi_vn_n = cs->anchor.phi_vn_n;
-    cs->criteria.concrete = c->judge_concrete != 0;
-    cs->criteria.anchor_not_ductile = cs->anchor_in.seismic ? cs->anchor.not_ductile : 0;
+    /* a run's demand is judged on the strengths concrete governs: the
+     * bolts' steel is judged by the run's own criterion */
+    cs->solve.anchor_phi_nn_n = cs->anchor.phi_nn_concrete_n;
+    cs->solve.anchor_phi_vn_n = cs->anchor.phi_vn_concrete_n;
+    cs->solve.anchor_interaction = (int)cs->anchor_in.interaction;
+    rb_criteria *cr = &cs->criteria;
+    cr->concrete = c->judge_concrete != 0;
+    cr->anchor_seismic = cs->anchor_in.seismic;
+    cr->anchor_route = (int)cs->anchor_in.route;
+    cr->anchor_not_ductile = cs->anchor.not_ductile;
+    cr->anchor_attachment_margin = cs->anchor.attachment_margin;
+    cr->anchor_static_utilization = (double)NAN;
+    if (cs->has_code)
+        static_check(c, cs);
+    else if (cs->anchor_in.route == RB_ROUTE_OMEGA && cs->anchor_in.seismic)
+        rb_cctx_error(c, c->seismic_route_node, "concrete.seismic_route",
+                      "'omega' (17.10.5.3(d)) is the static check with Omega_0: it needs "
+                      "design.code (sds, z_over_h, ...) to give the static demand");
 }

@@ -173,6 +173,7 @@ typedef struct {
     int judge_concrete;
     rb_ynode *concrete_node;        /* concrete: and anchorage:, for the */
     rb_ynode *anchorage_node;       /* check's errors */
+    rb_ynode *seismic_route_node;   /* concrete.seismic_route, when given */
     int anchor_coef_given;          /* concrete: coefficients: was given */
 } rb_cctx;
 

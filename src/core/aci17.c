@@ -6,8 +6,10 @@
 #include <math.h>
 #include "rockbolt/aci17.h"
 
-/* 17.6.1.2 and 17.7.1.2: futa <= 125 ksi. */
-#define FUTA_CAP_PA 861.8e6
+/* 17.6.1.2 and 17.7.1.2: futa <= 125 ksi in the in-lb edition, 860 MPa in
+ * ACI 318M-19 (not the conversion of 125 ksi, 861.8 MPa). */
+#define FUTA_CAP_INLB_PA (125000 * RB_ACI17_PSI_PA)
+#define FUTA_CAP_SI_PA 860e6
 
 /* Lengths, stresses and forces in the units of a coefficient system. */
 static double len_u(rb_aci17_coef c, double m)
@@ -25,18 +27,20 @@ static double force_si(rb_aci17_coef c, double f)
     return c == RB_ACI17_INLB ? f * RB_ACI17_LBF_N : f;
 }
 
-double rb_aci17_futa_used(double futa_pa, double fya_pa)
+double rb_aci17_futa_used(rb_aci17_coef coef, double futa_pa, double fya_pa)
 {
-    /* 17.6.1.2: futa shall not be taken greater than 1.9 fya or 125 ksi. */
-    return fmin(futa_pa, fmin(1.9 * fya_pa, FUTA_CAP_PA));
+    /* 17.6.1.2: futa shall not be taken greater than 1.9 fya or 125 ksi
+     * (860 MPa). */
+    double cap = coef == RB_ACI17_INLB ? FUTA_CAP_INLB_PA : FUTA_CAP_SI_PA;
+    return fmin(futa_pa, fmin(1.9 * fya_pa, cap));
 }
 
 /* ---- Tension ---- */
 
-double rb_aci17_nsa(double ase_n_m2, double futa_pa, double fya_pa)
+double rb_aci17_nsa(rb_aci17_coef coef, double ase_n_m2, double futa_pa, double fya_pa)
 {
     /* 17.6.1.2, Eq. (17.6.1.2): Nsa = Ase,N futa. */
-    return ase_n_m2 * rb_aci17_futa_used(futa_pa, fya_pa);
+    return ase_n_m2 * rb_aci17_futa_used(coef, futa_pa, fya_pa);
 }
 
 double rb_aci17_kc_cast_in(rb_aci17_coef coef)
@@ -95,13 +99,21 @@ static double side(double c, double limit)
     return fmin(c, limit);
 }
 
-double rb_aci17_anc(double hef_m, double cx1_m, double cx2_m, double sx_m,
-                    double cy1_m, double cy2_m, double sy_m)
+double rb_aci17_span(int n, double pitch_m, double r_m, double c_lo_m, double c_hi_m)
+{
+    return side(c_lo_m, r_m) + (n > 1 ? n - 1 : 0) * fmin(pitch_m, 2 * r_m)
+           + side(c_hi_m, r_m);
+}
+
+double rb_aci17_anc(double hef_m, int nx, double sx_m, double cx1_m, double cx2_m,
+                    int ny, double sy_m, double cy1_m, double cy2_m)
 {
     /* 17.6.2.1, Fig. R17.6.2.1(b): the breakout prism extends 1.5 hef
-     * beyond the outer anchors, cut by the edges. */
+     * beyond each anchor, cut by the edges. A point of the slab lies in
+     * some anchor's square exactly when its x lies within 1.5 hef of some
+     * column and its y of some row, so the union is a product. */
     double r = 1.5 * hef_m;
-    return (side(cx1_m, r) + sx_m + side(cx2_m, r)) * (side(cy1_m, r) + sy_m + side(cy2_m, r));
+    return rb_aci17_span(nx, sx_m, r, cx1_m, cx2_m) * rb_aci17_span(ny, sy_m, r, cy1_m, cy2_m);
 }
 
 double rb_aci17_anco(double hef_m)
@@ -193,12 +205,12 @@ double rb_aci17_nsbg(int n, double s_outer_m, double ca1_m, double nsb_n)
 
 /* ---- Shear ---- */
 
-double rb_aci17_vsa(double ase_v_m2, double futa_pa, double fya_pa,
+double rb_aci17_vsa(rb_aci17_coef coef, double ase_v_m2, double futa_pa, double fya_pa,
                     bool headed_stud, bool grout_pad)
 {
     /* 17.7.1.2: (a) headed studs Vsa = Ase,V futa, Eq. (17.7.1.2a);
      * (b) headed bolts Vsa = 0.6 Ase,V futa, Eq. (17.7.1.2b). */
-    double v = (headed_stud ? 1.0 : 0.6) * ase_v_m2 * rb_aci17_futa_used(futa_pa, fya_pa);
+    double v = (headed_stud ? 1.0 : 0.6) * ase_v_m2 * rb_aci17_futa_used(coef, futa_pa, fya_pa);
     /* 17.7.1.2.1: built-up grout pads: times 0.8. */
     return grout_pad ? 0.8 * v : v;
 }
@@ -245,13 +257,13 @@ double rb_aci17_ca1_limited(double ca1_m, double ca2a_m, double ca2b_m,
     return fmin(ca1_m, c);
 }
 
-double rb_aci17_avc(double ca1_m, double ca2a_m, double ca2b_m, double s_m,
+double rb_aci17_avc(double ca1_m, int n, double s_m, double ca2a_m, double ca2b_m,
                     double ha_m)
 {
-    /* 17.7.2.1, Fig. R17.7.2.1b: 1.5 ca1 each side of the outer anchors,
-     * depth 1.5 ca1, cut by the side edges and the member thickness. */
+    /* 17.7.2.1, Fig. R17.7.2.1b: 1.5 ca1 each side of each anchor, depth
+     * 1.5 ca1, cut by the side edges and the member thickness. */
     double r = 1.5 * ca1_m;
-    return (side(ca2a_m, r) + s_m + side(ca2b_m, r)) * fmin(r, ha_m);
+    return rb_aci17_span(n, s_m, r, ca2a_m, ca2b_m) * fmin(r, ha_m);
 }
 
 double rb_aci17_avco(double ca1_m)
@@ -360,6 +372,25 @@ double rb_aci17_interaction(double nua_n, double phi_nn_n, double vua_n,
     if (which)
         *which = w;
     return u;
+}
+
+double rb_aci17_interaction_by(rb_aci17_interaction_rule rule, double nua_n,
+                               double phi_nn_n, double vua_n, double phi_vn_n, int *which)
+{
+    if (rule != RB_ACI17_POWER)
+        return rb_aci17_interaction(nua_n, phi_nn_n, vua_n, phi_vn_n, which);
+    /* R17.8, Eq. (R17.8): the sum of the 5/3 powers; its 3/5 power is the
+     * load factor that brings the sum to 1 */
+    double rn = nua_n / phi_nn_n, rv = vua_n / phi_vn_n;
+    if (which)
+        *which = RB_ACI17_WHICH_POWER;
+    return pow(pow(rn, 5.0 / 3.0) + pow(rv, 5.0 / 3.0), 0.6);
+}
+
+const char *rb_aci17_interaction_clause(int which)
+{
+    static const char *const names[] = {"17.8", "17.8.1", "17.8.2", "17.8.3", "R17.8"};
+    return which >= 0 && which <= RB_ACI17_WHICH_POWER ? names[which] : "17.8";
 }
 
 double rb_aci17_ductility_margin(double n_concrete_n, double n_steel_n)

@@ -8,16 +8,44 @@
 /* ASME B18.2.1 heavy hex head: width across flats 1.5 d + 1/8 in */
 #define HEAVY_HEX_EXTRA_M (0.125 * RB_ACI17_IN_M)
 
+/* The shallowest and deepest embedment checked. Chapter 17 gives no least
+ * h_ef for cast-in anchors; 1.5 in (38 mm) is the least of the anchors
+ * qualified under ACI 355.2, on which the breakout equations rest. 25 in
+ * (635 mm) is the top of Eq. (17.6.2.2.3)'s range. */
+#define HEF_MIN_M (1.5 * RB_ACI17_IN_M)
+#define HEF_MAX_M (25 * RB_ACI17_IN_M)
+/* 17.9.2(a): cast-in anchors that are not torqued (the bolts of a gapped
+ * plate never are) need the cover of 20.5.1.3; its least, 3/4 in, for
+ * slabs not exposed to weather or earth, to the anchor's surface. */
+#define COVER_MIN_M (0.75 * RB_ACI17_IN_M)
+/* 17.9.2, Table 17.9.2(a): least spacing of cast-in anchors not torqued */
+#define SPACING_MIN_DA 4.0
+/* the farthest edge or thickest slab the check takes: beyond, the slab is
+ * as good as unbounded and a larger number only hides a typo */
+#define DIMENSION_MAX_M 100.0
+/* 17.10.5.3: overstrength of the tension the bolts can pass on */
+#define ATTACHMENT_OVERSTRENGTH 1.2
+
 static const char *const clauses[RB_ANCHOR_N_MODES] = {
     [RB_ANCHOR_STEEL_N] = "17.6.1", [RB_ANCHOR_BREAKOUT_N] = "17.6.2",
     [RB_ANCHOR_PULLOUT_N] = "17.6.3", [RB_ANCHOR_SIDEFACE_N] = "17.6.4",
-    [RB_ANCHOR_STEEL_V] = "17.7.1", [RB_ANCHOR_BREAKOUT_V] = "17.7.2",
-    [RB_ANCHOR_PRYOUT_V] = "17.7.3",
+    [RB_ANCHOR_BOND_N] = "17.6.5", [RB_ANCHOR_STEEL_V] = "17.7.1",
+    [RB_ANCHOR_BREAKOUT_V] = "17.7.2", [RB_ANCHOR_PRYOUT_V] = "17.7.3",
 };
 
 const char *rb_anchor_clause(rb_anchor_mode mode)
 {
     return (unsigned)mode < RB_ANCHOR_N_MODES ? clauses[mode] : "?";
+}
+
+bool rb_anchor_mode_in_tension(rb_anchor_mode mode)
+{
+    return mode <= RB_ANCHOR_BOND_N;
+}
+
+bool rb_anchor_mode_is_steel(rb_anchor_mode mode)
+{
+    return mode == RB_ANCHOR_STEEL_N || mode == RB_ANCHOR_STEEL_V;
 }
 
 void rb_anchor_inputs_init(rb_anchor_inputs *in)
@@ -29,6 +57,9 @@ void rb_anchor_inputs_init(rb_anchor_inputs *in)
     in->seismic = true;
     in->type = RB_ANCHOR_CAST_IN_HEADED;
     in->coef = RB_ACI17_SI;
+    in->edge_reinforcement = RB_EDGE_REINF_NONE;
+    in->interaction = RB_ACI17_TRILINEAR;
+    in->route = RB_ROUTE_AUTO;
 }
 
 static rb_status bad(rb_diag *diag, const char *key, const char *msg)
@@ -36,24 +67,48 @@ static rb_status bad(rb_diag *diag, const char *key, const char *msg)
     return rb_diag_set(diag, RB_ERR_INVALID, NULL, 0, 0, key, "%s", msg);
 }
 
+/* A length within [lo, hi], named in mm and in as the user may write either */
+static rb_status within(rb_diag *diag, const char *key, double v, double lo, double hi,
+                        const char *why)
+{
+    if (v >= lo && v <= hi)
+        return RB_OK;
+    return rb_diag_set(diag, RB_ERR_INVALID, NULL, 0, 0, key,
+                       "must be from %.4g mm (%.4g in) to %.4g mm (%.4g in)%s%s; got %.4g mm",
+                       lo * 1e3, lo / RB_ACI17_IN_M, hi * 1e3, hi / RB_ACI17_IN_M,
+                       why[0] ? ": " : "", why, v * 1e3);
+}
+
 static rb_status check_inputs(const rb_model *m, const rb_anchor_inputs *in, rb_diag *diag)
 {
+    rb_status st;
     if (m->bolt_model == RB_BOLT_NONE || m->bolts_per_row < 1 || !(m->bolt_area_m2 > 0))
         return bad(diag, "anchorage", "the concrete check needs bolts");
+    double da = sqrt(4 * m->bolt_area_m2 / M_PI);
     if (!(in->fc_pa > 0) || !isfinite(in->fc_pa))
         return bad(diag, "concrete.strength", "must be > 0");
     if (!(in->lambda_a > 0 && in->lambda_a <= 1))
         return bad(diag, "concrete.lightweight", "must be in (0, 1]");
-    if (!(in->thickness_m > 0) || !isfinite(in->thickness_m))
-        return bad(diag, "concrete.thickness", "must be > 0");
-    if (!(in->edge_m > 0))
-        return bad(diag, "concrete.edge_distance", "must be > 0");
-    if (!(in->hef_m > 0) || !(in->hef_m < in->thickness_m))
+    if ((st = within(diag, "concrete.thickness", in->thickness_m, 0, DIMENSION_MAX_M, ""))
+        != RB_OK || !(in->thickness_m > 0))
+        return st != RB_OK ? st : bad(diag, "concrete.thickness", "must be > 0");
+    if (!isinf(in->edge_m)
+        && (st = within(diag, "concrete.edge_distance", in->edge_m, COVER_MIN_M + da / 2,
+                        DIMENSION_MAX_M, "17.9.2(a), the least cover of 20.5.1.3 (3/4 in) "
+                        "plus half the anchor's diameter")) != RB_OK)
+        return st;
+    if ((st = within(diag, "anchorage.embedment", in->hef_m, HEF_MIN_M, HEF_MAX_M,
+                     "the range of Chapter 17's breakout equations")) != RB_OK)
+        return st;
+    if (!(in->hef_m < in->thickness_m))
         return rb_diag_set(diag, RB_ERR_INVALID, NULL, 0, 0, "anchorage.embedment",
-                           "must be > 0 and less than the slab's thickness (embedment "
+                           "must be less than the slab's thickness (embedment "
                            "%g mm, slab %g mm)", in->hef_m * 1e3, in->thickness_m * 1e3);
-    if (m->bolts_per_row > 1 && !(in->spacing_m > 0))
-        return bad(diag, "anchorage.spacing", "must be > 0 for two or more bolts a row");
+    if (m->bolts_per_row > 1
+        && (st = within(diag, "anchorage.spacing", in->spacing_m, SPACING_MIN_DA * da,
+                        DIMENSION_MAX_M, "17.9.2, 4 d_a for cast-in anchors not torqued"))
+           != RB_OK)
+        return st;
     if (in->ase_m2 > m->bolt_area_m2)
         return bad(diag, "anchorage.tensile_area", "must not exceed the bolt's area");
     if (!(in->futa_pa >= m->yield_stress_pa) || !isfinite(in->futa_pa))
@@ -66,17 +121,16 @@ static rb_status check_inputs(const rb_model *m, const rb_anchor_inputs *in, rb_
 static void tension(const rb_model *m, const rb_anchor_inputs *in, rb_anchor_strength *o)
 {
     int n = m->bolts_per_row;
-    double s_row = (n - 1) * in->spacing_m, hef = in->hef_m, ca1 = in->edge_m;
+    double s = in->spacing_m, s_row = (n - 1) * s, hef = in->hef_m, ca1 = in->edge_m;
     double fya = m->yield_stress_pa;
-    double ase = in->ase_m2 > 0 ? in->ase_m2 : m->bolt_area_m2;
     rb_anchor_mode_strength *st = &o->mode[RB_ANCHOR_STEEL_N];
-    st->nominal_n = n * rb_aci17_nsa(ase, in->futa_pa, fya);
+    st->nominal_n = n * rb_aci17_nsa(in->coef, o->ase_m2, in->futa_pa, fya);
     st->phi = rb_aci17_phi(RB_ACI17_STEEL_TENSION, true, in->condition_a);
 
     rb_anchor_mode_strength *br = &o->mode[RB_ANCHOR_BREAKOUT_N];
     double edges[4] = {INFINITY, INFINITY, ca1, INFINITY};
-    double hef_use = rb_aci17_hef_limited(hef, edges, in->spacing_m);
-    double anc = rb_aci17_anc(hef_use, INFINITY, INFINITY, s_row, ca1, INFINITY, 0);
+    double hef_use = rb_aci17_hef_limited(hef, edges, s_row);
+    double anc = rb_aci17_anc(hef_use, n, s, INFINITY, INFINITY, 1, 0, ca1, INFINITY);
     double nb = rb_aci17_nb_cast_in(in->coef, in->lambda_a, in->fc_pa, hef_use);
     br->nominal_n = rb_aci17_ncbg(n, anc, rb_aci17_anco(hef_use), 1.0,
                                   rb_aci17_psi_ed_n(ca1, hef_use),
@@ -95,45 +149,67 @@ static void tension(const rb_model *m, const rb_anchor_inputs *in, rb_anchor_str
         sb->nominal_n = rb_aci17_nsbg(n, s_row, ca1, nsb);
     }
     sb->phi = rb_aci17_phi(RB_ACI17_BREAKOUT_TENSION, true, in->condition_a);
+    o->mode[RB_ANCHOR_BOND_N].applies = false;
     br->seismic = rb_aci17_seismic_factor(RB_ACI17_BREAKOUT_TENSION, in->seismic);
     po->seismic = rb_aci17_seismic_factor(RB_ACI17_PULLOUT, in->seismic);
     sb->seismic = br->seismic;
 }
 
-/* Shear of the anchorage: steel of every anchor, breakout of the row nearer
- * the edge towards it, pryout of both rows together. */
+static rb_aci17_shear_crack shear_crack(const rb_anchor_inputs *in)
+{
+    if (!in->cracked)
+        return RB_ACI17_SHEAR_UNCRACKED;
+    return in->edge_reinforcement == RB_EDGE_REINF_BAR_STIRRUPS ? RB_ACI17_SHEAR_CRACKED_STIRRUPS
+         : in->edge_reinforcement == RB_EDGE_REINF_BAR ? RB_ACI17_SHEAR_CRACKED_EDGE_BAR
+         : RB_ACI17_SHEAR_CRACKED_PLAIN;
+}
+
+/* Breakout of a row of n anchors at ca1 from the edge, sheared towards it
+ * (no side edges, so neither 17.7.2.1.2 nor psi_ed,V reduces it). */
+static double row_breakout(const rb_model *m, const rb_anchor_inputs *in, double da,
+                           double ca1)
+{
+    int n = m->bolts_per_row;
+    double ha = in->thickness_m;
+    double avc = rb_aci17_avc(ca1, n, in->spacing_m, INFINITY, INFINITY, ha);
+    double vb = rb_aci17_vb(in->coef, rb_aci17_le(in->hef_m, da), da, in->lambda_a,
+                            in->fc_pa, ca1);
+    return rb_aci17_vcbg(n, avc, rb_aci17_avco(ca1), 1.0, rb_aci17_psi_ed_v(INFINITY, ca1),
+                         rb_aci17_psi_c_v(shear_crack(in)), rb_aci17_psi_h_v(ca1, ha), vb);
+}
+
+/* Shear of the anchorage, shared between the rows as in Fig. R17.7.2.1b,
+ * and pryout of both rows together. */
 static void shear(const rb_model *m, const rb_anchor_inputs *in, rb_anchor_strength *o)
 {
     int n = m->bolts_per_row;
-    double s_row = (n - 1) * in->spacing_m, hef = in->hef_m, ca1 = in->edge_m;
-    double rows_apart = 2 * (m->lever_arm_m - m->half_width_m);
+    double s = in->spacing_m, hef = in->hef_m, ca1 = in->edge_m;
+    double rows_apart = fmax(0.0, 2 * (m->lever_arm_m - m->half_width_m));
+    o->shear_case = !isfinite(ca1) ? 0 : rows_apart < ca1 ? 3 : 1;
+    int sharing = o->shear_case == 3 ? n : 2 * n;
     rb_anchor_mode_strength *st = &o->mode[RB_ANCHOR_STEEL_V];
-    double ase = in->ase_m2 > 0 ? in->ase_m2 : m->bolt_area_m2;
-    st->nominal_n = 2 * n * rb_aci17_vsa(ase, in->futa_pa, m->yield_stress_pa, false,
-                                         in->grout_pad);
+    st->nominal_n = sharing * rb_aci17_vsa(in->coef, o->ase_m2, in->futa_pa,
+                                           m->yield_stress_pa, false, in->grout_pad);
     st->phi = rb_aci17_phi(RB_ACI17_STEEL_SHEAR, true, in->condition_a);
 
     rb_anchor_mode_strength *br = &o->mode[RB_ANCHOR_BREAKOUT_V];
     br->phi = rb_aci17_phi(RB_ACI17_BREAKOUT_SHEAR, true, in->condition_a);
-    br->applies = isfinite(ca1);
+    br->applies = o->shear_case != 0;
     if (br->applies) {
-        double c1 = rb_aci17_ca1_limited(ca1, INFINITY, INFINITY, in->thickness_m,
-                                         in->spacing_m);
-        double avc = rb_aci17_avc(c1, INFINITY, INFINITY, s_row, in->thickness_m);
-        double vb = rb_aci17_vb(in->coef, rb_aci17_le(hef, o->da_m), o->da_m,
-                                in->lambda_a, in->fc_pa, c1);
-        br->nominal_n = rb_aci17_vcbg(n, avc, rb_aci17_avco(c1), 1.0,
-                                      rb_aci17_psi_ed_v(INFINITY, c1),
-                                      rb_aci17_psi_c_v(in->cracked
-                                                       ? RB_ACI17_SHEAR_CRACKED_PLAIN
-                                                       : RB_ACI17_SHEAR_UNCRACKED),
-                                      rb_aci17_psi_h_v(c1, in->thickness_m), vb);
+        o->vcbg_front_n = row_breakout(m, in, o->da_m, ca1);
+        if (o->shear_case == 3) {
+            br->nominal_n = o->vcbg_front_n;
+        } else {
+            /* Case 1: half of V on the front row; Case 2: all of V on the
+             * rear row at its own distance; the larger ratio governs */
+            o->vcbg_rear_n = row_breakout(m, in, o->da_m, ca1 + rows_apart);
+            br->nominal_n = fmin(2 * o->vcbg_front_n, o->vcbg_rear_n);
+        }
     }
 
     /* pryout: the breakout in tension of both rows as one group */
     rb_anchor_mode_strength *pr = &o->mode[RB_ANCHOR_PRYOUT_V];
-    double anc = rb_aci17_anc(hef, INFINITY, INFINITY, s_row, ca1, INFINITY,
-                              rows_apart > 0 ? rows_apart : 0);
+    double anc = rb_aci17_anc(hef, n, s, INFINITY, INFINITY, 2, rows_apart, ca1, INFINITY);
     double ncpg = rb_aci17_ncbg(2 * n, anc, rb_aci17_anco(hef), 1.0,
                                 rb_aci17_psi_ed_n(ca1, hef), rb_aci17_psi_c_n(in->cracked),
                                 1.0, rb_aci17_nb_cast_in(in->coef, in->lambda_a, in->fc_pa,
@@ -141,6 +217,46 @@ static void shear(const rb_model *m, const rb_anchor_inputs *in, rb_anchor_stren
     pr->nominal_n = rb_aci17_vcpg(in->coef, hef, ncpg);
     pr->phi = rb_aci17_phi(RB_ACI17_PRYOUT, true, in->condition_a);
     st->seismic = br->seismic = pr->seismic = 1.0;
+}
+
+/* The least design strength over the modes of one direction, of all
+ * modes or of those concrete governs; INFINITY where none applies. */
+static double least(const rb_anchor_strength *o, bool in_tension, bool concrete_only,
+                    rb_anchor_mode *which)
+{
+    double v = INFINITY;
+    for (int k = 0; k < RB_ANCHOR_N_MODES; k++) {
+        const rb_anchor_mode_strength *s = &o->mode[k];
+        if (!s->applies || rb_anchor_mode_in_tension((rb_anchor_mode)k) != in_tension
+            || (concrete_only && rb_anchor_mode_is_steel((rb_anchor_mode)k)))
+            continue;
+        if (s->design_n < v) {
+            v = s->design_n;
+            *which = (rb_anchor_mode)k;
+        }
+    }
+    return v;
+}
+
+static void ductility(const rb_model *m, const rb_anchor_inputs *in, rb_anchor_strength *out)
+{
+    double concrete_n = INFINITY;
+    for (int k = 0; k < RB_ANCHOR_N_MODES; k++)
+        if (out->mode[k].applies && rb_anchor_mode_in_tension((rb_anchor_mode)k)
+            && !rb_anchor_mode_is_steel((rb_anchor_mode)k))
+            concrete_n = fmin(concrete_n, out->mode[k].nominal_n);
+    out->ductility_margin = rb_aci17_ductility_margin(concrete_n,
+                                                      out->mode[RB_ANCHOR_STEEL_N].nominal_n);
+    out->stretch_ok = rb_aci17_stretch_ok(m->deformable_length_m, out->da_m);
+    out->futa_over_fya = in->futa_pa / m->yield_stress_pa;
+    out->threads_ok = in->threads != RB_THREADS_PARTIAL
+                      || rb_aci17_threaded_ratio_ok(in->futa_pa, m->yield_stress_pa);
+    out->not_ductile = (out->ductility_margin >= 1 ? 0 : RB_NOT_DUCTILE_CONCRETE)
+                       | (out->stretch_ok ? 0 : RB_NOT_DUCTILE_STRETCH)
+                       | (out->threads_ok ? 0 : RB_NOT_DUCTILE_THREADS);
+    out->ductile = out->not_ductile == 0;
+    double row_yield = m->bolts_per_row * m->bolt_area_m2 * m->yield_stress_pa;
+    out->attachment_margin = out->phi_nn_concrete_n / (ATTACHMENT_OVERSTRENGTH * row_yield);
 }
 
 rb_status rb_anchor_check(const rb_model *m, const rb_anchor_inputs *in,
@@ -158,36 +274,27 @@ rb_status rb_anchor_check(const rb_model *m, const rb_anchor_inputs *in,
     double f = 1.5 * out->da_m + HEAVY_HEX_EXTRA_M;
     out->abrg_m2 = in->abrg_m2 > 0 ? in->abrg_m2
                                    : sqrt(3.0) / 2 * f * f - m->bolt_area_m2;
+    out->ase_m2 = in->ase_m2 > 0 ? in->ase_m2 : m->bolt_area_m2;
     tension(m, in, out);
     shear(m, in, out);
-    out->phi_nn_n = out->phi_vn_n = INFINITY;
-    double concrete_n = INFINITY;
     for (int k = 0; k < RB_ANCHOR_N_MODES; k++) {
         rb_anchor_mode_strength *s = &out->mode[k];
         if (!s->applies)
             continue;
         s->design_n = s->phi * s->seismic * s->nominal_n;
-        int in_tension = k <= RB_ANCHOR_SIDEFACE_N;
-        double *least = in_tension ? &out->phi_nn_n : &out->phi_vn_n;
-        if (s->design_n < *least) {
-            *least = s->design_n;
-            if (in_tension)
-                out->tension_mode = (rb_anchor_mode)k;
-            else
-                out->shear_mode = (rb_anchor_mode)k;
-        }
-        if (in_tension && k != RB_ANCHOR_STEEL_N)
-            concrete_n = fmin(concrete_n, s->nominal_n);
+        /* a strength that is no number would be skipped by every minimum
+         * below and pass whatever it should have failed */
+        if (!(isfinite(s->design_n) && s->design_n > 0))
+            return rb_diag_set(diag, RB_ERR_INVALID, NULL, 0, 0, "concrete",
+                               "the %s strength (%s) is not a positive number (%g N): "
+                               "check the anchorage's dimensions",
+                               rb_anchor_clause((rb_anchor_mode)k),
+                               k == RB_ANCHOR_BOND_N ? "bond" : "ACI 318-19", s->design_n);
     }
-    out->ductility_margin = rb_aci17_ductility_margin(concrete_n,
-                                                      out->mode[RB_ANCHOR_STEEL_N].nominal_n);
-    out->stretch_ok = rb_aci17_stretch_ok(m->deformable_length_m, out->da_m);
-    out->futa_over_fya = in->futa_pa / m->yield_stress_pa;
-    out->threads_ok = in->threads != RB_THREADS_PARTIAL
-                      || rb_aci17_threaded_ratio_ok(in->futa_pa, m->yield_stress_pa);
-    out->not_ductile = (out->ductility_margin >= 1 ? 0 : RB_NOT_DUCTILE_CONCRETE)
-                       | (out->stretch_ok ? 0 : RB_NOT_DUCTILE_STRETCH)
-                       | (out->threads_ok ? 0 : RB_NOT_DUCTILE_THREADS);
-    out->ductile = out->not_ductile == 0;
+    out->phi_nn_n = least(out, true, false, &out->tension_mode);
+    out->phi_vn_n = least(out, false, false, &out->shear_mode);
+    out->phi_nn_concrete_n = least(out, true, true, &out->concrete_tension_mode);
+    out->phi_vn_concrete_n = least(out, false, true, &out->concrete_shear_mode);
+    ductility(m, in, out);
     return RB_OK;
 }

@@ -184,9 +184,60 @@ rb_governing rb_result_governing(const rb_result *r)
     return g;
 }
 
+/* The route of 17.10.5.3 the judge applies to a run (rb_criteria). */
+static rb_route_applied route_applied(const rb_criteria *c, const rb_result *r)
+{
+    if (!c->concrete || !c->anchor_seismic)
+        return RB_ROUTE_APPLIED_NONE;
+    /* 17.10.5.2: only where the earthquake's share of the tension exceeds
+     * 20 %: every newton of a rocking cabinet's bolt tension is seismic,
+     * so the bolts need only have carried some */
+    if (!(larger(r->max_bolt_force_n[0], r->max_bolt_force_n[1]) > 0))
+        return RB_ROUTE_APPLIED_EXEMPT;
+    if (r->yielded[0] || r->yielded[1] || c->anchor_route == RB_ROUTE_DUCTILE)
+        return RB_ROUTE_APPLIED_DUCTILE;
+    switch ((rb_seismic_route)c->anchor_route) {
+    case RB_ROUTE_ATTACHMENT: return RB_ROUTE_APPLIED_ATTACHMENT;
+    case RB_ROUTE_OMEGA: return RB_ROUTE_APPLIED_OMEGA;
+    default: return RB_ROUTE_APPLIED_DYNAMIC;
+    }
+}
+
+/* Whether the route applied fails the run: a route with a yes-or-no
+ * answer fails on the same test in the verdict and in its margin */
+static int route_fails(const rb_criteria *c, rb_route_applied route)
+{
+    switch (route) {
+    case RB_ROUTE_APPLIED_DUCTILE: return c->anchor_not_ductile != 0;
+    case RB_ROUTE_APPLIED_ATTACHMENT: return !(c->anchor_attachment_margin >= 1);
+    case RB_ROUTE_APPLIED_OMEGA: return !(c->anchor_static_utilization < 1);
+    default: return 0;
+    }
+}
+
+static void route_reason(const rb_criteria *c, const rb_result *r, rb_route_applied route,
+                         rb_verdict *v)
+{
+    char why[256];
+    int yielded = r->yielded[0] || r->yielded[1];
+    if (route == RB_ROUTE_APPLIED_DUCTILE)
+        SAY(v, 0, "the anchorage is not ductile (ACI 318-19 17.10.5.3(a)%s): %s",
+            yielded && c->anchor_route != RB_ROUTE_DUCTILE
+                ? ", the route of a run whose bolts yield" : "",
+            not_ductile_why(c->anchor_not_ductile, why, sizeof why));
+    else if (route == RB_ROUTE_APPLIED_ATTACHMENT)
+        SAY(v, 0, "the anchorage fails 17.10.5.3(c): its concrete-governed design tension "
+            "strength is %.3f of 1.2 times the row's yield force", c->anchor_attachment_margin);
+    else
+        SAY(v, 0, "the anchorage fails 17.10.5.3(d): the static check with Omega_0 has "
+            "17.8 utilization %.3f", c->anchor_static_utilization);
+}
+
 static void criteria(const rb_criteria *c, const rb_result *r, rb_verdict *v)
 {
-    char num[32], why[256];
+    rb_route_applied route = route_applied(c, r);
+    v->anchor_route = (int)route;
+    char num[32];
     rb_governing g = rb_result_governing(r);
     double usage = g.usage, shear = g.shear_over_w, force = g.force_over_fy;
     if (r->overturned)
@@ -211,12 +262,12 @@ static void criteria(const rb_criteria *c, const rb_result *r, rb_verdict *v)
         SAY(v, 0, "rotation / alpha = %s exceeds its limit %.17g",
             beside(r->max_theta_over_alpha, c->max_theta_over_alpha, num, sizeof num),
             c->max_theta_over_alpha);
-    else if (c->concrete && c->anchor_not_ductile)
-        SAY(v, 0, "the anchorage is not ductile (ACI 318-19 17.10.5.3(a)): %s",
-            not_ductile_why(c->anchor_not_ductile, why, sizeof why));
+    else if (route_fails(c, route))
+        route_reason(c, r, route, v);
     else if (c->concrete && r->anchor_checked && r->anchor_max_ratio >= 1.0)
-        SAY(v, 0, "the anchorage reaches its design strength: 17.8.%d utilization %s at "
-            "t = %.3f s (tension %.4g kN, shear %.4g kN)", r->anchor_clause,
+        SAY(v, 0, "the anchorage reaches its concrete design strength: %s utilization %s at "
+            "t = %.3f s (tension %.4g kN, shear %.4g kN)",
+            rb_aci17_interaction_clause(r->anchor_clause),
             beside(r->anchor_max_ratio, 1.0, num, sizeof num), r->anchor_max_s,
             r->anchor_tension_n / 1e3, r->anchor_shear_n / 1e3);
     else if (c->kind == RB_CRIT_NO_YIELD)
@@ -264,6 +315,8 @@ double rb_verdict_margin(const rb_criteria *c, const rb_result *r)
         m = fmin(m, below(r->max_theta_over_alpha, c->max_theta_over_alpha));
     if (c->concrete && r->anchor_checked)
         m = fmin(m, below(r->anchor_max_ratio, 1));
+    if (route_fails(c, route_applied(c, r)))
+        m = 0;
     if (c->validity == RB_VALIDITY_FAIL) {
         unsigned mask = c->validity_mask;
         if ((mask >> RB_CHECK_LIFT_OFF) & 1u && r->weight_n > 0)

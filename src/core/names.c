@@ -54,11 +54,27 @@ const rb_enum_name rb_anchor_threads_names[] = {
 const rb_enum_name rb_anchor_mode_names[] = {
     {"steel-tension", RB_ANCHOR_STEEL_N}, {"breakout-tension", RB_ANCHOR_BREAKOUT_N},
     {"pullout", RB_ANCHOR_PULLOUT_N}, {"side-face-blowout", RB_ANCHOR_SIDEFACE_N},
-    {"steel-shear", RB_ANCHOR_STEEL_V}, {"breakout-shear", RB_ANCHOR_BREAKOUT_V},
+    {"bond", RB_ANCHOR_BOND_N}, {"steel-shear", RB_ANCHOR_STEEL_V}, {"breakout-shear", RB_ANCHOR_BREAKOUT_V},
     {"pryout", RB_ANCHOR_PRYOUT_V}, {NULL, 0}};
 
 const rb_enum_name rb_aci17_coef_names[] = {
     {"si", RB_ACI17_SI}, {"in-lb", RB_ACI17_INLB}, {NULL, 0}};
+
+const rb_enum_name rb_seismic_route_names[] = {
+    {"auto", RB_ROUTE_AUTO}, {"ductile", RB_ROUTE_DUCTILE},
+    {"attachment", RB_ROUTE_ATTACHMENT}, {"omega", RB_ROUTE_OMEGA}, {NULL, 0}};
+
+const rb_enum_name rb_route_applied_names[] = {
+    {"none", RB_ROUTE_APPLIED_NONE}, {"exempt", RB_ROUTE_APPLIED_EXEMPT},
+    {"ductile", RB_ROUTE_APPLIED_DUCTILE}, {"attachment", RB_ROUTE_APPLIED_ATTACHMENT},
+    {"omega", RB_ROUTE_APPLIED_OMEGA}, {"dynamic", RB_ROUTE_APPLIED_DYNAMIC}, {NULL, 0}};
+
+const rb_enum_name rb_edge_reinforcement_names[] = {
+    {"none", RB_EDGE_REINF_NONE}, {"bar", RB_EDGE_REINF_BAR},
+    {"bar-and-stirrups", RB_EDGE_REINF_BAR_STIRRUPS}, {NULL, 0}};
+
+const rb_enum_name rb_interaction_names[] = {
+    {"trilinear", RB_ACI17_TRILINEAR}, {"power", RB_ACI17_POWER}, {NULL, 0}};
 
 
 const rb_enum_name rb_intensity_names[] = {

@@ -42,8 +42,9 @@ static void sample_of(const rb_solver *sv, const double *y, const rb_aux *a, sam
 
 static double anchor_ratio(const rb_solver *sv, const sample *s, int *which)
 {
-    return rb_aci17_interaction(s->tension, sv->opts.anchor_phi_nn_n, fabs(s->H),
-                                sv->opts.anchor_phi_vn_n, which);
+    return rb_aci17_interaction_by((rb_aci17_interaction_rule)sv->opts.anchor_interaction,
+                                   s->tension, sv->opts.anchor_phi_nn_n, fabs(s->H),
+                                   sv->opts.anchor_phi_vn_n, which);
 }
 
 /* Each quantity as the larger the worse: the least floor reaction as the

@@ -166,7 +166,7 @@ static void add_code(rb_jctx *cx, cJSON *parent, const rb_case *c, const rb_code
     rb_j_bool(cx, o, "pass", k->ratio <= 1.0);
     if (k->has_concrete) {
         char clause[16];
-        snprintf(clause, sizeof clause, "17.8.%d", k->concrete_clause);
+        snprintf(clause, sizeof clause, "%s", rb_aci17_interaction_clause(k->concrete_clause));
         rb_j_num(cx, o, "concrete_utilization", k->concrete_utilization);
         rb_j_str(cx, o, "concrete_clause", clause);
         rb_j_bool(cx, o, "concrete_pass", k->concrete_utilization < 1.0);

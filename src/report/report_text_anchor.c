@@ -33,7 +33,9 @@ static int modes_list(rb_txt_arena *a, const rb_report *r, rb_tlist *out)
         rb_tv_num(&t, "phi", m->phi);
         rb_tv_num(&t, "seismic", m->seismic);
         rb_tv_opt(&t, "design", m->applies, m->design_n / u->force_f);
-        rb_tv_str(&t, "applies", m->applies ? "" : "does not apply");
+        rb_tv_str(&t, "applies", !m->applies ? "does not apply"
+                                 : rb_anchor_mode_is_steel((rb_anchor_mode)k)
+                                 ? "static check; the run's steel: its criterion" : "");
         items[k].vars = t.v;
         items[k].n_vars = t.n;
     }
@@ -65,10 +67,28 @@ rb_status rb_report_text_concrete(const rb_report *r, rb_txt_arena *a, rb_tlist 
     rb_tv_num(&t, "spacing", in->spacing_m / u->small_length_f);
     rb_tv_str(&t, "condition", in->condition_a ? "A" : "B");
     rb_tv_str(&t, "seismic_design", in->seismic ? "yes (17.10)" : "no");
+    rb_tv_num(&t, "ase", s->ase_m2 / u->area_f);
+    rb_tv_num(&t, "abrg", s->abrg_m2 / u->area_f);
+    rb_tv_str(&t, "edge_reinforcement", rb_enum_str(rb_edge_reinforcement_names,
+                                                    (int)in->edge_reinforcement));
+    rb_tv_str(&t, "interaction", rb_enum_str(rb_interaction_names, (int)in->interaction));
+    rb_tv_str(&t, "seismic_route", rb_enum_str(rb_seismic_route_names, (int)in->route));
+    rb_tv_str(&t, "shear_case", s->shear_case == 3 ? "Case 3 of Fig. R17.7.2.1b (rows closer "
+                                                     "than c_a1: the front row takes all)"
+                                : s->shear_case ? "Cases 1 and 2 of Fig. R17.7.2.1b (front "
+                                                  "row V/2, rear row V)"
+                                : "no edge: breakout in shear does not apply");
     rb_tv_num(&t, "phi_nn", s->phi_nn_n / u->force_f);
     rb_tv_num(&t, "phi_vn", s->phi_vn_n / u->force_f);
     rb_tv_str(&t, "tension_governs", rb_enum_str(rb_anchor_mode_names, (int)s->tension_mode));
     rb_tv_str(&t, "shear_governs", rb_enum_str(rb_anchor_mode_names, (int)s->shear_mode));
+    rb_tv_num(&t, "phi_nn_concrete", s->phi_nn_concrete_n / u->force_f);
+    rb_tv_num(&t, "phi_vn_concrete", s->phi_vn_concrete_n / u->force_f);
+    rb_tv_str(&t, "concrete_tension_governs",
+              rb_enum_str(rb_anchor_mode_names, (int)s->concrete_tension_mode));
+    rb_tv_str(&t, "concrete_shear_governs",
+              rb_enum_str(rb_anchor_mode_names, (int)s->concrete_shear_mode));
+    rb_tv_num(&t, "attachment_margin", s->attachment_margin);
     rb_tv_num(&t, "ductility_margin", s->ductility_margin);
     rb_tv_str(&t, "stretch_ok", s->stretch_ok ? "at least 8 da" : "below 8 da");
     rb_tv_num(&t, "futa_over_fya", s->futa_over_fya);
@@ -102,7 +122,8 @@ rb_status rb_report_text_motion_anchor_modes(const rb_report *r, const rb_report
         return RB_ERR_NOMEM;
     for (int k = 0; k < RB_ANCHOR_N_MODES; k++) {
         const rb_anchor_mode_strength *md = &s->mode[k];
-        double demand = k <= RB_ANCHOR_SIDEFACE_N ? res->anchor_tension_n : res->anchor_shear_n;
+        double demand = rb_anchor_mode_in_tension((rb_anchor_mode)k) ? res->anchor_tension_n
+                                                                       : res->anchor_shear_n;
         rb_tvars t = {rb_txt_arena_alloc(a, RB_TXT_MAX_VARS, sizeof(rb_tvar)), 0};
         if (!t.v)
             return RB_ERR_NOMEM;
@@ -125,20 +146,26 @@ void rb_report_text_motion_anchorage(rb_tvars *t, const rb_report *r,
     const rb_result *res = m->result;
     int have = r->kase && r->kase->has_concrete && res && res->anchor_checked;
     const rb_out_units *u = units_of(r);
-    static const char *const clauses[] = {"17.8", "17.8.1", "17.8.2", "17.8.3"};
     rb_tv_int(t, "has_anchorage", have);
     if (!have)
         return;
     const rb_anchor_strength *s = &r->kase->anchor;
     rb_tv_num(t, "anchor_utilization", res->anchor_max_ratio);
-    rb_tv_str(t, "anchor_clause", clauses[res->anchor_clause & 3]);
+    rb_tv_str(t, "anchor_clause", rb_aci17_interaction_clause(res->anchor_clause));
     rb_tv_num(t, "anchor_s", res->anchor_max_s);
     rb_tv_num(t, "anchor_tension", res->anchor_tension_n / u->force_f);
-    rb_tv_num(t, "anchor_tension_ratio", res->anchor_tension_n / s->phi_nn_n);
+    rb_tv_num(t, "anchor_tension_ratio", res->anchor_tension_n / s->phi_nn_concrete_n);
     rb_tv_num(t, "anchor_shear", res->anchor_shear_n / u->force_f);
-    rb_tv_num(t, "anchor_shear_ratio", res->anchor_shear_n / s->phi_vn_n);
+    rb_tv_num(t, "anchor_shear_ratio", res->anchor_shear_n / s->phi_vn_concrete_n);
+    /* the largest shear of the run, which the instant of the largest
+     * utilization need not hold (17.8.1 counts tension alone) */
+    rb_tv_num(t, "anchor_shear_max", res->max_shear_total_n / u->force_f);
+    rb_tv_num(t, "anchor_shear_max_ratio", res->max_shear_total_n / s->phi_vn_concrete_n);
+    rb_tv_str(t, "anchor_route", rb_enum_str(rb_route_applied_names, m->verdict.anchor_route));
     /* the mode that governs at that instant, the larger share */
-    int tension = res->anchor_tension_n / s->phi_nn_n >= res->anchor_shear_n / s->phi_vn_n;
+    int tension = res->anchor_tension_n / s->phi_nn_concrete_n
+                  >= res->anchor_shear_n / s->phi_vn_concrete_n;
     rb_tv_str(t, "anchor_mode", rb_enum_str(rb_anchor_mode_names,
-                                            (int)(tension ? s->tension_mode : s->shear_mode)));
+                                            (int)(tension ? s->concrete_tension_mode
+                                                          : s->concrete_shear_mode)));
 }

@@ -178,7 +178,7 @@ static void code_vars(rb_tvars *t, const rb_report *r)
     rb_tv_num(t, "code_phi_nsa", k->phi_nsa_n / u->force_f);
     rb_tv_int(t, "code_concrete", k->has_concrete);
     rb_tv_num(t, "code_concrete_utilization", k->concrete_utilization);
-    rb_tv_int(t, "code_concrete_clause", k->concrete_clause);
+    rb_tv_str(t, "code_concrete_clause", rb_aci17_interaction_clause(k->concrete_clause));
     rb_tv_str(t, "code_concrete_verdict", k->concrete_utilization < 1.0 ? "PASS" : "FAIL");
 }
 

@@ -258,14 +258,12 @@ rb_status rb_run_design(const rb_case *c, int n_threads, rb_case_design *out,
     if (st == RB_OK && c->has_code) {
         step(&pg, NULL, "code-static comparison");
         st = rb_code_static(&c->model, &c->code, &out->code, diag);
-        if (st == RB_OK && c->has_concrete) {
-            /* the static demand on the anchorage: T of a row, and all of
-             * the anchor design force in shear (no friction counted) */
+        if (st == RB_OK && c->has_anchor_static) {
+            /* the static demand on the anchorage, worked out with the case */
             rb_code_result *k = &out->code;
             k->has_concrete = 1;
-            k->concrete_utilization = rb_aci17_interaction(k->tension_n, c->anchor.phi_nn_n,
-                                                           k->fp_anchor_n, c->anchor.phi_vn_n,
-                                                           &k->concrete_clause);
+            k->concrete_utilization = c->anchor_static_utilization;
+            k->concrete_clause = c->anchor_static_clause;
         }
         if (st != RB_OK) {
             char key[sizeof diag->key];

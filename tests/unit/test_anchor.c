@@ -91,11 +91,24 @@ static void hand_worked(void)
     double ca = pow(18, 1.5), da = 0.5;
     double vb = fmin(7 * pow(8, 0.2) * sqrt(da) * sqfc * ca, 9 * sqfc * ca);
     double vcbg = 62.0 * 6 / (4.5 * 324) * sqrt(27.0 / 6) * vb;
-    CHECK_REL(s.mode[RB_ANCHOR_BREAKOUT_V].nominal_n, vcbg * LB, 1e-12);
-    /* 17.7.3: kcp = 2 x the breakout of both rows, 2 (l - b) apart; A_Nc
-     * is at most n A_Nco (17.6.2.1.1) */
+    /* Fig. R17.7.2.1b: the rows are further apart than c_a1, so Case 1
+     * (the front row with V/2) and Case 2 (the rear row with all of V at
+     * 18 in + the rows' distance) are both checked: the strength is the
+     * lesser of 2 Vcbg,front and Vcbg,rear */
     double apart = 2 * (m.lever_arm_m - m.half_width_m) / IN;
-    double anc = fmin((6 + 8 + 6) * (6 + apart + 6), 4 * 144.0);
+    CHECK(apart > 18);
+    double c2 = 18 + apart, ca2 = pow(c2, 1.5);
+    double vb2 = fmin(7 * pow(8, 0.2) * sqrt(da) * sqfc * ca2, 9 * sqfc * ca2);
+    double vcbg2 = (3 * c2 + 8) * 6 / (4.5 * c2 * c2) * sqrt(1.5 * c2 / 6) * vb2;
+    CHECK(s.shear_case == 1);
+    CHECK_REL(s.vcbg_front_n, vcbg * LB, 1e-12);
+    CHECK_REL(s.vcbg_rear_n, vcbg2 * LB, 1e-12);
+    CHECK_REL(s.mode[RB_ANCHOR_BREAKOUT_V].nominal_n, fmin(2 * vcbg, vcbg2) * LB, 1e-12);
+    /* 17.7.3: kcp = 2 x the breakout of both rows, 2 (l - b) apart: the
+     * union of each bolt's 6 in square, so across the rows 6 + min(apart,
+     * 12) + 6 (the concrete between cones more than 3 hef apart belongs to
+     * none) */
+    double anc = (6 + 8 + 6) * (6 + fmin(apart, 12) + 6);
     CHECK_REL(s.mode[RB_ANCHOR_PRYOUT_V].nominal_n, 2 * anc / 144 * 24 * sqfc * 8 * LB,
               1e-12);
     /* phi (Table 17.5.3, condition B) and 0.75 on concrete tension (17.10.5.4) */
@@ -230,8 +243,8 @@ static void aisc_dg1(void)
 {
     double fc4 = 4000 * PSI, fc5 = 5000 * PSI;
     /* Ex. 4.7-3: four 7/8 in rods on a 4 in square, hef 15 in, no edges */
-    CHECK3(rb_aci17_nsa(0.462 * IN * IN, 58000 * PSI, 36000 * PSI) / KIP, 26.8);
-    CHECK3(rb_aci17_anc(15 * IN, INFINITY, INFINITY, 4 * IN, INFINITY, INFINITY, 4 * IN)
+    CHECK3(rb_aci17_nsa(RB_ACI17_INLB, 0.462 * IN * IN, 58000 * PSI, 36000 * PSI) / KIP, 26.8);
+    CHECK3(rb_aci17_anc(15 * IN, 2, 4 * IN, INFINITY, INFINITY, 2, 4 * IN, INFINITY, INFINITY)
            / (IN * IN), 2400);
     CHECK3(rb_aci17_anco(15 * IN) / (IN * IN), 2030);
     CHECK3(rb_aci17_nb_cast_in(RB_ACI17_INLB, 1, fc4, 15 * IN) / KIP, 92.3);
@@ -239,20 +252,20 @@ static void aisc_dg1(void)
            109);
     CHECK(rb_aci17_phi(RB_ACI17_BREAKOUT_TENSION, true, false) == 0.70);
     /* Ex. 4.7-4: shear towards an edge 12 in away, the two rods 4 in apart */
-    CHECK3(rb_aci17_avc(12 * IN, INFINITY, INFINITY, 4 * IN, 100 * IN) / (IN * IN), 720);
+    CHECK3(rb_aci17_avc(12 * IN, 2, 4 * IN, INFINITY, INFINITY, 100 * IN) / (IN * IN), 720);
     CHECK3(rb_aci17_avco(12 * IN) / (IN * IN), 648);
     CHECK3(rb_aci17_vb(RB_ACI17_INLB, 7 * IN, 0.875 * IN, 1, fc4, 12 * IN) / KIP, 23.7);
     CHECK3(rb_aci17_vcbg(2, 720, 648, 1, 1, 1, 1, 23.7 * KIP) / KIP, 26.3);
     /* Ex. 4.7-7: eight 1 1/2 in rods, f'c 5000 psi, hef 24 in, grout pad */
     double ase = 1.41 * IN * IN;
-    CHECK3(rb_aci17_nsa(ase, 58000 * PSI, 36000 * PSI) / KIP, 81.8);
-    CHECK3(rb_aci17_anc(24 * IN, INFINITY, INFINITY, 28 * IN, INFINITY, INFINITY,
-                        6.5 * IN) / (IN * IN), 7850);
+    CHECK3(rb_aci17_nsa(RB_ACI17_INLB, ase, 58000 * PSI, 36000 * PSI) / KIP, 81.8);
+    CHECK3(rb_aci17_anc(24 * IN, 4, 28.0 / 3 * IN, INFINITY, INFINITY, 2, 6.5 * IN,
+                        INFINITY, INFINITY) / (IN * IN), 7850);
     CHECK3(rb_aci17_anco(24 * IN) / (IN * IN), 5180);
     CHECK3(rb_aci17_nb_cast_in(RB_ACI17_INLB, 1, fc5, 24 * IN) / KIP, 226);
     CHECK3(rb_aci17_ncbg(8, 7850, 5180, 1, 1, 1, 1, 226 * KIP) / KIP, 342);
     CHECK3(rb_aci17_np(3.12 * IN * IN, fc5) / KIP, 125);
-    CHECK3(rb_aci17_vsa(ase, 58000 * PSI, 36000 * PSI, false, true) / KIP, 39.3);
+    CHECK3(rb_aci17_vsa(RB_ACI17_INLB, ase, 58000 * PSI, 36000 * PSI, false, true) / KIP, 39.3);
     CHECK(rb_aci17_kcp(RB_ACI17_INLB, 24 * IN) == 2);
     CHECK3(rb_aci17_vcpg(RB_ACI17_INLB, 24 * IN, 342 * KIP) / KIP, 684);
     /* the guide's check: 138 / 239 + 14.5 / 25.5 = 1.15 <= 1.2 (Eq. 17.8.3) */
@@ -261,7 +274,7 @@ static void aisc_dg1(void)
     CHECK(which == 3);
     CHECK3(1.2 * u, 1.15);
     /* Ex. 4.7-11: two 1 in rods 12 in apart, hef 18 in */
-    CHECK3(rb_aci17_anc(18 * IN, INFINITY, INFINITY, 12 * IN, INFINITY, INFINITY, 0)
+    CHECK3(rb_aci17_anc(18 * IN, 2, 12 * IN, INFINITY, INFINITY, 1, 0, INFINITY, INFINITY)
            / (IN * IN), 3560);
     CHECK3(rb_aci17_anco(18 * IN) / (IN * IN), 2920);
     CHECK3(rb_aci17_nb_cast_in(RB_ACI17_INLB, 1, fc4, 18 * IN) / KIP, 125);
@@ -307,8 +320,182 @@ static void threads(void)
     CHECK(!rb_aci17_threaded_ratio_ok(1.3 * 250e6 * (1 - 1e-9), 250e6));
 }
 
+/* Projected areas as unions (17.6.2.1, Fig. R17.6.2.1(b) holds only below
+ * 3 hef): a row of two bolts 20 in apart, 4 in deep, 2 in from the edge.
+ * Each bolt's square is 12 in wide, so A_Nc = (6 + 12 + 6) x (2 + 6) =
+ * 192 in^2, not the rectangle (6 + 20 + 6) x 8 = 256 in^2 (33 % more). */
+static void areas_are_unions(void)
+{
+    rb_model m;
+    rb_anchor_inputs in;
+    rb_anchor_strength s;
+    rb_diag d;
+    model_2x(&m);
+    inputs_inlb(&in, 4000, 6, 4, 20);
+    in.edge_m = 2 * IN;
+    in.futa_pa = 58000 * PSI;
+    in.abrg_m2 = 0.467 * IN * IN;
+    CHECK(rb_anchor_check(&m, &in, &s, &d) == RB_OK);
+    double sqfc = sqrt(4000.0), nb = 24 * sqfc * 8, ped = 0.7 + 0.3 * 2 / 6.0;
+    CHECK_REL(s.mode[RB_ANCHOR_BREAKOUT_N].nominal_n, 192.0 / 144 * ped * nb * LB, 1e-12);
+    CHECK_REL(rb_aci17_anc(4 * IN, 2, 20 * IN, INFINITY, INFINITY, 1, 0, 2 * IN, INFINITY)
+              / (IN * IN), 192, 1e-12);
+    /* below 3 hef the union is the one rectangle */
+    CHECK_REL(rb_aci17_anc(4 * IN, 2, 10 * IN, INFINITY, INFINITY, 1, 0, 2 * IN, INFINITY)
+              / (IN * IN), (6 + 10 + 6) * 8.0, 1e-12);
+    /* A_Vc of a row 40 in apart at c_a1 = 10 in in a 5 in slab: each
+     * anchor's 30 in width, (15 + 30 + 15) x 5 against (15 + 40 + 15) x 5 */
+    CHECK_REL(rb_aci17_avc(10 * IN, 2, 40 * IN, INFINITY, INFINITY, 5 * IN) / (IN * IN),
+              60 * 5.0, 1e-12);
+    /* pryout of the two rows 26 in apart (the reference cabinet), 4 in
+     * deep: 12 + 12 across the rows, not 6 + 26 + 6 */
+    double apart = 2 * (m.lever_arm_m - m.half_width_m) / IN;
+    double anc = (6 + 12 + 6) * (2 + fmin(apart, 12) + 6);
+    CHECK(apart > 12);
+    CHECK_REL(s.mode[RB_ANCHOR_PRYOUT_V].nominal_n, 2 * fmin(anc, 4 * 144.0) / 144 * ped * nb * LB,
+              1e-12);
+}
+
+/* Fig. R17.7.2.1b, Case 3: rows 26 in apart, the front row 30 in from the
+ * edge: the front row takes all of V, in steel and in breakout alike. */
+static void shear_case_three(void)
+{
+    rb_model m;
+    rb_anchor_inputs in;
+    rb_anchor_strength s;
+    rb_diag d;
+    model_2x(&m);
+    inputs_inlb(&in, 4000, 12, 4, 8);
+    in.edge_m = 30 * IN;
+    in.futa_pa = 58000 * PSI;
+    in.abrg_m2 = 0.467 * IN * IN;
+    in.ase_m2 = 0.142 * IN * IN;
+    CHECK(rb_anchor_check(&m, &in, &s, &d) == RB_OK);
+    CHECK(s.shear_case == 3);
+    CHECK_REL(s.mode[RB_ANCHOR_STEEL_V].nominal_n, 2 * 0.6 * 0.142 * 58000 * LB, 1e-12);
+    /* the row at 30 in: A_Vc = (45 + 8 + 45) x 12, A_Vco = 4.5 x 900,
+     * psi_h = sqrt(45 / 12), Vb = the lesser of the two forms */
+    double sqfc = sqrt(4000.0), ca = pow(30, 1.5);
+    double vb = fmin(7 * pow(8, 0.2) * sqrt(0.5) * sqfc * ca, 9 * sqfc * ca);
+    double vcbg = 98.0 * 12 / (4.5 * 900) * sqrt(45.0 / 12) * vb;
+    CHECK_REL(s.mode[RB_ANCHOR_BREAKOUT_V].nominal_n, vcbg * LB, 1e-12);
+    /* 17.7.2.5.1: a No. 4 edge bar gives 1.2, with stirrups 1.4 */
+    in.edge_reinforcement = RB_EDGE_REINF_BAR;
+    CHECK(rb_anchor_check(&m, &in, &s, &d) == RB_OK);
+    CHECK_REL(s.mode[RB_ANCHOR_BREAKOUT_V].nominal_n, 1.2 * vcbg * LB, 1e-12);
+    in.edge_reinforcement = RB_EDGE_REINF_BAR_STIRRUPS;
+    CHECK(rb_anchor_check(&m, &in, &s, &d) == RB_OK);
+    CHECK_REL(s.mode[RB_ANCHOR_BREAKOUT_V].nominal_n, 1.4 * vcbg * LB, 1e-12);
+}
+
+/* The dynamic demand is judged on the strengths concrete governs: a row
+ * whose steel governs in tension (deep bolts, far from edges) reports the
+ * steel as the static check's least, the breakout or pullout as the run's. */
+static void concrete_governed_strengths(void)
+{
+    rb_model m;
+    rb_anchor_inputs in;
+    rb_anchor_strength s;
+    rb_diag d;
+    model_2x(&m);
+    inputs_inlb(&in, 5000, 24, 12, 12);
+    in.futa_pa = 58000 * PSI;
+    in.abrg_m2 = 2 * IN * IN;
+    CHECK(rb_anchor_check(&m, &in, &s, &d) == RB_OK);
+    CHECK(s.tension_mode == RB_ANCHOR_STEEL_N);
+    CHECK(!rb_anchor_mode_is_steel(s.concrete_tension_mode)
+          && rb_anchor_mode_in_tension(s.concrete_tension_mode));
+    CHECK(s.phi_nn_concrete_n > s.phi_nn_n);
+    CHECK(s.phi_nn_concrete_n == s.mode[s.concrete_tension_mode].design_n);
+    CHECK(!rb_anchor_mode_is_steel(s.concrete_shear_mode)
+          && !rb_anchor_mode_in_tension(s.concrete_shear_mode));
+    /* 17.10.5.3(c): the least concrete design tension over 1.2 n A fy */
+    CHECK_REL(s.attachment_margin,
+              s.phi_nn_concrete_n / (1.2 * 2 * m.bolt_area_m2 * m.yield_stress_pa), 1e-12);
+}
+
+/* Every input has a range from the code's own applicability, and no
+ * strength may be no number (an embedment of 1e-300 m made breakout NaN,
+ * which the minimum skipped, and the case passed). */
+static void inputs_in_range(void)
+{
+    rb_model m;
+    rb_anchor_inputs in;
+    rb_anchor_strength s;
+    rb_diag d;
+    model_2x(&m);
+    inputs_inlb(&in, 4000, 6, 4, 8);
+    in.futa_pa = 58000 * PSI;
+    static const struct {
+        double hef_in, edge_in, spacing_in;
+        const char *key;
+    } bad[] = {
+        {1e-300 / 0.0254, INFINITY, 8, "anchorage.embedment"},
+        {1.4, INFINITY, 8, "anchorage.embedment"},   /* below 1.5 in */
+        {4, 1e300, 8, "concrete.edge_distance"},
+        {4, 0.99, 8, "concrete.edge_distance"},      /* 3/4 in cover + d/2 */
+        {4, INFINITY, 1.99, "anchorage.spacing"},    /* 4 d_a */
+        {4, INFINITY, 1e300, "anchorage.spacing"},
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        inputs_inlb(&in, 4000, 6, bad[i].hef_in, bad[i].spacing_in);
+        in.futa_pa = 58000 * PSI;
+        in.edge_m = bad[i].edge_in * IN;
+        CHECK(rb_anchor_check(&m, &in, &s, &d) == RB_ERR_INVALID
+              && strcmp(d.key, bad[i].key) == 0);
+    }
+    /* at the limits themselves the check runs and every strength is finite */
+    inputs_inlb(&in, 4000, 6, 1.5, 2);
+    in.futa_pa = 58000 * PSI;
+    in.edge_m = 1.0 * IN;
+    CHECK(rb_anchor_check(&m, &in, &s, &d) == RB_OK);
+    for (int k = 0; k < RB_ANCHOR_N_MODES; k++)
+        CHECK(!s.mode[k].applies || (isfinite(s.mode[k].design_n) && s.mode[k].design_n > 0));
+}
+
+/* AISC Design Guide 1, 3rd ed., Ex. 4.7-15: four 7/8 in rods on a 4 in
+ * square in the centre of a 20 in square column, h_ef 14 in, f'c 4000
+ * psi: 17.6.2.1.2 limits h_ef to max(8 / 1.5, 4 / 3) = 5.33 in, A_Nc 400,
+ * A_Nco 256 in^2, N_b 18.7, N_cbg 29.2 kips; side-face blowout does not
+ * apply (14 in < 2.5 x 8 in). */
+static void aisc_dg1_4_7_15(void)
+{
+    double edges[4] = {8 * IN, 8 * IN, 8 * IN, 8 * IN};
+    double hef = rb_aci17_hef_limited(14 * IN, edges, 4 * IN);
+    CHECK3(hef / IN, 5.33);
+    double anc = rb_aci17_anc(hef, 2, 4 * IN, 8 * IN, 8 * IN, 2, 4 * IN, 8 * IN, 8 * IN);
+    CHECK3(anc / (IN * IN), 400);
+    CHECK3(rb_aci17_anco(hef) / (IN * IN), 256);
+    double nb = rb_aci17_nb_cast_in(RB_ACI17_INLB, 1, 4000 * PSI, hef);
+    CHECK3(nb / KIP, 18.7);
+    CHECK(rb_aci17_psi_ed_n(8 * IN, hef) == 1.0);
+    CHECK3(rb_aci17_ncbg(4, anc, rb_aci17_anco(hef), 1, 1, 1, 1, nb) / KIP, 29.2);
+    CHECK(!rb_aci17_sideface_applies(8 * IN, 14 * IN));
+}
+
+/* R17.8's 5/3-power rule beside the trilinear one: at 0.6 and 0.6 the sum
+ * of the powers is 2 x 0.6^(5/3) = 0.8541, the utilization its 3/5 power
+ * 0.6 x 2^0.6 = 0.9094; the trilinear rule gives 1.2 / 1.2 = 1. */
+static void power_interaction(void)
+{
+    int w;
+    CHECK_REL(rb_aci17_interaction_by(RB_ACI17_POWER, 60, 100, 60, 100, &w),
+              0.6 * pow(2, 0.6), 1e-14);
+    CHECK(w == RB_ACI17_WHICH_POWER && strcmp(rb_aci17_interaction_clause(w), "R17.8") == 0);
+    CHECK_REL(rb_aci17_interaction_by(RB_ACI17_TRILINEAR, 60, 100, 60, 100, &w), 1.0, 1e-14);
+    CHECK(w == 3 && strcmp(rb_aci17_interaction_clause(w), "17.8.3") == 0);
+    /* tension alone: both rules give N / phi Nn */
+    CHECK_REL(rb_aci17_interaction_by(RB_ACI17_POWER, 70, 100, 0, 100, NULL), 0.7, 1e-14);
+}
+
 int main(void)
 {
+    areas_are_unions();
+    shear_case_three();
+    concrete_governed_strengths();
+    inputs_in_range();
+    aisc_dg1_4_7_15();
+    power_interaction();
     hand_worked();
     threads();
     sideface_row();

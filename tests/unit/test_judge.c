@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "harness.h"
+#include "rockbolt/anchor.h"
 #include "rockbolt/criteria.h"
 
 static void base_result(rb_result *r)
@@ -384,8 +385,81 @@ static void harmonic_band(void)
     CHECK(!rb_verdict_wants_confirm(&c, rb_confirm_band(&c, &harmonic), &r, &v));
 }
 
+/* 17.10.5.2 and the routes of 17.10.5.3 (rockbolt/criteria.h): an
+ * anchorage that is not ductile fails a run only under route (a), asked
+ * or taken because the run yields the bolts; a run whose bolts carry no
+ * tension is exempt; routes (c) and (d) fail on their own numbers. */
+static void seismic_routes(void)
+{
+    rb_criteria c;
+    rb_result r;
+    rb_verdict v;
+    rb_criteria_init(&c);
+    base_result(&r);
+    c.concrete = 1;
+    c.anchor_seismic = 1;
+    c.anchor_not_ductile = RB_NOT_DUCTILE_STRETCH;
+    c.anchor_attachment_margin = 2;
+    c.anchor_static_utilization = 0.5;
+    r.anchor_checked = 1;
+    r.anchor_max_ratio = 0.3;
+    /* no tension in the bolts: exempt whatever the route */
+    for (int route = RB_ROUTE_AUTO; route <= RB_ROUTE_OMEGA; route++) {
+        c.anchor_route = route;
+        rb_judge(&c, &r, &v);
+        CHECK(v.pass && v.anchor_route == RB_ROUTE_APPLIED_EXEMPT);
+        CHECK(rb_verdict_margin(&c, &r) > 0);
+    }
+    /* tension, no yield: auto lets the run's demand stand for (d) */
+    r.max_bolt_force_n[0] = 0.4 * r.fy_row_n;
+    c.anchor_route = RB_ROUTE_AUTO;
+    rb_judge(&c, &r, &v);
+    CHECK(v.pass && v.anchor_route == RB_ROUTE_APPLIED_DYNAMIC);
+    /* route (a) asked: fails on the stretch length, margin 0 */
+    c.anchor_route = RB_ROUTE_DUCTILE;
+    rb_judge(&c, &r, &v);
+    CHECK(!v.pass && v.anchor_route == RB_ROUTE_APPLIED_DUCTILE);
+    CHECK(strstr(v.reason, "17.10.5.3(a)") && strstr(v.reason, "8 da"));
+    CHECK(rb_verdict_margin(&c, &r) == 0);
+    /* a run that yields the bolts relies on them: (a) under any route */
+    r.yielded[1] = 1;
+    for (int route = RB_ROUTE_AUTO; route <= RB_ROUTE_OMEGA; route++) {
+        c.anchor_route = route;
+        rb_judge(&c, &r, &v);
+        CHECK(!v.pass && v.anchor_route == RB_ROUTE_APPLIED_DUCTILE);
+    }
+    c.anchor_not_ductile = 0;
+    rb_judge(&c, &r, &v);
+    CHECK(v.pass);
+    r.yielded[1] = 0;
+    /* (c): the concrete's design tension below 1.2 times the row's yield */
+    c.anchor_route = RB_ROUTE_ATTACHMENT;
+    c.anchor_attachment_margin = 0.97;
+    rb_judge(&c, &r, &v);
+    CHECK(!v.pass && v.anchor_route == RB_ROUTE_APPLIED_ATTACHMENT);
+    CHECK(strstr(v.reason, "17.10.5.3(c)") != NULL);
+    c.anchor_attachment_margin = 1.0;
+    rb_judge(&c, &r, &v);
+    CHECK(v.pass);
+    /* (d): the static check with Omega_0 */
+    c.anchor_route = RB_ROUTE_OMEGA;
+    c.anchor_static_utilization = 1.0;
+    rb_judge(&c, &r, &v);
+    CHECK(!v.pass && v.anchor_route == RB_ROUTE_APPLIED_OMEGA);
+    CHECK(strstr(v.reason, "17.10.5.3(d)") != NULL && rb_verdict_margin(&c, &r) == 0);
+    c.anchor_static_utilization = 0.99;
+    rb_judge(&c, &r, &v);
+    CHECK(v.pass && rb_verdict_margin(&c, &r) > 0);
+    /* 17.10 off (seismic: false): no route at all */
+    c.anchor_seismic = 0;
+    c.anchor_static_utilization = 3;
+    rb_judge(&c, &r, &v);
+    CHECK(v.pass && v.anchor_route == RB_ROUTE_APPLIED_NONE);
+}
+
 int main(void)
 {
+    seismic_routes();
     no_yield_whatever_the_model();
     usage_beside_its_limit();
     validity();
