@@ -180,6 +180,10 @@ static void psi_factors(void)
     CHECK_NEAR(rb_aci17_psi_cp_na(true, 2 * IN, cac, cna), 0.75, 1e-12);
     CHECK(rb_aci17_psi_cp_na(false, 2 * IN, cac, cna) == 1.0);
     CHECK(rb_aci17_psi_cp_na(true, 2 * IN, 5 * IN, cna) == 1.0);
+    /* Hilti, PROFIS Design Guide US-EN, Summer 2021 (ACI 318-14, whose
+     * 17.4.5.3 is 318-19's Eq. (17.6.5.3.1)), p. 36: e'_N = 1.67 in,
+     * c_Na = 10.65 in: psi_ec,Na = 1 / (1 + 1.67 / 10.65) = 0.864 */
+    CHECK_NEAR(rb_aci17_psi_ec_na(1.67 * IN, 10.65 * IN), 0.864, 0.0005);
     /* psi_ec,Na, Eq. (17.6.5.3.1): e'_N = 3 in, c_Na = 6 in: 1 / 1.5 */
     CHECK_NEAR(rb_aci17_psi_ec_na(3 * IN, cna), 1 / 1.5, 1e-12);
     CHECK(rb_aci17_psi_ec_na(0, cna) == 1.0);
