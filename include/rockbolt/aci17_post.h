@@ -121,12 +121,12 @@ double rb_aci17_cna(rb_aci17_coef coef, double da_m, double tau_uncr_pa);
 /* 17.6.5.1.2, Eq. (17.6.5.1.2a): A_Nao = (2 c_Na)^2. */
 double rb_aci17_anao(double cna_m);
 
-/* 17.6.5.1.1: A_Na of a rectangular group, the rectilinear area c_Na
- * beyond the outer anchors (or the line through a row), cut by the edges:
- * (min(cx1, c_Na) + sx + min(cx2, c_Na)) x (min(cy1, c_Na) + sy +
- * min(cy2, c_Na)). Arguments as rb_aci17_anc (INFINITY: no edge). */
-double rb_aci17_ana(double cna_m, double cx1_m, double cx2_m, double sx_m,
-                    double cy1_m, double cy2_m, double sy_m);
+/* 17.6.5.1.1: A_Na of a grid of nx by ny anchors sx and sy apart, the
+ * union of each anchor's square c_Na each side cut by the edges, as
+ * rb_aci17_anc with c_Na for 1.5 h_ef: below 2 c_Na spacing the one
+ * rectangle c_Na beyond the outer anchors. */
+double rb_aci17_ana(double cna_m, int nx, double sx_m, double cx1_m, double cx2_m,
+                    int ny, double sy_m, double cy1_m, double cy2_m);
 
 /* 17.6.5.2.1, Eq. (17.6.5.2.1): basic bond strength of one adhesive
  * anchor, N_ba = lambda_a tau pi d_a h_ef; tau = tau_cr (cracked) or

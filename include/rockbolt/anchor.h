@@ -20,6 +20,7 @@
 
 #include <stdbool.h>
 #include "rockbolt/aci17.h"
+#include "rockbolt/anchor_hardware.h"
 #include "rockbolt/model.h"
 #include "rockbolt/status.h"
 
@@ -99,16 +100,27 @@ typedef struct {
     double spacing_m;      /* between the anchors of a row */
     double futa_pa;        /* specified tensile strength */
     rb_anchor_threads threads; /* default partial */
-    double abrg_m2;        /* bearing area of the head; <= 0: a heavy hex head */
+    double abrg_m2;        /* bearing area of the head; <= 0: from head */
     double ase_m2;         /* effective (tensile stress) area A_se of one
-                              anchor, for the steel strengths; <= 0: the
-                              model's bolt area */
+                              anchor, for the steel strengths; <= 0: from
+                              the thread standard of the bolt's diameter
+                              (rockbolt/anchor_hardware.h), or the bolt's
+                              area where the case gave it as an area */
+    bool head_given;       /* head names the head; else a heavy hex nut for
+                              inch sizes (ASTM F1554 rods take A563 heavy
+                              hex nuts), an ISO 4032 nut for metric ones */
+    rb_anchor_head head;
+    double washer_d_m;     /* outside diameter of a washer head */
+    double thread_pitch_m; /* > 0: a fine or other pitch; else coarse */
+    bool area_is_tensile;  /* the bolt was given by its (tensile) area */
     bool grout_pad;        /* shear through a grout pad (17.7.1.2.1) */
     rb_aci17_coef coef;    /* coefficients of the SI or the in-lb edition */
     rb_edge_reinforcement edge_reinforcement; /* psi_c,V (17.7.2.5.1) */
     rb_aci17_interaction_rule interaction;    /* 17.8 or R17.8 */
     rb_seismic_route route;                   /* 17.10.5.3 */
 } rb_anchor_inputs;
+
+enum { RB_ASE_GIVEN = 0, RB_ASE_THREADS, RB_ASE_BOLT_AREA };
 
 /* Defaults: cracked, lambda_a 1, seismic, no edge, condition B, no grout
  * pad, cast-in headed, SI coefficients, no edge reinforcement, the
@@ -145,6 +157,14 @@ typedef struct {
     double da_m;           /* anchor diameter, from the bolt's area */
     double abrg_m2;        /* bearing area used */
     double ase_m2;         /* effective tensile area used */
+    /* where A_se came from: RB_ASE_GIVEN, _THREADS (rb_thread_ase of the
+     * standard and pitch below) or _BOLT_AREA; and the head A_brg is of
+     * (abrg_given: head_bearing_area was given instead) */
+    int ase_source;
+    rb_thread_std thread_std;
+    double thread_pitch_used_m;
+    bool abrg_given;
+    rb_anchor_head head;
     double phi_nn_n;       /* least design tension strength of a row */
     double phi_vn_n;       /* least design shear strength of the anchorage */
     rb_anchor_mode tension_mode, shear_mode; /* which governs each */

@@ -57,6 +57,22 @@ static void read_slab(rb_cctx *c, rb_ynode *cn, rb_anchor_inputs *in)
     rb_cv_unknown_keys(c, cn, p, concrete_keys);
 }
 
+/* A thread other than the coarse one of the bolt's size: its pitch as a
+ * length, or as threads per inch. */
+static void read_pitch(rb_cctx *c, rb_ynode *an, rb_anchor_inputs *in)
+{
+    const char *p = "anchorage";
+    rb_ynode *tpi_node = rb_cv_get(c, an, p, "threads_per_inch", 0, "");
+    rb_cv_number(c, an, p, "thread_pitch", 0, RB_DIM_LENGTH, 0, 0, 0.01, 1, &in->thread_pitch_m);
+    double tpi = 0;
+    rb_cv_number(c, an, p, "threads_per_inch", 0, RB_DIM_RATIO, 1, 1, 100, 1, &tpi);
+    if (tpi > 0 && in->thread_pitch_m > 0)
+        rb_cctx_error(c, tpi_node, "anchorage.threads_per_inch",
+                      "give thread_pitch or threads_per_inch, not both");
+    else if (tpi > 0)
+        in->thread_pitch_m = RB_ACI17_IN_M / tpi;
+}
+
 /* The anchors' own keys: read whenever given, required with concrete:. */
 static void read_anchors(rb_cctx *c, rb_ynode *an, int required, int per_row,
                          rb_anchor_inputs *in)
@@ -73,6 +89,15 @@ static void read_anchors(rb_cctx *c, rb_ynode *an, int required, int per_row,
                  &in->futa_pa);
     rb_cv_number(c, an, p, "head_bearing_area", 0, RB_DIM_AREA, 0, 0, 1, 1, &in->abrg_m2);
     rb_cv_number(c, an, p, "tensile_area", 0, RB_DIM_AREA, 0, 0, 1, 1, &in->ase_m2);
+    v = rb_cv_get(c, an, p, "head", 0, "");
+    if (v && rb_cv_enum_table(c, v, "anchorage.head", rb_anchor_head_names, 0, &i)) {
+        in->head = (rb_anchor_head)i;
+        in->head_given = true;
+    }
+    rb_cv_number(c, an, p, "washer_diameter", in->head_given && in->head == RB_HEAD_WASHER,
+                 RB_DIM_LENGTH, 0, 0, 1, 1, &in->washer_d_m);
+    read_pitch(c, an, in);
+    in->area_is_tensile = c->bolt_by_area != 0;
     flag(c, an, p, "grout_pad", &in->grout_pad);
     v = rb_cv_get(c, an, p, "threads", 0, "");
     if (v && rb_cv_enum_table(c, v, "anchorage.threads", rb_anchor_threads_names, 0, &i))

@@ -174,6 +174,7 @@ typedef struct {
     rb_ynode *concrete_node;        /* concrete: and anchorage:, for the */
     rb_ynode *anchorage_node;       /* check's errors */
     rb_ynode *seismic_route_node;   /* concrete.seismic_route, when given */
+    int bolt_by_area;               /* anchorage.area given, not diameter */
     int anchor_coef_given;          /* concrete: coefficients: was given */
 } rb_cctx;
 

@@ -35,7 +35,7 @@ static const char *const anchorage_keys[] = {
     "deformable_length", "lever_arm", "edge_distance", "elastic_modulus",
     /* the concrete check's (case_concrete.c) */
     "type", "embedment", "spacing", "ultimate_stress", "head_bearing_area", "grout_pad",
-    "tensile_area", "threads",
+    "tensile_area", "threads", "head", "washer_diameter", "thread_pitch", "threads_per_inch",
     NULL};
 static const char *const criteria_keys[] = {
     "kind", "usage_limit", "max_shear_over_w", "max_rotation_over_alpha",
@@ -214,6 +214,7 @@ static void read_anchorage(rb_cctx *c, rb_ynode *an, rb_model *m)
         within(c, bv, "anchorage.diameter", x, RB_CASE_MIN_DIAMETER_M,
                   RB_CASE_MAX_DIAMETER_M, "1 mm and 200 mm");
     } else if (which == 1) {
+        c->bolt_by_area = 1;
         bv = schema_field(c, an, p, "area", "bolt_area", 1, RB_DIM_AREA, 0, 0, (double)NAN, 0,
                       &m->bolt_area_m2);
         within(c, bv, "anchorage.area", m->bolt_area_m2,

@@ -151,12 +151,13 @@ double rb_aci17_anao(double cna_m)
     return 4.0 * cna_m * cna_m;
 }
 
-double rb_aci17_ana(double cna_m, double cx1_m, double cx2_m, double sx_m,
-                    double cy1_m, double cy2_m, double sy_m)
+double rb_aci17_ana(double cna_m, int nx, double sx_m, double cx1_m, double cx2_m,
+                    int ny, double sy_m, double cy1_m, double cy2_m)
 {
-    /* 17.6.5.1.1: c_Na beyond the outer anchors, cut by the edges. */
-    return (fmin(cx1_m, cna_m) + sx_m + fmin(cx2_m, cna_m))
-           * (fmin(cy1_m, cna_m) + sy_m + fmin(cy2_m, cna_m));
+    /* 17.6.5.1.1: c_Na beyond each anchor, cut by the edges; anchors
+     * more than 2 c_Na apart share no area */
+    return rb_aci17_span(nx, sx_m, cna_m, cx1_m, cx2_m)
+           * rb_aci17_span(ny, sy_m, cna_m, cy1_m, cy2_m);
 }
 
 double rb_aci17_nba(double lambda_a, double tau_pa, double da_m, double hef_m)

@@ -53,7 +53,7 @@ static void acceptance_adhesive_row(void)
     double anao = rb_aci17_anao(cna);
     CHECK_NEAR(to_in2(anao), 181.8, 0.05);
     CHECK_REL(to_in2(anao), 100.0 * 2000.0 / 1100.0, 1e-12);
-    double ana = rb_aci17_ana(cna, INFINITY, INFINITY, s, INFINITY, INFINITY, 0);
+    double ana = rb_aci17_ana(cna, 2, s, INFINITY, INFINITY, 1, 0, INFINITY, INFINITY);
     CHECK_NEAR(to_in2(ana), 262.7, 0.05);
     /* normalweight concrete: Table 17.2.4.1 is for lightweight concrete,
      * lambda_a = 1 */
@@ -85,7 +85,7 @@ static void hilti_masonry_p11_bond(void)
     CHECK_NEAR(ped, 0.833, 0.0005);
     double nba = rb_aci17_nba(1.0, tau, da, hef);
     CHECK_NEAR(to_lb(nba), 8435, 0.5);
-    double ana = rb_aci17_ana(cna, INFINITY, INFINITY, 8 * IN, ca, INFINITY, 0);
+    double ana = rb_aci17_ana(cna, 2, 8 * IN, INFINITY, INFINITY, 1, 0, ca, INFINITY);
     CHECK_NEAR(to_in2(ana), 127, 0.5);
     double anao = rb_aci17_anao(cna);
     CHECK_NEAR(to_in2(anao), 98, 0.5);
@@ -121,7 +121,7 @@ static void kbtz_expansion_examples(void)
     double nb = rb_aci17_nb_basic(RB_ACI17_INLB, kc, 1.0, fc, hef);
     CHECK_NEAR(to_lb(nb), 5456, 0.5);
     double anco = rb_aci17_anco(hef);
-    double anc = rb_aci17_anc(hef, INFINITY, INFINITY, 6 * IN, c, INFINITY, 0);
+    double anc = rb_aci17_anc(hef, 2, 6 * IN, INFINITY, INFINITY, 1, 0, c, INFINITY);
     CHECK_NEAR(to_in2(anco), 95.06, 0.005);
     CHECK_NEAR(to_in2(anc), 139.78, 0.005);
     double ped = rb_aci17_psi_ed_n(c, hef);
@@ -191,13 +191,13 @@ static void psi_factors(void)
     CHECK(rb_aci17_post_psi_c_n(false, false) == 1.4);
     CHECK(rb_aci17_post_psi_c_n(false, true) == 1.0);
     CHECK(rb_aci17_post_psi_c_n(true, true) == 1.0);
-    /* A_Na capped at n A_Nao (17.6.5.1.1): two anchors 20 in apart with
-     * c_Na = 6 in: A_Na = 32 x 12 = 384 > 2 x 144 = 288 in^2 */
-    double ana = rb_aci17_ana(cna, INFINITY, INFINITY, 20 * IN, INFINITY, INFINITY, 0);
-    CHECK_NEAR(to_in2(ana), 384, 1e-9);
+    /* two anchors 20 in apart with c_Na = 6 in share no area: A_Na =
+     * (6 + 12 + 6) x 12 = 288 in^2 = 2 A_Nao, not the rectangle 32 x 12 */
+    double ana = rb_aci17_ana(cna, 2, 20 * IN, INFINITY, INFINITY, 1, 0, INFINITY, INFINITY);
+    CHECK_NEAR(to_in2(ana), 288, 1e-9);
     CHECK_REL(rb_aci17_nag(2, ana, rb_aci17_anao(cna), 1, 1, 1, 1000), 2000, 1e-12);
     /* an edge 2 in from the row cuts A_Na to (6 + 2)(12) = 96 in^2 */
-    CHECK_NEAR(to_in2(rb_aci17_ana(cna, INFINITY, INFINITY, 0, 2 * IN, INFINITY, 0)), 96, 1e-9);
+    CHECK_NEAR(to_in2(rb_aci17_ana(cna, 1, 0, INFINITY, INFINITY, 1, 0, 2 * IN, INFINITY)), 96, 1e-9);
 }
 
 static void phi_lambda_pryout_seismic(void)
