@@ -20,13 +20,43 @@
 
 #include <stdbool.h>
 #include "rockbolt/aci17.h"
+#include "rockbolt/aci17_post.h"
 #include "rockbolt/anchor_hardware.h"
 #include "rockbolt/model.h"
 #include "rockbolt/status.h"
 
 typedef enum {
-    RB_ANCHOR_CAST_IN_HEADED = 0   /* headed bolts or studs; post-installed later */
+    RB_ANCHOR_CAST_IN_HEADED = 0,  /* headed bolts or studs, or rods with a nut */
+    RB_ANCHOR_EXPANSION,           /* torque-controlled expansion (ACI 355.2) */
+    RB_ANCHOR_EXPANSION_DISPLACEMENT, /* displacement-controlled (drop-in) */
+    RB_ANCHOR_SCREW,
+    RB_ANCHOR_UNDERCUT,
+    RB_ANCHOR_ADHESIVE             /* bonded (ACI 355.4) */
 } rb_anchor_type;
+
+/* A post-installed anchor's values from its evaluation report (ICC-ES
+ * ESR under ACI 355.2 / 355.4), in SI. A value of 0 takes the code's
+ * default where Chapter 17 has one (k_c 17 / 7, c_ac of Table 17.9.5,
+ * the minimums of 17.9, alpha 1); the category, and for adhesive anchors
+ * both bond stresses, have none and are required. */
+typedef struct {
+    int category;                  /* Table 17.5.3: 1, 2 or 3 */
+    double kc_cracked, kc_uncracked; /* k_c,cr; k_c,uncr (0: k_c,cr with 1.4) */
+    /* N_p,cr and N_p,uncr of one anchor at the report's reference f'c;
+     * the report's "does not govern": pullout_governs false */
+    bool pullout_governs;
+    double pullout_cracked_n, pullout_uncracked_n;
+    double pullout_exponent;       /* n of (f'c / f'c,ref)^n; 0: 0.5 */
+    double critical_edge_m;        /* c_ac */
+    double bond_cracked_pa, bond_uncracked_pa; /* tau_cr, tau_uncr */
+    double seismic_tension_factor; /* alpha_N,seis on pullout and bond */
+    double seismic_shear_n;        /* V_sa,eq of one anchor; 0: alpha_V,seis V_sa */
+    double seismic_shear_factor;   /* alpha_V,seis */
+    double min_edge_m, min_spacing_m, min_thickness_m, min_embedment_m;
+} rb_anchor_product;
+
+/* Whether an anchor type is post-installed, and its type in aci17_post.h */
+bool rb_anchor_post_installed(rb_anchor_type type);
 
 /* The conditions of 17.10.5.3(a) an anchorage can miss, as bits. */
 enum {
@@ -113,6 +143,7 @@ typedef struct {
     double washer_d_m;     /* outside diameter of a washer head */
     double thread_pitch_m; /* > 0: a fine or other pitch; else coarse */
     bool area_is_tensile;  /* the bolt was given by its (tensile) area */
+    rb_anchor_product product; /* post-installed anchors only */
     bool grout_pad;        /* shear through a grout pad (17.7.1.2.1) */
     rb_aci17_coef coef;    /* coefficients of the SI or the in-lb edition */
     rb_edge_reinforcement edge_reinforcement; /* psi_c,V (17.7.2.5.1) */

@@ -73,6 +73,71 @@ static void read_pitch(rb_cctx *c, rb_ynode *an, rb_anchor_inputs *in)
         in->thread_pitch_m = RB_ACI17_IN_M / tpi;
 }
 
+static const char *const product_keys[] = {
+    "category", "kc_cracked", "kc_uncracked", "pullout_cracked", "pullout_uncracked",
+    "pullout_exponent", "critical_edge_distance", "bond_strength_cracked",
+    "bond_strength_uncracked", "seismic_tension_factor", "seismic_shear",
+    "seismic_shear_factor", "min_edge_distance", "min_spacing", "min_thickness",
+    "min_embedment", NULL};
+
+/* A pullout strength from the report, or its "does not govern". */
+static void read_pullout(rb_cctx *c, rb_ynode *pm, const char *key, rb_anchor_product *p,
+                         double *out)
+{
+    rb_ynode *v = rb_cv_get(c, pm, "anchorage.product", key, 0, "");
+    if (v && v->kind == RB_YNODE_SCALAR && v->text && strcmp(v->text, "does-not-govern") == 0) {
+        p->pullout_governs = false;
+        return;
+    }
+    rb_cv_number(c, pm, "anchorage.product", key, 0, RB_DIM_FORCE, 0, 0, 10e6, 1, out);
+}
+
+/* anchorage.product: a post-installed anchor's values from its evaluation
+ * report (rb_anchor_product). */
+static void read_product(rb_cctx *c, rb_ynode *an, rb_anchor_inputs *in)
+{
+    const char *p = "anchorage.product";
+    rb_anchor_product *pr = &in->product;
+    pr->pullout_governs = true;
+    rb_ynode *pm = rb_cv_get(c, an, "anchorage", "product", 1,
+                             "the anchor's values from its evaluation report (category, ...)");
+    if (!pm || !rb_cv_map(c, pm, p))
+        return;
+    double cat = 0;
+    rb_ynode *cv = rb_cv_get(c, pm, p, "category", 1, "1, 2 or 3 (Table 17.5.3)");
+    if (cv && rb_cv_number(c, pm, p, "category", 0, RB_DIM_RATIO, 1, 1, 3, 1, &cat)) {
+        if (cat != 1 && cat != 2 && cat != 3)
+            rb_cctx_error(c, cv, "anchorage.product.category", "must be 1, 2 or 3");
+        pr->category = (int)cat;
+    }
+    rb_cv_number(c, pm, p, "kc_cracked", 0, RB_DIM_RATIO, 0, 0, 100, 1, &pr->kc_cracked);
+    rb_cv_number(c, pm, p, "kc_uncracked", 0, RB_DIM_RATIO, 0, 0, 100, 1, &pr->kc_uncracked);
+    read_pullout(c, pm, "pullout_cracked", pr, &pr->pullout_cracked_n);
+    read_pullout(c, pm, "pullout_uncracked", pr, &pr->pullout_uncracked_n);
+    rb_cv_number(c, pm, p, "pullout_exponent", 0, RB_DIM_RATIO, 0, 0, 2, 1,
+                 &pr->pullout_exponent);
+    rb_cv_number(c, pm, p, "critical_edge_distance", 0, RB_DIM_LENGTH, 0, 0, 10, 1,
+                 &pr->critical_edge_m);
+    int adhesive = in->type == RB_ANCHOR_ADHESIVE;
+    rb_cv_number(c, pm, p, "bond_strength_cracked", adhesive, RB_DIM_STRESS, 0, 0, 100e6, 1,
+                 &pr->bond_cracked_pa);
+    rb_cv_number(c, pm, p, "bond_strength_uncracked", adhesive, RB_DIM_STRESS, 0, 0, 100e6, 1,
+                 &pr->bond_uncracked_pa);
+    rb_cv_number(c, pm, p, "seismic_tension_factor", 0, RB_DIM_RATIO, 0, 0, 1, 1,
+                 &pr->seismic_tension_factor);
+    rb_cv_number(c, pm, p, "seismic_shear", 0, RB_DIM_FORCE, 0, 0, 10e6, 1,
+                 &pr->seismic_shear_n);
+    rb_cv_number(c, pm, p, "seismic_shear_factor", 0, RB_DIM_RATIO, 0, 0, 1, 1,
+                 &pr->seismic_shear_factor);
+    rb_cv_number(c, pm, p, "min_edge_distance", 0, RB_DIM_LENGTH, 0, 0, 10, 1, &pr->min_edge_m);
+    rb_cv_number(c, pm, p, "min_spacing", 0, RB_DIM_LENGTH, 0, 0, 10, 1, &pr->min_spacing_m);
+    rb_cv_number(c, pm, p, "min_thickness", 0, RB_DIM_LENGTH, 0, 0, 10, 1,
+                 &pr->min_thickness_m);
+    rb_cv_number(c, pm, p, "min_embedment", 0, RB_DIM_LENGTH, 0, 0, 10, 1,
+                 &pr->min_embedment_m);
+    rb_cv_unknown_keys(c, pm, p, product_keys);
+}
+
 /* The anchors' own keys: read whenever given, required with concrete:. */
 static void read_anchors(rb_cctx *c, rb_ynode *an, int required, int per_row,
                          rb_anchor_inputs *in)
@@ -98,6 +163,12 @@ static void read_anchors(rb_cctx *c, rb_ynode *an, int required, int per_row,
                  RB_DIM_LENGTH, 0, 0, 1, 1, &in->washer_d_m);
     read_pitch(c, an, in);
     in->area_is_tensile = c->bolt_by_area != 0;
+    if (rb_anchor_post_installed(in->type))
+        read_product(c, an, in);
+    else if ((v = rb_cv_get(c, an, p, "product", 0, "")) != NULL)
+        rb_cctx_error(c, v, "anchorage.product", "product values are for post-installed "
+                      "anchors (type: expansion, expansion-displacement, screw, undercut or "
+                      "adhesive); this anchor is cast-in");
     flag(c, an, p, "grout_pad", &in->grout_pad);
     v = rb_cv_get(c, an, p, "threads", 0, "");
     if (v && rb_cv_enum_table(c, v, "anchorage.threads", rb_anchor_threads_names, 0, &i))

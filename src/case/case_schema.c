@@ -36,6 +36,7 @@ static const char *const anchorage_keys[] = {
     /* the concrete check's (case_concrete.c) */
     "type", "embedment", "spacing", "ultimate_stress", "head_bearing_area", "grout_pad",
     "tensile_area", "threads", "head", "washer_diameter", "thread_pitch", "threads_per_inch",
+    "product",
     NULL};
 static const char *const criteria_keys[] = {
     "kind", "usage_limit", "max_shear_over_w", "max_rotation_over_alpha",

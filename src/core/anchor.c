@@ -77,6 +77,73 @@ static rb_status within(rb_diag *diag, const char *key, double v, double lo, dou
                        why[0] ? ": " : "", why, v * 1e3);
 }
 
+bool rb_anchor_post_installed(rb_anchor_type type)
+{
+    return type != RB_ANCHOR_CAST_IN_HEADED;
+}
+
+static rb_aci17_post_type post_type(rb_anchor_type type)
+{
+    switch (type) {
+    case RB_ANCHOR_EXPANSION_DISPLACEMENT: return RB_ACI17_POST_DISPLACEMENT_EXPANSION;
+    case RB_ANCHOR_SCREW: return RB_ACI17_POST_SCREW;
+    case RB_ANCHOR_UNDERCUT: return RB_ACI17_POST_UNDERCUT;
+    case RB_ANCHOR_ADHESIVE: return RB_ACI17_POST_ADHESIVE;
+    default: return RB_ACI17_POST_TORQUE_EXPANSION;
+    }
+}
+
+/* A post-installed anchor's product values and the limits of 17.9 and
+ * 17.3 (the report's own where it gives them, else the code's). */
+static rb_status check_product(const rb_model *m, const rb_anchor_inputs *in, double da,
+                               rb_diag *diag)
+{
+    const rb_anchor_product *p = &in->product;
+    rb_aci17_post_type t = post_type(in->type);
+    rb_status st;
+    if (p->category < 1 || p->category > 3)
+        return bad(diag, "anchorage.product.category",
+                   "a post-installed anchor needs its category (1, 2 or 3, Table 17.5.3) "
+                   "from its evaluation report");
+    if (in->type == RB_ANCHOR_ADHESIVE
+        && !(p->bond_cracked_pa > 0 && p->bond_uncracked_pa >= p->bond_cracked_pa))
+        return bad(diag, "anchorage.product.bond_strength_cracked",
+                   "an adhesive anchor needs bond_strength_cracked and "
+                   "bond_strength_uncracked (tau_cr <= tau_uncr) from its report");
+    if (in->type != RB_ANCHOR_ADHESIVE && p->pullout_governs
+        && !((in->cracked ? p->pullout_cracked_n : p->pullout_uncracked_n) > 0))
+        return bad(diag, in->cracked ? "anchorage.product.pullout_cracked"
+                                     : "anchorage.product.pullout_uncracked",
+                   "give the report's pullout strength, or 'does-not-govern' where the "
+                   "report says so");
+    if (!rb_aci17_post_hef_in_scope(t, in->hef_m, da))
+        return rb_diag_set(diag, RB_ERR_INVALID, NULL, 0, 0, "anchorage.embedment",
+                           "outside 17.3.3/17.3.4 for this anchor type (adhesive 4 d_a to "
+                           "20 d_a, screw 5 d_a to 10 d_a; d_a %.4g mm)", da * 1e3);
+    if (p->min_embedment_m > 0 && in->hef_m < p->min_embedment_m)
+        return rb_diag_set(diag, RB_ERR_INVALID, NULL, 0, 0, "anchorage.embedment",
+                           "below the report's h_ef,min %.4g mm", p->min_embedment_m * 1e3);
+    if (!rb_aci17_post_hef_ok(in->coef, t, in->hef_m, in->thickness_m))
+        return rb_diag_set(diag, RB_ERR_INVALID, NULL, 0, 0, "anchorage.embedment",
+                           "17.9.4: at most the greater of 2/3 h_a and h_a - 4 in (%.4g mm "
+                           "here)", rb_aci17_post_hef_max(in->coef, in->thickness_m) * 1e3);
+    if (p->min_thickness_m > 0 && in->thickness_m < p->min_thickness_m)
+        return rb_diag_set(diag, RB_ERR_INVALID, NULL, 0, 0, "concrete.thickness",
+                           "below the report's h_min %.4g mm", p->min_thickness_m * 1e3);
+    double s_min = p->min_spacing_m > 0 ? p->min_spacing_m
+                                        : rb_aci17_post_s_min(t, da, in->hef_m);
+    if (m->bolts_per_row > 1
+        && (st = within(diag, "anchorage.spacing", in->spacing_m, s_min, DIMENSION_MAX_M,
+                        "17.9.2, the report's s_min or Table 17.9.2(a)")) != RB_OK)
+        return st;
+    double c_min = rb_aci17_post_c_min(t, da, COVER_MIN_M, 0, p->min_edge_m);
+    if (!isinf(in->edge_m)
+        && (st = within(diag, "concrete.edge_distance", in->edge_m, c_min, DIMENSION_MAX_M,
+                        "17.9.2, the report's c_min or Table 17.9.2(b)")) != RB_OK)
+        return st;
+    return RB_OK;
+}
+
 static rb_status check_inputs(const rb_model *m, const rb_anchor_inputs *in, rb_diag *diag)
 {
     rb_status st;
@@ -90,6 +157,8 @@ static rb_status check_inputs(const rb_model *m, const rb_anchor_inputs *in, rb_
     if ((st = within(diag, "concrete.thickness", in->thickness_m, 0, DIMENSION_MAX_M, ""))
         != RB_OK || !(in->thickness_m > 0))
         return st != RB_OK ? st : bad(diag, "concrete.thickness", "must be > 0");
+    if (rb_anchor_post_installed(in->type) && (st = check_product(m, in, da, diag)) != RB_OK)
+        return st;
     if (!isinf(in->edge_m)
         && (st = within(diag, "concrete.edge_distance", in->edge_m, COVER_MIN_M + da / 2,
                         DIMENSION_MAX_M, "17.9.2(a), the least cover of 20.5.1.3 (3/4 in) "
@@ -102,7 +171,7 @@ static rb_status check_inputs(const rb_model *m, const rb_anchor_inputs *in, rb_
         return rb_diag_set(diag, RB_ERR_INVALID, NULL, 0, 0, "anchorage.embedment",
                            "must be less than the slab's thickness (embedment "
                            "%g mm, slab %g mm)", in->hef_m * 1e3, in->thickness_m * 1e3);
-    if (m->bolts_per_row > 1
+    if (m->bolts_per_row > 1 && !rb_anchor_post_installed(in->type)
         && (st = within(diag, "anchorage.spacing", in->spacing_m, SPACING_MIN_DA * da,
                         DIMENSION_MAX_M, "17.9.2, 4 d_a for cast-in anchors not torqued"))
            != RB_OK)
@@ -158,6 +227,81 @@ static rb_status hardware(const rb_model *m, const rb_anchor_inputs *in, rb_anch
     return RB_OK;
 }
 
+/* The breakout in tension of a group of post-installed anchors whose
+ * projected area is anc (17.6.2 with the report's k_c and psi_cp,N). */
+static double post_breakout(const rb_anchor_inputs *in, int n, double anc)
+{
+    const rb_anchor_product *p = &in->product;
+    rb_aci17_post_type t = post_type(in->type);
+    bool uncr_kc = !in->cracked && p->kc_uncracked > 0;
+    double kc = uncr_kc ? p->kc_uncracked
+              : p->kc_cracked > 0 ? p->kc_cracked : rb_aci17_post_kc(in->coef);
+    kc = rb_aci17_post_kc_limited(in->coef, kc);
+    double hef = in->hef_m;
+    double cac = p->critical_edge_m > 0 ? p->critical_edge_m : rb_aci17_post_cac_default(t, hef);
+    double nb = rb_aci17_nb_basic(in->coef, kc, rb_aci17_post_lambda_a(t, false, in->lambda_a),
+                                  in->fc_pa, hef);
+    return rb_aci17_ncbg(n, anc, rb_aci17_anco(hef), 1.0, rb_aci17_psi_ed_n(in->edge_m, hef),
+                         rb_aci17_post_psi_c_n(in->cracked, uncr_kc),
+                         rb_aci17_post_psi_cp_n(!in->cracked && !in->condition_a, in->edge_m,
+                                                cac, hef), nb);
+}
+
+/* The bond strength of a group of n adhesive anchors s apart in each of
+ * rows rows sy apart (17.6.5), seismic tau where 17.10 applies. */
+static double post_bond(const rb_anchor_inputs *in, double da, int n, int rows, double sy)
+{
+    const rb_anchor_product *p = &in->product;
+    double tau = in->cracked ? p->bond_cracked_pa : p->bond_uncracked_pa;
+    if (in->seismic && p->seismic_tension_factor > 0)
+        tau = rb_aci17_post_seismic_tension(p->seismic_tension_factor, tau);
+    double cna = rb_aci17_cna(in->coef, da, p->bond_uncracked_pa);
+    double cac = p->critical_edge_m > 0 ? p->critical_edge_m
+                                        : rb_aci17_post_cac_default(RB_ACI17_POST_ADHESIVE,
+                                                                    in->hef_m);
+    double ana = rb_aci17_ana(cna, n, in->spacing_m, INFINITY, INFINITY, rows, sy, in->edge_m,
+                              INFINITY);
+    double nba = rb_aci17_nba(rb_aci17_post_lambda_a(RB_ACI17_POST_ADHESIVE, true,
+                                                     in->lambda_a), tau, da, in->hef_m);
+    return rb_aci17_nag(n * rows, ana, rb_aci17_anao(cna), 1.0,
+                        rb_aci17_psi_ed_na(in->edge_m, cna),
+                        rb_aci17_psi_cp_na(!in->cracked && !in->condition_a, in->edge_m, cac,
+                                           cna), nba);
+}
+
+/* Tension of a row of post-installed anchors: steel, breakout with the
+ * report's k_c, pullout from the report's N_p, bond of adhesive ones; no
+ * side-face blowout (17.6.4 is for headed anchors). */
+static void post_tension(const rb_model *m, const rb_anchor_inputs *in, rb_anchor_strength *o)
+{
+    const rb_anchor_product *p = &in->product;
+    int n = m->bolts_per_row;
+    rb_anchor_mode_strength *br = &o->mode[RB_ANCHOR_BREAKOUT_N];
+    double anc = rb_aci17_anc(in->hef_m, n, in->spacing_m, INFINITY, INFINITY, 1, 0,
+                              in->edge_m, INFINITY);
+    br->nominal_n = post_breakout(in, n, anc);
+    br->phi = rb_aci17_post_phi_tension(p->category, in->condition_a);
+    rb_anchor_mode_strength *po = &o->mode[RB_ANCHOR_PULLOUT_N];
+    po->applies = in->type != RB_ANCHOR_ADHESIVE && p->pullout_governs;
+    if (po->applies) {
+        double np = in->cracked ? p->pullout_cracked_n : p->pullout_uncracked_n;
+        double e = p->pullout_exponent > 0 ? p->pullout_exponent : 0.5;
+        if (in->seismic && p->seismic_tension_factor > 0)
+            np = rb_aci17_post_seismic_tension(p->seismic_tension_factor, np);
+        po->nominal_n = n * rb_aci17_post_npn(in->coef, np, in->fc_pa, e);
+    }
+    po->phi = rb_aci17_post_phi_pullout(p->category);
+    o->mode[RB_ANCHOR_SIDEFACE_N].applies = false;
+    rb_anchor_mode_strength *bo = &o->mode[RB_ANCHOR_BOND_N];
+    bo->applies = in->type == RB_ANCHOR_ADHESIVE;
+    if (bo->applies)
+        bo->nominal_n = post_bond(in, o->da_m, n, 1, 0);
+    bo->phi = br->phi;
+    /* 17.10.5.4: 0.75 on every concrete-governed tension strength */
+    br->seismic = po->seismic = bo->seismic
+        = rb_aci17_seismic_factor(RB_ACI17_BREAKOUT_TENSION, in->seismic);
+}
+
 /* Tension of the loaded row: n anchors in a line, the edge parallel to the
  * row at c_a1, the other sides free. */
 static void tension(const rb_model *m, const rb_anchor_inputs *in, rb_anchor_strength *o)
@@ -168,6 +312,10 @@ static void tension(const rb_model *m, const rb_anchor_inputs *in, rb_anchor_str
     rb_anchor_mode_strength *st = &o->mode[RB_ANCHOR_STEEL_N];
     st->nominal_n = n * rb_aci17_nsa(in->coef, o->ase_m2, in->futa_pa, fya);
     st->phi = rb_aci17_phi(RB_ACI17_STEEL_TENSION, true, in->condition_a);
+    if (rb_anchor_post_installed(in->type)) {
+        post_tension(m, in, o);
+        return;
+    }
 
     rb_anchor_mode_strength *br = &o->mode[RB_ANCHOR_BREAKOUT_N];
     double edges[4] = {INFINITY, INFINITY, ca1, INFINITY};
@@ -230,8 +378,15 @@ static void shear(const rb_model *m, const rb_anchor_inputs *in, rb_anchor_stren
     o->shear_case = !isfinite(ca1) ? 0 : rows_apart < ca1 ? 3 : 1;
     int sharing = o->shear_case == 3 ? n : 2 * n;
     rb_anchor_mode_strength *st = &o->mode[RB_ANCHOR_STEEL_V];
-    st->nominal_n = sharing * rb_aci17_vsa(in->coef, o->ase_m2, in->futa_pa,
-                                           m->yield_stress_pa, false, in->grout_pad);
+    double vsa = rb_aci17_vsa(in->coef, o->ase_m2, in->futa_pa, m->yield_stress_pa, false,
+                              in->grout_pad);
+    /* a post-installed anchor's steel in shear under earthquake loads is
+     * the report's V_sa,eq, or alpha_V,seis V_sa */
+    if (rb_anchor_post_installed(in->type) && in->seismic)
+        vsa = rb_aci17_post_vsa_eq(in->product.seismic_shear_n,
+                                   in->product.seismic_shear_factor > 0
+                                       ? in->product.seismic_shear_factor : 1.0, vsa);
+    st->nominal_n = sharing * vsa;
     st->phi = rb_aci17_phi(RB_ACI17_STEEL_SHEAR, true, in->condition_a);
 
     rb_anchor_mode_strength *br = &o->mode[RB_ANCHOR_BREAKOUT_V];
@@ -252,12 +407,20 @@ static void shear(const rb_model *m, const rb_anchor_inputs *in, rb_anchor_stren
     /* pryout: the breakout in tension of both rows as one group */
     rb_anchor_mode_strength *pr = &o->mode[RB_ANCHOR_PRYOUT_V];
     double anc = rb_aci17_anc(hef, n, s, INFINITY, INFINITY, 2, rows_apart, ca1, INFINITY);
-    double ncpg = rb_aci17_ncbg(2 * n, anc, rb_aci17_anco(hef), 1.0,
-                                rb_aci17_psi_ed_n(ca1, hef), rb_aci17_psi_c_n(in->cracked),
-                                1.0, rb_aci17_nb_cast_in(in->coef, in->lambda_a, in->fc_pa,
-                                                         hef));
+    double ncpg;
+    if (rb_anchor_post_installed(in->type))
+        ncpg = post_breakout(in, 2 * n, anc);
+    else
+        ncpg = rb_aci17_ncbg(2 * n, anc, rb_aci17_anco(hef), 1.0, rb_aci17_psi_ed_n(ca1, hef),
+                             rb_aci17_psi_c_n(in->cracked), 1.0,
+                             rb_aci17_nb_cast_in(in->coef, in->lambda_a, in->fc_pa, hef));
+    /* 17.7.3.1.1: adhesive anchors pry out at the lesser of breakout and bond */
+    if (in->type == RB_ANCHOR_ADHESIVE)
+        ncpg = rb_aci17_post_ncp_adhesive(ncpg, post_bond(in, o->da_m, n, 2, rows_apart));
     pr->nominal_n = rb_aci17_vcpg(in->coef, hef, ncpg);
-    pr->phi = rb_aci17_phi(RB_ACI17_PRYOUT, true, in->condition_a);
+    pr->phi = rb_anchor_post_installed(in->type) ? rb_aci17_post_phi_pryout()
+                                                 : rb_aci17_phi(RB_ACI17_PRYOUT, true,
+                                                                in->condition_a);
     st->seismic = br->seismic = pr->seismic = 1.0;
 }
 

@@ -45,7 +45,9 @@ const rb_enum_name rb_record_format_names[] = {
     {"two-column", RB_REC_TWO_COLUMN}, {"one-column", RB_REC_ONE_COLUMN}, {NULL, 0}};
 
 const rb_enum_name rb_anchor_type_names[] = {
-    {"cast-in-headed", RB_ANCHOR_CAST_IN_HEADED}, {NULL, 0}};
+    {"cast-in-headed", RB_ANCHOR_CAST_IN_HEADED}, {"expansion", RB_ANCHOR_EXPANSION},
+    {"expansion-displacement", RB_ANCHOR_EXPANSION_DISPLACEMENT}, {"screw", RB_ANCHOR_SCREW},
+    {"undercut", RB_ANCHOR_UNDERCUT}, {"adhesive", RB_ANCHOR_ADHESIVE}, {NULL, 0}};
 
 const rb_enum_name rb_anchor_threads_names[] = {
     {"partial", RB_THREADS_PARTIAL}, {"full-length", RB_THREADS_FULL_LENGTH},

@@ -548,8 +548,104 @@ static void hardware_defaults(void)
           && s.ase_m2 == m.bolt_area_m2);
 }
 
+static const char *const adhesive_case =
+    "equipment: {mass: 1000 lb, height: 77 in, base_width: 36 in, frequency: 5 Hz,"
+    " damping: 1 %}\n"
+    "anchorage: {model: rigid-plastic, bolts_per_row: 2, diameter: 0.5 in,"
+    " yield_stress: 36 ksi, toughness: 12000 in-lbf/in^3, deformable_length: 8 in,"
+    " edge_distance: 4 in, embedment: 4 in, spacing: 6 in, ultimate_stress: 58 ksi,"
+    " type: adhesive, product: {category: 1, bond_strength_cracked: 1000 psi,"
+    " bond_strength_uncracked: 2000 psi}}\n"
+    "gap: 0.3 in\n"
+    "concrete: {strength: 4000 psi, thickness: 8 in%s}\n"
+    "motion: {type: harmonic, amplitude: 0.5 g, frequency: 4 Hz, duration: 0.5 s}\n";
+
+/* A single row of two adhesive anchors (d 1/2 in, h_ef 4 in, 6 in apart,
+ * far from edges, cracked, tau_cr 1000 psi, tau_uncr 2000 psi): c_Na =
+ * 10 x 0.5 sqrt(2000 / 1100) = 6.742 in, A_Nao = (2 c_Na)^2 = 181.8 in^2,
+ * A_Na = (2 c_Na + 6)(2 c_Na) = 262.7 in^2, N_ba = 1000 pi 0.5 x 4 =
+ * 6283 lb, N_ag = 9.08 kip (17.6.5), read from a case file. */
+static void adhesive_row(void)
+{
+    rb_case c;
+    CHECK(load(adhesive_case, "", &c));
+    double cna = 5 * sqrt(2000.0 / 1100), ana = (2 * cna + 6) * 2 * cna;
+    double nag = ana / (4 * cna * cna) * 1000 * M_PI * 0.5 * 4;
+    const rb_anchor_mode_strength *b = &c.anchor.mode[RB_ANCHOR_BOND_N];
+    CHECK(b->applies && !c.anchor.mode[RB_ANCHOR_SIDEFACE_N].applies);
+    CHECK(!c.anchor.mode[RB_ANCHOR_PULLOUT_N].applies);
+    CHECK_REL(b->nominal_n, nag * LB, 1e-12);
+    CHECK3(b->nominal_n / KIP, 9.08);
+    /* category 1, condition B: 0.65 (Table 17.5.3(b)); 0.75 of 17.10.5.4 */
+    CHECK(b->phi == 0.65 && b->seismic == 0.75);
+    /* breakout with k_c = 17 (17.6.2.2.1): A_Nc (6 + 6 + 6) x 12 */
+    double ncb = 18.0 * 12 / 144 * 17 * sqrt(4000.0) * 8;
+    CHECK_REL(c.anchor.mode[RB_ANCHOR_BREAKOUT_N].nominal_n, ncb * LB, 1e-12);
+    CHECK(c.anchor.concrete_tension_mode == RB_ANCHOR_BOND_N);
+    rb_case_free(&c);
+    /* the category is required: without it the case does not load */
+    char text[2048];
+    snprintf(text, sizeof text, "%s", adhesive_case);
+    char *at = strstr(text, "category: 1, ");
+    memmove(at, at + 13, strlen(at + 13) + 1);
+    rb_case bad;
+    CHECK(!load(text, "", &bad));
+}
+
+/* Two torque-controlled expansion anchors 6 in apart, h_ef 3.25 in, 4 in
+ * from the edge, f'c 3000 psi, cracked, k_c 17 (ICC-ES ESR-1917's worked
+ * example for 1/2 in Kwik Bolt TZ, which prints A_N 139.78, A_No 95.06 in^2,
+ * N_b 5456 lb, psi_ed,N 0.95, N_cbg 7622 lb from its rounded steps; 7590 lb
+ * unrounded), pullout of the report N_p,cr 2700 lb at 2500 psi scaled by
+ * (3000 / 2500)^0.5, category 1. */
+static void expansion_row(void)
+{
+    rb_model m;
+    rb_anchor_inputs in;
+    rb_anchor_strength s;
+    rb_diag d;
+    model_2x(&m);
+    inputs_inlb(&in, 3000, 8, 3.25, 6);
+    in.futa_pa = 58000 * PSI;
+    in.edge_m = 4 * IN;
+    in.type = RB_ANCHOR_EXPANSION;
+    in.product.category = 1;
+    in.product.pullout_governs = true;
+    in.product.pullout_cracked_n = 2700 * LB;
+    CHECK(rb_anchor_check(&m, &in, &s, &d) == RB_OK);
+    double h = 3.25, anc = (1.5 * h + 6 + 1.5 * h) * (4 + 1.5 * h);
+    double nb = 17 * sqrt(3000.0) * pow(h, 1.5), ped = 0.7 + 0.3 * 4 / (1.5 * h);
+    CHECK_NEAR(anc, 139.78, 0.005);
+    CHECK_NEAR(nb, 5456, 0.5);
+    double ncbg = anc / (9 * h * h) * ped * nb;
+    CHECK_REL(s.mode[RB_ANCHOR_BREAKOUT_N].nominal_n, ncbg * LB, 1e-12);
+    CHECK(fabs(s.mode[RB_ANCHOR_BREAKOUT_N].nominal_n / LB - 7622) < 0.005 * 7622);
+    CHECK_REL(s.mode[RB_ANCHOR_PULLOUT_N].nominal_n, 2 * 2700 * sqrt(3000 / 2500.0) * LB,
+              1e-12);
+    CHECK(s.mode[RB_ANCHOR_BREAKOUT_N].phi == 0.65 && s.mode[RB_ANCHOR_PULLOUT_N].phi == 0.65);
+    CHECK(!s.mode[RB_ANCHOR_SIDEFACE_N].applies && !s.mode[RB_ANCHOR_BOND_N].applies);
+    /* the report's "does not govern" */
+    in.product.pullout_governs = false;
+    CHECK(rb_anchor_check(&m, &in, &s, &d) == RB_OK && !s.mode[RB_ANCHOR_PULLOUT_N].applies);
+    /* 17.9: 4 in is at least 8 d_a = 4 in (Table 17.9.2(b)); 3.5 in is not */
+    in.edge_m = 3.5 * IN;
+    CHECK(rb_anchor_check(&m, &in, &s, &d) == RB_ERR_INVALID
+          && strcmp(d.key, "concrete.edge_distance") == 0);
+    in.edge_m = 4 * IN;
+    /* the report's values where it gives them: s_min 8 in */
+    in.product.min_spacing_m = 8 * IN;
+    CHECK(rb_anchor_check(&m, &in, &s, &d) == RB_ERR_INVALID
+          && strcmp(d.key, "anchorage.spacing") == 0);
+    in.product.min_spacing_m = 0;
+    in.product.category = 0;
+    CHECK(rb_anchor_check(&m, &in, &s, &d) == RB_ERR_INVALID
+          && strcmp(d.key, "anchorage.product.category") == 0);
+}
+
 int main(void)
 {
+    adhesive_row();
+    expansion_row();
     hardware_defaults();
     areas_are_unions();
     shear_case_three();
