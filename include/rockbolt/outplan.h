@@ -8,7 +8,8 @@
  * regular file, reached through symbolic links, that is written to a
  * temporary file ".rb-XXXXXX" in its directory and renamed over it at the
  * end, keeping the mode and (where allowed) the owner of the file it
- * replaces. Two outputs that are one file, or an output that is an input,
+ * replaces; the directory is the one opened at planning, held open until
+ * then. Two outputs that are one file, or an output that is an input,
  * are refused when added: compared by device and inode after following
  * links, or for a file that does not exist yet by its canonical directory
  * and name. Names longer than the file system allows are refused too.
@@ -49,7 +50,21 @@ typedef struct {
     char *canon;      /* owned: FILE not existing yet: canonical dir/name */
     struct rb_out_temp *tmp; /* FILE while staged */
     int reserved;     /* rb_outplan_reserve: checked, never filled */
+    int dir_fd;       /* FILE: its directory, held open from planning to
+                         the rename (the plan's, not owned) */
 } rb_out;
+
+/* A directory that outputs go to, opened when the first of them is
+ * planned: temporary files are made and renamed in it through the
+ * descriptor, so a directory renamed or replaced by a link while the
+ * command runs does not send the outputs elsewhere. */
+typedef struct {
+    char *path;       /* owned: as planned */
+    dev_t dev;
+    ino_t ino;
+    int fd;
+    int probed;       /* took a new file when tried */
+} rb_out_dir;
 
 typedef struct {
     char *path;       /* owned */
@@ -67,6 +82,8 @@ typedef struct rb_outplan {
     pthread_mutex_t lock;
     struct rb_out_slot { char *key; long val; } *idx; /* identities */
     size_t idx_n, idx_cap;
+    rb_out_dir *dirs;            /* under lock */
+    size_t n_dirs, cap_dirs;
 } rb_outplan;
 
 void rb_outplan_init(rb_outplan *p);
@@ -104,13 +121,18 @@ typedef rb_status (*rb_outplan_fill_fn)(void *ctx, size_t i, FILE *fp, rb_diag *
 /* Fill every output, then rename every staged file into place (see the
  * top). On error nothing regular is replaced (streams may have had their
  * data), no temporary file is left, and diag names the file and says why,
- * with the system's reason ("No space left on device"). */
+ * with the system's reason ("No space left on device"). Each file is
+ * renamed in the directory it was planned in, and only over the file
+ * planned there or where there is none: a file made or swapped in under
+ * that name since planning is RB_ERR_IO, before anything is renamed. */
 rb_status rb_outplan_write(rb_outplan *p, rb_outplan_fill_fn fill, void *ctx,
                            rb_diag *diag);
 
 /* Stage len bytes for path, a regular file (links followed) not in the
- * plan's outputs list, to be renamed into place by rb_outplan_write.
- * Thread-safe. RB_ERR_IO with the reason. */
+ * plan's outputs list, to be renamed into place by rb_outplan_write: in
+ * the directory and over the file reserved for path, when it was
+ * (rb_outplan_reserve), else as resolved now. Thread-safe. RB_ERR_IO with
+ * the reason. */
 rb_status rb_outplan_stage_data(rb_outplan *p, const char *path, const char *data,
                                 size_t len, rb_diag *diag);
 

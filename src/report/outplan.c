@@ -1,5 +1,5 @@
 /* Output plans: see rockbolt/outplan.h. POSIX (Linux for /proc/self/fd). */
-#define _POSIX_C_SOURCE 200809L
+#define _GNU_SOURCE  /* renameat2 */
 #include "rockbolt/outplan.h"
 #include <errno.h>
 #include <fcntl.h>
@@ -8,6 +8,7 @@
 #include <stdarg.h>
 #include <stdatomic.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -19,6 +20,7 @@
 #define PATH_MAX 4096
 #endif
 #define RB_TEMP_NAME ".rb-XXXXXX"
+#define RB_TEMP_TRIES 100
 #define RB_LINK_HOPS 40
 #define RB_FIFO_WAIT_MS 10000  /* for a FIFO's reader to open it */
 
@@ -30,8 +32,13 @@
  * signals blocked, by the thread that owns the plan, once no other thread
  * runs. */
 struct rb_out_temp {
-    char *path;                   /* owned; the mkstemp template */
-    char *target;                 /* owned: renamed over at commit */
+    int dir_fd;                   /* the plan's: where both names are */
+    char name[sizeof RB_TEMP_NAME];
+    char *target;                 /* owned: the name renamed over */
+    char *shown;                  /* owned: the output's path, for messages */
+    int had;                      /* target existed when planned: dev, ino */
+    dev_t dev;
+    ino_t ino;
     volatile sig_atomic_t live;   /* the file may exist */
     struct rb_out_temp *next;
 };
@@ -51,7 +58,7 @@ static void on_signal(int sig)
     struct rb_out_temp *t;
     for (t = atomic_load(&temp_head); t; t = t->next)
         if (t->live)
-            unlink(t->path);
+            unlinkat(t->dir_fd, t->name, 0);
     /* SA_RESETHAND put the default action back: end as the signal would */
     raise(sig);
     errno = saved;
@@ -82,36 +89,67 @@ static void block_signals(sigset_t *old)
     pthread_sigmask(SIG_BLOCK, &set, old);
 }
 
-/* A new temporary file in dir for target: registered before mkstemp
- * names it, so no moment exists where it is on disk but not listed. */
-static struct rb_out_temp *temp_create(const char *dir, const char *target, int *fd,
-                                       int *err)
+/* A fresh ".rb-XXXXXX": mkstemp takes a path, which would resolve the
+ * directory again; the name is made here and created with O_EXCL. */
+static void temp_name(char name[sizeof RB_TEMP_NAME])
+{
+    static const char set[] =
+        "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789";
+    static _Atomic unsigned long long counter;
+    struct timespec ts;
+    unsigned long long x;
+    clock_gettime(CLOCK_REALTIME, &ts);
+    x = ((unsigned long long)getpid() << 32) ^ (unsigned long long)ts.tv_nsec
+        ^ ((unsigned long long)ts.tv_sec << 20)
+        ^ (atomic_fetch_add(&counter, 1) + 1) * 0x9E3779B97F4A7C15ULL;
+    /* splitmix64's finaliser: neighbouring counts give unrelated names */
+    x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    x = (x ^ (x >> 27)) * 0x94D049BB133111EBULL;
+    x ^= x >> 31;
+    memcpy(name, RB_TEMP_NAME, sizeof RB_TEMP_NAME);
+    for (size_t i = 4; i < sizeof RB_TEMP_NAME - 1; i++, x /= 62)
+        name[i] = set[x % 62];
+}
+
+/* A new temporary file in the directory dir_fd for target: registered
+ * before it is created, so no moment exists where it is on disk but not
+ * listed. had, dev, ino: the file planned under target, if any. */
+static struct rb_out_temp *temp_create(int dir_fd, const char *target,
+                                       const char *shown, int had, dev_t dev, ino_t ino,
+                                       int *fd, int *err)
 {
     struct rb_out_temp *t = calloc(1, sizeof *t);
-    size_t nd = strlen(dir);
+    int tries;
     *fd = -1;
     *err = ENOMEM;
     if (!t)
         return NULL;
-    t->path = malloc(nd + sizeof "/" RB_TEMP_NAME);
     t->target = strdup(target);
-    if (!t->path || !t->target) {
-        free(t->path);
+    t->shown = strdup(shown);
+    if (!t->target || !t->shown) {
         free(t->target);
+        free(t->shown);
         free(t);
         return NULL;
     }
-    memcpy(t->path, dir, nd);
-    memcpy(t->path + nd, "/" RB_TEMP_NAME, sizeof "/" RB_TEMP_NAME);
-    t->live = 1;
+    t->dir_fd = dir_fd;
+    t->had = had, t->dev = dev, t->ino = ino;
+    temp_name(t->name);
     pthread_mutex_lock(&temp_lock);
     t->next = atomic_load(&temp_head);
     atomic_store(&temp_head, t);
     pthread_mutex_unlock(&temp_lock);
-    *fd = mkstemp(t->path);
-    if (*fd < 0) {
+    for (tries = 0; tries < RB_TEMP_TRIES; tries++) {
+        t->live = 1;
+        *fd = openat(dir_fd, t->name,
+                     O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0600);
+        if (*fd >= 0)
+            return t;
         *err = errno;
         t->live = 0;
+        if (*err != EEXIST)
+            break;
+        temp_name(t->name);
     }
     return t;
 }
@@ -126,7 +164,7 @@ static void temp_drop(struct rb_out_temp *t)
     if (!t)
         return;
     if (t->live)
-        unlink(t->path);
+        unlinkat(t->dir_fd, t->name, 0);
     t->live = 0;
     block_signals(&old);
     pthread_mutex_lock(&temp_lock);
@@ -140,8 +178,8 @@ static void temp_drop(struct rb_out_temp *t)
     }
     pthread_mutex_unlock(&temp_lock);
     pthread_sigmask(SIG_SETMASK, &old, NULL);
-    free(t->path);
     free(t->target);
+    free(t->shown);
     free(t);
 }
 
@@ -275,48 +313,106 @@ static void out_free(rb_out *o)
     memset(o, 0, sizeof *o);
 }
 
-/* Can a file be made in dir? Tried, not guessed: a directory that grants
- * write access may still refuse new files (/proc, /sys), and finding that
- * out only when the outputs are written would be an internal error after
- * the solve rather than a usage error before it. The probe is removed at
- * once, and the last directory that took one is remembered (a batch's
- * reports share one). 0 with *err set when not. */
-static int can_create(const char *dir, int *err)
+/* Can a file be made in the directory? Tried, not guessed: a directory
+ * that grants write access may still refuse new files (/proc, /sys), and
+ * finding that out only when the outputs are written would be an internal
+ * error after the solve rather than a usage error before it. The probe is
+ * removed at once. 0 with *err set when not. */
+static int can_create(int dir_fd, int *err)
 {
-    static _Thread_local char last_ok[PATH_MAX];
-    size_t nd = strlen(dir);
-    char *p;
-    int fd;
-    if (strcmp(dir, last_ok) == 0)
-        return 1;
-    p = malloc(nd + sizeof "/" RB_TEMP_NAME);
-    if (!p) {
-        *err = ENOMEM;
-        return 0;
+    char name[sizeof RB_TEMP_NAME];
+    int fd = -1, tries;
+    for (tries = 0; tries < RB_TEMP_TRIES; tries++) {
+        temp_name(name);
+        fd = openat(dir_fd, name, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC,
+                    0600);
+        if (fd >= 0 || errno != EEXIST)
+            break;
     }
-    memcpy(p, dir, nd);
-    memcpy(p + nd, "/" RB_TEMP_NAME, sizeof "/" RB_TEMP_NAME);
-    fd = mkstemp(p);
     *err = fd < 0 ? errno : 0;
     if (fd >= 0) {
-        unlink(p);
+        unlinkat(dir_fd, name, 0);
         close(fd);
-        if (nd < sizeof last_ok)
-            memcpy(last_ok, dir, nd + 1);
     }
-    free(p);
     return fd >= 0;
 }
 
+/* Open dir and add it to the plan's directories; NULL with *err. Under
+ * the plan's lock. */
+static rb_out_dir *dir_open(rb_outplan *p, const char *dir, int *err)
+{
+    struct stat sb;
+    rb_out_dir *e;
+    int fd = open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd < 0 || fstat(fd, &sb) != 0) {
+        *err = errno;
+        if (fd >= 0)
+            close(fd);
+        return NULL;
+    }
+    if (p->n_dirs == p->cap_dirs) {
+        rb_out_dir *n = rb_grow(p->dirs, &p->cap_dirs, sizeof *n, 4);
+        if (!n) {
+            close(fd);
+            *err = ENOMEM;
+            return NULL;
+        }
+        p->dirs = n;
+    }
+    e = &p->dirs[p->n_dirs];
+    if (!(e->path = strdup(dir))) {
+        close(fd);
+        *err = ENOMEM;
+        return NULL;
+    }
+    e->dev = sb.st_dev;
+    e->ino = sb.st_ino;
+    e->fd = fd;
+    e->probed = 0;
+    p->n_dirs++;
+    return e;
+}
+
+/* The plan's descriptor of directory dir: opened when the first output is
+ * planned there, and found again by the name it was planned by, so that
+ * what is written later goes to that directory even if the name has been
+ * given to another since. A file is tried there once (can_create).
+ * Returns the descriptor, or -1 with *err, and *probe set when the
+ * directory opened but took no file. Thread-safe. */
+static int plan_dir(rb_outplan *p, const char *dir, int *err, int *probe)
+{
+    rb_out_dir *e = NULL;
+    size_t i;
+    int fd;
+    *err = 0;
+    *probe = 0;
+    pthread_mutex_lock(&p->lock);
+    for (i = 0; i < p->n_dirs && !e; i++)
+        if (strcmp(p->dirs[i].path, dir) == 0)
+            e = &p->dirs[i];
+    if (!e)
+        e = dir_open(p, dir, err);
+    if (e && !e->probed) {
+        if (can_create(e->fd, err))
+            e->probed = 1;
+        else
+            *probe = 1;
+    }
+    fd = e && e->probed ? e->fd : -1;
+    pthread_mutex_unlock(&p->lock);
+    return fd;
+}
+
 /* The directory of a regular output: exists, is a directory, writable and
- * takes new files; the name and the temporary file's fit the limits. */
-static rb_status check_dir(rb_out *o, rb_diag *d)
+ * takes new files; the name and the temporary file's fit the limits. It
+ * is held open (o->dir_fd) until the plan is freed. */
+static rb_status check_dir(rb_outplan *p, rb_out *o, rb_diag *d)
 {
     char *dir = dir_of(o->target), *real;
     const char *name = base_of(o->target);
     struct stat sb;
     long name_max;
-    int err = 0;
+    int err = 0, probe = 0;
     rb_status st = RB_OK;
     if (!dir)
         return RB_ERR_NOMEM;
@@ -332,9 +428,11 @@ static rb_status check_dir(rb_out *o, rb_diag *d)
     else if (access(dir, W_OK | X_OK) != 0)
         st = fail(d, RB_ERR_IO, o->path, o->opt, errno,
                   "directory '%.300s' is not writable", dir);
-    else if (strlen(dir) + sizeof "/" RB_TEMP_NAME <= PATH_MAX && !can_create(dir, &err))
-        st = fail(d, RB_ERR_IO, o->path, o->opt, err,
-                  "cannot create files in directory '%.300s'", dir);
+    else if ((o->dir_fd = plan_dir(p, dir, &err, &probe)) < 0)
+        st = err == ENOMEM ? RB_ERR_NOMEM
+           : fail(d, RB_ERR_IO, o->path, o->opt, err, probe
+                  ? "cannot create files in directory '%.300s'"
+                  : "cannot use directory '%.300s'", dir);
     else if (strlen(name) > (size_t)name_max) {
         char lim[96];
         snprintf(lim, sizeof lim, "%zu bytes, over the limit of %ld", strlen(name),
@@ -360,7 +458,7 @@ static rb_status check_dir(rb_out *o, rb_diag *d)
 }
 
 /* Resolve o->path into how it is written and what file it is. */
-static rb_status resolve(rb_out *o, rb_diag *d)
+static rb_status resolve(rb_outplan *pl, rb_out *o, rb_diag *d)
 {
     struct stat sb;
     int err;
@@ -409,7 +507,7 @@ static rb_status resolve(rb_out *o, rb_diag *d)
         return fail(d, RB_ERR_IO, p, o->opt, errno, "cannot use this path");
     }
     o->how = RB_OUT_FILE;
-    return check_dir(o, d);
+    return check_dir(pl, o, d);
 }
 
 
@@ -502,6 +600,12 @@ void rb_outplan_free(rb_outplan *p)
         free(p->ins[i].path);
     for (i = 0; i < p->n_extra; i++)
         temp_drop(p->extra[i]);
+    /* after every temporary file is gone: the signal handler uses these */
+    for (i = 0; i < p->n_dirs; i++) {
+        close(p->dirs[i].fd);
+        free(p->dirs[i].path);
+    }
+    free(p->dirs);
     for (i = 0; i < p->idx_cap; i++)
         free(p->idx[i].key);
     free(p->idx);
@@ -527,6 +631,7 @@ static rb_status add_out(rb_outplan *p, const char *opt, const char *path, int r
     int nk = 0, k;
     memset(&o, 0, sizeof o);
     o.fd_no = -1;
+    o.dir_fd = -1;
     o.reserved = reserved;
     o.opt = strdup(opt);
     o.path = strdup(path);
@@ -534,7 +639,7 @@ static rb_status add_out(rb_outplan *p, const char *opt, const char *path, int r
         out_free(&o);
         return RB_ERR_NOMEM;
     }
-    st = resolve(&o, d);
+    st = resolve(p, &o, d);
     if (st == RB_OK)
         out_keys(&o, keys, &nk);
     for (k = 0; st == RB_OK && k < nk; k++) {
@@ -559,6 +664,17 @@ static rb_status add_out(rb_outplan *p, const char *opt, const char *path, int r
     }
     for (k = 0; st == RB_OK && k < nk; k++)
         st = idx_put(p, keys[k], (long)p->n);
+    if (st == RB_OK && reserved && o.how == RB_OUT_FILE) {
+        /* rb_outplan_stage_data finds it by the name it was reserved by */
+        char *key = malloc(strlen(path) + 3);
+        if (key) {
+            sprintf(key, "p:%s", path);
+            st = idx_find(p, key) ? RB_OK : idx_put(p, key, (long)p->n);
+        } else {
+            st = RB_ERR_NOMEM;
+        }
+        free(key);
+    }
     if (st != RB_OK) {
         out_free(&o);
         return st;
@@ -623,12 +739,14 @@ int rb_outplan_uses_stdout(const rb_outplan *p)
 /* ---- Writing ------------------------------------------------------------ */
 
 /* Give the temporary file the mode and owner of the file it replaces, or
- * the usual mode of a new file (mkstemp makes it 0600). The owner can
- * only be kept where the process may set it; otherwise it becomes ours. */
-static void copy_meta(int fd, const char *target)
+ * the usual mode of a new file (it is made 0600). The owner can only be
+ * kept where the process may set it; otherwise it becomes ours. Only the
+ * file planned is copied from: another in its place is not replaced. */
+static void copy_meta(const struct rb_out_temp *t, int fd)
 {
     struct stat sb;
-    if (stat(target, &sb) == 0 && S_ISREG(sb.st_mode)) {
+    if (t->had && fstatat(t->dir_fd, t->target, &sb, AT_SYMLINK_NOFOLLOW) == 0
+        && S_ISREG(sb.st_mode) && sb.st_dev == t->dev && sb.st_ino == t->ino) {
         if (fchown(fd, sb.st_uid, sb.st_gid) != 0)
             (void)fchown(fd, (uid_t)-1, sb.st_gid);
         (void)fchmod(fd, sb.st_mode & 07777);
@@ -637,23 +755,23 @@ static void copy_meta(int fd, const char *target)
     }
 }
 
-static rb_status open_temp(const char *path, const char *opt, const char *target,
-                           struct rb_out_temp **tp, FILE **fp, rb_diag *d)
+/* A temporary file for o (a regular file, planned): in o's directory. */
+static rb_status open_temp(const rb_out *o, const char *opt, struct rb_out_temp **tp,
+                           FILE **fp, rb_diag *d)
 {
-    char *dir = dir_of(target);
     int fd, err;
     *fp = NULL;
-    *tp = dir ? temp_create(dir, target, &fd, &err) : NULL;
-    free(dir);
+    *tp = temp_create(o->dir_fd, base_of(o->target), o->path, o->exists, o->dev, o->ino,
+                      &fd, &err);
     if (!*tp)
         return RB_ERR_NOMEM;
     if (fd < 0)
-        return fail(d, RB_ERR_IO, path, opt, err, "cannot create a temporary file");
-    copy_meta(fd, target);
+        return fail(d, RB_ERR_IO, o->path, opt, err, "cannot create a temporary file");
+    copy_meta(*tp, fd);
     if (!(*fp = fdopen(fd, "wb"))) {
         err = errno;
         close(fd);
-        return fail(d, RB_ERR_IO, path, opt, err, "cannot write");
+        return fail(d, RB_ERR_IO, o->path, opt, err, "cannot write");
     }
     return RB_OK;
 }
@@ -731,11 +849,55 @@ static rb_status fill_one(rb_outplan *p, size_t i, FILE *fp, rb_outplan_fill_fn 
     return close_out(fp, o->how == RB_OUT_FILE, o->path, o->opt, err, d);
 }
 
-static rb_status rename_temp(struct rb_out_temp *t, const char *path, const char *opt,
-                             rb_diag *d)
+/* Is the name still the file planned there, or none? Whatever else has
+ * taken it since (a file made meanwhile, a link swapped in) is left
+ * alone: renaming over it would replace a file nobody asked to write.
+ * *absent: no file has the name. */
+static rb_status check_target(const struct rb_out_temp *t, const char *opt, int *absent,
+                              rb_diag *d)
 {
-    if (rename(t->path, t->target) != 0)
-        return fail(d, RB_ERR_IO, path, opt, errno,
+    struct stat sb;
+    *absent = 0;
+    if (fstatat(t->dir_fd, t->target, &sb, AT_SYMLINK_NOFOLLOW) != 0) {
+        if (errno == ENOENT) {
+            *absent = 1;
+            return RB_OK;
+        }
+        return fail(d, RB_ERR_IO, t->shown, opt, errno, "cannot look at the file to replace");
+    }
+    /* a regular file was planned: a link made since may even have its
+     * inode number, freed and given again */
+    if (t->had && S_ISREG(sb.st_mode) && sb.st_dev == t->dev && sb.st_ino == t->ino)
+        return RB_OK;
+    return fail(d, RB_ERR_IO, t->shown, opt, 0, t->had
+                ? "another file has taken its place since the outputs were planned; "
+                  "it is left as it is"
+                : "a file of this name has appeared since the outputs were planned; "
+                  "it is left as it is");
+}
+
+static rb_status rename_temp(struct rb_out_temp *t, const char *opt, rb_diag *d)
+{
+    int absent, r;
+    rb_status st = check_target(t, opt, &absent, d);
+    if (st != RB_OK)
+        return st;
+#ifdef RENAME_NOREPLACE
+    /* where there was nothing, nothing made since is replaced either */
+    if (absent) {
+        r = renameat2(t->dir_fd, t->name, t->dir_fd, t->target, RENAME_NOREPLACE);
+        if (r != 0 && errno == EEXIST)
+            return check_target(t, opt, &absent, d);
+        if (r == 0 || (errno != EINVAL && errno != ENOSYS))
+            goto done;
+    }
+#endif
+    r = renameat(t->dir_fd, t->name, t->dir_fd, t->target);
+#ifdef RENAME_NOREPLACE
+done:
+#endif
+    if (r != 0)
+        return fail(d, RB_ERR_IO, t->shown, opt, errno,
                     "cannot rename the temporary file into place");
     t->live = 0;
     return RB_OK;
@@ -746,7 +908,7 @@ rb_status rb_outplan_write(rb_outplan *p, rb_outplan_fill_fn fill, void *ctx,
 {
     rb_status st = RB_OK;
     size_t i;
-    int pass;
+    int pass, absent;
     /* regular files first, so that a failure there leaves the streams
      * without data; then the streams; then the renames */
     for (pass = 0; pass < 2 && st == RB_OK; pass++)
@@ -756,18 +918,25 @@ rb_status rb_outplan_write(rb_outplan *p, rb_outplan_fill_fn fill, void *ctx,
             if (o->reserved || (o->how == RB_OUT_FILE) != (pass == 0))
                 continue;
             if (o->how == RB_OUT_FILE)
-                st = open_temp(o->path, o->opt, o->target, &o->tmp, &fp, d);
+                st = open_temp(o, o->opt, &o->tmp, &fp, d);
             else
                 st = open_stream(o, &fp, d);
             if (st == RB_OK)
                 st = fill_one(p, i, fp, fill, ctx, d);
         }
+    /* every name checked before any is renamed: all or none */
     for (i = 0; i < p->n && st == RB_OK; i++)
         if (p->outs[i].tmp)
-            st = rename_temp(p->outs[i].tmp, p->outs[i].path, p->outs[i].opt, d);
+            st = check_target(p->outs[i].tmp, p->outs[i].opt, &absent, d);
     for (i = 0; i < p->n_extra && st == RB_OK; i++)
         if (p->extra[i]->live)
-            st = rename_temp(p->extra[i], p->extra[i]->target, NULL, d);
+            st = check_target(p->extra[i], NULL, &absent, d);
+    for (i = 0; i < p->n && st == RB_OK; i++)
+        if (p->outs[i].tmp)
+            st = rename_temp(p->outs[i].tmp, p->outs[i].opt, d);
+    for (i = 0; i < p->n_extra && st == RB_OK; i++)
+        if (p->extra[i]->live)
+            st = rename_temp(p->extra[i], NULL, d);
     for (i = 0; i < p->n; i++)
         if (p->outs[i].tmp) {
             temp_drop(p->outs[i].tmp);
@@ -779,6 +948,21 @@ rb_status rb_outplan_write(rb_outplan *p, rb_outplan_fill_fn fill, void *ctx,
     return st;
 }
 
+/* A reserved output by the path it was reserved by, else NULL. The
+ * outputs are all added before any file is staged, so reading the index
+ * from the threads that stage is safe. */
+static const rb_out *reserved_out(const rb_outplan *p, const char *path)
+{
+    char *key = malloc(strlen(path) + 3);
+    long *v;
+    if (!key)
+        return NULL;
+    sprintf(key, "p:%s", path);
+    v = idx_find((rb_outplan *)p, key);
+    free(key);
+    return v && *v >= 0 && (size_t)*v < p->n ? &p->outs[*v] : NULL;
+}
+
 rb_status rb_outplan_stage_data(rb_outplan *p, const char *path, const char *data,
                                 size_t len, rb_diag *d)
 {
@@ -787,15 +971,19 @@ rb_status rb_outplan_stage_data(rb_outplan *p, const char *path, const char *dat
     FILE *fp = NULL;
     rb_status st;
     int err = 0;
+    const rb_out *planned = reserved_out(p, path);
     memset(&o, 0, sizeof o);
     o.fd_no = -1;
+    o.dir_fd = -1;
     if (!(o.path = strdup(path)))
         return RB_ERR_NOMEM;
-    st = resolve(&o, d);
-    if (st == RB_OK && o.how != RB_OUT_FILE)
+    /* a reserved file goes where it was planned, whatever its directory's
+     * name leads to now */
+    st = planned ? RB_OK : resolve(p, &o, d);
+    if (st == RB_OK && !planned && o.how != RB_OUT_FILE)
         st = fail(d, RB_ERR_IO, path, NULL, 0, "not a regular file");
     if (st == RB_OK)
-        st = open_temp(path, NULL, o.target, &t, &fp, d);
+        st = open_temp(planned ? planned : &o, NULL, &t, &fp, d);
     if (st == RB_OK) {
         if (len && fwrite(data, 1, len, fp) != len)
             err = errno ? errno : EIO;
@@ -805,7 +993,7 @@ rb_status rb_outplan_stage_data(rb_outplan *p, const char *path, const char *dat
      * threads may be running and the signal handler walking the list */
     if (t && st != RB_OK) {
         if (t->live)
-            unlink(t->path);
+            unlinkat(t->dir_fd, t->name, 0);
         t->live = 0;
     }
     if (t) {
@@ -822,7 +1010,7 @@ rb_status rb_outplan_stage_data(rb_outplan *p, const char *path, const char *dat
         pthread_mutex_unlock(&p->lock);
     }
     if (t && t->live) {
-        unlink(t->path);
+        unlinkat(t->dir_fd, t->name, 0);
         t->live = 0;   /* the node stays on the list: see above */
     }
     out_free(&o);

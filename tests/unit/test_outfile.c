@@ -279,6 +279,95 @@ static void test_plan_write(void)
     unlink(real);
 }
 
+/* The outputs go to the directory they were planned in, and only over the
+ * file planned there or where there is none: a directory renamed and
+ * replaced by a link to somewhere else between planning and writing (say
+ * to the directory of the case), or a file made or swapped in under the
+ * output's name, is not written through. */
+static void test_plan_dir_swapped(void)
+{
+    char sub[512], real[512], victim[512], victim2[512], out[512], rep[512];
+    char moved[512], moved2[512], e[512], eo[512], late[512];
+    rb_outplan p;
+    rb_diag d;
+    path_in(sub, sizeof sub, "d");
+    path_in(real, sizeof real, "d.real");
+    path_in(victim, sizeof victim, "victim.yaml");
+    path_in(victim2, sizeof victim2, "victim2.yaml");
+    path_in(out, sizeof out, "d/victim.yaml");
+    path_in(rep, sizeof rep, "d/victim2.yaml");
+    path_in(moved, sizeof moved, "d.real/victim.yaml");
+    path_in(moved2, sizeof moved2, "d.real/victim2.yaml");
+    CHECK(mkdir(sub, 0755) == 0);
+    CHECK(rb_outfile_write_all(victim, "case\n", 5, 0, &d) == RB_OK);
+    CHECK(rb_outfile_write_all(victim2, "case2\n", 6, 0, &d) == RB_OK);
+    rb_outplan_init(&p);
+    CHECK(rb_outplan_add(&p, "--json", out, &d) == RB_OK);
+    CHECK(rb_outplan_reserve(&p, "--reports", rep, &d) == RB_OK);
+    /* the swap, while the command would be solving */
+    CHECK(rename(sub, real) == 0);
+    CHECK(symlink(".", sub) == 0);
+    CHECK(rb_outplan_stage_data(&p, rep, "report\n", 7, &d) == RB_OK);
+    CHECK(rb_outplan_write(&p, fill_name, &p, &d) == RB_OK);
+    rb_outplan_free(&p);
+    CHECK(file_equals(victim, "case\n"));
+    CHECK(file_equals(victim2, "case2\n"));
+    CHECK(file_equals(moved, "--json\n"));
+    CHECK(file_equals(moved2, "report\n"));
+    CHECK(temp_files() == 0);
+    unlink(moved);
+    unlink(moved2);
+    unlink(sub);
+    rmdir(real);
+
+    /* a file made under the name after planning is not replaced, and no
+     * other output is written either */
+    path_in(e, sizeof e, "e.json");
+    path_in(late, sizeof late, "late.json");
+    rb_outplan_init(&p);
+    CHECK(rb_outplan_add(&p, "--json", e, &d) == RB_OK);
+    CHECK(rb_outplan_add(&p, "--csv", late, &d) == RB_OK);
+    CHECK(rb_outfile_write_all(late, "theirs\n", 7, 0, &d) == RB_OK);
+    rb_diag_clear(&d);
+    CHECK(rb_outplan_write(&p, fill_name, &p, &d) == RB_ERR_IO);
+    CHECK(strstr(d.msg, "appeared since the outputs were planned") != NULL);
+    CHECK(strcmp(d.key, "--csv") == 0 && strcmp(d.file, late) == 0);
+    CHECK(file_equals(late, "theirs\n"));
+    CHECK(access(e, F_OK) != 0);
+    CHECK(temp_files() == 0);
+    rb_outplan_free(&p);
+    unlink(late);
+
+    /* a planned file swapped for a link to another is not replaced */
+    path_in(eo, sizeof eo, "eo.json");
+    CHECK(rb_outfile_write_all(eo, "old\n", 4, 0, &d) == RB_OK);
+    rb_outplan_init(&p);
+    CHECK(rb_outplan_add(&p, "--json", eo, &d) == RB_OK);
+    CHECK(unlink(eo) == 0 && symlink("victim.yaml", eo) == 0);
+    rb_diag_clear(&d);
+    CHECK(rb_outplan_write(&p, fill_name, &p, &d) == RB_ERR_IO);
+    CHECK(strstr(d.msg, "another file has taken its place") != NULL);
+    CHECK(file_equals(victim, "case\n"));
+    {
+        struct stat sb;
+        CHECK(lstat(eo, &sb) == 0 && S_ISLNK(sb.st_mode));
+    }
+    CHECK(temp_files() == 0);
+    rb_outplan_free(&p);
+    /* planned and then removed: written */
+    CHECK(unlink(eo) == 0);
+    CHECK(rb_outfile_write_all(eo, "old\n", 4, 0, &d) == RB_OK);
+    rb_outplan_init(&p);
+    CHECK(rb_outplan_add(&p, "--json", eo, &d) == RB_OK);
+    CHECK(unlink(eo) == 0);
+    CHECK(rb_outplan_write(&p, fill_name, &p, &d) == RB_OK);
+    CHECK(file_equals(eo, "--json\n"));
+    rb_outplan_free(&p);
+    unlink(eo);
+    unlink(victim);
+    unlink(victim2);
+}
+
 int main(void)
 {
     char p[512];
@@ -293,6 +382,7 @@ int main(void)
     test_keep_mode();
     test_plan_clashes();
     test_plan_write();
+    test_plan_dir_swapped();
     path_in(p, sizeof p, "a.json");
     unlink(p);
     path_in(p, sizeof p, "starter.yaml");
