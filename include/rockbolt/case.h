@@ -156,6 +156,10 @@ void rb_diag_list_free(rb_diag_list *l);
 /* A new diagnostic at the end of l, zeroed; NULL when out of memory. */
 rb_diag *rb_diag_list_add(rb_diag_list *l);
 
+/* The most bytes of one case file (the case, a base) the loader reads:
+ * a larger one is refused before it is read. */
+#define RB_CASE_MAX_FILE_BYTES (4u * 1024u * 1024u)
+
 /* Load and validate a case. Returns RB_OK, or RB_ERR_PARSE / RB_ERR_INVALID
  * / RB_ERR_IO with every problem found appended to diags. On error *out is
  * left empty (nothing to free, but rb_case_free is safe).

@@ -26,7 +26,6 @@
 #include "rockbolt/sandbox.h"
 #include "rockbolt/textsafe.h"
 
-#define RB_CSV_MAX_BYTES (64u * 1024u * 1024u)
 #define RB_CSV_MAX_FIELDS 64
 
 typedef enum { COL_TAG, COL_BASE, COL_KEY, COL_MOTION } col_kind;

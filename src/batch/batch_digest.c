@@ -52,14 +52,19 @@ static void put_str(struct sha256_ctx *c, const char *s)
     sha256_update(c, strlen(s), (const uint8_t *)s);
 }
 
-/* The file's bytes. Only a regular file is read (opened without waiting,
- * as the loaders do): a FIFO or a device among the inputs would block or
- * never end, and the loader refuses it anyway. */
-static void put_file(struct sha256_ctx *c, const char *path)
+/* The file's bytes, as far as its loader reads them. Only a regular file
+ * is read (opened without waiting, as the loaders do): a FIFO or a device
+ * among the inputs would block or never end, and the loader refuses it
+ * anyway. Nor more than limit, the loader's own bound: a file over it is
+ * digested by its size, unread, as the loader refuses it unread (a sparse
+ * 1 TB file), and one that reads on past its stated size
+ * (/proc/self/pagemap says 0 bytes) is cut there. */
+static void put_file(struct sha256_ctx *c, const char *path, size_t limit)
 {
     unsigned char buf[65536];
     struct stat sb;
-    size_t n;
+    size_t n, total = 0;
+    char size[64];
     put_str(c, path);
     int fd = open(path, O_RDONLY | O_NONBLOCK);
     if (fd < 0 || fstat(fd, &sb) != 0 || !S_ISREG(sb.st_mode)) {
@@ -68,29 +73,44 @@ static void put_file(struct sha256_ctx *c, const char *path)
         put_str(c, "(not read)");
         return;
     }
+    if ((unsigned long long)sb.st_size > limit) {
+        close(fd);
+        snprintf(size, sizeof size, "(over the limit: %lld bytes)", (long long)sb.st_size);
+        put_str(c, size);
+        return;
+    }
     FILE *f = fdopen(fd, "rb");
     if (!f) {
         close(fd);
         put_str(c, "(not read)");
         return;
     }
-    while ((n = fread(buf, 1, sizeof buf, f)) > 0)
+    while (total <= limit && (n = fread(buf, 1, sizeof buf, f)) > 0) {
         sha256_update(c, n, buf);
+        total += n;
+    }
     int err = ferror(f);
     fclose(f);
-    put_str(c, err ? "(read error)" : "(end)");
+    put_str(c, err ? "(read error)" : total > limit ? "(over the limit)" : "(end)");
 }
 
-static int cmp_str(const void *a, const void *b)
+typedef struct {
+    const char *path;
+    size_t limit;
+} digest_file;
+
+static int cmp_file(const void *a, const void *b)
 {
-    return strcmp(*(const char *const *)a, *(const char *const *)b);
+    const digest_file *x = a, *y = b;
+    int k = strcmp(x->path, y->path);
+    return k ? k : (x->limit > y->limit) - (x->limit < y->limit);
 }
 
 rb_status rb_batch_list_digest(const rb_batch_list *l, char out[RB_BATCH_DIGEST_CHARS])
 {
     struct sha256_ctx c;
     unsigned char d[SHA256_DIGEST_SIZE];
-    const char **files = malloc((2 * l->n + 1) * sizeof *files);
+    digest_file *files = malloc((2 * l->n + 1) * sizeof *files);
     size_t n_files = 0;
     if (!files)
         return RB_ERR_NOMEM;
@@ -107,14 +127,19 @@ rb_status rb_batch_list_digest(const rb_batch_list *l, char out[RB_BATCH_DIGEST_
             put_str(&c, it->ov[k].key);
             put_str(&c, it->ov[k].value);
         }
-        files[n_files++] = it->source;
-        if (it->base)
-            files[n_files++] = it->base;
+        /* a row's source is its list; an item's without a line, a case */
+        files[n_files].path = it->source;
+        files[n_files++].limit = it->line > 0 ? RB_CSV_MAX_BYTES : RB_CASE_MAX_FILE_BYTES;
+        if (it->base) {
+            files[n_files].path = it->base;
+            files[n_files++].limit = RB_CASE_MAX_FILE_BYTES;
+        }
     }
-    qsort(files, n_files, sizeof *files, cmp_str);
+    qsort(files, n_files, sizeof *files, cmp_file);
+    /* a path named twice is read once, to the larger of its limits */
     for (size_t i = 0; i < n_files; i++)
-        if (i == 0 || strcmp(files[i], files[i - 1]) != 0)
-            put_file(&c, files[i]);
+        if (i + 1 == n_files || strcmp(files[i].path, files[i + 1].path) != 0)
+            put_file(&c, files[i].path, files[i].limit);
     free(files);
     sha256_digest(&c, sizeof d, d);
     hex(d, out);

@@ -5,6 +5,10 @@
 #include <stddef.h>
 #include "rockbolt/batch.h"
 
+/* The most bytes of an equipment list the reader takes (the digest reads
+ * no more either). */
+#define RB_CSV_MAX_BYTES (64u * 1024u * 1024u)
+
 char *rb_batch_strdup(const char *s);
 
 /* Free what a case owns and zero it. */

@@ -19,7 +19,6 @@
 #include "rockbolt/record_cache.h"
 #include "rockbolt/units.h"
 
-#define RB_CASE_MAX_FILE_BYTES (4u * 1024u * 1024u) /* 4 MiB per file */
 #define RB_CASE_MAX_DEPTH 32         /* nesting of mappings and sequences */
 #define RB_CASE_MAX_SCALAR 4096      /* bytes in one scalar */
 #define RB_CASE_MAX_EXTENDS 8        /* files in one extends chain */

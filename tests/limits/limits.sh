@@ -12,6 +12,10 @@
 #   batch_tmpdir  a batch whose TMPDIR cannot take the streamed summary
 #                 stops before any work (exit 3) and writes no output; with
 #                 a writable TMPDIR nothing is left in it
+#   digest_huge   a batch of a sparse 1 TB case file, and of /proc/self/pagemap
+#                 (which says 0 bytes and reads on for ever), ends at once
+#                 with the file unreadable, as check does: the inputs'
+#                 digest read every input to its end
 #   batch_memory  peak memory of a batch with every summary output grows by
 #                 under 512 bytes per list row, which is the list itself
 #                 (2 000 against 20 000 rows; it grew by 2.8 KB before the
@@ -119,6 +123,27 @@ batch_tmpdir)
     grep -q '"cases":[[:space:]]*2' "$D/s.json" || grep -q '"passed":[[:space:]]*2' "$D/s.json" \
         || fail "the summary lacks its counts"
     [ -z "$(ls -A "$D/tmp")" ] || fail "temporary files were left in TMPDIR"
+    ;;
+digest_huge)
+    truncate -s 1T "$D/huge.yaml" || exit 77
+    run 20 batch "$D/huge.yaml"
+    [ "$rc" -ne 124 ] || fail "the batch read the whole sparse file"
+    [ "$rc" -eq 2 ] || fail "exit code $rc, want 2"
+    grep -q "huge.yaml: error: case: .* larger than the limit of 4 MiB" "$D/err" \
+        || fail "no diagnostic naming the limit"
+    if [ -r /proc/self/pagemap ]; then
+        run 20 batch /proc/self/pagemap
+        [ "$rc" -ne 124 ] || fail "the batch read /proc/self/pagemap to its end"
+        [ "$rc" -eq 2 ] || fail "pagemap: exit code $rc, want 2"
+    fi
+    # the same list twice: the digest still agrees between shards
+    cheap_case "$D/a.yaml"
+    run 30 batch "$D/a.yaml" "$D/huge.yaml" --shard 1/2 --json "$D/s1.json"
+    [ "$rc" -eq 0 ] || fail "shard 1: exit code $rc, want 0"
+    run 30 batch "$D/a.yaml" "$D/huge.yaml" --shard 2/2 --json "$D/s2.json"
+    [ "$rc" -eq 2 ] || fail "shard 2: exit code $rc, want 2"
+    run 30 merge "$D/s1.json" "$D/s2.json"
+    [ "$rc" -eq 2 ] || fail "merge: exit code $rc, want 2 (one unreadable case)"
     ;;
 batch_memory)
     # Under AddressSanitizer every allocation carries redzones and freed
