@@ -1,16 +1,51 @@
 /* "rockbolt merge SHARD.json...": the JSON summaries of the shards of one
  * batch into one summary, byte-identical to a single run's, with the same
  * outputs, table and exit code. */
+#include <errno.h>
+#include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include "cli_batch.h"
 
 #define RB_MERGE_MAX_BYTES (1024u * 1024u * 1024u)
 
-static char *slurp(const char *path)
+/* A shard must be a regular file, opened without waiting: a FIFO nobody
+ * writes to would block the open for ever, and a device such as /dev/zero
+ * never ends. NULL with *why set. */
+static FILE *open_shard(const char *path, const char **why)
 {
-    FILE *f = fopen(path, "rb");
+    struct stat sb;
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    *why = NULL;
+    if (fd < 0) {
+        *why = strerror(errno);
+        return NULL;
+    }
+    int flags = fcntl(fd, F_GETFL);
+    if (fstat(fd, &sb) != 0)
+        *why = strerror(errno);
+    else if (S_ISDIR(sb.st_mode))
+        *why = "not a regular file but a directory";
+    else if (!S_ISREG(sb.st_mode))
+        *why = "not a regular file (a FIFO, socket or device)";
+    if (*why) {
+        close(fd);
+        return NULL;
+    }
+    FILE *f = NULL;
+    if (flags < 0 || fcntl(fd, F_SETFL, flags & ~O_NONBLOCK) != 0 || !(f = fdopen(fd, "rb"))) {
+        *why = strerror(errno);
+        close(fd);
+    }
+    return f;
+}
+
+static char *slurp(const char *path, const char **why)
+{
+    FILE *f = open_shard(path, why);
     if (!f)
         return NULL;
     size_t cap = 1 << 16, len = 0;
@@ -50,9 +85,13 @@ static rb_exit read_shards(const rb_batch_cli *o, rb_batch_summary *sh)
     for (size_t i = 0; i < o->n_inputs; i++) {
         rb_diag d;
         rb_diag_clear(&d);
-        char *text = slurp(o->inputs[i]);
+        const char *why = NULL;
+        char *text = slurp(o->inputs[i], &why);
         if (!text) {
-            rb_cli_error(o->inputs[i], NULL, "cannot read the summary");
+            if (why)
+                rb_cli_error(o->inputs[i], NULL, "cannot read the summary: %s", why);
+            else
+                rb_cli_error(o->inputs[i], NULL, "cannot read the summary");
             return RB_EXIT_USAGE;
         }
         rb_status st = rb_batch_summary_parse(text, &sh[i], &d);

@@ -16,6 +16,8 @@
 #                 (which says 0 bytes and reads on for ever), ends at once
 #                 with the file unreadable, as check does: the inputs'
 #                 digest read every input to its end
+#   merge_fifo    merge of a FIFO nobody writes to, or a device, ends at
+#                 once naming the file (it waited for ever on the FIFO)
 #   batch_memory  peak memory of a batch with every summary output grows by
 #                 under 512 bytes per list row, which is the list itself
 #                 (2 000 against 20 000 rows; it grew by 2.8 KB before the
@@ -144,6 +146,18 @@ digest_huge)
     [ "$rc" -eq 2 ] || fail "shard 2: exit code $rc, want 2"
     run 30 merge "$D/s1.json" "$D/s2.json"
     [ "$rc" -eq 2 ] || fail "merge: exit code $rc, want 2 (one unreadable case)"
+    ;;
+merge_fifo)
+    mkfifo "$D/s.json" || exit 77
+    run 20 merge "$D/s.json"
+    [ "$rc" -ne 124 ] || fail "merge waited for a writer on the FIFO"
+    [ "$rc" -eq 2 ] || fail "exit code $rc, want 2"
+    grep -q "s.json: error: .*not a regular file" "$D/err" \
+        || fail "no diagnostic naming the FIFO"
+    run 20 merge /dev/zero
+    [ "$rc" -eq 2 ] || fail "/dev/zero: exit code $rc, want 2"
+    grep -q "/dev/zero: error: .*not a regular file" "$D/err" \
+        || fail "no diagnostic naming the device"
     ;;
 batch_memory)
     # Under AddressSanitizer every allocation carries redzones and freed
