@@ -207,6 +207,8 @@ static rb_exit run(rb_batch_cli *o, const rb_batch_list *l, rb_batch_summary *s)
     rb_status st = rb_batch_run(l, &bo, s, &d);
     free(tmpl);
     rb_cli_progress_end(&prog, s->n_cases);
+    if (st != RB_OK && o->spool_failed)
+        return rb_cli_stream_error(o);
     if (st != RB_OK) {
         rb_cli_error(NULL, NULL, "%s%s%s", rb_status_str(st), d.msg[0] ? ": " : "",
                      d.msg);
@@ -217,14 +219,21 @@ static rb_exit run(rb_batch_cli *o, const rb_batch_list *l, rb_batch_summary *s)
 
 /* Each unreadable case also gets its diagnostic line on stderr, so that an
  * editor or a CI log can jump to it; after the progress line is gone. */
-static void print_errors(rb_batch_cli *o)
+static rb_exit print_errors(rb_batch_cli *o)
 {
     char buf[4096];
     size_t n;
-    fflush(o->error_spool);
-    rewind(o->error_spool);
+    errno = 0;
+    if (fflush(o->error_spool) != 0 || fseek(o->error_spool, 0, SEEK_SET) != 0)
+        goto failed;
     while ((n = fread(buf, 1, sizeof buf, o->error_spool)) > 0)
         fwrite(buf, 1, n, stderr);
+    if (!ferror(o->error_spool))
+        return RB_EXIT_PASS;
+failed:
+    o->spool_failed = o->spool_path[RB_BATCH_N_FORMATS];
+    o->spool_errno = errno ? errno : EIO;
+    return rb_cli_stream_error(o);
 }
 
 rb_exit rb_cli_batch_main(int argc, char **argv)
@@ -254,7 +263,8 @@ rb_exit rb_cli_batch_main(int argc, char **argv)
     if (made_dir && e != RB_EXIT_PASS && s.n_cases == 0)
         rmdir(o.reports_dir);
     if (e == RB_EXIT_PASS) {
-        print_errors(&o);
+        e = print_errors(&o);
+    if (e == RB_EXIT_PASS)
         e = rb_cli_batch_finish(&o, &s);
     }
     rb_batch_summary_free(&s);

@@ -30,6 +30,13 @@ typedef struct {
      * that memory does not grow with the list (cli_batch_stream.c). */
     FILE *spool[RB_BATCH_N_FORMATS];
     FILE *error_spool;
+    /* Each spool's name when made (removed at once, named in errors):
+     * [RB_BATCH_N_FORMATS] is the error spool's. */
+    char *spool_path[RB_BATCH_N_FORMATS + 1];
+    /* The first spool that could not be written or read back: its name
+     * (one of spool_path) and the system's reason. */
+    const char *spool_failed;
+    int spool_errno;
 } rb_batch_cli;
 
 rb_exit rb_cli_batch_parse(int argc, char **argv, int is_merge, rb_batch_cli *o);
@@ -47,8 +54,12 @@ rb_exit rb_cli_plan_error(rb_status st, const rb_diag *d);
 rb_exit rb_cli_batch_begin(int argc, char **argv, int is_merge, rb_batch_cli *o,
                            int *done);
 
-/* Open the spools for the outputs asked for; exit 3 when they cannot be. */
+/* Open the spools for the outputs asked for; exit 2 when they cannot be
+ * (the directory named, with the reason). */
 rb_exit rb_cli_stream_open(rb_batch_cli *o);
+/* After a spool failed (o->spool_failed): say which and why; exit 2, as
+ * for an output that cannot be written. */
+rb_exit rb_cli_stream_error(const rb_batch_cli *o);
 /* An rb_batch_opts sink (ctx: the rb_batch_cli): the cases into the spools. */
 rb_status rb_cli_stream_sink(void *ctx, const rb_batch_summary *s,
                              const rb_batch_case *cases, size_t first, size_t n);

@@ -60,6 +60,11 @@ static rb_status fill(void *ctx, size_t i, FILE *fp, rb_diag *d)
                       : strcmp(opt, "--csv") == 0 ? RB_BATCH_CSV
                       : RB_BATCH_JUNIT;
     rb_status st = rb_cli_stream_copy(o, f, s, fp);
+    if (st != RB_OK && o->spool_failed)
+        /* the summary's own temporary file, not this output, failed */
+        return rb_diag_set(d, RB_ERR_IO, o->spool_failed, 0, 0, "",
+                           "cannot read back the summary's temporary file: %.200s",
+                           strerror(o->spool_errno));
     if (st != RB_OK)
         snprintf(d->msg, sizeof d->msg, "%s", st == RB_ERR_NOMEM ? "out of memory"
                                                                   : "cannot write");
@@ -73,6 +78,8 @@ static rb_exit write_all(rb_batch_cli *o, const rb_batch_summary *s)
     rb_diag d;
     rb_diag_clear(&d);
     rb_status st = rb_outplan_write(&o->plan, fill, (void *)cx, &d);
+    if (st != RB_OK && o->spool_failed)
+        return rb_cli_stream_error(o);
     if (st != RB_OK) {
         rb_cli_diag_print(&d);
         return RB_EXIT_INTERNAL;
@@ -101,7 +108,9 @@ rb_exit rb_cli_batch_finish(rb_batch_cli *o, const rb_batch_summary *s)
             return e;
     }
     if (!s->streamed && rb_cli_stream_sink(o, s, s->cases, 0, s->n_cases) != RB_OK) {
-        rb_cli_error(NULL, NULL, "cannot write the summary to a temporary file");
+        if (o->spool_failed)
+            return rb_cli_stream_error(o);
+        rb_cli_error(NULL, NULL, "out of memory");
         return RB_EXIT_INTERNAL;
     }
     rb_exit e = write_all(o, s);
@@ -109,6 +118,8 @@ rb_exit rb_cli_batch_finish(rb_batch_cli *o, const rb_batch_summary *s)
         return e;
     if (o->spool[RB_BATCH_TEXT]) {
         rb_status st = rb_cli_stream_copy(o, RB_BATCH_TEXT, s, stdout);
+        if (st != RB_OK && o->spool_failed)
+            return rb_cli_stream_error(o);
         if (st != RB_OK || fflush(stdout) != 0 || ferror(stdout)) {
             rb_cli_error(NULL, NULL, "cannot write the summary to standard output");
             return RB_EXIT_INTERNAL;

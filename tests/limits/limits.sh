@@ -10,8 +10,13 @@
 #   record_bytes  a record file over 256 MiB (blank lines) is refused
 #                 before it is read (1 GiB used to be read for 45 s)
 #   batch_tmpdir  a batch whose TMPDIR cannot take the streamed summary
-#                 stops before any work (exit 3) and writes no output; with
-#                 a writable TMPDIR nothing is left in it
+#                 stops before any work (exit 2, naming it and why) and
+#                 writes no output; with a writable TMPDIR nothing is left
+#                 in it
+#   batch_tmpdir_full  a TMPDIR that fills while the summary is spooled
+#                 (a file size limit stands in for a full disk) names the
+#                 temporary file and the system's reason, exit 2, and
+#                 writes no output (it said "input/output error", exit 3)
 #   digest_huge   a batch of a sparse 1 TB case file, and of /proc/self/pagemap
 #                 (which says 0 bytes and reads on for ever), ends at once
 #                 with the file unreadable, as check does: the inputs'
@@ -115,15 +120,29 @@ batch_tmpdir)
     cheap_case "$D/base.yaml"
     printf 'tag,base,mass\nA,base.yaml,400 kg\nB,base.yaml,500 kg\n' >"$D/list.csv"
     TMPDIR="$D/missing" run 30 batch "$D/list.csv" --json "$D/s.json"
-    [ "$rc" -eq 3 ] || fail "unwritable TMPDIR: exit code $rc, want 3"
-    grep -q "missing: error: cannot make a temporary file for the summary" "$D/err" \
-        || fail "no diagnostic naming TMPDIR"
+    [ "$rc" -eq 2 ] || fail "unwritable TMPDIR: exit code $rc, want 2"
+    grep -q "missing: error: cannot make a temporary file for the summary here: No such file or directory" "$D/err" \
+        || fail "no diagnostic naming TMPDIR and why"
     [ ! -e "$D/s.json" ] || fail "a summary was written without its cases"
     mkdir "$D/tmp"
     TMPDIR="$D/tmp" run 30 batch "$D/list.csv" --json "$D/s.json" --csv "$D/s.csv"
     [ "$rc" -eq 0 ] || fail "writable TMPDIR: exit code $rc, want 0"
     grep -q '"cases":[[:space:]]*2' "$D/s.json" || grep -q '"passed":[[:space:]]*2' "$D/s.json" \
         || fail "the summary lacks its counts"
+    [ -z "$(ls -A "$D/tmp")" ] || fail "temporary files were left in TMPDIR"
+    ;;
+batch_tmpdir_full)
+    cheap_case "$D/base.yaml"
+    { echo tag,base,mass; i=1; while [ $i -le 300 ]; do echo "T$i,base.yaml,$((400 + i)) kg"; i=$((i + 1)); done; } >"$D/list.csv"
+    mkdir "$D/tmp"
+    # SIGXFSZ ignored: the write fails with EFBIG instead of ending the process
+    (trap '' XFSZ; ulimit -f 40 && TMPDIR="$D/tmp" exec "$R" batch "$D/list.csv" --json "$D/s.json" --quiet) \
+        >"$D/out" 2>"$D/err"
+    rc=$?
+    [ "$rc" -eq 2 ] || fail "exit code $rc, want 2"
+    grep -q "/tmp/rockbolt-summary-.*: error: cannot write the summary's temporary file: File too large" "$D/err" \
+        || fail "no diagnostic naming the temporary file and the reason"
+    [ ! -e "$D/s.json" ] || fail "a summary was written"
     [ -z "$(ls -A "$D/tmp")" ] || fail "temporary files were left in TMPDIR"
     ;;
 digest_huge)
