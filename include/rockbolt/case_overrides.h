@@ -35,4 +35,15 @@ rb_status rb_case_load_overrides(const char *base_path, const char *origin,
                                  size_t n, struct rb_record_cache *cache,
                                  rb_case *out, rb_diag_list *diags);
 
+/* rb_case_load_overrides with the place the base was named (1-based
+ * base_line and base_col in origin): what cannot be read of the base
+ * itself (missing, outside the sandbox) is reported there, where
+ * rb_case_load_overrides uses the first override's line (none: line 0)
+ * and column 1. */
+rb_status rb_case_load_overrides_at(const char *base_path, int base_line, int base_col,
+                                    const char *origin, const char *name,
+                                    const rb_case_override *ov, size_t n,
+                                    struct rb_record_cache *cache, rb_case *out,
+                                    rb_diag_list *diags);
+
 #endif

@@ -43,8 +43,9 @@ void rb_batch_case_load(rb_batch_slot *s, const rb_batch_item *it, rb_batch_case
         return;
     }
     if (it->tag)
-        st = rb_case_load_overrides(it->base, it->source, it->tag, it->ov, it->n_ov,
-                                    s->cache, &s->c, &diags);
+        st = rb_case_load_overrides_at(it->base, it->line, it->base_col, it->source,
+                                       it->tag, it->ov, it->n_ov, s->cache, &s->c,
+                                       &diags);
     else
         st = rb_case_load_cached(it->source, s->cache, &s->c, &diags);
     if (st != RB_OK) {

@@ -375,8 +375,10 @@ static rb_status read_row(csv_ctx *cx, rb_batch_list *l, const csv_row *r, int l
         return RB_OK;
     }
     const char *base = cx->base_col >= 0 ? r->f[cx->base_col].text : "";
-    if (base[0])
+    if (base[0]) {
         it->base = base[0] == '/' ? rb_batch_strdup(base) : join(cx->dir, base);
+        it->base_col = r->f[cx->base_col].col;
+    }
     else if (cx->default_base)
         it->base = rb_batch_strdup(cx->default_base);
     else {

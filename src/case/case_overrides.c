@@ -230,7 +230,7 @@ static rb_status push_diag(rb_diag_list *l, const char *file, int line, int col,
 /* Point diagnostics of the generated document at the overrides' origin. */
 static void map_diags(rb_diag_list *l, size_t first, const char *tmp,
                       const rb_ovgen *g, const char *origin, int row_line,
-                      const char *cwd)
+                      int row_col, const char *cwd)
 {
     for (size_t i = first; i < l->n; i++) {
         rb_diag *d = &l->items[i];
@@ -238,7 +238,7 @@ static void map_diags(rb_diag_list *l, size_t first, const char *tmp,
             int k = d->line >= 1 && d->line <= g->line ? g->line_ov[d->line] : -1;
             snprintf(d->file, sizeof d->file, "%s", origin);
             d->line = k >= 0 ? g->ov[k].line : row_line;
-            d->col = k >= 0 ? g->ov[k].col : 1;
+            d->col = k >= 0 ? g->ov[k].col : row_col;
             /* the generated `extends:` is the row's base: say so */
             if (k < 0 && strcmp(d->key, "extends") == 0)
                 snprintf(d->key, sizeof d->key, "base");
@@ -276,10 +276,21 @@ rb_status rb_case_load_overrides(const char *base_path, const char *origin,
                                  const char *name, const rb_case_override *ov,
                                  size_t n, struct rb_record_cache *cache, rb_case *out, rb_diag_list *diags)
 {
+    return rb_case_load_overrides_at(base_path, n ? ov[0].line : 0, 1, origin, name, ov,
+                                     n, cache, out, diags);
+}
+
+rb_status rb_case_load_overrides_at(const char *base_path, int row_line, int row_col,
+                                    const char *origin, const char *name,
+                                    const rb_case_override *ov, size_t n,
+                                    struct rb_record_cache *cache, rb_case *out,
+                                    rb_diag_list *diags)
+{
     rb_ovgen g;
     char doc[600];
     rb_status st = RB_OK;
-    int row_line = n ? ov[0].line : 0;
+    if (row_col < 1)
+        row_col = 1;
     memset(out, 0, sizeof *out);
     memset(&g, 0, sizeof g);
     for (size_t i = 0; i < n; i++) {
@@ -302,7 +313,7 @@ rb_status rb_case_load_overrides(const char *base_path, const char *origin,
     if (!cwd || !odir || !base_abs || !done) {
         st = cwd ? RB_ERR_NOMEM : RB_ERR_IO;
         if (st == RB_ERR_IO)
-            push_diag(diags, origin, row_line, 1, "base",
+            push_diag(diags, origin, row_line, row_col, "base",
                       "cannot find the working directory");
         goto done;
     }
@@ -316,7 +327,7 @@ rb_status rb_case_load_overrides(const char *base_path, const char *origin,
     snprintf(doc, sizeof doc, "%.500s (row at line %d)", origin, row_line);
     size_t first = diags->n;
     st = rb_case_load_text(doc, g.sb.p, g.sb.n, cache, out, diags);
-    map_diags(diags, first, doc, &g, origin, row_line, cwd);
+    map_diags(diags, first, doc, &g, origin, row_line, row_col, cwd);
     if (st == RB_OK) {
         char *p = dup_str(origin);
         if (!p) {

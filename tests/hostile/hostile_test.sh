@@ -182,7 +182,7 @@ sandbox)
     printf 'tag,base,motion\nX,%s/base.yaml,taft\nY,base.yaml,elcentro\n' "$out" >"$in/l.csv"
     cp "$in/l.csv" "$out/l.csv"
     run 2 batch "$in/l.csv" "$out/l.csv" "$in/b.yaml" --sandbox "$in" --csv "$s/b.csv" -q
-    has "$s/b.csv" "^0,.*l.csv,2,X,.*unreadable.*l.csv:2:1: base: cannot use .*outside the sandbox"
+    has "$s/b.csv" "^0,.*l.csv,2,X,.*unreadable.*l.csv:2:3: base: cannot use .*outside the sandbox"
     has "$s/b.csv" "^1,.*l.csv,3,Y,elcentro,1,"
     has "$s/b.csv" "^2,.*l.csv,0,.*unreadable.*the list lies outside the sandbox"
     has "$s/b.csv" "^3,.*b.yaml,0,b,.*unreadable.*outside the sandbox"
@@ -190,6 +190,28 @@ sandbox)
     run 2 batch "$in/a.yaml" --sandbox "$s/none"
     has "$s/err" "none: error: --sandbox: expected an existing directory"
     run 2 check "$in/a.yaml" --sandbox "$in/a.yaml"
+    ;;
+row_base_line)
+    # a row's base that cannot be used is reported at the row's base cell,
+    # also when the row overrides nothing (it had line 0 then)
+    mkdir -p "$s/in"
+    cp "$base" "$s/base.yaml"
+    printf 'tag,base\nX,../base.yaml\nY,missing.yaml\n' >"$s/in/l.csv"
+    run 2 batch "$s/in/l.csv" --sandbox "$s/in" --json "$s/r.json" -q
+    has "$s/err" "l.csv:2:3: error: base: cannot use .*outside the sandbox"
+    has "$s/err" "l.csv:3:3: error: base: cannot open .*missing.yaml"
+    python3 - "$s/r.json" <<'PY' || fail "the JSON errors lack the rows' line and column"
+import json, sys
+cases = json.load(open(sys.argv[1]))["cases"]
+assert [(c["error"]["line"], c["error"]["col"]) for c in cases] == [(2, 3), (3, 3)], cases
+PY
+    # with overrides, at the base's cell too; --base: the row's first column
+    printf 'mass,tag,base\n400 kg,X,../base.yaml\n' >"$s/in/m.csv"
+    run 2 batch "$s/in/m.csv" --sandbox "$s/in" -q
+    has "$s/err" "m.csv:2:10: error: base: cannot use .*outside the sandbox"
+    printf 'tag\nX\n' >"$s/in/n.csv"
+    run 2 batch "$s/in/n.csv" --base "$s/base.yaml" --sandbox "$s/in" -q
+    has "$s/err" "n.csv:2:1: error: base: cannot use .*outside the sandbox"
     ;;
 merge_digest)
     # shards of one list merge; shards of two lists with as many rows, and

@@ -3,4 +3,4 @@
 # diagnostics, --sandbox, and merge's digests. See hostile_test.sh.
 rb_shell_tests(PREFIX hostile SCRIPT tests/hostile/hostile_test.sh SCRATCH hostile
                LABEL hostile TIMEOUT 300
-               TESTS csv_formula control_chars no_quote sandbox merge_digest)
+               TESTS csv_formula control_chars no_quote sandbox merge_digest row_base_line)
