@@ -54,8 +54,9 @@ rb_status rb_record_units_parse(const char *name, double *to_mps2);
 /* A target spectrum table: rows of frequency (Hz) and spectral
  * acceleration (times units_to_mps2), separated by blanks or a comma;
  * blank lines, lines starting with '#' and one header line before the
- * first row are skipped. Frequencies strictly increasing and > 0,
- * accelerations > 0, 2 to max_points rows. *freq_hz and *accel_mps2 are
+ * first row are skipped. Frequencies strictly increasing, from
+ * RB_SPECTRUM_MIN_HZ to RB_SPECTRUM_MAX_HZ, accelerations > 0 and at most
+ * RB_SPECTRUM_MAX_ACCEL_MPS2 once converted, 2 to max_points rows. *freq_hz and *accel_mps2 are
  * the caller's (free); on error they are NULL and diag names the file,
  * line and column. RB_ERR_IO, RB_ERR_PARSE, RB_ERR_INVALID, RB_ERR_LIMIT,
  * RB_ERR_NOMEM. */

@@ -25,6 +25,14 @@ typedef struct {
 } rb_spectrum_opts;
 
 #define RB_SPECTRUM_MAX_POINTS 2000
+/* The frequencies a spectrum is taken at (`spectrum --from`, `--to`) and a
+ * target table may name: below 0.001 Hz the oscillator's free period
+ * outlasts any motion a thousandfold, above 10 kHz no record is sampled. */
+#define RB_SPECTRUM_MIN_HZ 1e-3
+#define RB_SPECTRUM_MAX_HZ 1e4
+/* A target table's largest ordinate, 1000 g: the cap of `amplitude`,
+ * `peak` and AC156's `sds` (1e30 g overflowed the state). */
+#define RB_SPECTRUM_MAX_ACCEL_MPS2 (1000.0 * 9.80665)
 
 void rb_spectrum_opts_init(rb_spectrum_opts *o);
 

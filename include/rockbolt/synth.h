@@ -27,6 +27,21 @@ typedef struct {
 
 void rb_synth_opts_init(rb_synth_opts *o, const rb_target *target);
 
+/* The ranges rb_synth_generate takes (docs/robustness.md). */
+#define RB_SYNTH_MIN_TOTAL_S 2.0     /* duration; strong alike */
+#define RB_SYNTH_MAX_TOTAL_S 600.0
+#define RB_SYNTH_MIN_DT_S 1e-3
+#define RB_SYNTH_MAX_DT_S 0.02
+
+/* AC156's proportion, 22 s at full level of 30, for a motion of total_s;
+ * never under the 2 s a strong part needs, nor over total_s. */
+double rb_synth_default_strong(double total_s);
+
+/* 1 when o is what rb_synth_generate takes; else 0, with *key the option
+ * at fault ("spectrum", "dt", "duration", "strong") and in why its value
+ * and its limit, for the caller to report at that key. */
+int rb_synth_opts_check(const rb_synth_opts *o, const char **key, char *why, size_t n);
+
 /* What a generated motion is, as the reports state it. */
 typedef struct {
     double peak_mps2;          /* peak floor acceleration */

@@ -137,6 +137,7 @@ typedef struct {
     unsigned long long seed;
     double total_s, strong_s, synth_dt_s;
     const rb_ynode *synth_dt_node;  /* NULL: the default */
+    const rb_ynode *synth_total_node, *synth_strong_node; /* alike */
     int ok;                     /* 0 when the motion had errors */
 } rb_cmotion;
 
@@ -240,8 +241,17 @@ rb_status rb_case_read_merged_text(rb_cctx *c, const char *name, unsigned char *
 int rb_case_read_synthetic(rb_cctx *c, rb_ynode *map, rb_cmotion *cm);
 /* Make the target cm names (reading a table file); 0 after an error. */
 int rb_case_make_target(rb_cctx *c, const rb_cmotion *cm, rb_case_target *ct);
-/* Generate cm's suite of count motions into out[0..count); 0 after an
- * error, reported at the first motion that could not be made. */
+/* Check what generating cm's suite of count motions takes (the options
+ * the generator accepts, the case's sample budget, which it charges), so
+ * that a case is refused before any motion is generated; 0 after an
+ * error. */
+int rb_case_check_suite(rb_cctx *c, const rb_cmotion *cm, const rb_case_target *ct,
+                        size_t count);
+/* The run time of each motion of cm's suite, known before it is made. */
+double rb_case_suite_duration(const rb_cmotion *cm);
+/* Generate cm's suite of count motions into out[0..count), once
+ * rb_case_check_suite passed; 0 after an error, reported at the first
+ * motion that could not be made. */
 int rb_case_build_suite(rb_cctx *c, const rb_cmotion *cm, const rb_case_target *ct,
                         rb_case_motion *out, size_t count);
 /* A file a case names, relative to the directory of the file that named

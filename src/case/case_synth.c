@@ -12,10 +12,10 @@
 #include "rockbolt/record_cache.h"
 #include "util/pool.h"
 
-#define SYNTH_MIN_TOTAL_S 2.0
-#define SYNTH_MAX_TOTAL_S 600.0
-#define SYNTH_MIN_DT_S 1e-3
-#define SYNTH_MAX_DT_S 0.02
+#define SYNTH_MIN_TOTAL_S RB_SYNTH_MIN_TOTAL_S
+#define SYNTH_MAX_TOTAL_S RB_SYNTH_MAX_TOTAL_S
+#define SYNTH_MIN_DT_S RB_SYNTH_MIN_DT_S
+#define SYNTH_MAX_DT_S RB_SYNTH_MAX_DT_S
 #define SYNTH_STANDARD_G 9.80665
 
 static const char *const synthetic_keys[] = {
@@ -136,15 +136,18 @@ int rb_case_read_synthetic(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
         cm->seed = (unsigned long long)seed;
     }
     cm->total_s = 30.0;
-    if (rb_ymap_find(map, "duration"))
-        ok &= rb_cv_number(c, map, p, "duration", 0, RB_DIM_TIME, SYNTH_MIN_TOTAL_S, 1,
-                           SYNTH_MAX_TOTAL_S, 1, &cm->total_s) != NULL;
-    /* AC156's proportion: 22 s of 30 at full level */
-    cm->strong_s = cm->total_s * 22.0 / 30.0;
+    if (rb_ymap_find(map, "duration")) {
+        cm->synth_total_node = rb_cv_number(c, map, p, "duration", 0, RB_DIM_TIME,
+                                            SYNTH_MIN_TOTAL_S, 1, SYNTH_MAX_TOTAL_S, 1,
+                                            &cm->total_s);
+        ok &= cm->synth_total_node != NULL;
+    }
+    cm->strong_s = rb_synth_default_strong(cm->total_s);
     if (rb_ymap_find(map, "strong")) {
         const rb_ynode *sv = rb_cv_number(c, map, p, "strong", 0, RB_DIM_TIME,
                                           SYNTH_MIN_TOTAL_S, 1, SYNTH_MAX_TOTAL_S, 1,
                                           &cm->strong_s);
+        cm->synth_strong_node = sv;
         rb_case_keypath(k, p, "strong");
         if (sv && cm->strong_s > cm->total_s) {
             rb_cctx_error(c, sv, k, "the strong part (%g s) cannot be longer than the "
@@ -193,7 +196,11 @@ int rb_case_make_target(rb_cctx *c, const rb_cmotion *cm, rb_case_target *ct)
                                           RB_SPECTRUM_MAX_POINTS, &f, &a, &n, &rd);
     if (st != RB_OK) {
         rb_status as = st == RB_ERR_NOMEM ? st : RB_ERR_IO;
-        if (rd.line > 0)
+        if (rd.line > 0 && rd.col > 0)
+            rb_cctx_error_at(c, as, v->file, v->line, v->col, k, "cannot read spectrum "
+                             "table '%s' (line %d, column %d: %s)", ct->file, rd.line,
+                             rd.col, rd.msg);
+        else if (rd.line > 0)
             rb_cctx_error_at(c, as, v->file, v->line, v->col, k, "cannot read spectrum "
                              "table '%s' (line %d: %s)", ct->file, rd.line, rd.msg);
         else
@@ -267,26 +274,6 @@ static int build_one(rb_cctx *c, const rb_cmotion *cm, const rb_case_target *ct,
     out->target = t;
     out->synth_index = index;
     out->synth_seed = cm->seed;
-    if (!(t->check_to_hz < 0.4 / cm->synth_dt_s)) {
-        const rb_ynode *dv = cm->synth_dt_node ? cm->synth_dt_node : cm->table_node;
-        if (dv) {
-            at = dv;
-            rb_case_keypath(k, cm->key, cm->synth_dt_node ? "dt" : "spectrum.file");
-        }
-        rb_cctx_error_at(c, RB_ERR_INVALID, at->file, at->line, at->col, k, "the target "
-                         "is checked up to %g Hz, which needs samples at most %g s apart "
-                         "(dt is %g s)", t->check_to_hz, 0.4 / t->check_to_hz * 0.999,
-                         cm->synth_dt_s);
-        return 0;
-    }
-    size_t n = (size_t)llround(cm->total_s / cm->synth_dt_s) + 1;
-    if (n > RB_CASE_MAX_SAMPLES - c->n_samples) {
-        rb_cctx_error_at(c, RB_ERR_LIMIT, at->file, at->line, at->col, cm->key, "the "
-                         "motions of one case may hold %u samples in all (the limit): "
-                         "this one needs %zu and the motions before it hold %zu",
-                         RB_CASE_MAX_SAMPLES, n, c->n_samples);
-        return 0;
-    }
     /* a motion made here goes to the cache, for the rows of a batch after it */
     rb_record_opts none;
     rb_record_opts_init(&none);
@@ -321,7 +308,6 @@ static int build_one(rb_cctx *c, const rb_cmotion *cm, const rb_case_target *ct,
                              "the motion (%s)", rb_status_str(st));
         return 0;
     }
-    c->n_samples += out->series.n;
     out->motion.series = &out->series;
     out->motion.scale = 1.0;
     if (!cm->has_duration)
@@ -347,21 +333,60 @@ static int build_one(rb_cctx *c, const rb_cmotion *cm, const rb_case_target *ct,
     return out->source && out->name;
 }
 
-/* How many motions of the suite pass the checks build_one makes before it
- * generates one (the sampling, the case's limit on samples): those are
- * generated ahead, side by side; the first that fails is reported by
- * build_one, in its place, as if the suite were built one by one. */
-static size_t generated_ahead(const rb_cctx *c, const rb_cmotion *cm,
-                              const rb_case_target *ct, size_t count)
+/* The node of the key the generator's option check blames. */
+static const rb_ynode *option_node(const rb_cmotion *cm, const char *key)
 {
-    if (!(ct->target.check_to_hz < 0.4 / cm->synth_dt_s))
+    const rb_ynode *v = NULL;
+    if (strcmp(key, "dt") == 0)
+        v = cm->synth_dt_node ? cm->synth_dt_node : cm->table_node;
+    else if (strcmp(key, "duration") == 0)
+        v = cm->synth_total_node;
+    else if (strcmp(key, "strong") == 0)
+        v = cm->synth_strong_node ? cm->synth_strong_node : cm->synth_total_node;
+    else if (strcmp(key, "spectrum") == 0)
+        v = cm->table_node;
+    return v ? v : cm->map;
+}
+
+int rb_case_check_suite(rb_cctx *c, const rb_cmotion *cm, const rb_case_target *ct,
+                        size_t count)
+{
+    char k[RB_CASE_KEY_MAX], why[300];
+    const char *key;
+    suite_job job;
+    job_init(cm, ct, 0, &job);
+    if (!rb_synth_opts_check(&job.o, &key, why, sizeof why)) {
+        const rb_ynode *at = option_node(cm, key);
+        if (at == cm->table_node && at)
+            key = "spectrum.file";
+        if (at == cm->map || !key[0])
+            snprintf(k, sizeof k, "%s", cm->key);
+        else
+            rb_case_keypath(k, cm->key, key);
+        rb_cctx_error_at(c, RB_ERR_INVALID, at->file, at->line, at->col, k, "%s", why);
         return 0;
-    size_t n = (size_t)llround(cm->total_s / cm->synth_dt_s) + 1, held = c->n_samples, k = 0;
-    while (k < count && n <= RB_CASE_MAX_SAMPLES - held) {
-        held += n;
-        k++;
     }
-    return k;
+    size_t n = (size_t)llround(cm->total_s / cm->synth_dt_s) + 1;
+    for (size_t i = 0; i < count; i++) {
+        if (n > RB_CASE_MAX_SAMPLES - c->n_samples) {
+            const rb_ynode *at = cm->map;
+            rb_cctx_error_at(c, RB_ERR_LIMIT, at->file, at->line, at->col, cm->key, "the "
+                             "motions of one case may hold %u samples in all (the limit): "
+                             "this one needs %zu and the motions before it hold %zu",
+                             RB_CASE_MAX_SAMPLES, n, c->n_samples);
+            return 0;
+        }
+        c->n_samples += n;
+    }
+    return 1;
+}
+
+double rb_case_suite_duration(const rb_cmotion *cm)
+{
+    if (cm->has_duration)
+        return cm->motion.duration_s;
+    size_t n = (size_t)llround(cm->total_s / cm->synth_dt_s) + 1;
+    return (double)(n - 1) * cm->synth_dt_s;
 }
 
 int rb_case_build_suite(rb_cctx *c, const rb_cmotion *cm, const rb_case_target *ct,
@@ -374,18 +399,18 @@ int rb_case_build_suite(rb_cctx *c, const rb_cmotion *cm, const rb_case_target *
     }
     rb_record_opts none;
     rb_record_opts_init(&none);
-    size_t ahead = generated_ahead(c, cm, ct, count), i;
+    size_t i;
     /* the cases of a batch that share a suite generate it once */
     for (i = 0; i < count; i++) {
         job_init(cm, ct, (unsigned)i, &jobs[i]);
-        jobs[i].cached = i < ahead && jobs[i].keyed
+        jobs[i].cached = jobs[i].keyed
                          && rb_record_cache_get(c->cache, jobs[i].key, &none, 0, 0,
                                                 &jobs[i].series);
     }
     /* a suite's motions take most of a check's time (0.24 s of 0.26 s for
      * cases/ac156-roof.yaml's seven); each is its own random stream, so
      * they do not depend on one another or on the order they are made in */
-    rb_pool_map(ahead, 0, generate_job, jobs, NULL);
+    rb_pool_map(count, 0, generate_job, jobs, NULL);
     int ok = 1;
     for (i = 0; i < count && ok && !c->nomem; i++)
         ok = build_one(c, cm, ct, (unsigned)i, &jobs[i], &out[i]);

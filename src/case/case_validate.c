@@ -362,6 +362,14 @@ void rb_case_resolve(rb_cctx *c, rb_case *cs, const rb_ynode *root)
                                                : RB_CASE_HISTORY_DT_DEFAULT_S;
     int over = 0;
     size_t at = 0;
+    /* the targets of the suites to generate, by entry: they are generated
+     * only once the whole case is known good (a suite takes seconds, and a
+     * typo elsewhere must not wait for it) */
+    rb_case_target **suite = calloc(c->n_motions, sizeof *suite);
+    if (!suite) {
+        c->nomem = 1;
+        return;
+    }
     for (size_t i = 0; i < c->n_motions && !c->nomem; i++) {
         const rb_cmotion *cm = &c->motions[i];
         size_t first = at;
@@ -375,15 +383,18 @@ void rb_case_resolve(rb_cctx *c, rb_case *cs, const rb_ynode *root)
                 continue;
             }
             cs->n_targets++;
-            if (!rb_case_build_suite(c, cm, ct, &cs->motions[first], at - first))
+            if (!rb_case_check_suite(c, cm, ct, at - first))
                 continue;
+            suite[i] = ct;
         } else if (!build_motion(c, cm, &cs->motions[first], &d, have_model)) {
             continue;
         }
         for (size_t j = first; j < at; j++) {
             /* the history a run would record, asked for or not: whether a
              * case is refused must not depend on the outputs requested */
-            rows += floor(cs->motions[j].motion.duration_s / dt) + 2;
+            double run_s = cm->synthetic ? rb_case_suite_duration(cm)
+                                         : cs->motions[j].motion.duration_s;
+            rows += floor(run_s / dt) + 2;
             if (rows > RB_CASE_MAX_HISTORY_ROWS && !over) {
                 over = 1;
                 const rb_ynode *v = c->history_dt_node ? c->history_dt_node : cm->map;
@@ -392,9 +403,17 @@ void rb_case_resolve(rb_cctx *c, rb_case *cs, const rb_ynode *root)
                                  "the time history would hold over %.0f rows (the limit)"
                                  " at %g s intervals by %s, which lasts %g s: give a "
                                  "longer output_interval or shorter runs",
-                                 RB_CASE_MAX_HISTORY_ROWS, dt, cm->key,
-                                 cs->motions[j].motion.duration_s);
+                                 RB_CASE_MAX_HISTORY_ROWS, dt, cm->key, run_s);
             }
         }
     }
+    at = 0;
+    for (size_t i = 0; i < c->n_motions && c->n_errors == 0 && !c->nomem; i++) {
+        const rb_cmotion *cm = &c->motions[i];
+        size_t first = at;
+        at += cm->synthetic ? (size_t)cm->count : 1;
+        if (suite[i])
+            rb_case_build_suite(c, cm, suite[i], &cs->motions[first], at - first);
+    }
+    free(suite);
 }

@@ -252,11 +252,13 @@ static rb_exit take_option(int c, const rb_cli_getopt *g, rb_cli_opts *o)
                              "a damping ratio from 0 to 99 %, e.g. '5 %' or 0.05",
                              &o->spectrum.damping);
     case OPT_FROM:
-        return take_quantity(g->name, g->arg, RB_DIM_FREQUENCY, 1e-3, 1e4,
+        return take_quantity(g->name, g->arg, RB_DIM_FREQUENCY, RB_SPECTRUM_MIN_HZ,
+                             RB_SPECTRUM_MAX_HZ,
                              "a frequency from 0.001 to 10000 Hz, e.g. '0.5 Hz'",
                              &o->spectrum.f_min_hz);
     case OPT_TO:
-        return take_quantity(g->name, g->arg, RB_DIM_FREQUENCY, 1e-3, 1e4,
+        return take_quantity(g->name, g->arg, RB_DIM_FREQUENCY, RB_SPECTRUM_MIN_HZ,
+                             RB_SPECTRUM_MAX_HZ,
                              "a frequency from 0.001 to 10000 Hz, e.g. '50 Hz'",
                              &o->spectrum.f_max_hz);
     case OPT_PER_OCTAVE:

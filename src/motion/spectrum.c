@@ -24,6 +24,11 @@
 /* ... and at most this many samples (80 MB): a longer closed form is
  * refused (RB_ERR_LIMIT) rather than sampled more coarsely. */
 #define SPECTRUM_MAX_CLOSED_FORM_SAMPLES 1e7
+/* The free period after the samples is stepped as the samples are for at
+ * most this long, then at the phase step: a period counted in sample
+ * steps made a 1e-6 Hz oscillator take 2e8 steps per spectrum. Periods up
+ * to 10 s (0.1 Hz and up) are stepped as they always were. */
+#define SPECTRUM_TAIL_FINE_S 10.0
 
 void rb_spectrum_opts_init(rb_spectrum_opts *o)
 {
@@ -292,10 +297,29 @@ static void oscillator_peaks(const rb_series *s, double f_hz, double xi, double 
      * free period, where the peak of a slow oscillator may still come */
     double y[2] = {x[o], x[o + 1]};
     tracker_read(&t, y[0], y[1], 0.0);
-    size_t steps = (size_t)ceil(1.0 / (f_hz * hf));
+    double period = 1.0 / f_hz, rest = 0.0;
+    size_t steps;
+    if (period > SPECTRUM_TAIL_FINE_S) {
+        steps = (size_t)ceil(SPECTRUM_TAIL_FINE_S / hf);
+        rest = period - (double)steps * hf;
+    } else {
+        steps = (size_t)ceil(period / hf);
+    }
     for (size_t i = 0; i < steps; i++) {
         transition_apply(&free_tr, y, 0.0, 0.0);
         tracker_step(&t, y[0], y[1], 0.0, hf);
+    }
+    if (rest > 0) {
+        /* no load: the transition is exact at any step, and the cubic's
+         * error depends only on the phase a step covers */
+        size_t nb = (size_t)ceil(rest * w / phase);
+        double hb = rest / (double)(nb ? nb : 1);
+        transition free_long;
+        transition_init(&free_long, 2, a2, b2, hb);
+        for (size_t i = 0; i < nb; i++) {
+            transition_apply(&free_long, y, 0.0, 0.0);
+            tracker_step(&t, y[0], y[1], 0.0, hb);
+        }
     }
     *psa = w * t.psa;
     *sa = t.sa;

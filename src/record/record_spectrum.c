@@ -3,6 +3,7 @@
 #include <string.h>
 #include "record_internal.h"
 #include "rockbolt/sandbox.h"
+#include "rockbolt/spectrum.h"
 
 static rb_status table_row(const rb_rec_reader *r, double units, rb_rec_values *f,
                            rb_rec_values *a, int *header_ok)
@@ -28,15 +29,21 @@ static rb_status table_row(const rb_rec_reader *r, double units, rb_rec_values *
         st = rb_rec_token_number(r, &tok[1], "a spectral acceleration", &av);
     if (st != RB_OK)
         return st;
-    if (!(fv > 0))
-        return rb_rec_fail(r, RB_ERR_INVALID, tok[0].col, "expected a frequency > 0 Hz, "
-                           "found %g", fv);
+    /* a row at 1e-6 Hz made the generator step a free period of 11 days
+     * per oscillator per pass: checked against the spectrum's own range */
+    if (!(fv >= RB_SPECTRUM_MIN_HZ && fv <= RB_SPECTRUM_MAX_HZ))
+        return rb_rec_fail(r, RB_ERR_INVALID, tok[0].col, "expected a frequency from %g "
+                           "to %g Hz, found %g", RB_SPECTRUM_MIN_HZ, RB_SPECTRUM_MAX_HZ, fv);
     if (f->n > 0 && !(fv > f->v[f->n - 1]))
         return rb_rec_fail(r, RB_ERR_INVALID, tok[0].col, "expected frequencies to "
                            "increase, found %g Hz after %g Hz", fv, f->v[f->n - 1]);
     if (!(av > 0))
         return rb_rec_fail(r, RB_ERR_INVALID, tok[1].col, "expected a spectral "
                            "acceleration > 0, found %g", av);
+    if (!(av * units <= RB_SPECTRUM_MAX_ACCEL_MPS2))
+        return rb_rec_fail(r, RB_ERR_INVALID, tok[1].col, "expected a spectral "
+                           "acceleration of at most 1000 g (%g m/s^2), found %g (%g m/s^2)",
+                           RB_SPECTRUM_MAX_ACCEL_MPS2, av, av * units);
     st = rb_rec_values_push(f, r, &tok[0], fv, 1.0);
     if (st == RB_OK)
         st = rb_rec_values_push(a, r, &tok[1], av, units);

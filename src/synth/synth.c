@@ -16,6 +16,7 @@
  * lightly damped oscillator at f is governed by the motion's content near
  * f, so scaling that content scales the ordinate nearly in proportion. */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "rockbolt/synth.h"
@@ -61,6 +62,16 @@ void rb_synth_opts_init(rb_synth_opts *o, const rb_target *target)
     o->max_iterations = 128;
 }
 
+double rb_synth_default_strong(double total_s)
+{
+    /* 22/30 of a 2.5 s motion is 1.83 s, under the 2 s minimum: documented
+     * durations from 2 s were refused by their own default */
+    double s = total_s * 22.0 / 30.0;
+    if (s < RB_SYNTH_MIN_TOTAL_S)
+        s = RB_SYNTH_MIN_TOTAL_S;
+    return s < total_s ? s : total_s;
+}
+
 typedef struct {
     const rb_synth_opts *o;
     size_t n;                /* samples */
@@ -86,13 +97,52 @@ static void generator_free(generator *g)
     rb_spectrum_free(&g->grid);
 }
 
+int rb_synth_opts_check(const rb_synth_opts *o, const char **key, char *why, size_t n)
+{
+    const rb_target *t = o ? o->target : NULL;
+    *key = "spectrum";
+    if (!t || !(t->check_from_hz > 0) || !(t->check_to_hz > t->check_from_hz)) {
+        snprintf(why, n, "the target's check range must be a band of positive "
+                 "frequencies");
+        return 0;
+    }
+    *key = "dt";
+    if (!(o->dt_s >= RB_SYNTH_MIN_DT_S && o->dt_s <= RB_SYNTH_MAX_DT_S)) {
+        snprintf(why, n, "dt (%g s) must be from %g to %g s", o->dt_s, RB_SYNTH_MIN_DT_S,
+                 RB_SYNTH_MAX_DT_S);
+        return 0;
+    }
+    if (!(t->check_to_hz < 0.4 / o->dt_s)) {
+        snprintf(why, n, "the target is checked up to %g Hz, which needs samples at "
+                 "most %g s apart (dt is %g s)", t->check_to_hz,
+                 0.4 / t->check_to_hz * 0.999, o->dt_s);
+        return 0;
+    }
+    *key = "duration";
+    if (!(o->total_s >= RB_SYNTH_MIN_TOTAL_S && o->total_s <= RB_SYNTH_MAX_TOTAL_S)) {
+        snprintf(why, n, "duration (%g s) must be from %g to %g s", o->total_s,
+                 RB_SYNTH_MIN_TOTAL_S, RB_SYNTH_MAX_TOTAL_S);
+        return 0;
+    }
+    *key = "strong";
+    if (!(o->strong_s >= RB_SYNTH_MIN_TOTAL_S && o->strong_s <= o->total_s)) {
+        snprintf(why, n, "strong (%g s) must be from %g s to the duration (%g s)",
+                 o->strong_s, RB_SYNTH_MIN_TOTAL_S, o->total_s);
+        return 0;
+    }
+    *key = "";
+    if (o->max_iterations < 1) {
+        snprintf(why, n, "at least one matching pass is needed");
+        return 0;
+    }
+    return 1;
+}
+
 static int options_ok(const rb_synth_opts *o)
 {
-    const rb_target *t = o->target;
-    return t && o->dt_s >= 1e-3 && o->dt_s <= 0.02 && t->check_to_hz < 0.4 / o->dt_s
-           && o->strong_s >= 2.0 && o->strong_s <= o->total_s && o->total_s <= 600.0
-           && o->max_iterations >= 1 && t->check_from_hz > 0
-           && t->check_to_hz > t->check_from_hz;
+    const char *key;
+    char why[200];
+    return rb_synth_opts_check(o, &key, why, sizeof why);
 }
 
 static rb_status generator_init(generator *g, const rb_synth_opts *o)

@@ -8,6 +8,7 @@
 #include <unistd.h>
 #include "harness.h"
 #include "rockbolt/case.h"
+#include "rockbolt/record_cache.h"
 
 #define PI 3.14159265358979323846
 #define AREA_1_2_IN (PI * 0.0127 * 0.0127 / 4)   /* 126.7 mm^2 */
@@ -472,6 +473,42 @@ static void test_base_not_regular(void)
     rb_diag_list_free(&l);
 }
 
+/* A synthetic suite is generated only once the rest of the case is known
+ * good: a typo elsewhere comes back at once, with nothing generated (the
+ * cache was asked for none of the suite's motions; it used to be asked
+ * for all 20, and the 20 generated, 5 s before the typo was reported). */
+static void test_suite_after_validation(void)
+{
+    rb_case c;
+    rb_diag_list l;
+    const char *p = scratch_file("suite-typo.yaml", LIMIT_BASE
+        "motion: {type: synthetic, count: 20, spectrum: {type: ac156, sds: 1 g, "
+        "z_over_h: 0.5}}\nequipmnt: {mass: 400 kg}\n");
+    rb_record_cache *cache = rb_record_cache_new(0);
+    memset(&l, 0, sizeof l);
+    CHECK(rb_case_load_cached(p, cache, &c, &l) == RB_ERR_INVALID);
+    CHECK(l.n == 1 && strstr(l.items[0].msg, "unknown key"));
+    long hits = -1, misses = -1;
+    rb_record_cache_stats(cache, &hits, &misses);
+    CHECK(hits == 0 && misses == 0);
+    rb_diag_list_free(&l);
+    rb_record_cache_free(cache);
+    /* durations of 2 s and 2.5 s, documented as valid: AC156's default
+     * strong part (22/30 of them) fell under its own 2 s minimum */
+    p = scratch_file("suite-short.yaml", LIMIT_BASE
+        "motions:\n  - {type: synthetic, duration: 2 s, spectrum: {type: ac156, sds: 1 g, "
+        "z_over_h: 0.5}}\n  - {type: synthetic, duration: 2.5 s, spectrum: {type: ac156, "
+        "sds: 1 g, z_over_h: 0.5}}\n");
+    CHECK(load(p, &c, &l) == RB_OK);
+    CHECK(c.n_motions == 2);
+    if (c.n_motions == 2) {
+        CHECK_NEAR(c.motions[0].motion.duration_s, 2.0, 1e-9);
+        CHECK_NEAR(c.motions[1].motion.duration_s, 2.5, 1e-9);
+    }
+    rb_case_free(&c);
+    rb_diag_list_free(&l);
+}
+
 static void test_limits(void)
 {
     snprintf(scratch, sizeof scratch, "/tmp/rb-case-limits-XXXXXX");
@@ -481,7 +518,8 @@ static void test_limits(void)
     test_sample_budget();
     test_base_not_regular();
     test_motion_limit();
-    static const char *const names[] = {"motions.yaml", "nodes.yaml", "diags.yaml", "two.at2",
+    test_suite_after_validation();
+    static const char *const names[] = {"suite-typo.yaml", "suite-short.yaml", "motions.yaml", "nodes.yaml", "diags.yaml", "two.at2",
         "claims.at2", "budget.yaml", "alone.yaml", "dir-base.yaml"};
     for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
         char path[128];

@@ -186,6 +186,20 @@ static void check_invalid(void)
     CHECK(rb_synth_generate(&o, &s, &info) == RB_ERR_INVALID);
     rb_synth_opts_init(&o, NULL);
     CHECK(rb_synth_generate(&o, &s, &info) == RB_ERR_INVALID);
+    /* a refusal names the option and its limit, for the case to report */
+    const char *key = NULL;
+    char why[200];
+    rb_synth_opts_init(&o, &t);
+    o.total_s = 2.5;
+    o.strong_s = 1.8;
+    CHECK(!rb_synth_opts_check(&o, &key, why, sizeof why));
+    CHECK(key && strcmp(key, "strong") == 0 && strstr(why, "from 2 s"));
+    o.strong_s = rb_synth_default_strong(o.total_s);
+    CHECK(rb_synth_opts_check(&o, &key, why, sizeof why));
+    CHECK(rb_synth_default_strong(2.0) == 2.0 && rb_synth_default_strong(2.5) == 2.0
+          && rb_synth_default_strong(30.0) == 22.0);
+    o.dt_s = 0.5;
+    CHECK(!rb_synth_opts_check(&o, &key, why, sizeof why) && strcmp(key, "dt") == 0);
 }
 
 int main(void)
