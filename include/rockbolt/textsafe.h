@@ -6,11 +6,15 @@
  * - rb_text_escape shows control characters instead of sending them, so a
  *   name with "\e[2K\rPASS" cannot redraw a FAIL line as PASS: C0 controls
  *   and DEL as \t, \n, \r or \xHH (ESC is \x1b), C1 controls written in
- *   UTF-8 as \u0080 to \u009f, and bytes that are not UTF-8 as \xHH. Every
- *   other character, backslash included, is kept as it is.
+ *   UTF-8 as \u0080 to \u009f, the bidirectional and invisible format
+ *   characters (U+200B to U+200F, U+2028 to U+202E, U+2066 to U+2069 and
+ *   their kin) and U+FFFE, U+FFFF (not XML 1.0) as \u202e, and bytes that
+ *   are not UTF-8 (surrogates' encodings included) as \xHH. Every other
+ *   character, backslash included, is kept as it is.
  * - rb_csv_field writes one CSV text field: escaped as above, then, when
  *   it begins with '=', '+', '-', '@', a tab or a carriage return (the
- *   characters spreadsheets take as the start of a formula), prefixed with
+ *   characters spreadsheets take as the start of a formula), also after
+ *   leading blanks (which spreadsheets may trim on import), prefixed with
  *   a single quote inside a quoted field; quoted also when it holds a comma
  *   or a double quote (doubled). Numbers are not text fields: columns of
  *   numbers are written with printf and never pass through here. */
@@ -31,6 +35,10 @@ const char *rb_text_escape_buf(const char *s, char *out, size_t size);
 
 /* The escaped text in a new string (free it); NULL on NOMEM. */
 char *rb_text_escape(const char *s);
+
+/* As rb_text_escape, but tab and newline are kept as they are: for
+ * preformatted text in HTML and SVG (rb_plot_escape adds XML's own). */
+char *rb_text_escape_lines(const char *s);
 
 /* Whether s needs escaping at all (has a byte that would change). */
 int rb_text_needs_escape(const char *s);

@@ -12,9 +12,11 @@
 
 #include "util/strbuf.h"
 
-/* Append s with & < > " ' escaped, control characters other than tab and
- * newline dropped and invalid UTF-8 replaced by U+FFFD, so that the result
- * is always well-formed XML text or attribute content. NULL appends
+/* Append s shown as every output for people shows user text
+ * (rb_text_escape_lines: controls other than tab and newline, format
+ * characters, U+FFFE and U+FFFF and bytes that are not UTF-8 written as
+ * \x1b, \u202e, \xff), then & < > " ' escaped, so that the result is
+ * always well-formed XML text or attribute content. NULL appends
  * nothing. */
 void rb_plot_escape(rb_strbuf *b, const char *s);
 /* Hand the text over: *out gets it (RB_OK) or NULL (RB_ERR_NOMEM, with

@@ -39,9 +39,25 @@ static size_t utf8_len(const unsigned char *p, unsigned *cp_out)
     return n;
 }
 
+/* Characters shown as \uXXXX though they are valid UTF-8: XML 1.0 allows
+ * neither U+FFFE nor U+FFFF, even as references, so one in a tag made the
+ * whole JUnit file unreadable; and the bidirectional and invisible format
+ * characters reorder or hide the text around them (an RLO tag reversed
+ * the rest of its table line): the embeddings, overrides and isolates, the
+ * marks, the zero-width characters, the line and paragraph separators and
+ * the byte-order mark, which have no place in a name. */
+static int shown_as_code(unsigned cp)
+{
+    return cp == 0x061c || cp == 0x180e || (cp >= 0x200b && cp <= 0x200f)
+           || (cp >= 0x2028 && cp <= 0x202e) || (cp >= 0x2060 && cp <= 0x2064)
+           || (cp >= 0x2066 && cp <= 0x206f) || cp == 0xfeff
+           || (cp >= 0xfff9 && cp <= 0xfffb) || cp == 0xfffe || cp == 0xffff;
+}
+
 /* The next character of s at *p: its shown form in rep (escaped or not)
- * and its length there; advances *p. */
-static size_t next_char(const unsigned char **p, char rep[8])
+ * and its length there; advances *p. keep_lines keeps tab and newline as
+ * they are (preformatted text). */
+static size_t next_char(const unsigned char **p, char rep[8], int keep_lines)
 {
     static const char hex[] = "0123456789abcdef";
     const unsigned char *s = *p;
@@ -56,6 +72,10 @@ static size_t next_char(const unsigned char **p, char rep[8])
         return 4;
     }
     *p = s + n;
+    if (keep_lines && (cp == '\t' || cp == '\n')) {
+        rep[0] = (char)cp;
+        return 1;
+    }
     if (cp == '\t' || cp == '\n' || cp == '\r') {
         rep[0] = '\\';
         rep[1] = cp == '\t' ? 't' : cp == '\n' ? 'n' : 'r';
@@ -68,9 +88,12 @@ static size_t next_char(const unsigned char **p, char rep[8])
         rep[3] = hex[cp & 15];
         return 4;
     }
-    if (cp >= 0x80 && cp <= 0x9f) {      /* C1 controls, e.g. CSI 0x9b */
-        memcpy(rep, "\\u00", 4);
-        rep[4] = hex[cp >> 4];
+    if ((cp >= 0x80 && cp <= 0x9f) || shown_as_code(cp)) {  /* C1: CSI 0x9b */
+        rep[0] = '\\';
+        rep[1] = 'u';
+        rep[2] = hex[cp >> 12];
+        rep[3] = hex[(cp >> 8) & 15];
+        rep[4] = hex[(cp >> 4) & 15];
         rep[5] = hex[cp & 15];
         return 6;
     }
@@ -78,14 +101,14 @@ static size_t next_char(const unsigned char **p, char rep[8])
     return n;
 }
 
-size_t rb_text_escape_to(char *out, size_t size, const char *s)
+static size_t escape_to(char *out, size_t size, const char *s, int keep_lines)
 {
     const unsigned char *p = (const unsigned char *)(s ? s : "");
     size_t need = 0;
     int full = size == 0;
     char rep[8];
     while (*p) {
-        size_t k = next_char(&p, rep);
+        size_t k = next_char(&p, rep, keep_lines);
         if (!full && need + k < size)
             memcpy(out + need, rep, k);
         else if (!full) {
@@ -99,19 +122,34 @@ size_t rb_text_escape_to(char *out, size_t size, const char *s)
     return need;
 }
 
+size_t rb_text_escape_to(char *out, size_t size, const char *s)
+{
+    return escape_to(out, size, s, 0);
+}
+
 const char *rb_text_escape_buf(const char *s, char *out, size_t size)
 {
     rb_text_escape_to(out, size, s);
     return out;
 }
 
-char *rb_text_escape(const char *s)
+static char *escape_new(const char *s, int keep_lines)
 {
-    size_t n = rb_text_escape_to(NULL, 0, s);
+    size_t n = escape_to(NULL, 0, s, keep_lines);
     char *out = malloc(n + 1);
     if (out)
-        rb_text_escape_to(out, n + 1, s);
+        escape_to(out, n + 1, s, keep_lines);
     return out;
+}
+
+char *rb_text_escape(const char *s)
+{
+    return escape_new(s, 0);
+}
+
+char *rb_text_escape_lines(const char *s)
+{
+    return escape_new(s, 1);
 }
 
 int rb_text_needs_escape(const char *s)
@@ -120,7 +158,7 @@ int rb_text_needs_escape(const char *s)
     char rep[8];
     while (*p) {
         const unsigned char *at = p;
-        size_t k = next_char(&p, rep);
+        size_t k = next_char(&p, rep, 0);
         if (k != (size_t)(p - at) || memcmp(rep, at, k) != 0)
             return 1;
     }
@@ -134,13 +172,28 @@ static int formula_start(char c)
     return c == '=' || c == '+' || c == '-' || c == '@' || c == '\t' || c == '\r';
 }
 
+/* The first character a spreadsheet keeps: those that trim on import
+ * drop leading blanks, so " =1+1" is a formula there too. */
+static const char *after_blanks(const char *s)
+{
+    for (;;) {
+        if (*s == ' ' || *s == '\t' || *s == '\r' || *s == '\n' || *s == '\v' || *s == '\f')
+            s++;
+        else if ((unsigned char)s[0] == 0xc2 && (unsigned char)s[1] == 0xa0)
+            s += 2;   /* no-break space */
+        else
+            return s;
+    }
+}
+
 char *rb_csv_field(const char *s, int always_quote)
 {
     const char *raw = s ? s : "";
     char *t = rb_text_escape(raw);
     if (!t)
         return NULL;
-    int guard = formula_start(raw[0]) || formula_start(t[0]);
+    int guard = formula_start(raw[0]) || formula_start(t[0])
+                || formula_start(*after_blanks(raw));
     int quote = always_quote || guard || strpbrk(t, ",\"") != NULL;
     if (!quote)
         return t;

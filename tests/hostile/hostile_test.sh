@@ -109,6 +109,63 @@ YAML
             || fail "JUnit is not well-formed XML"
     fi
     ;;
+format_chars)
+    # U+FFFE in a tag (valid UTF-8, not an XML 1.0 character), bidi and
+    # invisible format characters (RLO, isolates, zero width, line
+    # separator), C1 controls (NEL, CSI) and a formula after a blank
+    rlo=$(printf '\342\200\256'); fffe=$(printf '\357\277\276')
+    nel=$(printf '\302\205'); csi=$(printf '\302\233')
+    lri=$(printf '\342\201\246'); zw=$(printf '\342\200\213'); ls=$(printf '\342\200\250')
+    {
+        echo 'tag,base,amplitude'
+        echo "PASS${rlo}LIAF,$base,0.9 A*"
+        echo "i${lri}x${zw}y${ls}z,$base,"
+        echo "\" =1+1\",$base,"
+    } >"$s/l.csv"
+    cat >"$s/c.yaml" <<YAML
+extends: $base
+name: "n\\u0085c\\u009b2J\\u202eR\\u2066\\ufffe"
+motion:
+  type: harmonic
+  name: "m\\u202e\\ufffe"
+  amplitude: 0.9 A*
+  frequency: 4 Hz
+  duration: 0.5 s
+criteria: {kind: no-yield}
+YAML
+    run 1 batch "$s/l.csv" "$s/c.yaml" -q --junit "$s/b.xml" --csv "$s/b.csv" \
+        --json "$s/b.json"
+    run 1 batch "$s/l.csv" "$s/c.yaml"
+    cp "$s/out" "$s/table.txt"
+    run 1 check "$s/c.yaml" --html "$s/c.html" --svg "$s/c.svg" --text "$s/c.txt" \
+        --json "$s/c.json"
+    for f in b.xml b.csv table.txt c.html c-1.svg c-2.svg c.txt; do
+        for ch in "$fffe" "$rlo" "$nel" "$csi" "$lri" "$zw" "$ls"; do
+            ! LC_ALL=C grep -q "$ch" "$s/$f" || fail "$f holds a raw format or C1 character"
+        done
+    done
+    has "$s/table.txt" 'PASS\\u202eLIAF'
+    has "$s/b.xml" 'R\\u2066\\ufffe'
+    has "$s/c.html" 'n\\u0085c\\u009b2J\\u202eR\\u2066\\ufffe'
+    has "$s/c-1.svg" 'm\\u202e\\ufffe'
+    has "$s/b.csv" ",\"' =1+1\","
+    if command -v python3 >/dev/null 2>&1; then
+        python3 - "$s" <<'PY' || fail "XML, CSV or JSON"
+import csv, json, sys, xml.etree.ElementTree as E
+s = sys.argv[1]
+E.parse(s + "/b.xml")
+E.parse(s + "/c-1.svg")
+E.parse(s + "/c-2.svg")
+tags = {c["tag"] for c in json.load(open(s + "/b.json", encoding="utf-8"))["cases"]}
+# JSON keeps the text exact
+name = "n\u0085c\u009b2J\u202eR\u2066\ufffe"
+assert name in tags and "PASS\u202eLIAF" in tags, tags
+assert json.load(open(s + "/c.json", encoding="utf-8"))["case"]["name"] == name
+for r in csv.DictReader(open(s + "/b.csv", newline="", encoding="utf-8")):
+    assert r["tag"].lstrip()[:1] not in "=+-@", r["tag"]
+PY
+    fi
+    ;;
 no_quote)
     # a system file named as a record, a YAML file of another kind named as
     # a base: refused at a line and column, none of their text quoted into

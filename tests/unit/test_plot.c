@@ -381,14 +381,16 @@ static void test_html(void)
     char *html = NULL;
     rb_diag d;
     rb_diag_clear(&d);
-    CHECK(rb_plot_html_page(NULL, "a<b> & \"c\"", "x < y && z\n\tw\x01\xff", svgs, 2, &html,
-                            &d) == RB_OK);
+    CHECK(rb_plot_html_page(NULL, "a<b> & \"c\"", "x < y && z\n\tw\x01\xff\xc2\x85"
+                            "\xe2\x80\xae\xef\xbf\xbe", svgs, 2, &html, &d) == RB_OK);
     if (!html)
         return;
     CHECK(strncmp(html, "<!DOCTYPE html>\n<html xmlns=\"http://www.w3.org/1999/xhtml\"", 58) == 0);
     CHECK(strstr(html, "<title>a&lt;b&gt; &amp; &quot;c&quot;</title>") != NULL);
-    /* a control character is shown as the shared escaping shows it */
-    CHECK(strstr(html, "<pre class=\"report\">x &lt; y &amp;&amp; z\n\tw\\x01\xEF\xBF\xBD</pre>") != NULL);
+    /* a control character, a byte that is not UTF-8, a C1 control (NEL),
+     * an RLO and U+FFFE are shown as the shared escaping shows them */
+    CHECK(strstr(html, "<pre class=\"report\">x &lt; y &amp;&amp; z\n\tw\\x01\\xff\\u0085"
+                 "\\u202e\\ufffe</pre>") != NULL);
     CHECK(count(html, "<svg") == 2);
     CHECK(strstr(html, "<?xml") == NULL);
     /* nothing from outside the page */

@@ -39,6 +39,22 @@ static void test_escape(void)
     CHECK(esc_is("a\xc2\x9b" "2J", "a\\u009b2J"));
     CHECK(esc_is("\x9b" "2J\xff", "\\x9b2J\\xff"));
     CHECK(esc_is("back\\slash", "back\\slash"));
+    /* bidirectional and invisible format characters are shown, not sent:
+     * an RLO would reverse the rest of a table line */
+    CHECK(esc_is("a\xe2\x80\xae" "b", "a\\u202eb"));
+    CHECK(esc_is("\xe2\x81\xa6x\xe2\x81\xa9", "\\u2066x\\u2069"));
+    CHECK(esc_is("\xe2\x80\x8b\xe2\x80\x8f\xe2\x80\xa8\xe2\x80\xa9\xef\xbb\xbf",
+                 "\\u200b\\u200f\\u2028\\u2029\\ufeff"));
+    /* U+FFFE and U+FFFF are not XML 1.0 characters; surrogates' encodings
+     * are not UTF-8 */
+    CHECK(esc_is("t\xef\xbf\xbe\xef\xbf\xbf", "t\\ufffe\\uffff"));
+    CHECK(esc_is("\xed\xa0\x80", "\\xed\\xa0\\x80"));
+    /* the characters next to them are kept */
+    CHECK(esc_is("\xe2\x80\x8a\xe2\x80\x90\xef\xbf\xbd", "\xe2\x80\x8a\xe2\x80\x90\xef\xbf\xbd"));
+    /* preformatted text keeps its lines */
+    char *kept = rb_text_escape_lines("a\tb\nc\r\xc2\x85");
+    CHECK(kept && strcmp(kept, "a\tb\nc\\r\\u0085") == 0);
+    free(kept);
     CHECK(rb_text_needs_escape("x\x1b") && !rb_text_needs_escape("plain \xc3\xa9"));
     /* a fixed buffer never ends in half an escape */
     char buf[6];
@@ -58,6 +74,11 @@ static void test_csv(void)
     CHECK(csv_is("-1.5", "\"'-1.5\""));
     CHECK(csv_is("@SUM(A1)", "\"'@SUM(A1)\""));
     CHECK(csv_is("\t=1", "\"'\\t=1\""));
+    /* after leading blanks too: spreadsheets that trim on import */
+    CHECK(csv_is(" =1+1", "\"' =1+1\""));
+    CHECK(csv_is("  \t-2", "\"'  \\t-2\""));
+    CHECK(csv_is("\xc2\xa0@x", "\"'\xc2\xa0@x\""));
+    CHECK(csv_is(" P-1", " P-1"));
     CHECK(csv_is("\r=1", "\"'\\r=1\""));
     /* not at the start: harmless */
     CHECK(csv_is("a=b", "a=b"));
