@@ -115,6 +115,9 @@ typedef struct {
     double im_freq_hz;    /* spectral acceleration: at this frequency (the
                              cabinet's f0); 0 for the peak floor acceleration */
     rb_batch_limit limits[RB_N_LIMITS];
+    double p58_weights[RB_P58_MAX_WEIGHTS]; /* the case's fragility:
+                             damage_state_weights */
+    size_t n_p58_weights; /* 0: FEMA P-58's */
 } rb_batch_fragility;
 
 typedef struct {
@@ -249,6 +252,8 @@ typedef enum {
     RB_BATCH_CSV,         /* one row per case and motion */
     RB_BATCH_JSON,        /* what merge reads back */
     RB_BATCH_JUNIT,       /* one testcase per case */
+    RB_BATCH_P58,         /* FEMA P-58 fragility rows, one per case
+                             (with --fragility) */
     RB_BATCH_N_FORMATS
 } rb_batch_format;
 

@@ -105,6 +105,18 @@ typedef struct {
 
 #define RB_CASE_MAX_SWEEPS 8
 
+/* The most damage states a FEMA P-58 limit state's weights name. */
+#define RB_P58_MAX_WEIGHTS 5
+
+/* fragility: the anchorage fragility as a loss tool reads it
+ * (`fragility --p58`, docs/fragility.md). */
+typedef struct {
+    char *p58_id;             /* owned: the row's ID; NULL: the case name */
+    double weights[RB_P58_MAX_WEIGHTS]; /* of the anchorage failure's mutually
+                                 exclusive damage states, summing to 1 */
+    size_t n_weights;         /* 0: FEMA P-58's 0.7 and 0.3 */
+} rb_case_fragility_opts;
+
 typedef struct {
     char *path;               /* owned; the file as given */
     char *name;               /* owned; case name (defaults to the file stem) */
@@ -128,6 +140,7 @@ typedef struct {
     int has_anchor_static;
     double anchor_static_utilization;
     int anchor_static_clause;
+    rb_case_fragility_opts fragility; /* fragility: */
     rb_case_motion *motions;  /* owned array of n_motions (>= 1) */
     size_t n_motions;
     rb_case_target *targets;  /* owned array: the synthetic motions' targets */

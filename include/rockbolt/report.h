@@ -220,6 +220,38 @@ void rb_fragility_intensity_describe(const rb_case_fragility *f, char *buf, size
 char *rb_fragility_render_json(const rb_case *c, const rb_case_fragility *f);
 char *rb_fragility_render_csv(const rb_case *c, const rb_case_fragility *f);
 
+/* ---- FEMA P-58 fragility rows (docs/fragility.md, "FEMA P-58") ---------- */
+
+/* The limit states of a row, in the sequence a loss tool evaluates them:
+ * LS1 the anchorage fails (the bolts' toughness used up), with the
+ * damage states FEMA P-58 splits it into; LS2 the cabinet overturns. */
+#define RB_P58_N_LS 2
+extern const rb_limit_state rb_p58_limits[RB_P58_N_LS];
+/* FEMA P-58's weights of LS1's damage states: anchorage failure, and
+ * anchorage failure with the equipment lost. */
+#define RB_P58_DEFAULT_W1 0.7
+#define RB_P58_DEFAULT_W2 0.3
+
+/* One row: a lognormal per limit state in peak floor acceleration (g). */
+typedef struct {
+    const char *id;           /* the component's ID */
+    int fitted[RB_P58_N_LS];  /* 0: the limit state could not be fitted */
+    double median_g[RB_P58_N_LS];
+    double beta[RB_P58_N_LS];
+    const double *weights;    /* LS1's damage-state weights */
+    size_t n_weights;         /* 0: the P-58 defaults */
+} rb_p58_row;
+
+/* The header line and one row of the SimCenter / pelicun fragility CSV
+ * (ID, Incomplete, Demand-Type, ..., LS2-DamageStateWeights). New strings,
+ * NULL when memory runs out. Numbers are the shortest that read back to
+ * the same double. */
+char *rb_p58_render_head(void);
+char *rb_p58_render_row(const rb_p58_row *r);
+/* `fragility --p58`: the header and the row of a fragility in peak floor
+ * acceleration, its ID the case's fragility.p58_id or else its name. */
+char *rb_fragility_render_p58(const rb_case *c, const rb_case_fragility *f);
+
 /* ---- Response spectra (rb_run_spectra, rockbolt/run.h) ------------------- */
 
 /* Text for the terminal (each motion's peak, strong-motion duration and

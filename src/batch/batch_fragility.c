@@ -10,11 +10,14 @@
 #include "rockbolt/report.h"
 #include "rockbolt/run.h"
 
-static void keep(const rb_case_fragility *f, rb_batch_fragility *out)
+static void keep(const rb_case *c, const rb_case_fragility *f, rb_batch_fragility *out)
 {
     out->g_mps2 = f->g_mps2;
     out->level_mps2 = f->level_mps2;
     out->im_freq_hz = f->intensity == RB_IM_SA ? f->im_freq_hz : 0;
+    for (size_t i = 0; i < c->fragility.n_weights; i++)
+        out->p58_weights[i] = c->fragility.weights[i];
+    out->n_p58_weights = c->fragility.n_weights;
     for (int k = 0; k < RB_N_LIMITS; k++) {
         rb_batch_limit *l = &out->limits[k];
         l->fitted = f->fitted[k];
@@ -46,7 +49,7 @@ void rb_batch_case_fragility(rb_batch_slot *s, rb_batch_case *bc, int n_threads,
     if (s->frag_status == RB_OK && o->intensity != f.intensity)
         s->frag_status = rb_run_fragility_intensity(&s->c, o->intensity, &f, &s->frag_diag);
     if (s->frag_status == RB_OK) {
-        keep(&f, bc->fragility);
+        keep(&s->c, &f, bc->fragility);
         if (o->reports_dir) {
             s->frag_json = rb_fragility_render_json(&s->c, &f);
             s->frag_text = rb_fragility_render_text(&s->c, &f);

@@ -1,5 +1,5 @@
-/* The four summary formats, each as head, cases and tail (the pieces are
- * in batch_table.c, batch_json.c and batch_junit.c), so that a streamed
+/* The summary formats, each as head, cases and tail (the pieces are
+ * in batch_table.c, batch_json.c, batch_junit.c and batch_p58.c), so that a streamed
  * batch and a whole summary are written by the same code. */
 #include <stdlib.h>
 #include "batch_summary.h"
@@ -17,6 +17,7 @@ static const struct {
     [RB_BATCH_CSV] = {rb_batch_csv_head, rb_batch_csv_case, rb_batch_csv_tail},
     [RB_BATCH_JSON] = {rb_batch_json_head, rb_batch_json_case, rb_batch_json_tail},
     [RB_BATCH_JUNIT] = {rb_batch_junit_head, rb_batch_junit_case, rb_batch_junit_tail},
+    [RB_BATCH_P58] = {rb_batch_p58_head, rb_batch_p58_case, rb_batch_p58_tail},
 };
 
 static int known(rb_batch_format f)

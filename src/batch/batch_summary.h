@@ -33,6 +33,7 @@ RB_BATCH_PIECES(text)
 RB_BATCH_PIECES(csv)
 RB_BATCH_PIECES(json)
 RB_BATCH_PIECES(junit)
+RB_BATCH_PIECES(p58)
 
 /* "sha256:" and the hex SHA-256 of text (batch_digest.c). */
 void rb_batch_digest_text(const char *text, char out[RB_BATCH_DIGEST_CHARS]);

@@ -303,6 +303,8 @@ void rb_cv_note_field(rb_cctx *c, const char *field, const char *key,
 
 /* --- case_schema.c / case_motion.c / case_validate.c --------------------- */
 void rb_case_read_schema(rb_cctx *c, rb_ynode *root, rb_case *cs);
+/* case_fragility.c: the fragility: section */
+void rb_case_read_fragility(rb_cctx *c, rb_ynode *map, rb_case *cs);
 void rb_case_read_motions(rb_cctx *c, rb_ynode *root);
 void rb_case_read_design(rb_cctx *c, rb_ynode *d, rb_case *cs);   /* case_design.c */
 void rb_case_resolve(rb_cctx *c, rb_case *cs, const rb_ynode *root);

@@ -130,7 +130,7 @@ static rb_exit take_threads(const char *v, rb_cli_opts *o)
 
 enum { OPT_JSON = 256, OPT_TEXT, OPT_HISTORY, OPT_SVG, OPT_HTML, OPT_SANDBOX,
        OPT_SWEEP_CSV, OPT_CSV, OPT_SEED, OPT_DAMPING, OPT_FROM, OPT_TO, OPT_PER_OCTAVE,
-       OPT_AC156, OPT_X_SCALE, OPT_SWEEP_GAP, OPT_INTENSITY };
+       OPT_AC156, OPT_X_SCALE, OPT_SWEEP_GAP, OPT_INTENSITY, OPT_P58 };
 
 /* Every long option once, with the commands that take it: each command's
  * table is drawn from this one, so an option means the same everywhere. */
@@ -149,6 +149,7 @@ static const struct {
     {{"svg", required_argument, NULL, OPT_SVG}, CHECK | DESIGN | FRAGILITY | SPECTRUM},
     {{"html", required_argument, NULL, OPT_HTML}, CHECK | DESIGN | FRAGILITY | SPECTRUM},
     {{"csv", required_argument, NULL, OPT_CSV}, FRAGILITY | SPECTRUM},
+    {{"p58", required_argument, NULL, OPT_P58}, FRAGILITY},
     {{"sandbox", required_argument, NULL, OPT_SANDBOX},
      CHECK | DESIGN | FRAGILITY | SPECTRUM},
     {{"sweep-csv", required_argument, NULL, OPT_SWEEP_CSV}, DESIGN},
@@ -226,6 +227,8 @@ static rb_exit take_option(int c, const rb_cli_getopt *g, rb_cli_opts *o)
         return take_value(g->name, g->arg, &o->sweep_csv_path);
     case OPT_CSV:
         return take_value(g->name, g->arg, &o->csv_path);
+    case OPT_P58:
+        return take_value(g->name, g->arg, &o->p58_path);
     case OPT_SEED:
         return rb_cli_take_seed(g->arg, &o->seed);
     case OPT_SWEEP_GAP:
@@ -282,15 +285,15 @@ static rb_exit take_option(int c, const rb_cli_getopt *g, rb_cli_opts *o)
 /* Two outputs, or an output and the case, must not be the same file. */
 static rb_exit check_distinct(const rb_cli_opts *o)
 {
-    const char *p[8] = { o->json_path, o->text_path, o->history_path,
+    const char *p[9] = { o->json_path, o->text_path, o->history_path,
                          o->sweep_csv_path, o->svg_path, o->html_path, o->csv_path,
-                         o->case_path };
-    static const char *const what[8] = { "--json", "--text", "--history",
+                         o->p58_path, o->case_path };
+    static const char *const what[9] = { "--json", "--text", "--history",
                                          "--sweep-csv", "--svg", "--html", "--csv",
-                                         "the case" };
+                                         "--p58", "the case" };
     int a, b;
-    for (a = 0; a < 7; a++)
-        for (b = a + 1; b < 8; b++)
+    for (a = 0; a < 8; a++)
+        for (b = a + 1; b < 9; b++)
             if (p[a] && p[b] && strcmp(p[a], p[b]) == 0) {
                 rb_cli_error(p[a], what[a], "same file as %s", what[b]);
                 return RB_EXIT_USAGE;
@@ -414,6 +417,13 @@ rb_exit rb_cli_args_parse(int argc, char **argv, rb_cli_opts *o)
         rb_cli_error(NULL, NULL, "option '--x-scale' sets the intensity axis of the "
                      "fragility figure; the figure of --sweep-gap has the gap ratio along "
                      "x");
+        return RB_EXIT_USAGE;
+    }
+    /* a loss tool's row is one fragility in peak floor acceleration */
+    if (o->p58_path && (o->sweep_gap || o->intensity == RB_IM_SA)) {
+        rb_cli_error(NULL, "--p58", "FEMA P-58's fragilities are in the peak floor "
+                     "acceleration, one a component: not with %s",
+                     o->sweep_gap ? "--sweep-gap" : "--intensity sa");
         return RB_EXIT_USAGE;
     }
     if ((e = check_distinct(o)) != RB_EXIT_PASS)

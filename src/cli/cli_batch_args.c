@@ -54,7 +54,8 @@ static rb_exit parse_shard(const char *v, rb_batch_cli *o)
 }
 
 enum { OPT_JSON = 256, OPT_CSV, OPT_JUNIT, OPT_REPORTS, OPT_BASE, OPT_SANDBOX,
-       OPT_DESIGN, OPT_SHARD, OPT_ENCODING, OPT_FRAGILITY, OPT_SEED, OPT_INTENSITY };
+       OPT_DESIGN, OPT_SHARD, OPT_ENCODING, OPT_FRAGILITY, OPT_SEED, OPT_INTENSITY,
+       OPT_P58 };
 
 /* Options shared by batch and merge are the output files and --quiet. */
 static const struct option merge_longs[] = {
@@ -75,6 +76,7 @@ static const struct option batch_longs[] = {
     {"encoding", required_argument, NULL, OPT_ENCODING},
     {"design", no_argument, NULL, OPT_DESIGN},
     {"fragility", no_argument, NULL, OPT_FRAGILITY},
+    {"p58", required_argument, NULL, OPT_P58},
     {"seed", required_argument, NULL, OPT_SEED},
     {"intensity", required_argument, NULL, OPT_INTENSITY},
     {"shard", required_argument, NULL, OPT_SHARD},
@@ -96,6 +98,8 @@ static rb_exit take_option(int c, const rb_cli_getopt *g, rb_batch_cli *o)
         return take(g->name, g->arg, &o->csv_path);
     case OPT_JUNIT:
         return take(g->name, g->arg, &o->junit_path);
+    case OPT_P58:
+        return take(g->name, g->arg, &o->p58_path);
     case OPT_REPORTS:
         return take(g->name, g->arg, &o->reports_dir);
     case OPT_BASE:
@@ -204,6 +208,16 @@ rb_exit rb_cli_batch_parse(int argc, char **argv, int is_merge, rb_batch_cli *o)
     if (!o->help && o->intensity_given && !o->fragility) {
         rb_cli_error(NULL, "--intensity", "the intensity of the fragility needs "
                      "--fragility");
+        return RB_EXIT_USAGE;
+    }
+    if (!o->help && o->p58_path && !o->fragility) {
+        rb_cli_error(NULL, "--p58", "the FEMA P-58 rows are each case's fragility: "
+                     "they need --fragility");
+        return RB_EXIT_USAGE;
+    }
+    if (!o->help && o->p58_path && o->intensity == RB_IM_SA) {
+        rb_cli_error(NULL, "--p58", "FEMA P-58's fragilities are in the peak floor "
+                     "acceleration: not with --intensity sa");
         return RB_EXIT_USAGE;
     }
     if (!o->help && o->n_inputs == 0) {

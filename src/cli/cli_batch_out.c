@@ -33,8 +33,8 @@ rb_exit rb_cli_plan_error(rb_status st, const rb_diag *d)
 
 rb_exit rb_cli_batch_check_outputs(rb_batch_cli *o)
 {
-    const char *paths[3] = {o->json_path, o->csv_path, o->junit_path};
-    static const char *const names[3] = {"--json", "--csv", "--junit"};
+    const char *paths[4] = {o->json_path, o->csv_path, o->junit_path, o->p58_path};
+    static const char *const names[4] = {"--json", "--csv", "--junit", "--p58"};
     rb_status st = RB_OK;
     rb_diag d;
     rb_diag_clear(&d);
@@ -44,7 +44,7 @@ rb_exit rb_cli_batch_check_outputs(rb_batch_cli *o)
         st = rb_outplan_add_input(&o->plan, o->inputs[i], &d);
     if (st == RB_OK && o->base)
         st = rb_outplan_add_input(&o->plan, o->base, &d);
-    for (int i = 0; i < 3 && st == RB_OK; i++)
+    for (int i = 0; i < 4 && st == RB_OK; i++)
         if (paths[i])
             st = rb_outplan_add(&o->plan, names[i], paths[i], &d);
     return st == RB_OK ? RB_EXIT_PASS : rb_cli_plan_error(st, &d);
@@ -58,6 +58,7 @@ static rb_status fill(void *ctx, size_t i, FILE *fp, rb_diag *d)
     const char *opt = o->plan.outs[i].opt;
     rb_batch_format f = strcmp(opt, "--json") == 0 ? RB_BATCH_JSON
                       : strcmp(opt, "--csv") == 0 ? RB_BATCH_CSV
+                      : strcmp(opt, "--p58") == 0 ? RB_BATCH_P58
                       : RB_BATCH_JUNIT;
     rb_status st = rb_cli_stream_copy(o, f, s, fp);
     if (st != RB_OK && o->spool_failed)

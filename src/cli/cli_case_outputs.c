@@ -12,12 +12,13 @@
 
 rb_exit rb_cli_plan_case_outputs(const rb_cli_opts *o, rb_outplan *p)
 {
-    const char *paths[4] = {o->json_path, o->csv_path, o->svg_path, o->html_path};
-    static const char *const opts[4] = {"--json", "--csv", "--svg", "--html"};
+    const char *paths[5] = {o->json_path, o->csv_path, o->svg_path, o->html_path,
+                            o->p58_path};
+    static const char *const opts[5] = {"--json", "--csv", "--svg", "--html", "--p58"};
     rb_diag d;
     rb_diag_clear(&d);
     rb_status st = rb_outplan_add_input(p, o->case_path, &d);
-    for (int k = 0; k < 4 && st == RB_OK; k++)
+    for (int k = 0; k < 5 && st == RB_OK; k++)
         if (paths[k])
             st = rb_outplan_add(p, opts[k], paths[k], &d);
     return st == RB_OK ? RB_EXIT_PASS : rb_cli_plan_error(st, &d);
@@ -68,6 +69,8 @@ static rb_status fill(void *ctx, size_t i, FILE *fp, rb_diag *d)
         text = r->json(r->ctx);
     else if (strcmp(opt, "--csv") == 0)
         text = r->csv(r->ctx);
+    else if (strcmp(opt, "--p58") == 0 && r->p58)
+        text = r->p58(r->ctx);
     else if (strcmp(opt, "--svg") == 0)
         st = r->figure(r->ctx, r->title, &text, d);
     else

@@ -41,6 +41,12 @@ static char *csv_of(const void *ctx)
                     : rb_fragility_render_csv(o->c, o->f);
 }
 
+static char *p58_of(const void *ctx)
+{
+    const outputs *o = ctx;
+    return rb_fragility_render_p58(o->c, o->f);
+}
+
 static rb_status figure(const void *ctx, const char *title, char **out, rb_diag *d)
 {
     const outputs *o = ctx;
@@ -100,7 +106,8 @@ rb_exit rb_cli_fragility_run(const rb_cli_opts *o)
     if (e == RB_EXIT_PASS) {
         snprintf(title, sizeof title, "Fragility of %.200s%s", c.name ? c.name : "the case",
                  o->sweep_gap ? " against the gap ratio" : "");
-        rb_cli_renders r = {&out, title, "fragility", text_of, json_of, csv_of, figure};
+        rb_cli_renders r = {&out, title, "fragility", text_of, json_of, csv_of, figure,
+                           p58_of};
         e = rb_cli_emit_case_outputs(o, &p, &r);
     }
     rb_case_fragility_free(&f);

@@ -6,3 +6,5 @@ rb_script_test(NAME fragility_batch_property SCRIPT tests/fragility/batch_proper
 # --sweep-gap: each point the fragility of the case with that gap ratio;
 # the figure; bad ranges refused
 rb_script_test(NAME fragility_sweep_gap SCRIPT tests/fragility/sweep.py LABEL fragility)
+# --p58: the FEMA P-58 rows, read back with Python's csv module
+rb_script_test(NAME fragility_p58 SCRIPT tests/fragility/p58.py LABEL fragility)
