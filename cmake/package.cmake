@@ -39,6 +39,23 @@ add_custom_command(
   DEPENDS rb_helpgen ${PROJECT_SOURCE_DIR}/src/cli/help.txt
   COMMENT "Generating the help texts and rockbolt.1 from src/cli/help.txt")
 target_sources(rockbolt PRIVATE ${PROJECT_BINARY_DIR}/generated/cli_help_text.c)
+
+# rockbolt-case(5), the case file's manual, from docs/case-format.md: one
+# source, so that the page and the document cannot disagree. Built with the
+# tool, so that every build that has one has its manual.
+add_executable(rb_mdman ${PROJECT_SOURCE_DIR}/tools/mdman.c)
+set_target_properties(rb_mdman PROPERTIES INTERPROCEDURAL_OPTIMIZATION OFF)
+target_compile_options(rb_mdman PRIVATE ${RB_WARNINGS})
+add_custom_command(
+  OUTPUT ${PROJECT_BINARY_DIR}/man/rockbolt-case.5
+  COMMAND ${CMAKE_COMMAND} -E make_directory ${PROJECT_BINARY_DIR}/man
+  COMMAND rb_mdman ${PROJECT_SOURCE_DIR}/docs/case-format.md
+          ${PROJECT_BINARY_DIR}/man/rockbolt-case.5 rockbolt-case 5 ${PROJECT_VERSION}
+          "the case files of rockbolt: keys, units, defaults and limits"
+  DEPENDS rb_mdman ${PROJECT_SOURCE_DIR}/docs/case-format.md
+  COMMENT "Generating rockbolt-case.5 from docs/case-format.md")
+add_custom_target(rb_man_case DEPENDS ${PROJECT_BINARY_DIR}/man/rockbolt-case.5)
+add_dependencies(rockbolt rb_man_case)
 target_include_directories(rockbolt PRIVATE ${PROJECT_SOURCE_DIR}/src/cli)
 
 # librockbolt, static and shared, from the sources of every library,
@@ -122,9 +139,13 @@ install(FILES ${PROJECT_SOURCE_DIR}/templates/report.txt
         DESTINATION ${CMAKE_INSTALL_DATADIR}/rockbolt/templates)
 install(FILES ${PROJECT_BINARY_DIR}/man/rockbolt.1
         DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
+install(FILES ${PROJECT_BINARY_DIR}/man/rockbolt-case.5
+        DESTINATION ${CMAKE_INSTALL_MANDIR}/man5)
 install(FILES ${PROJECT_BINARY_DIR}/completion/rockbolt
         DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions)
 install(FILES ${PROJECT_BINARY_DIR}/completion/_rockbolt
         DESTINATION ${CMAKE_INSTALL_DATADIR}/zsh/site-functions)
 install(FILES ${PROJECT_SOURCE_DIR}/LICENSE ${PROJECT_SOURCE_DIR}/README.md
         DESTINATION ${CMAKE_INSTALL_DOCDIR})
+# the documents the README and the manuals refer to, with their figures
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/docs)

@@ -43,7 +43,9 @@ for f in bin/rockbolt "$LIBDIR/librockbolt.a" "$LIBDIR/librockbolt.so" \
          share/rockbolt/records/PROVENANCE.md \
          share/rockbolt/templates/starter.yaml share/rockbolt/templates/report.txt \
          share/man/man1/rockbolt.1 share/bash-completion/completions/rockbolt \
-         share/zsh/site-functions/_rockbolt share/doc/rockbolt/LICENSE; do
+         share/zsh/site-functions/_rockbolt share/doc/rockbolt/LICENSE \
+         share/man/man5/rockbolt-case.5 share/doc/rockbolt/docs/case-format.md \
+         share/doc/rockbolt/docs/fragility.md; do
     [ -e "$P/$f" ] || fail "not installed: $f"
 done
 echo "installed: binary, library, headers, pkg-config, CMake config, data, man page, completions"
@@ -104,6 +106,25 @@ echo "RB_DATA_DIR: overrides, and a wrong one names the file"
 if command -v man >/dev/null 2>&1; then
     man -l "$M/share/man/man1/rockbolt.1" >man.txt 2>/dev/null || fail "man -l"
     grep -q "ROCKBOLT CHECK" man.txt || fail "man -l: no check section"
+    grep -q "rockbolt-case.5" man.txt || fail "man rockbolt does not name rockbolt-case(5)"
+    # the case file's page, found by man in the moved tree, holds every
+    # section and every table key of the document it is made from
+    MANPATH=$M/share/man MANWIDTH=100 man 5 rockbolt-case >case.txt 2>"$S/err" \
+        || fail "man 5 rockbolt-case"
+    grep -q "^ROCKBOLT-CASE(5)" case.txt || fail "man 5 rockbolt-case: no title"
+    DOC=$M/share/doc/rockbolt/docs/case-format.md
+    sed -n 's/^#\{2,3\} //p' "$DOC" | sed 's/`//g' >heads.txt
+    while IFS= read -r h; do
+        grep -qiF -- "$h" case.txt || fail "man 5 rockbolt-case: no section '$h'"
+    done <heads.txt
+    sed -n 's/^| `\([a-z_0-9]*\)`.*/\1/p' "$DOC" | sort -u >keys.txt
+    [ "$(wc -l <keys.txt)" -gt 60 ] || fail "case-format.md: only $(wc -l <keys.txt) keys read"
+    while IFS= read -r k; do
+        grep -qE "^ {7}$k([ ,]|\$)" case.txt || fail "man 5 rockbolt-case: no entry '$k'"
+    done <keys.txt
+    grep -q "man 5 rockbolt-case" "$M/share/rockbolt/templates/starter.yaml" \
+        || fail "the starter does not point at man 5 rockbolt-case"
+    echo "man 5 rockbolt-case: $(wc -l <heads.txt) sections, $(wc -l <keys.txt) keys"
 fi
 
 # a program against the installed library
