@@ -326,6 +326,21 @@ static size_t planned_sweeps(const rb_cli_opts *o, const rb_case *c)
     return n_freq + c->n_motions * n_amp;
 }
 
+/* A numbered series of n files cannot be one stream ("-", /dev/stdout, a
+ * device): its names would be "--1", "/dev/stdout-1". Refused, naming how
+ * many files the run makes, unless there is one. */
+static rb_exit refuse_stream_series(const char *opt, const char *path, size_t n,
+                                    const char *what)
+{
+    if (n <= 1 || (strcmp(path, "-") != 0 && strncmp(path, "/dev/", 5) != 0))
+        return RB_EXIT_PASS;
+    rb_cli_error(path, opt, "this run writes %zu %s, as FILE-1 to FILE-%zu, and '%s' "
+                 "takes one; give a file name%s", n, what, n, path,
+                 strcmp(opt, "--svg") == 0 ? ", or --html - for every figure in one page"
+                                           : "");
+    return RB_EXIT_USAGE;
+}
+
 /* After loading: every file the case was read from, and the numbered
  * sweep and figure files, whose count the case fixes. All before solving. */
 static rb_exit plan_loaded(const rb_cli_opts *o, check_run *r)
@@ -336,6 +351,10 @@ static rb_exit plan_loaded(const rb_cli_opts *o, check_run *r)
     rb_exit e = RB_EXIT_PASS;
     for (k = 0; k < r->c.n_input_files && e == RB_EXIT_PASS; k++)
         e = plan_input(r, r->c.input_files[k]);
+    if (e == RB_EXIT_PASS && o->sweep_csv_path)
+        e = refuse_stream_series("--sweep-csv", o->sweep_csv_path, n_sw, "sweep tables");
+    if (e == RB_EXIT_PASS && o->svg_path)
+        e = refuse_stream_series("--svg", o->svg_path, n_fig, "figures");
     for (k = 0; o->sweep_csv_path && k < n_sw && e == RB_EXIT_PASS; k++) {
         const char *p = rb_cli_numbered_name(o->sweep_csv_path, k, n_sw, name, sizeof name);
         if (!p) {

@@ -441,6 +441,20 @@ test_figures() {
         grep -qF "$w" "$D/p.html" || fail "the page lacks '$w'"
     done
     run check "$HARMONIC" --svg "$D/same" --html "$D/same"; expect_rc 2 "--svg and --html on one file"
+    # "-" is standard output: one figure goes there whole; several are
+    # refused before any solving, nothing named "--1" written
+    run check cases/free-standing.yaml --svg - --quiet
+    [ "$rc" -eq 0 ] || [ "$rc" -eq 1 ] || fail "--svg - of one figure: exit code $rc"
+    [ "$(head -c 4 "$D/out")" = "<svg" ] && [ "$(grep -c '</svg>' "$D/out")" -eq 1 ] ||
+        fail "--svg - of one figure: not one SVG on stdout"
+    (cd "$D" && "$RB" check "$OLDPWD/$HARMONIC" --svg - >out 2>err); rc=$?
+    expect_rc 2 "check --svg - of two figures"
+    grep -q "^-: error: --svg: this run writes 2 figures.*'-' takes one" "$D/err" ||
+        fail "--svg - of two figures: no clear refusal"
+    [ -s "$D/out" ] && fail "--svg - of two figures wrote to stdout"
+    ls "$D" | grep -q -e '^--' && fail "--svg - wrote a numbered file"
+    run design "$DESIGN" --sweep-csv - --quiet; expect_rc 2 "--sweep-csv - of two sweeps"
+    grep -q "this run writes 2 sweep tables" "$D/err" || fail "--sweep-csv -: no clear refusal"
     no_temp_files "$D"
     echo "figures: ok"
 }
