@@ -340,8 +340,28 @@ static void draw_markers(rb_strbuf *b, const marker *m, int n, const rb_panel *t
     }
 }
 
-/* What the motion is, for the title: the record's file name, or the
- * closed form with its frequency or duration. */
+/* A synthetic motion's description ("synthetic: AC156 (2010) S_DS ..., z/h
+ * 1, seed 1, motion 1"), whose "/" are not directories; only a table's file
+ * loses its directory. */
+static const char *synthetic_what(const char *src, char *buf, size_t n)
+{
+    static const char table[] = "synthetic: table ";
+    const char *file = src + sizeof table - 1, *end, *slash;
+    if (strncmp(src, table, sizeof table - 1) != 0 || !(end = strstr(file, ", seed ")))
+        return src;
+    slash = NULL;
+    for (const char *q = file; q < end; q++)
+        if (*q == '/')
+            slash = q;
+    if (!slash)
+        return src;
+    snprintf(buf, n, "%.*s%s", (int)(sizeof table - 1), src, slash + 1);
+    return buf;
+}
+
+/* What the motion is, for the title: the record's file name, a synthetic
+ * motion's target and seed, or the closed form with its frequency or
+ * duration. */
 static const char *motion_what(const rb_report_motion *rm, char *buf, size_t n)
 {
     const rb_case_motion *cm = rm->motion;
@@ -354,6 +374,8 @@ static const char *motion_what(const rb_report_motion *rm, char *buf, size_t n)
         return buf;
     case RB_MOTION_SAMPLED:
         src = cm->source ? cm->source : "record";
+        if (strncmp(src, "synthetic:", 10) == 0)
+            return synthetic_what(src, buf, n);
         slash = strrchr(src, '/');
         snprintf(buf, n, "record %s", slash ? slash + 1 : src);
         return buf;

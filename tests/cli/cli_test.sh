@@ -459,6 +459,28 @@ test_figures() {
     echo "figures: ok"
 }
 
+# A synthetic motion's figure is titled with its whole description: the
+# "/" of "z/h" is no directory (the title was "(record h 0.5, seed 1, ...)"),
+# and only a table's file loses its directory.
+test_titles() {
+    mkdir -p "$D/spectra"
+    printf 'f_hz,sa_g\n1,0.5\n50,0.5\n' >"$D/spectra/flat.csv"
+    cat >"$D/syn.yaml" <<EOF
+extends: $PWD/cases/base/reference-cabinet.yaml
+name: EP-R1
+motions:
+  - {type: synthetic, spectrum: {type: ac156, sds: 1.0 g, z_over_h: 0.5}, seed: 1, duration: 8 s}
+  - {type: synthetic, spectrum: {type: table, file: spectra/flat.csv}, seed: 2, duration: 8 s}
+EOF
+    run check "$D/syn.yaml" --svg "$D/syn.svg" --quiet
+    [ "$rc" -eq 0 ] || [ "$rc" -eq 1 ] || fail "exit code $rc"
+    grep -q '>EP-R1 .* ac156 (synthetic: AC156 (2010) S_DS [^,]*, z/h 0.5, seed 1, motion 1)</text>' \
+        "$D/syn-1.svg" || fail "AC156 title: $(grep -o 'bold">[^<]*' "$D/syn-1.svg" | head -1)"
+    grep -q '>EP-R1 .* table (synthetic: table flat.csv, seed 2, motion 1)</text>' \
+        "$D/syn-3.svg" || fail "table title: $(grep -o 'bold">[^<]*' "$D/syn-3.svg" | head -1)"
+    echo "titles: ok"
+}
+
 # Output units: a case written in US customary units reports in kip, in,
 # ksi, ft-lbf and g; output_units: si turns it back to kN, mm, MPa, J; each
 # shown value is the SI one converted, to 1e-9 relative.
@@ -528,7 +550,7 @@ EOT
 }
 
 case "$T" in
-    help|usage|harmonic|consistency|stdout|elcentro|unwritable|preserved|history|init|template|solver_error|free_standing|design|design_threads|suite|figures|units)
+    help|usage|harmonic|consistency|stdout|elcentro|unwritable|preserved|history|init|template|solver_error|free_standing|design|design_threads|suite|figures|units|titles)
         "test_$T" ;;
     *) echo "unknown test $T"; exit 1 ;;
 esac

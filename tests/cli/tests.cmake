@@ -9,4 +9,4 @@ rb_shell_tests(PREFIX cli SCRIPT tests/cli/cli_test.sh SCRATCH cli LABEL cli TIM
                TOOLS $<TARGET_FILE:jsonget>
                TESTS help usage harmonic consistency stdout elcentro unwritable preserved
                      history init template solver_error free_standing design
-                     design_threads suite figures units)
+                     design_threads suite figures units titles)
