@@ -30,7 +30,7 @@ typedef struct {
  * other unit of the table is SI. */
 static rb_unit_system unit_system_of(const char *name)
 {
-    static const char *const us[] = {"in", "ft", "lb", "lbm", "kip", "lbf",
+    static const char *const us[] = {"in", "ft", "lb", "lbm", "lbs", "kip", "kips", "lbf",
         "psi", "ksi", "in-lb/in^3", "in-lbf/in^3", "in/s^2", "ft/s^2",
         "in^2", "lb*in^2", "lb*ft^2", "lbf/in", "kip/in", NULL};
     static const char *const neutral[] = {"%", "g", "A*", "Hz", "rad/s",
@@ -51,6 +51,9 @@ static const rb_unit unit_table[] = {
     {"ft", RB_DIM_LENGTH, 0.3048},
     {"kg", RB_DIM_MASS, 1.0}, {"lb", RB_DIM_MASS, 0.45359237},
     {"lbm", RB_DIM_MASS, 0.45359237},
+    /* the plurals engineers write on schedules: a weight of "1200 lbs" is
+     * 1200 lb of mass, and "kips" are kips */
+    {"lbs", RB_DIM_MASS, 0.45359237}, {"kips", RB_DIM_FORCE, 1e3 * RB_LBF},
     {"N", RB_DIM_FORCE, 1.0}, {"kN", RB_DIM_FORCE, 1e3},
     {"MN", RB_DIM_FORCE, 1e6}, {"kip", RB_DIM_FORCE, 1e3 * RB_LBF},
     {"lbf", RB_DIM_FORCE, RB_LBF},
@@ -207,6 +210,45 @@ static size_t unit_scan_number(const char *s)
     return i;
 }
 
+/* A fraction after the whole number of nlen bytes at s (its value *v):
+ * "1/2" or a mixed number "1 1/2", "1-1/2", as US drawings size bolts. The
+ * new length of the number, nlen when none follows, or 0 for a zero
+ * denominator. Only whole numbers take part: "1.5/2" is no fraction. */
+static size_t unit_scan_fraction(const char *s, size_t nlen, double *v)
+{
+    size_t i = 0, j, k;
+    if (s[i] == '+' || s[i] == '-')
+        i++;
+    for (j = i; j < nlen; j++)
+        if (!isdigit((unsigned char)s[j]))
+            return nlen;
+    double sign = s[0] == '-' ? -1.0 : 1.0, whole = fabs(*v), num;
+    j = nlen;
+    if (s[j] == ' ' || s[j] == '-') {
+        /* a mixed number: whole, blank or hyphen, then num/den */
+        for (k = j + 1; isdigit((unsigned char)s[k]); k++)
+            ;
+        if (k == j + 1 || s[k] != '/')
+            return nlen;
+        num = strtod(s + j + 1, NULL);
+        j = k;
+    } else if (s[j] == '/') {
+        num = whole;
+        whole = 0;
+    } else {
+        return nlen;
+    }
+    for (k = j + 1; isdigit((unsigned char)s[k]); k++)
+        ;
+    if (k == j + 1)
+        return nlen;
+    double den = strtod(s + j + 1, NULL);
+    if (den == 0)
+        return 0;
+    *v = sign * (whole + num / den);
+    return k;
+}
+
 /* 1 if s (after an optional sign) spells NaN or infinity in any case, in
  * C's spelling or YAML's (".nan", ".inf"). */
 static int unit_is_nonfinite_word(const char *s)
@@ -227,6 +269,10 @@ static rb_status unit_explain(const char *u, size_t len, rb_dim dim,
     if (other && other->factor == 0.0)
         return unit_fail(msg, size, "'A*' is only for floor accelerations "
                             "(expected %s: %s)", di->phrase, di->units);
+    if (other && other->dim == RB_DIM_MASS && dim == RB_DIM_FORCE)
+        return unit_fail(msg, size, "'%.*s' is a unit of mass, not of force (a "
+                            "pound of force is 'lbf'; expected %s)", (int)len, u,
+                            di->units);
     if (other)
         return unit_fail(msg, size, "'%.*s' is a unit of %s, not of %s "
                             "(expected %s)", (int)len, u,
@@ -286,6 +332,10 @@ rb_status rb_unit_parse(const char *text, rb_dim dim, rb_quantity *out,
     double v = strtod(num, NULL);
     if (errno == ERANGE && fabs(v) > 1.0)
         return unit_fail(msg, msg_size, "number '%s' is out of range", num);
+    size_t flen = unit_scan_fraction(text, nlen, &v);
+    if (flen == 0)
+        return unit_fail(msg, msg_size, "'%.*s' divides by zero", (int)len, text);
+    nlen = flen;
     const char *u = text + nlen;
     while (u < text + len && isspace((unsigned char)*u))
         u++;
@@ -299,7 +349,11 @@ rb_status rb_unit_parse(const char *text, rb_dim dim, rb_quantity *out,
                             num, di->phrase, di->units);
     }
     const rb_unit *unit = unit_find(u, ulen, 0);
-    if (!unit || unit->dim != dim)
+    /* an energy per volume is a stress in SI (J/m^3 = Pa), and a toughness
+     * is often given as one: 1 psi is 1 in-lbf/in^3, 1 MPa 1 MJ/m^3 */
+    int stress_for_energy = unit && dim == RB_DIM_ENERGY_DENSITY
+                            && unit->dim == RB_DIM_STRESS;
+    if (!unit || (unit->dim != dim && !stress_for_energy))
         return unit_explain(u, ulen, dim, msg, msg_size);
     out->system = unit_system_of(unit->name);
     if (unit->factor == 0.0) {

@@ -137,12 +137,41 @@ static void test_errors(void)
     parse_bad("1.5.3 m", RB_DIM_LENGTH, "unexpected text '.3 m' after the number");
     parse_bad("82,700 kJ/m^3", RB_DIM_ENERGY_DENSITY, "unexpected text ',700 kJ/m^3'");
     parse_bad("0.01 0.02", RB_DIM_RATIO, "unexpected text '0.02' after the number");
+    parse_bad("1/0 in", RB_DIM_LENGTH, "'1/0 in' divides by zero");
+    parse_bad("1 1/0 in", RB_DIM_LENGTH, "divides by zero");
+    parse_bad("1.5/2 in", RB_DIM_LENGTH, "unexpected text '/2 in' after the number");
+    parse_bad("1/ in", RB_DIM_LENGTH, "unexpected text '/ in' after the number");
+    parse_bad("1 lbs", RB_DIM_FORCE, "'lbs' is a unit of mass, not of force (a pound of "
+              "force is 'lbf'");
+    parse_bad("5 kips", RB_DIM_STRESS, "'kips' is a unit of force, not of stress");
+    /* a stress stands for an energy per volume, not the other way round */
+    parse_bad("5 kJ/m^3", RB_DIM_STRESS, "is a unit of energy per volume, not of stress");
     CHECK(strcmp(rb_dim_str(RB_DIM_STRESS), "a stress") == 0);
     CHECK(strstr(rb_dim_units(RB_DIM_ACCEL), "A*") != NULL);
 }
 
+/* What a US schedule writes: plurals, fractions of an inch, a toughness
+ * as a stress; each against its value worked by hand. */
+static void test_schedule_spellings(void)
+{
+    CHECK_REL(parse_ok("1200 lbs", RB_DIM_MASS), 1200 * 0.45359237, 1e-15);
+    CHECK_REL(parse_ok("12 kips", RB_DIM_FORCE), 12 * 4448.2216152605, 1e-12);
+    CHECK_REL(parse_ok("1/2 in", RB_DIM_LENGTH), 0.0127, 1e-15);
+    CHECK_REL(parse_ok("3/4in", RB_DIM_LENGTH), 0.01905, 1e-15);
+    CHECK_REL(parse_ok("1 1/2 in", RB_DIM_LENGTH), 0.0381, 1e-15);
+    CHECK_REL(parse_ok("3-15/16 in", RB_DIM_LENGTH), 3.9375 * 0.0254, 1e-15);
+    CHECK_REL(parse_ok("-1/4 in", RB_DIM_LENGTH), -0.00635, 1e-15);
+    CHECK_REL(parse_ok("1/2", RB_DIM_RATIO), 0.5, 1e-15);
+    CHECK_REL(parse_ok("12000 psi", RB_DIM_ENERGY_DENSITY), 12000 * 6894.757293168361,
+              1e-12);
+    CHECK_REL(parse_ok("82.7 MPa", RB_DIM_ENERGY_DENSITY), 82.7e6, 1e-15);
+    /* "1-1/2" is a mixed number, not 1 minus a half */
+    CHECK_REL(parse_ok("1-1/2 in", RB_DIM_LENGTH), 0.0381, 1e-15);
+}
+
 int main(void)
 {
+    test_schedule_spellings();
     test_lengths_masses_forces();
     test_stresses_energies();
     test_accelerations();
