@@ -396,7 +396,8 @@ static void rd_digest(rd_ctx *r, const cJSON *dg, const rb_batch_case *c,
     cJSON *arr = cJSON_CreateArray();
     char *text = arr && add_case(arr, c, s)
         ? cJSON_PrintUnformatted(cJSON_GetArrayItem(arr, 0)) : NULL;
-    snprintf(msg, sizeof msg, "case %zu (tag '%.100s') ", c->index, c->tag ? c->tag : "?");
+    /* counted from 1, as merge's other messages count cases */
+    snprintf(msg, sizeof msg, "case %zu (tag '%.100s') ", c->index + 1, c->tag ? c->tag : "?");
     if (!text) {
         rd_fail(r, "digest", "out of memory");
     } else if (!cJSON_IsString(dg)) {

@@ -88,15 +88,17 @@ rb_status rb_batch_merge(const rb_batch_summary *shards, size_t n,
     if (!at)
         return RB_ERR_NOMEM;
     rb_status st = RB_OK;
+    /* messages count cases from 1, as summaries and shards are counted and
+     * as a reader counts a list's items (the JSON's index is from 0) */
     for (size_t k = 0; k < n && st == RB_OK; k++) {
         for (size_t i = 0; i < shards[k].n_cases && st == RB_OK; i++) {
             rb_batch_case *c = &shards[k].cases[i];
             if (c->index >= total)
-                st = fail(diag, "case index %zu is outside the work list of %zu",
-                          c->index, total);
+                st = fail(diag, "case %zu is outside the work list of %zu",
+                          c->index + 1, total);
             else if (at[c->index])
                 st = fail(diag, "case %zu is in more than one summary (summary %zu)",
-                          c->index, k + 1);
+                          c->index + 1, k + 1);
             else
                 at[c->index] = c;
         }
@@ -104,7 +106,7 @@ rb_status rb_batch_merge(const rb_batch_summary *shards, size_t n,
     for (size_t i = 0; i < total && st == RB_OK; i++)
         if (!at[i])
             st = fail(diag, "case %zu of %zu is in no summary: a shard is missing",
-                      i, total);
+                      i + 1, total);
     if (st == RB_OK && !(out->cases = calloc(total ? total : 1, sizeof *out->cases)))
         st = RB_ERR_NOMEM;
     out->design = shards[0].design;

@@ -102,10 +102,11 @@ shards)
     done
     # contiguous shard sets only: a missing or repeated shard is refused
     run 2 merge "$s/s1.json" "$s/s2.json" --json "$s/bad.json"
-    has "$s/err" "a shard is missing"
+    # cases counted from 1 in every message: shard 3 of 3 holds the 3rd
+    has "$s/err" "error: merge: case 3 of 10 is in no summary: a shard is missing"
     [ ! -e "$s/bad.json" ] || fail "merge wrote an output after an error"
     run 2 merge "$s/s1.json" "$s/s1.json" "$s/s2.json" "$s/s3.json"
-    has "$s/err" "in more than one summary"
+    has "$s/err" "error: merge: case 1 is in more than one summary (summary 2)"
     ;;
 errors)
     # exit codes: 0 all pass, 1 a failure, 2 an unreadable case wins over 1
