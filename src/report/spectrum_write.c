@@ -15,14 +15,51 @@ static const char *motion_name(const rb_case *c, size_t m)
     return c->motions[m].name ? c->motions[m].name : "?";
 }
 
-static void text_motion(rb_strbuf *b, const rb_case *c, const rb_case_spectra *s, size_t m)
+/* Characters a terminal shows for s: UTF-8 lead bytes (the escaped names
+ * are valid UTF-8). */
+static size_t shown_width(const char *s)
+{
+    size_t n = 0;
+    for (; *s; s++)
+        n += ((unsigned char)*s & 0xC0) != 0x80;
+    return n;
+}
+
+/* s in a column of width w, padded on the left (right-aligned) or right:
+ * never cut, so that a name is read whole however long it is. */
+static void put_padded(rb_strbuf *b, const char *s, size_t w, int right)
+{
+    size_t n = shown_width(s), pad = n < w ? w - n : 0;
+    if (!right)
+        rb_strbuf_puts(b, s);
+    for (size_t i = 0; i < pad; i++)
+        rb_strbuf_puts(b, " ");
+    if (right)
+        rb_strbuf_puts(b, s);
+}
+
+/* The width of the motion column: its header's, or the longest name's. */
+static size_t name_width(const rb_case *c, size_t n, size_t least)
+{
+    char name[128];
+    size_t w = least;
+    for (size_t m = 0; m < n; m++) {
+        size_t k = shown_width(rb_text_escape_buf(motion_name(c, m), name, sizeof name));
+        if (k > w)
+            w = k;
+    }
+    return w;
+}
+
+static void text_motion(rb_strbuf *b, const rb_case *c, const rb_case_spectra *s, size_t m,
+                        size_t width)
 {
     const rb_motion_spectrum *ms = &s->motions[m];
     const rb_case_motion *cm = &c->motions[m];
     double g = s->g_mps2;
     char name[128];
-    rb_strbuf_printf(b, "%-24.24s %9.4f", rb_text_escape_buf(motion_name(c, m), name,
-                                                            sizeof name), ms->peak_mps2 / g);
+    put_padded(b, rb_text_escape_buf(motion_name(c, m), name, sizeof name), width, 0);
+    rb_strbuf_printf(b, " %9.4f", ms->peak_mps2 / g);
     if (ms->arias_t95_s > ms->arias_t5_s)
         rb_strbuf_printf(b, " %8.2f %6.2f-%6.2f", ms->arias_t95_s - ms->arias_t5_s,
                          ms->arias_t5_s, ms->arias_t95_s);
@@ -47,21 +84,29 @@ char *rb_spectra_render_text(const rb_case *c, const rb_case_spectra *s)
                      "at 1/%g octave\n", rb_text_escape_buf(c->name ? c->name : "case",
                      name, sizeof name), s->n_motions, 100 * s->opts.damping,
                      s->opts.f_min_hz, s->opts.f_max_hz, s->opts.per_octave);
-    rb_strbuf_printf(&b, "%-24s %9s %8s %13s  %s\n", "motion", "peak g", "5-95% s",
+    size_t width = name_width(c, s->n_motions, 24);
+    put_padded(&b, "motion", width, 0);
+    rb_strbuf_printf(&b, " %9s %8s %13s  %s\n", "peak g", "5-95% s",
                      "from-to s", "absolute acceleration / target at its check points");
     for (size_t m = 0; m < s->n_motions; m++)
-        text_motion(&b, c, s, m);
+        text_motion(&b, c, s, m, width);
     rb_strbuf_puts(&b, "\nabsolute acceleration spectra (g)\n");
     rb_strbuf_printf(&b, "%9s", "f (Hz)");
-    for (size_t m = 0; m < s->n_motions; m++)
-        rb_strbuf_printf(&b, " %12.12s", rb_text_escape_buf(motion_name(c, m), name,
-                                                           sizeof name));
+    /* each column as wide as its motion's name, 12 at least */
+    for (size_t m = 0; m < s->n_motions; m++) {
+        const char *nm = rb_text_escape_buf(motion_name(c, m), name, sizeof name);
+        rb_strbuf_puts(&b, " ");
+        put_padded(&b, nm, shown_width(nm) > 12 ? shown_width(nm) : 12, 1);
+    }
     rb_strbuf_puts(&b, "\n");
     size_t n = s->n_motions ? s->motions[0].sp.n : 0;
     for (size_t i = 0; i < n; i++) {
         rb_strbuf_printf(&b, "%9.3f", s->motions[0].sp.freq_hz[i]);
-        for (size_t m = 0; m < s->n_motions; m++)
-            rb_strbuf_printf(&b, " %12.4f", s->motions[m].sp.sa_mps2[i] / g);
+        for (size_t m = 0; m < s->n_motions; m++) {
+            size_t w = shown_width(rb_text_escape_buf(motion_name(c, m), name, sizeof name));
+            rb_strbuf_printf(&b, " %*.4f", w > 12 ? (int)w : 12,
+                             s->motions[m].sp.sa_mps2[i] / g);
+        }
         rb_strbuf_puts(&b, "\n");
     }
     return rb_strbuf_take(&b);

@@ -245,5 +245,35 @@ r = run("spectrum", long, "--to", "1 Hz", "-q")
 if r.returncode != 0:
     fail(f"the same with --to 1 Hz: exit {r.returncode}, {r.stderr.strip()[:200]}")
 
+# names longer than a column are shown whole ("elcentro-roo" was the cut
+# of "elcentro-roof"), and every column stays aligned under its name
+names = ["elcentro-roof-level-7", "taft", "ngawest2-\u00e9tage-3-sud"]
+named = write("named.yaml", f"""extends: {src}/cases/base/reference-cabinet.yaml
+motions:
+""" + "".join(f"  - {{type: harmonic, name: {n}, amplitude: 0.2 A*, frequency: 4 Hz, "
+              f"duration: 2 s}}\n" for n in names))
+r = run("spectrum", named, "--per-octave", "1")
+lines = r.stdout.splitlines()
+if r.returncode != 0 or "absolute acceleration spectra (g)" not in lines:
+    fail(f"spectrum of long names: exit {r.returncode}, {r.stderr.strip()[:200]}")
+else:
+    for n in names:
+        if not any(l.startswith(n + " ") for l in lines):
+            fail(f"the motion table cuts '{n}'")
+    head = lines[lines.index("absolute acceleration spectra (g)") + 1]
+    rows = lines[lines.index("absolute acceleration spectra (g)") + 2:]
+    if head.split()[2:] != names:
+        fail(f"the spectra's header cuts the names: {head!r}")
+    for row in rows:
+        # each value ends where its name ends
+        ends_h = [head.index(n) + len(n) for n in names]
+        ends_r, pos = [], 0
+        for v in row.split()[1:]:
+            pos = row.index(v, pos) + len(v)
+            ends_r.append(pos)
+        if ends_r != ends_h:
+            fail(f"a row is not under its names: {row!r} under {head!r}")
+            break
+
 print(f"{len(failures)} failures")
 sys.exit(1 if failures else 0)
