@@ -78,6 +78,14 @@ if rep:
                         peaks["max_shear_total_n"], pv)
     if d["utilization"] > worst * (1 + 1e-12):
         fail(f"utilization {d['utilization']} above max-with-max {worst}")
+    # 17.8.1 judges tension alone, so the shear at that instant may be 0:
+    # the text report also gives the run's largest shear and its ratio
+    txt = os.path.join(scratch, "reference-concrete.txt")
+    subprocess.run([rb, "check", os.path.join(src, "cases", "reference-concrete.yaml"),
+                    "--text", txt, "-q"], capture_output=True)
+    line = [x for x in open(txt) if "anchorage (17.8)" in x]
+    if not line or "largest shear" not in line[0] or "route: ductile" not in line[0]:
+        fail(f"the anchorage line lacks the largest shear or the route: {line}")
     print(f"reference-concrete: utilization {d['utilization']:.3f} at {d['time_s']:.3f} s "
           f"({d['clause']}); largest tension with largest shear {worst:.3f}")
 
