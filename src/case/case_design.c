@@ -119,6 +119,7 @@ static void read_sweeps(rb_cctx *c, rb_ynode *seq, rb_case *cs)
         snprintf(path, sizeof path, "design.sweeps[%zu]", i + 1);
         if (!rb_cv_map(c, seq->items[i], path))
             continue;
+        c->sweep_maps[cs->n_sweeps] = seq->items[i];
         read_sweep(c, seq->items[i], path, &cs->sweeps[cs->n_sweeps++]);
     }
 }

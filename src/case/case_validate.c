@@ -339,13 +339,65 @@ static size_t count_motions(rb_cctx *c, size_t *n_targets)
     return n;
 }
 
+/* A sweep's key past a motion limit, at the key, or at the sweep when the
+ * default is past it. */
+static void sweep_limit(rb_cctx *c, const rb_ynode *map, size_t i, const char *key,
+                        const char *what)
+{
+    char k[RB_CASE_KEY_MAX];
+    rb_yentry *e = rb_ymap_find(map, key);
+    const rb_ynode *v = e ? e->value : map;
+    snprintf(k, sizeof k, "design.sweeps[%zu].%s", i + 1, key);
+    rb_cctx_error(c, v, k, "%s%s", e ? "" : "by default: ", what);
+}
+
+/* Sweeps reach their motions only as a design runs: a `to: 1e300` made
+ * every point past the 1000 Hz harmonic limit fail with "integrator step
+ * too small", and printed 300-digit ratios. Held to the limits of the
+ * motions they make, at the key, once the model is known. */
+static void check_sweeps(rb_cctx *c, const rb_case *cs, const rb_derived *d)
+{
+    const double g = 9.80665, max_a = RB_CASE_MAX_ACCEL_G * g;
+    char what[300];
+    for (size_t i = 0; i < cs->n_sweeps && i < RB_CASE_MAX_SWEEPS; i++) {
+        const rb_sweep_opts *sw = &cs->sweeps[i];
+        const rb_ynode *map = c->sweep_maps[i];
+        if (!map)
+            continue;
+        if (sw->kind == RB_SWEEP_FREQUENCY) {
+            double f = cs->model.freq_hz;
+            if (!cs->model.rigid && f > 0 && !(sw->to * f <= RB_CASE_MAX_MOTION_FREQ_HZ)) {
+                snprintf(what, sizeof what, "the sweep would reach %g Hz (%g times "
+                         "equipment.frequency, %g Hz): a harmonic may have at most %g Hz, "
+                         "so 'to' may be at most %g", sw->to * f, sw->to, f,
+                         RB_CASE_MAX_MOTION_FREQ_HZ, RB_CASE_MAX_MOTION_FREQ_HZ / f);
+                sweep_limit(c, map, i, "to", what);
+            }
+            if (d->a_star_mps2 > 0 && !(sw->amplitude_astar * d->a_star_mps2 <= max_a)) {
+                snprintf(what, sizeof what, "the sweep's harmonics would be %g g (%g A*): "
+                         "an amplitude may be at most %g g", sw->amplitude_astar
+                         * d->a_star_mps2 / g, sw->amplitude_astar, RB_CASE_MAX_ACCEL_G);
+                sweep_limit(c, map, i, "amplitude", what);
+            }
+        } else if (d->a_star_mps2 > 0 && !(sw->to * d->a_star_mps2 <= max_a)) {
+            snprintf(what, sizeof what, "the sweep would scale the motion to %g g (%g A*): "
+                     "an amplitude may be at most %g g, so 'to' may be at most %g A*",
+                     sw->to * d->a_star_mps2 / g, sw->to, RB_CASE_MAX_ACCEL_G,
+                     max_a / d->a_star_mps2);
+            sweep_limit(c, map, i, "to", what);
+        }
+    }
+}
+
 void rb_case_resolve(rb_cctx *c, rb_case *cs, const rb_ynode *root)
 {
     rb_derived d;
     memset(&d, 0, sizeof d);
     int have_model = check_model(c, cs, root, &d);
-    if (have_model)
+    if (have_model) {
         rb_case_resolve_concrete(c, cs);
+        check_sweeps(c, cs, &d);
+    }
     if (c->n_motions == 0)
         return;
     size_t n_targets, n = count_motions(c, &n_targets);
