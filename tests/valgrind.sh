@@ -45,7 +45,7 @@ run "merge fragility" "$build/rockbolt" merge "$out/f.json" --json "$out/fm.json
 run "fragility sweep" "$build/rockbolt" fragility tests/batch/cases/c-suite.yaml -j 2 \
     --sweep-gap 0:0.01:0.005 --json "$out/g.json" --csv "$out/g.csv" --svg "$out/g.svg" \
     --html "$out/g.html"
-for h in case at2 cosmos columns; do
+for h in case at2 cosmos columns table list merge; do
     [ -x "$build/fuzz_replay_$h" ] || continue
     run "fuzz seeds $h" "$build/fuzz_replay_$h" tests/fuzz/seeds/$h
     for r in tests/fuzz/regressions/$h/*; do

@@ -202,4 +202,12 @@ rb_status rb_case_load_text(const char *name, const char *text, size_t len,
 /* Free what a case owns; accepts NULL. */
 void rb_case_free(rb_case *c);
 
+/* Whether the loader generates synthetic motions (1, the default), or,
+ * once it has checked everything a suite takes, gives each motion samples
+ * of zero (0). For the case fuzzer, which tests the loader: a suite takes
+ * seconds to generate (27 s for cases/ac156-roof.yaml under the fuzzer's
+ * sanitizers), the loader microseconds. Process-wide: set it before any
+ * load, not while one runs. */
+void rb_case_set_generate(int on);
+
 #endif

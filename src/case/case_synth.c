@@ -252,10 +252,22 @@ static void job_init(const rb_cmotion *cm, const rb_case_target *ct, unsigned in
     j->keyed = cache_key(cm, ct, index, j->key, sizeof j->key);
 }
 
+static int generate_on = 1;
+
+void rb_case_set_generate(int on)
+{
+    generate_on = on;
+}
+
 static rb_status generate_job(void *ctx, size_t i)
 {
     suite_job *j = (suite_job *)ctx + i;
-    if (!j->cached) {
+    if (!j->cached && !generate_on) {
+        size_t n = (size_t)llround(j->o.total_s / j->o.dt_s) + 1;
+        j->st = rb_series_alloc(&j->series, n, j->o.dt_s);
+        memset(&j->info, 0, sizeof j->info);
+        j->generated = 1;
+    } else if (!j->cached) {
         j->st = rb_synth_generate(&j->o, &j->series, &j->info);
         j->generated = 1;
     }
@@ -287,7 +299,7 @@ static int build_one(rb_cctx *c, const rb_cmotion *cm, const rb_case_target *ct,
     else {
         st = job->st;
         out->synth = job->info;
-        if (st == RB_OK && job->keyed)
+        if (st == RB_OK && job->keyed && generate_on)
             rb_record_cache_put(c->cache, job->key, &none, 0, 0, &out->series);
     }
     if (st == RB_ERR_LIMIT) {

@@ -1,7 +1,8 @@
 #!/bin/sh
 # Run one libFuzzer harness for a bounded time.
 #
-#   tests/fuzz/run.sh HARNESS SECONDS      HARNESS: case, at2, cosmos, columns
+#   tests/fuzz/run.sh HARNESS SECONDS      HARNESS: case, at2, cosmos, columns,
+#                                          table, list, merge
 #
 # Builds fuzz_HARNESS in $RB_FUZZ_BUILD (default build-fuzz, configured with
 # clang and -DRB_FUZZ=ON if it is not yet), seeds it from the repository
@@ -14,15 +15,17 @@
 # Exits with libFuzzer's status (0: nothing found in the time given).
 set -eu
 if [ $# -ne 2 ]; then
-    echo "usage: $0 case|at2|cosmos|columns SECONDS" >&2
+    echo "usage: $0 case|at2|cosmos|columns|table|list|merge SECONDS" >&2
     exit 2
 fi
 harness=$1
 seconds=$2
 case $harness in
 case) dict=case.dict ;;
-at2|cosmos|columns) dict=record.dict ;;
-*) echo "$0: unknown harness '$harness' (case, at2, cosmos, columns)" >&2; exit 2 ;;
+at2|cosmos|columns|table) dict=record.dict ;;
+list|merge) dict=$harness.dict ;;
+*) echo "$0: unknown harness '$harness' (case, at2, cosmos, columns, table, list, merge)" >&2
+   exit 2 ;;
 esac
 root=$(cd "$(dirname "$0")/../.." && pwd)
 build=${RB_FUZZ_BUILD:-$root/build-fuzz}
@@ -59,6 +62,10 @@ at2|columns)
         cut_at2 "$f" 12 >"$seeds/$(basename "$f")"
     done
     head -n 200 "$root/cases/records/taft_1952_s69e.txt" >"$seeds/taft_1952_s69e.txt" ;;
+table)
+    cp "$root"/tests/errors/include/table-*.csv "$seeds/" ;;
+list)
+    cp "$root"/tests/batch/list.csv "$seeds/" ;;
 esac
 if [ -d "$root/tests/fuzz/seeds/$harness" ]; then
     cp "$root/tests/fuzz/seeds/$harness"/* "$seeds/"
