@@ -9,6 +9,7 @@
  * within a relative DBL_EPSILON, which can be an ulp off, and a mean
  * recomputed from such values then differs in its last digits. */
 #include <errno.h>
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -318,6 +319,18 @@ static size_t rd_size(rd_ctx *r, const cJSON *o, const char *k)
     return (size_t)v;
 }
 
+/* A line or column: a double past INT_MAX cast to int is undefined (a
+ * "line" of 8.9e31 in a summary, found by the merge fuzzer). */
+static int rd_int(rd_ctx *r, const cJSON *o, const char *k)
+{
+    double v = rd_num(r, o, k);
+    if (!(v >= 0 && v <= INT_MAX) || v != floor(v)) {
+        rd_fail(r, k, "expected a whole number from 0 to 2147483647");
+        return 0;
+    }
+    return (int)v;
+}
+
 static char *rd_str(rd_ctx *r, const cJSON *o, const char *k)
 {
     const cJSON *v = cJSON_GetObjectItemCaseSensitive(o, k);
@@ -486,7 +499,7 @@ static void rd_case(rd_ctx *r, const cJSON *o, rb_batch_case *c, const rb_batch_
     char *v;
     c->index = rd_size(r, o, "index");
     c->source = rd_str(r, o, "source");
-    c->line = (int)rd_num(r, o, "line");
+    c->line = rd_int(r, o, "line");
     c->tag = rd_str(r, o, "tag");
     c->reason = rd_str(r, o, "reason");
     v = rd_str(r, o, "verdict");
@@ -504,8 +517,8 @@ static void rd_case(rd_ctx *r, const cJSON *o, rb_batch_case *c, const rb_batch_
         rb_diag d;
         rb_diag_clear(&d);
         rd_copy(r, e, "file", d.file, sizeof d.file);
-        d.line = (int)rd_num(r, e, "line");
-        d.col = (int)rd_num(r, e, "col");
+        d.line = rd_int(r, e, "line");
+        d.col = rd_int(r, e, "col");
         rd_copy(r, e, "key", d.key, sizeof d.key);
         rd_copy(r, e, "message", d.msg, sizeof d.msg);
         if (!rb_batch_case_set_error(c, &d))

@@ -43,6 +43,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         rb_batch_summary_free(&s);
         return 0;
     }
+    /* lines are read as whole numbers in range: a "line" of 8.9e31 was
+     * cast to int (undefined; INT_MIN here) */
+    for (size_t i = 0; s.cases && i < s.n_cases; i++)
+        if (s.cases[i].line < 0)
+            rb_fuzz_fail("a case read back with a negative line", NULL);
     render_all(&s);
     char *json = rb_batch_render(RB_BATCH_JSON, &s);
     if (!json)
