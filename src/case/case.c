@@ -195,6 +195,8 @@ static int case_list_inputs(const rb_cctx *c, rb_case *cs, int first_in_memory)
 
 static void cctx_free(rb_cctx *c)
 {
+    rb_record_cache_free(c->own_records);
+    c->own_records = NULL;
     for (size_t i = 0; i < c->n_motions; i++)
         rb_cmotion_free(&c->motions[i]);
     free(c->motions);

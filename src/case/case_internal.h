@@ -37,6 +37,11 @@
 /* Samples in all the records of one case together: the reader's own cap
  * is per file, and 1000 motions may name the same large record. */
 #define RB_CASE_MAX_SAMPLES 10000000u
+/* Bytes of record files read for one case together, as large as one
+ * record file may be: a record named by many motions is read once (the
+ * record cache), but motions that read one file with other options (units,
+ * format) read it again, and 20 reads of a 260 MB record took 160 s. */
+#define RB_CASE_MAX_RECORD_BYTES (256ull * 1024 * 1024)
 /* design.resolution, relative to max(1 A*, scan_end): doubles near 1 are
  * 2.2e-16 apart, so 1e-9 leaves the bisection seven digits to spare. */
 #define RB_DESIGN_MIN_RESOLUTION 1e-9
@@ -162,7 +167,11 @@ typedef struct {
     size_t n_dropped;           /* errors past RB_CASE_MAX_DIAGS, not kept */
     rb_diag dropped;            /* the first of them */
     size_t n_samples;           /* record samples held, RB_CASE_MAX_SAMPLES */
-    rb_record_cache *cache;     /* borrowed; NULL: read every record */
+    rb_record_cache *cache;     /* borrowed; NULL: own_records */
+    rb_record_cache *own_records; /* owned: a case loaded without a cache
+                                   keeps its records here, so that motions
+                                   naming one record read it once */
+    unsigned long long record_bytes; /* read, against RB_CASE_MAX_RECORD_BYTES */
     double history_dt_s;        /* output_interval, or the default */
     const rb_ynode *history_dt_node; /* NULL: not given */
     size_t n_si_units, n_us_units; /* quantities written in SI / US units */

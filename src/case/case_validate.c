@@ -11,6 +11,7 @@
  * place and motion.scale stays 1. */
 #include <math.h>
 #include <stdio.h>
+#include <sys/stat.h>
 #include <stdlib.h>
 #include <string.h>
 #include "case_internal.h"
@@ -170,15 +171,39 @@ static int load_record(rb_cctx *c, const rb_cmotion *cm, rb_case_motion *out,
     int shared = budget < RB_CASE_MAX_SAMPLES;
     if (ro.max_points == 0 || ro.max_points > budget)
         ro.max_points = budget;
+    /* Without a cache of the caller's, the case keeps its own while it
+     * loads, when it has motions to share records: each record is read
+     * once per set of options. */
+    if (!c->cache && !c->own_records && c->n_motions > 1)
+        c->own_records = rb_record_cache_new(0);
+    rb_record_cache *cache = c->cache ? c->cache : c->own_records;
     /* a cached series is already filtered by the same building */
-    int cached = rb_record_cache_get(c->cache, out->source, &cm->ropts,
+    int cached = rb_record_cache_get(cache, out->source, &cm->ropts,
                                      cm->building_freq_hz, cm->building_damping,
                                      &out->series);
     rb_status st;
-    if (cached)
+    struct stat sb;
+    int regular = !cached && stat(out->source, &sb) == 0 && S_ISREG(sb.st_mode);
+    if (regular && c->record_bytes + (unsigned long long)sb.st_size
+                   > RB_CASE_MAX_RECORD_BYTES) {
+        rb_cctx_error_at(c, RB_ERR_LIMIT, cm->file_node->file, cm->file_node->line,
+                         cm->file_node->col, k, "cannot read record '%s' (%lld bytes): "
+                         "the records of one case may take %llu MiB in all (the limit; "
+                         "a record named again with the same options is read once), "
+                         "and the motions before this one read %llu MiB", out->source,
+                         (long long)sb.st_size, RB_CASE_MAX_RECORD_BYTES >> 20,
+                         c->record_bytes >> 20);
+        return 0;
+    }
+    if (cached) {
         st = out->series.n <= budget ? RB_OK : RB_ERR_LIMIT;
-    else
+    } else {
         st = budget ? rb_record_read(out->source, &ro, &out->series, &rd) : RB_ERR_LIMIT;
+        /* what the file held when looked at; the reader stops one that
+         * grows past its own limit */
+        if (budget && regular)
+            c->record_bytes += (unsigned long long)sb.st_size;
+    }
     if (st == RB_ERR_LIMIT && shared) {
         rb_series_free(&out->series);
         rb_cctx_error_at(c, RB_ERR_LIMIT, cm->file_node->file, cm->file_node->line,
@@ -215,7 +240,7 @@ static int load_record(rb_cctx *c, const rb_cmotion *cm, rb_case_motion *out,
         }
     }
     if (!cached)
-        rb_record_cache_put(c->cache, out->source, &cm->ropts, cm->building_freq_hz,
+        rb_record_cache_put(cache, out->source, &cm->ropts, cm->building_freq_hz,
                             cm->building_damping, &out->series);
     if (cm->has_window) {
         double len = out->series.t0_s + (double)(out->series.n - 1) * out->series.dt_s;

@@ -23,6 +23,11 @@
 #                 digest read every input to its end
 #   merge_fifo    merge of a FIFO nobody writes to, or a device, ends at
 #                 once naming the file (it waited for ever on the FIFO)
+#   record_once   20 motions naming one 100 MB record read it once (within
+#                 the 256 MiB of records a case may read), and three that read
+#                 it in other units are refused at the third, naming the limit
+#                 (each motion read its file again: 20 motions of a 260 MB
+#                 record took 160 s)
 #   batch_memory  peak memory of a batch with every summary output grows by
 #                 under 512 bytes per list row, which is the list itself
 #                 (2 000 against 20 000 rows; it grew by 2.8 KB before the
@@ -144,6 +149,24 @@ batch_tmpdir_full)
         || fail "no diagnostic naming the temporary file and the reason"
     [ ! -e "$D/s.json" ] || fail "a summary was written"
     [ -z "$(ls -A "$D/tmp")" ] || fail "temporary files were left in TMPDIR"
+    ;;
+record_once)
+    # lines of 16 000 blanks: 100 MB that read fast and hold few samples
+    python3 -c "
+import sys
+line = '0.01' + ' ' * 16000 + '\\n'
+open(sys.argv[1], 'w').write(line * (100 * 1024 * 1024 // len(line)))" "$D/big.txt" || exit 77
+    m='{type: record, file: big.txt, format: one-column, units: %s, dt: 0.01 s, window: [0 s, 1 s]}'
+    { printf 'extends: %s\nmotions:\n' "$BASE"; i=0
+      while [ $i -lt 20 ]; do printf "  - $m\n" g; i=$((i + 1)); done; } >"$D/r20.yaml"
+    run 60 check "$D/r20.yaml" --quiet
+    [ "$rc" -eq 0 ] || [ "$rc" -eq 1 ] || fail "20 motions of one record: exit code $rc, want 0 or 1"
+    { printf 'extends: %s\nmotions:\n' "$BASE"
+      for u in g m/s^2 cm/s^2; do printf "  - $m\n" "$u"; done; } >"$D/r3.yaml"
+    run 60 check "$D/r3.yaml" --quiet
+    [ "$rc" -eq 2 ] || fail "three reads of 100 MB: exit code $rc, want 2"
+    grep -q "r3.yaml:5:26: error: motions\[3\].file: cannot read record '.*big.txt' (104848755 bytes): the records of one case may take 256 MiB in all" "$D/err" \
+        || fail "no diagnostic at the third motion naming the limit"
     ;;
 digest_huge)
     truncate -s 1T "$D/huge.yaml" || exit 77
