@@ -184,8 +184,9 @@ static int load_record(rb_cctx *c, const rb_cmotion *cm, rb_case_motion *out,
     rb_status st;
     struct stat sb;
     int regular = !cached && stat(out->source, &sb) == 0 && S_ISREG(sb.st_mode);
-    if (regular && c->record_bytes + (unsigned long long)sb.st_size
-                   > RB_CASE_MAX_RECORD_BYTES) {
+    /* a file over the limit alone gets the reader's own message */
+    if (regular && (unsigned long long)sb.st_size <= RB_CASE_MAX_RECORD_BYTES
+        && c->record_bytes + (unsigned long long)sb.st_size > RB_CASE_MAX_RECORD_BYTES) {
         rb_cctx_error_at(c, RB_ERR_LIMIT, cm->file_node->file, cm->file_node->line,
                          cm->file_node->col, k, "cannot read record '%s' (%lld bytes): "
                          "the records of one case may take %llu MiB in all (the limit; "
