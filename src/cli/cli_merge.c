@@ -43,35 +43,54 @@ static FILE *open_shard(const char *path, const char **why)
     return f;
 }
 
+/* The whole summary, no more than RB_MERGE_MAX_BYTES: refused by its size
+ * before it is read, or when it grows past the limit while read. NULL
+ * with *why set, or NULL alone when out of memory. */
 static char *slurp(const char *path, const char **why)
 {
+    static char over[160];
+    struct stat sb;
     FILE *f = open_shard(path, why);
     if (!f)
         return NULL;
-    size_t cap = 1 << 16, len = 0;
+    snprintf(over, sizeof over, "it is larger than the limit of %u MiB for a shard's "
+             "summary", RB_MERGE_MAX_BYTES >> 20);
+    if (fstat(fileno(f), &sb) != 0)
+        *why = strerror(errno);
+    else if ((unsigned long long)sb.st_size > RB_MERGE_MAX_BYTES)
+        *why = over;
+    if (*why) {
+        fclose(f);
+        return NULL;
+    }
+    /* the size it says, and room to find out that it has grown */
+    size_t cap = (size_t)sb.st_size + 2, len = 0;
     char *buf = malloc(cap);
     while (buf) {
         size_t n = fread(buf + len, 1, cap - len - 1, f);
         len += n;
         if (len + 1 < cap)
             break;
-        if (cap >= RB_MERGE_MAX_BYTES) {
+        if (len > RB_MERGE_MAX_BYTES) {
+            *why = over;
             free(buf);
             buf = NULL;
             break;
         }
-        char *p = realloc(buf, cap * 2);
+        size_t grown = cap < RB_MERGE_MAX_BYTES / 2 ? 2 * cap : (size_t)RB_MERGE_MAX_BYTES + 2;
+        char *p = realloc(buf, grown);
         if (!p) {
             free(buf);
             buf = NULL;
         } else {
             buf = p;
-            cap *= 2;
+            cap = grown;
         }
     }
-    int err = ferror(f);
+    int err = ferror(f) ? (errno ? errno : EIO) : 0;
     fclose(f);
     if (buf && err) {
+        *why = strerror(err);
         free(buf);
         return NULL;
     }
@@ -88,10 +107,11 @@ static rb_exit read_shards(const rb_batch_cli *o, rb_batch_summary *sh)
         const char *why = NULL;
         char *text = slurp(o->inputs[i], &why);
         if (!text) {
-            if (why)
-                rb_cli_error(o->inputs[i], NULL, "cannot read the summary: %s", why);
-            else
-                rb_cli_error(o->inputs[i], NULL, "cannot read the summary");
+            if (!why) {
+                rb_cli_error(o->inputs[i], NULL, "cannot read the summary: out of memory");
+                return RB_EXIT_INTERNAL;
+            }
+            rb_cli_error(o->inputs[i], NULL, "cannot read the summary: %s", why);
             return RB_EXIT_USAGE;
         }
         rb_status st = rb_batch_summary_parse(text, &sh[i], &d);

@@ -28,6 +28,9 @@
 #                 it in other units are refused at the third, naming the limit
 #                 (each motion read its file again: 20 motions of a 260 MB
 #                 record took 160 s)
+#   merge_huge    a shard's summary over 1 GiB (sparse) is refused at once,
+#                 naming the limit (it was read to 1 GiB, then "cannot read
+#                 the summary")
 #   batch_memory  peak memory of a batch with every summary output grows by
 #                 under 512 bytes per list row, which is the list itself
 #                 (2 000 against 20 000 rows; it grew by 2.8 KB before the
@@ -167,6 +170,13 @@ open(sys.argv[1], 'w').write(line * (100 * 1024 * 1024 // len(line)))" "$D/big.t
     [ "$rc" -eq 2 ] || fail "three reads of 100 MB: exit code $rc, want 2"
     grep -q "r3.yaml:5:26: error: motions\[3\].file: cannot read record '.*big.txt' (104848755 bytes): the records of one case may take 256 MiB in all" "$D/err" \
         || fail "no diagnostic at the third motion naming the limit"
+    ;;
+merge_huge)
+    truncate -s 2G "$D/s.json" || exit 77
+    run 20 merge "$D/s.json"
+    [ "$rc" -eq 2 ] || fail "exit code $rc, want 2"
+    grep -q "s.json: error: cannot read the summary: it is larger than the limit of 1024 MiB" "$D/err" \
+        || fail "no diagnostic naming the limit"
     ;;
 digest_huge)
     truncate -s 1T "$D/huge.yaml" || exit 77
