@@ -80,6 +80,11 @@ typedef struct {
     double shear_over_w;  /* elastic frame shear / W (the criteria's) */
     double force_over_fy; /* larger bolt row force / Fy */
     double theta_over_alpha;
+    /* the judge's one "governs" rule (rb_verdict_governing): the run's
+     * margin (0 for a failing run) and the limit of it (rb_governs_limit) */
+    double margin;
+    int limit;
+    char *reason;         /* owned: the run's verdict reason, one line */
     /* design (when asked for); has_* 0 when not run or not defined */
     int has_factor;
     double design_factor; /* A* / largest passing level */

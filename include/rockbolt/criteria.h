@@ -110,6 +110,14 @@ typedef struct {
  * validity: fail, any validity warning. */
 void rb_judge(const rb_criteria *c, const rb_result *r, rb_verdict *v);
 
+/* What a rigid stop hid (docs/solver.md, Bolt impact): the elastic impact
+ * force over Fy of a run whose rigid rows the bolt-impact check warns of
+ * (at or above Fy), else 0; and the note the verdict line carries for it
+ * ("rigid bolts: an elastic bolt would load the row to x Fy"), 0 and ""
+ * when there is none. */
+double rb_bolt_impact_over_fy(const rb_result *r);
+int rb_bolt_impact_note(const rb_result *r, char *buf, size_t n);
+
 /* The numbers of a run the criteria read, worked out once for the judge,
  * the margin and the confirming runs: the larger row's usage, the larger
  * row force over Fy (0 without rows), the elastic frame shear over W. */
@@ -117,6 +125,41 @@ typedef struct {
     double usage, force_over_fy, shear_over_w;
 } rb_governing;
 rb_governing rb_result_governing(const rb_result *r);
+
+/* The limit a run's margin is measured against (rb_verdict_margin_of),
+ * in the judge's order: of two limits at one margin the first governs. */
+typedef enum {
+    RB_GOVERNS_OVERTURN = 0,  /* rotation towards alpha */
+    RB_GOVERNS_BREAK,         /* a broken row */
+    RB_GOVERNS_YIELD,         /* no-yield: a row's force towards Fy */
+    RB_GOVERNS_USAGE,         /* no-break: the toughness usage towards its limit */
+    RB_GOVERNS_SHEAR,         /* max_shear_over_w */
+    RB_GOVERNS_ROTATION,      /* max_theta_over_alpha */
+    RB_GOVERNS_SLIDING,       /* a free-standing base's friction demand */
+    RB_GOVERNS_ROUTE,         /* the 17.10.5.3 route the judge applies */
+    RB_GOVERNS_ANCHORAGE,     /* the 17.8 utilization */
+    RB_GOVERNS_VALIDITY,      /* validity: fail, a check it counts */
+    RB_GOVERNS_CONFIRMATION,  /* a pass its confirming runs did not hold */
+    RB_N_GOVERNS
+} rb_governs_limit;
+
+/* A limit's name for people and reports ("anchorage utilization"). */
+const char *rb_governs_name(rb_governs_limit k);
+
+/* rb_verdict_margin, and which limit gives it (limit may be NULL). */
+double rb_verdict_margin_of(const rb_criteria *c, const rb_result *r, rb_governs_limit *limit);
+
+/* The one "governs" rule of every command and report: a run's margin is
+ * rb_verdict_margin_of r under c, and 0 for a run whose verdict v fails
+ * (then with the limit that failed it); the motion that governs a case is
+ * the one with the least margin over all the verdict's criteria, the
+ * anchorage's utilization among them, and of motions at one margin (all
+ * failing ones among them) the first in the case's order, which is the
+ * motion a failing case's verdict line names. rb_margin_governs(a, b): 1
+ * if a run of margin a governs over an earlier one of margin b. */
+double rb_verdict_governing(const rb_criteria *c, const rb_result *r, const rb_verdict *v,
+                            rb_governs_limit *limit);
+int rb_margin_governs(double a, double b);
 
 /* How far a run is from failing: the smallest relative distance of its
  * governing numbers from their limits (usage or bolt force, rotation

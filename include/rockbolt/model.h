@@ -20,7 +20,8 @@
 
 typedef enum {
     RB_BOLT_NONE = 0,        /* free-standing: no anchorage at all */
-    RB_BOLT_RIGID_PLASTIC,   /* default: rigid until Fy, then yields (ch. 6) */
+    RB_BOLT_RIGID_PLASTIC,   /* rigid until Fy, then yields (ch. 6); rb_model_init's
+                                default, not a case file's (elastic-plastic) */
     RB_BOLT_NONYIELDING,     /* rigid and never yields (ch. 5 runs) */
     RB_BOLT_ELASTIC_PLASTIC  /* stiff elastic spring, then yields (sec. 5.7) */
 } rb_bolt_model;

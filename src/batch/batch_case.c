@@ -109,10 +109,15 @@ void rb_batch_case_solve(rb_batch_slot *s, rb_batch_case *bc, size_t m, int desi
         return;
     run->pass = rm->verdict.pass;
     run->warnings = rm->verdict.warnings;
+    rb_governs_limit lim;
+    run->margin = rb_verdict_governing(&s->c.criteria, r, &rm->verdict, &lim);
+    run->limit = (int)lim;
+    run->reason = rb_batch_strdup(rm->verdict.reason);
+    if (!run->reason)
+        s->run_status[m] = RB_ERR_NOMEM;
     run->usage = fmax(r->usage[0], r->usage[1]);
     run->shear_over_w = ratio(r->max_shear_elastic_n, r->weight_n);
-    run->force_over_fy = ratio(fmax(r->max_bolt_force_n[0], r->max_bolt_force_n[1]),
-                               r->fy_row_n);
+    run->force_over_fy = rb_result_governing(r).force_over_fy;
     run->theta_over_alpha = r->max_theta_over_alpha;
     if (s->c.has_concrete && r->anchor_checked) {
         const rb_anchor_strength *a = &s->c.anchor;

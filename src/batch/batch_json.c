@@ -16,6 +16,7 @@
 #include <string.h>
 #include <cjson/cJSON.h>
 #include "batch_summary.h"
+#include "rockbolt/criteria.h"
 #include "rockbolt/names.h"
 #include "rockbolt/jsonnum.h"
 #include "util/strbuf.h"
@@ -89,6 +90,10 @@ static int add_run(cJSON *arr, const rb_batch_result *r, int design)
         && add_num(o, "shear_over_w", r->shear_over_w)
         && add_num(o, "force_over_fy", r->force_over_fy)
         && add_num(o, "theta_over_alpha", r->theta_over_alpha)
+        && add_num(o, "margin", r->margin)
+        && cJSON_AddStringToObject(o, "governs",
+                                   rb_governs_name((rb_governs_limit)r->limit)) != NULL
+        && add_text(o, "reason", r->reason) != NULL
         && add_warnings(o, r->warnings);
     /* only with a concrete check, so that other summaries keep their bytes */
     if (ok && r->has_anchor)
@@ -380,8 +385,20 @@ static void rd_run(rd_ctx *r, const cJSON *o, rb_batch_result *run, int design)
     free(v);
     run->usage = rd_num(r, o, "usage");
     run->shear_over_w = rd_num(r, o, "shear_over_w");
-    run->force_over_fy = rd_num(r, o, "force_over_fy");
+    int has_ratio;   /* null for a case without bolts */
+    double ratio = rd_opt(r, o, "force_over_fy", &has_ratio);
+    run->force_over_fy = has_ratio ? ratio : (double)NAN;
     run->theta_over_alpha = rd_num(r, o, "theta_over_alpha");
+    run->margin = rd_num(r, o, "margin");
+    const cJSON *gv = cJSON_GetObjectItemCaseSensitive(o, "governs");
+    int lim = -1;
+    for (int k = 0; cJSON_IsString(gv) && k < RB_N_GOVERNS; k++)
+        if (strcmp(gv->valuestring, rb_governs_name((rb_governs_limit)k)) == 0)
+            lim = k;
+    if (lim < 0)
+        rd_fail(r, "governs", "expected the name of a limit");
+    run->limit = lim < 0 ? 0 : lim;
+    run->reason = rd_str(r, o, "reason");
     rd_warnings(r, o, &run->warnings);
     const cJSON *am = cJSON_GetObjectItemCaseSensitive(o, "anchor_mode");
     if (am) {

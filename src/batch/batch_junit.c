@@ -144,10 +144,18 @@ static void junit_case(rb_strbuf *b, const rb_batch_case *c)
             const rb_batch_result *r = &c->runs[m];
             char line[400];
             xml_text(b, r->motion);
-            snprintf(line, sizeof line, ": %s, usage %.3f, V/W %.3f, F/Fy %.3f, "
-                     "theta/alpha %.3f\n", r->pass ? "pass" : "FAIL",
-                     r->usage, r->shear_over_w, r->force_over_fy, r->theta_over_alpha);
+            char ff[32] = "n/a";   /* no bolts (rb_result_governing) */
+            if (!isnan(r->force_over_fy))
+                snprintf(ff, sizeof ff, "%.3f", r->force_over_fy);
+            snprintf(line, sizeof line, ": %s, usage %.3f, V/W %.3f, F/Fy %s, "
+                     "theta/alpha %.3f%s", r->pass ? "pass" : "FAIL",
+                     r->usage, r->shear_over_w, ff, r->theta_over_alpha,
+                     r->pass ? "\n" : ": ");
             xml_raw(b, line);
+            if (!r->pass) {   /* why it fails, as its verdict line says */
+                xml_text(b, r->reason ? r->reason : "");
+                xml_raw(b, "\n");
+            }
         }
         rb_strbuf_puts(b, "</failure>\n");
     } else {

@@ -49,7 +49,11 @@ static int copy_case(rb_batch_case *dst, const rb_batch_case *src)
     for (size_t m = 0; m < src->n_runs; m++) {
         dst->runs[m] = src->runs[m];
         dst->runs[m].motion = rb_batch_strdup(src->runs[m].motion);
-        if (!dst->runs[m].motion) {
+        dst->runs[m].reason = src->runs[m].reason ? rb_batch_strdup(src->runs[m].reason)
+                                                  : NULL;
+        if (!dst->runs[m].motion || (src->runs[m].reason && !dst->runs[m].reason)) {
+            free(dst->runs[m].motion);
+            free(dst->runs[m].reason);
             dst->n_runs = m;
             return 0;
         }

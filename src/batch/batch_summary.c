@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "batch_summary.h"
+#include "rockbolt/criteria.h"
 
 const rb_diag *rb_batch_case_error(const rb_batch_case *c)
 {
@@ -25,8 +26,10 @@ void rb_batch_case_free(rb_batch_case *c)
     free(c->tag);
     free(c->reason);
     free(c->error);
-    for (size_t m = 0; c->runs && m < c->n_runs; m++)
+    for (size_t m = 0; c->runs && m < c->n_runs; m++) {
         free(c->runs[m].motion);
+        free(c->runs[m].reason);
+    }
     free(c->runs);
     if (c->fragility)
         free(c->fragility->error);
@@ -44,14 +47,11 @@ void rb_batch_summary_free(rb_batch_summary *s)
     memset(s, 0, sizeof *s);
 }
 
-/* 1 if run a governs over run b (see batch.h). */
+/* 1 if run a governs over an earlier run b: the judge's one rule,
+ * rb_margin_governs on the margins the runs were judged with. */
 static int governs(const rb_batch_result *a, const rb_batch_result *b)
 {
-    if (a->pass != b->pass)
-        return !a->pass;
-    if (a->usage != b->usage)
-        return a->usage > b->usage;
-    return a->force_over_fy > b->force_over_fy;
+    return rb_margin_governs(a->margin, b->margin);
 }
 
 size_t rb_batch_governing(const rb_batch_case *c)
@@ -130,7 +130,8 @@ void rb_batch_stats(const rb_batch_case *c, rb_batch_stat *mean, rb_batch_stat *
         mean->theta_over_alpha += r->theta_over_alpha;
         max->usage = fmax(max->usage, r->usage);
         max->shear_over_w = fmax(max->shear_over_w, r->shear_over_w);
-        max->force_over_fy = fmax(max->force_over_fy, r->force_over_fy);
+        /* NaN, no rows, stays NaN in the mean and the maximum alike */
+        max->force_over_fy = m ? fmax(max->force_over_fy, r->force_over_fy) : r->force_over_fy;
         max->theta_over_alpha = fmax(max->theta_over_alpha, r->theta_over_alpha);
         if (r->has_factor) {
             mean->design_factor += r->design_factor;

@@ -24,7 +24,10 @@ static const char *upper_verdict(rb_batch_verdict v)
 static void text_nums(rb_strbuf *b, double usage, double vw, double ff, double ta,
                       int design, int has_f, double f, int bound, int has_g, double g)
 {
-    rb_strbuf_printf(b, " %7.3f %7.3f %7.3f %7.3f", usage, vw, ff, ta);
+    if (isnan(ff))   /* no bolts (rb_result_governing) */
+        rb_strbuf_printf(b, " %7.3f %7.3f %7s %7.3f", usage, vw, "n/a", ta);
+    else
+        rb_strbuf_printf(b, " %7.3f %7.3f %7.3f %7.3f", usage, vw, ff, ta);
     if (design) {
         if (has_f)
             rb_strbuf_printf(b, " %s%7.3f", bound ? ">" : " ", f);
@@ -95,6 +98,12 @@ static void text_case(rb_strbuf *b, const rb_batch_case *c, int design)
         text_nums(b, r->usage, r->shear_over_w, r->force_over_fy, r->theta_over_alpha,
                   design, r->has_factor, r->design_factor, r->factor_bound,
                   r->has_gap, r->gap_ratio);
+        if (!r->pass) {
+            /* why it fails, as the run's verdict line says it */
+            char why[512];
+            rb_strbuf_printf(b, "%-24s   %s\n", "",
+                             rb_text_escape_buf(r->reason ? r->reason : "", why, sizeof why));
+        }
     }
     if (c->n_runs > 1) {
         rb_batch_stat mean, max;
@@ -241,7 +250,8 @@ void rb_batch_csv_head(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_c
         }
         rb_strbuf_puts(b, ",fragility_error");
     }
-    rb_strbuf_puts(b, ",validity_warnings,anchor_mode,anchor_utilization,error\n");
+    rb_strbuf_puts(b, ",validity_warnings,anchor_mode,anchor_utilization,governs,reason,"
+                    "error\n");
 }
 
 void rb_batch_csv_tail(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_counts *n)
@@ -257,7 +267,7 @@ void rb_batch_csv_case(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_c
         char err[1400];
         const rb_diag *e = rb_batch_case_error(c);
         csv_head(b, c, "", 0, rb_batch_verdict_str(c->verdict));
-        rb_strbuf_puts(b, s->design ? ",,,,,,,,,,," : ",,,,,,,,");
+        rb_strbuf_puts(b, s->design ? ",,,,,,,,,,,,," : ",,,,,,,,,,");
         for (int k = 0; s->fragility && k < FRAGILITY_COLUMNS; k++)
             rb_strbuf_puts(b, ",");
         if (e->line > 0)
@@ -273,8 +283,12 @@ void rb_batch_csv_case(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_c
     for (size_t m = 0; m < c->n_runs; m++) {
         const rb_batch_result *r = &c->runs[m];
         csv_head(b, c, r->motion, m == g, r->pass ? "pass" : "fail");
-        rb_strbuf_printf(b, ",%.6g,%.6g,%.6g,%.6g", r->usage, r->shear_over_w,
-                       r->force_over_fy, r->theta_over_alpha);
+        if (isnan(r->force_over_fy))   /* no bolts (rb_result_governing) */
+            rb_strbuf_printf(b, ",%.6g,%.6g,n/a,%.6g", r->usage, r->shear_over_w,
+                             r->theta_over_alpha);
+        else
+            rb_strbuf_printf(b, ",%.6g,%.6g,%.6g,%.6g", r->usage, r->shear_over_w,
+                             r->force_over_fy, r->theta_over_alpha);
         if (s->design) {
             if (r->has_factor)
                 rb_strbuf_printf(b, ",%.6g,%d", r->design_factor, r->factor_bound);
@@ -299,6 +313,9 @@ void rb_batch_csv_case(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_c
                              r->anchor_utilization);
         else
             rb_strbuf_puts(b, ",,");
+        /* the limit nearest to failing; a failing run's reason */
+        rb_strbuf_printf(b, ",%s,", rb_governs_name((rb_governs_limit)r->limit));
+        csv_field(b, r->pass || !r->reason ? "" : r->reason);
         rb_strbuf_puts(b, ",\n");
     }
 }

@@ -188,7 +188,11 @@ static void read_lever_arm(rb_cctx *c, rb_ynode *an, rb_model *m)
 static void read_anchorage(rb_cctx *c, rb_ynode *an, rb_model *m)
 {
     const char *p = "anchorage";
-    int i = RB_BOLT_RIGID_PLASTIC;
+    /* A case's rows are springs unless it asks for the thesis's rigid stop:
+     * a rigid stop hides the impact that an elastic row of n E A / L_d
+     * meets (docs/solver.md, Bolt impact), and a default must not pass
+     * what the bolts themselves would fail. */
+    int i = RB_BOLT_ELASTIC_PLASTIC;
     double x;
     rb_ynode *v = rb_cv_get(c, an, p, "model", 0, "");
     if (v && !rb_cv_enum_table(c, v, "anchorage.model", rb_bolt_model_names, 0, &i))

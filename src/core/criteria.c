@@ -116,7 +116,9 @@ static void validity(const rb_criteria *c, const rb_result *r, rb_verdict *v)
 {
     v->check[RB_CHECK_LIFT_OFF] = r->min_vertical_reaction_n <= 0 ? RB_CHECK_WARNING
                                                                  : RB_CHECK_OK;
-    if (!(c->friction_coefficient > 0))
+    /* anchored, the horizontal reaction is the anchors' shear (17.7 with
+     * concrete:), and friction is reported, not judged */
+    if (!(c->friction_coefficient > 0) || r->fy_row_n > 0)
         v->check[RB_CHECK_SLIDING] = RB_CHECK_NOT_CHECKED;
     else
         v->check[RB_CHECK_SLIDING] = r->max_friction_demand > c->friction_coefficient
@@ -125,8 +127,8 @@ static void validity(const rb_criteria *c, const rb_result *r, rb_verdict *v)
     if (!r->rigid_bolts)
         v->check[RB_CHECK_BOLT_IMPACT] = RB_CHECK_NOT_CHECKED;
     else
-        v->check[RB_CHECK_BOLT_IMPACT] = r->max_bolt_impact_n >= r->fy_row_n
-                                         ? RB_CHECK_WARNING : RB_CHECK_OK;
+        v->check[RB_CHECK_BOLT_IMPACT] = rb_bolt_impact_over_fy(r) > 0 ? RB_CHECK_WARNING
+                                                                     : RB_CHECK_OK;
     /* one run cannot confirm itself: rb_verdict_confirm sets it */
     v->check[RB_CHECK_CONVERGENCE] = RB_CHECK_NOT_CHECKED;
     v->warnings = 0;
@@ -177,9 +179,11 @@ rb_governing rb_result_governing(const rb_result *r)
 {
     rb_governing g;
     g.usage = larger(r->usage[0], r->usage[1]);
+    /* no rows, no ratio: a free-standing cabinet's is no number (NaN, null
+     * in JSON, n/a in a table), not a zero that reads as a bolt unloaded */
     g.force_over_fy = r->fy_row_n > 0
                       ? larger(r->max_bolt_force_n[0], r->max_bolt_force_n[1]) / r->fy_row_n
-                      : 0;
+                      : (double)NAN;
     g.shear_over_w = r->weight_n > 0 ? r->max_shear_elastic_n / r->weight_n : 0;
     return g;
 }
@@ -233,6 +237,18 @@ static void route_reason(const rb_criteria *c, const rb_result *r, rb_route_appl
             "17.8 utilization %.3f", c->anchor_static_utilization);
 }
 
+/* A free-standing base (no rows) is held by friction alone, which the
+ * model assumes holds: a demand above the coefficient fails the run. */
+static int free_standing_judged(const rb_criteria *c, const rb_result *r)
+{
+    return !(r->fy_row_n > 0) && c->friction_coefficient > 0;
+}
+
+static int slides(const rb_criteria *c, const rb_result *r)
+{
+    return free_standing_judged(c, r) && r->max_friction_demand > c->friction_coefficient;
+}
+
 static void criteria(const rb_criteria *c, const rb_result *r, rb_verdict *v)
 {
     rb_route_applied route = route_applied(c, r);
@@ -262,6 +278,11 @@ static void criteria(const rb_criteria *c, const rb_result *r, rb_verdict *v)
         SAY(v, 0, "rotation / alpha = %s exceeds its limit %.17g",
             beside(r->max_theta_over_alpha, c->max_theta_over_alpha, num, sizeof num),
             c->max_theta_over_alpha);
+    else if (slides(c, r))
+        SAY(v, 0, "the base slides: friction demand %s exceeds the friction coefficient "
+            "%.17g (free-standing: the model assumes the base does not slide)",
+            beside(r->max_friction_demand, c->friction_coefficient, num, sizeof num),
+            c->friction_coefficient);
     else if (route_fails(c, route))
         route_reason(c, r, route, v);
     else if (c->concrete && r->anchor_checked && r->anchor_max_ratio >= 1.0)
@@ -270,11 +291,32 @@ static void criteria(const rb_criteria *c, const rb_result *r, rb_verdict *v)
             rb_aci17_interaction_clause(r->anchor_clause),
             beside(r->anchor_max_ratio, 1.0, num, sizeof num), r->anchor_max_s,
             r->anchor_tension_n / 1e3, r->anchor_shear_n / 1e3);
+    else if (c->kind == RB_CRIT_NO_YIELD && isnan(force))
+        SAY(v, 1, "no bolts to yield; the cabinet stands (max rotation / alpha = %s)",
+            beside(r->max_theta_over_alpha, 1.0, num, sizeof num));
     else if (c->kind == RB_CRIT_NO_YIELD)
         SAY(v, 1, "bolts stay elastic (max force / Fy = %s)", beside(force, 1.0, num, sizeof num));
     else
         SAY(v, 1, "bolt toughness usage %s is below the limit %.17g",
             beside(usage, c->usage_limit, num, sizeof num), c->usage_limit);
+}
+
+double rb_bolt_impact_over_fy(const rb_result *r)
+{
+    if (!r->rigid_bolts || !(r->fy_row_n > 0) || !(r->max_bolt_impact_n >= r->fy_row_n))
+        return 0;
+    return r->max_bolt_impact_n / r->fy_row_n;
+}
+
+int rb_bolt_impact_note(const rb_result *r, char *buf, size_t n)
+{
+    double x = rb_bolt_impact_over_fy(r);
+    if (n)
+        buf[0] = '\0';
+    if (!(x > 0) || !n)
+        return 0;
+    snprintf(buf, n, "rigid bolts: an elastic bolt would load the row to %.3g Fy", x);
+    return 1;
 }
 
 void rb_judge(const rb_criteria *c, const rb_result *r, rb_verdict *v)
@@ -289,6 +331,12 @@ void rb_judge(const rb_criteria *c, const rb_result *r, rb_verdict *v)
         snprintf(v->reason, sizeof v->reason, "%s (criteria: validity: fail)", w);
         v->pass = 0;
     }
+    /* a verdict on rigid stops that hid an impact says what they hid, so
+     * that a pass is not read as the bolts' own (docs/solver.md, Bolt impact) */
+    char note[96];
+    size_t len = strlen(v->reason);
+    if (rb_bolt_impact_note(r, note, sizeof note) && len < sizeof v->reason)
+        snprintf(v->reason + len, sizeof v->reason - len, "; %s", note);
 }
 
 /* How far value is below limit, as a fraction of the limit. */
@@ -297,37 +345,106 @@ static double below(double value, double limit)
     return 1 - value / limit;
 }
 
-double rb_verdict_margin(const rb_criteria *c, const rb_result *r)
+const char *rb_governs_name(rb_governs_limit k)
+{
+    switch (k) {
+    case RB_GOVERNS_OVERTURN: return "overturning";
+    case RB_GOVERNS_BREAK: return "bolt break";
+    case RB_GOVERNS_YIELD: return "bolt yield";
+    case RB_GOVERNS_USAGE: return "toughness usage";
+    case RB_GOVERNS_SHEAR: return "base shear";
+    case RB_GOVERNS_ROTATION: return "rotation";
+    case RB_GOVERNS_SLIDING: return "sliding";
+    case RB_GOVERNS_ROUTE: return "anchorage route";
+    case RB_GOVERNS_ANCHORAGE: return "anchorage utilization";
+    case RB_GOVERNS_VALIDITY: return "validity";
+    case RB_GOVERNS_CONFIRMATION: return "convergence";
+    case RB_N_GOVERNS: break;
+    }
+    return "?";
+}
+
+/* m and *lim take x and k where x is the nearer to failing: a tie keeps
+ * the earlier limit, and every limit reached is at 0, so that of several
+ * the judge's first (the verdict's reason) governs; a NaN (a number that
+ * does not apply) gives way to any number, as fmin does. */
+static void nearer(double *m, rb_governs_limit *lim, double x, rb_governs_limit k)
+{
+    if (x < 0)
+        x = 0;
+    if (x < *m || (isnan(*m) && !isnan(x))) {
+        *m = x;
+        *lim = k;
+    }
+}
+
+double rb_verdict_margin_of(const rb_criteria *c, const rb_result *r, rb_governs_limit *limit)
 {
     rb_governing g = rb_result_governing(r);
     double usage = g.usage, shear = g.shear_over_w, force = g.force_over_fy;
-    if (r->overturned || r->broken[0] || r->broken[1])
+    rb_governs_limit lim = RB_GOVERNS_OVERTURN, dummy;
+    if (!limit)
+        limit = &dummy;
+    if (r->overturned || r->broken[0] || r->broken[1]) {
+        *limit = r->overturned ? RB_GOVERNS_OVERTURN : RB_GOVERNS_BREAK;
         return 0;
+    }
     /* overturning is a limit of every criterion */
     double m = below(r->max_theta_over_alpha, 1);
-    if (c->kind == RB_CRIT_NO_YIELD)
-        m = r->yielded[0] || r->yielded[1] ? 0 : fmin(m, below(force, 1));
-    else
-        m = fmin(m, below(usage, c->usage_limit));
-    if (c->max_shear_over_w > 0)
-        m = fmin(m, below(shear, c->max_shear_over_w));
-    if (c->max_theta_over_alpha > 0)
-        m = fmin(m, below(r->max_theta_over_alpha, c->max_theta_over_alpha));
-    if (c->concrete && r->anchor_checked)
-        m = fmin(m, below(r->anchor_max_ratio, 1));
-    if (route_fails(c, route_applied(c, r)))
+    if (m < 0)
         m = 0;
+    if (c->kind == RB_CRIT_NO_YIELD)
+        nearer(&m, &lim, r->yielded[0] || r->yielded[1] ? 0 : below(force, 1), RB_GOVERNS_YIELD);
+    else
+        nearer(&m, &lim, below(usage, c->usage_limit), RB_GOVERNS_USAGE);
+    if (c->max_shear_over_w > 0)
+        nearer(&m, &lim, below(shear, c->max_shear_over_w), RB_GOVERNS_SHEAR);
+    if (c->max_theta_over_alpha > 0)
+        nearer(&m, &lim, below(r->max_theta_over_alpha, c->max_theta_over_alpha),
+               RB_GOVERNS_ROTATION);
+    if (free_standing_judged(c, r))
+        nearer(&m, &lim, below(r->max_friction_demand, c->friction_coefficient),
+               RB_GOVERNS_SLIDING);
+    if (route_fails(c, route_applied(c, r)))
+        nearer(&m, &lim, 0, RB_GOVERNS_ROUTE);
+    if (c->concrete && r->anchor_checked)
+        nearer(&m, &lim, below(r->anchor_max_ratio, 1), RB_GOVERNS_ANCHORAGE);
     if (c->validity == RB_VALIDITY_FAIL) {
         unsigned mask = c->validity_mask;
         if ((mask >> RB_CHECK_LIFT_OFF) & 1u && r->weight_n > 0)
-            m = fmin(m, r->min_vertical_reaction_n / r->weight_n);
-        if ((mask >> RB_CHECK_SLIDING) & 1u && c->friction_coefficient > 0)
-            m = fmin(m, below(r->max_friction_demand, c->friction_coefficient));
+            nearer(&m, &lim, r->min_vertical_reaction_n / r->weight_n, RB_GOVERNS_VALIDITY);
         if ((mask >> RB_CHECK_BOLT_IMPACT) & 1u && r->rigid_bolts && r->fy_row_n > 0)
-            m = fmin(m, below(r->max_bolt_impact_n, r->fy_row_n));
+            nearer(&m, &lim, below(r->max_bolt_impact_n, r->fy_row_n), RB_GOVERNS_VALIDITY);
     }
+    *limit = lim;
     /* a NaN (no number to judge by) is as marginal as can be */
     return m > 0 ? m : 0;
+}
+
+double rb_verdict_margin(const rb_criteria *c, const rb_result *r)
+{
+    return rb_verdict_margin_of(c, r, NULL);
+}
+
+double rb_verdict_governing(const rb_criteria *c, const rb_result *r, const rb_verdict *v,
+                            rb_governs_limit *limit)
+{
+    rb_governs_limit lim;
+    double m = rb_verdict_margin_of(c, r, &lim);
+    if (!v->pass && m > 0) {
+        /* the run held its limits; its confirming runs did not */
+        lim = RB_GOVERNS_CONFIRMATION;
+        m = 0;
+    }
+    if (limit)
+        *limit = lim;
+    return v->pass ? m : 0;
+}
+
+int rb_margin_governs(double a, double b)
+{
+    /* no number to judge by is as marginal as can be (rb_verdict_margin) */
+    return (a == a ? a : 0) < (b == b ? b : 0);
 }
 
 /* A plate that rocked near the bolt heads and never met them leaves every

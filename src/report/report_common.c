@@ -30,6 +30,7 @@ void rb_report_norms_compute(const rb_report *r, const rb_report_motion *m,
     n->shear_total_over_v0 = rb_report_ratio(res->max_shear_total_n, n->v0_n);
     n->min_vertical_over_w = rb_report_ratio(res->min_vertical_reaction_n, w);
     for (s = 0; s < 2; s++) {
+        /* NaN without rows, as the judge's ratio (rb_result_governing) */
         n->force_over_fy[s] = rb_report_ratio(res->max_bolt_force_n[s], res->fy_row_n);
         n->final_gap_ratio[s] = rb_report_ratio(res->final_gap_m[s], l);
     }
@@ -59,10 +60,26 @@ void rb_report_conclude(rb_report *r)
     r->pass = failed == 0;
     rb_report_headline(r->pass, r->warnings, r->headline, sizeof r->headline);
     if (!first) {
-        snprintf(r->reason, sizeof r->reason, "%s%zu motion%s meet%s the %s criterion",
+        /* a pass on rigid stops says what the worst of them hid */
+        const rb_report_motion *hid = NULL;
+        for (i = 0; i < r->n_motions; i++)
+            if (rb_bolt_impact_over_fy(r->motions[i].result)
+                > (hid ? rb_bolt_impact_over_fy(hid->result) : 0))
+                hid = &r->motions[i];
+        char note[96] = "";
+        if (hid)
+            rb_bolt_impact_note(hid->result, note, sizeof note);
+        snprintf(r->reason, sizeof r->reason, "%s%zu motion%s meet%s the %s criterion%s%s%s%s",
                  r->n_motions > 1 ? "all " : "", r->n_motions,
                  r->n_motions == 1 ? "" : "s", r->n_motions == 1 ? "s" : "",
-                 rb_enum_str(rb_criterion_names, (int)r->kase->criteria.kind));
+                 rb_enum_str(rb_criterion_names, (int)r->kase->criteria.kind),
+                 hid ? "; " : "", note, hid ? " (motion '" : "",
+                 hid ? (hid->motion->name ? hid->motion->name : "?") : "");
+        if (hid) {
+            size_t len = strlen(r->reason);
+            if (len < sizeof r->reason)
+                snprintf(r->reason + len, sizeof r->reason - len, "')");
+        }
     } else if (failed == 1) {
         snprintf(r->reason, sizeof r->reason, "motion '%.100s': %.250s",
                  first->motion->name ? first->motion->name : "?", first->verdict.reason);

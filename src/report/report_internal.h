@@ -36,10 +36,16 @@ const char *rb_report_side_str(int side); /* RB_LEFT, RB_RIGHT */
 extern const char *const rb_suite_names[RB_SUITE_N];
 typedef struct {
     size_t governing;            /* index of the governing motion */
+    double margin;               /* its margin (rb_verdict_governing) */
+    int limit;                   /* and the limit of it (rb_governs_limit) */
     double mean[RB_SUITE_N];     /* NAN when no motion has the value */
     double max[RB_SUITE_N];
 } rb_report_suite;
 void rb_report_suite_compute(const rb_report *r, rb_report_suite *s);
+/* The governing motion of a report's motions by the judge's one rule
+ * (rb_verdict_governing), with its margin and limit (rb_governs_limit;
+ * either may be NULL); 0 for a report without motions. */
+size_t rb_report_governing(const rb_report *r, double *margin, int *limit);
 
 /* ---- report_text_vars.c: template variable tables ---------------------- */
 #define RB_TXT_MAX_VARS 160 /* per scope; an assert guards it */

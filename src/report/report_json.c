@@ -348,6 +348,9 @@ static void add_suite(rb_jctx *cx, cJSON *root, const rb_report *r)
     rb_j_num(cx, o, "motions", (double)r->n_motions);
     rb_j_num(cx, o, "governing_index", (double)(su.governing + 1));
     rb_j_str(cx, o, "governing_name", r->motions[su.governing].motion->name);
+    rb_j_str(cx, o, "governing_limit", rb_governs_name((rb_governs_limit)su.limit));
+    rb_j_num(cx, o, "governing_margin", su.margin);
+    rb_j_str(cx, o, "governing_reason", r->motions[su.governing].verdict.reason);
     mean = rb_j_obj(cx, o, "mean");
     max = rb_j_obj(cx, o, "max");
     for (k = 0; k < RB_SUITE_N; k++) {

@@ -83,7 +83,7 @@ void rb_report_json_convergence(rb_jctx *cx, cJSON *validity_o, const rb_report 
         rb_j_bool(cx, x, "pass", cr->verdict.pass);
         rb_j_str(cx, x, "reason", cr->verdict.reason);
         rb_j_num(cx, x, "usage", cr->usage);
-        rb_j_num(cx, x, "max_bolt_force_over_fy", cr->max_bolt_force_over_fy);
+        rb_j_norm(cx, x, "max_bolt_force_over_fy", cr->max_bolt_force_over_fy);
         rb_j_num(cx, x, "max_theta_over_alpha", cr->max_theta_over_alpha);
         rb_j_num(cx, x, "margin", cr->margin);
     }

@@ -139,6 +139,8 @@ static void suite_vars(rb_tvars *t, const rb_report *r)
     rb_tv_int(t, "suite", r->n_motions > 1);
     rb_tv_int(t, "governing_index", (long)(su.governing + 1));
     rb_tv_str(t, "governing_name", r->motions[su.governing].motion->name);
+    rb_tv_str(t, "governing_limit", rb_governs_name((rb_governs_limit)su.limit));
+    rb_tv_num(t, "governing_margin", su.margin);
     for (k = 0; k < RB_SUITE_N; k++) {
         rb_tv_num(t, mean_names[k], su.mean[k]);
         rb_tv_num(t, max_names[k], su.max[k]);
@@ -285,13 +287,16 @@ static void convergence_text(const rb_criteria *c, const rb_report_motion *rm, c
             len += (size_t)snprintf(buf + len, n - len, "%s%s at %.3g: stopped (%s)",
                                     i ? "; " : "", how, cr->rtol,
                                     rb_status_str((rb_status)cr->status));
-        else
+        else {
+            char ff[32] = "n/a";   /* no bolts (rb_result_governing) */
+            if (!isnan(cr->max_bolt_force_over_fy))
+                snprintf(ff, sizeof ff, "%.4f", cr->max_bolt_force_over_fy);
             len += (size_t)snprintf(buf + len, n - len, "%s%s at %.3g: %s, usage %.4f, "
-                                    "force %.4f Fy, rotation %.4f alpha, %.3f to spare",
+                                    "force %s Fy, rotation %.4f alpha, %.3f to spare",
                                     i ? "; " : "", how, cr->rtol,
                                     cr->verdict.pass ? "pass" : "fail", cr->usage,
-                                    cr->max_bolt_force_over_fy, cr->max_theta_over_alpha,
-                                    cr->margin);
+                                    ff, cr->max_theta_over_alpha, cr->margin);
+        }
     }
 }
 
@@ -307,6 +312,10 @@ static rb_status motion_validity_vars(rb_tvars *t, const rb_report *r,
     rb_tv_opt(t, "liftoff_first_s", res->liftoff_first_s >= 0, res->liftoff_first_s);
     rb_tv_num(t, "liftoff_time_s", res->liftoff_time_s);
     rb_tv_str(t, "sliding_status", rb_check_status_str(v->check[RB_CHECK_SLIDING]));
+    rb_tv_str(t, "sliding_judged", !(c->friction_coefficient > 0) ? "no friction coefficient"
+              : res->fy_row_n > 0 ? "anchored: reported, not judged; the anchors carry "
+                                    "the horizontal reaction"
+              : "free-standing: a demand above the coefficient fails the run");
     rb_tv_opt(t, "friction_coefficient", c->friction_coefficient > 0,
               c->friction_coefficient);
     rb_tv_num(t, "friction_floor_over_w", RB_FRICTION_FLOOR);

@@ -22,7 +22,13 @@ past yield) and asserts that
     one judge's verdicts: the passing end passes, confirmed where it is
     marginal, and the failing end fails (judge_probe --design);
   - no verdict contradicts its own numbers: a passing no-yield run has
-    every row force below Fy, a passing no-break run usage below its limit.
+    every row force below Fy, a passing no-break run usage below its limit;
+  - one "governs" rule: the governing motion of check's JSON is the first
+    motion of least margin (0 for a failing motion, else the margin its
+    convergence check reports), no more than 1 - the 17.8 utilization of
+    any motion with a concrete check; `batch` on the files and `merge` of
+    its two shards name the same governing motion and, for a failing
+    motion, the same reason as check.
 The seed is printed so that a failure can be replayed."""
 import json, os, random, subprocess, sys
 
@@ -156,6 +162,20 @@ for p in paths:
             fail(f"{p}: {m['name']} passes validity: fail with warnings")
         if v["pass"] and not v["criteria_pass"]:
             fail(f"{p}: {m['name']} passes without meeting its criteria")
+    # the governing motion, worked out again from the reported margins
+    margins = [m["validity"]["convergence"]["margin"] if m["verdict"]["pass"] else 0
+               for m in rep["motions"]]
+    want = min(range(len(margins)), key=lambda k: (margins[k], k))
+    su = rep["suite"]
+    if su["governing_index"] != want + 1 or su["governing_margin"] != margins[want]:
+        fail(f"{p}: check governs motion {su['governing_index']} at "
+             f"{su['governing_margin']}, margins {margins}")
+    for m in rep["motions"]:
+        a = m.get("anchorage")
+        if a and a.get("utilization") is not None and \
+                su["governing_margin"] > max(0.0, 1 - a["utilization"]) + 1e-12:
+            fail(f"{p}: governing margin {su['governing_margin']} above the anchorage's "
+                 f"{1 - a['utilization']} in {m['name']}")
 
 # batch on the case files: the same reports, byte for byte
 reports = os.path.join(scratch, "reports-files")
@@ -185,6 +205,49 @@ for p in paths:
     c["case"]["path"] = os.path.relpath(p)
     if json.loads(b) != c:
         fail(f"{p}: batch's report differs from check's")
+
+# batch, and merge of its shards, name check's governing motion and reason
+def governing_of_summary(path):
+    out = {}
+    for c in json.load(open(path))["cases"]:
+        runs = c.get("runs") or []
+        g = c.get("governing_motion")
+        rs = [x for x in runs if x["motion"] == g]
+        out[c["source"]] = (g, rs[0]["reason"] if rs and rs[0]["verdict"] == "fail"
+                            else None)
+    return out
+
+
+shards = []
+for k in (1, 2):
+    sj = os.path.join(scratch, f"shard{k}.json")
+    r = subprocess.run([rb, "batch", *[os.path.relpath(p) for p in paths], "--shard",
+                        f"{k}/2", "--json", sj, "-q"], capture_output=True, text=True)
+    if r.returncode not in (0, 1):
+        fail(f"batch --shard {k}/2: exit {r.returncode}: {r.stderr.strip()[:300]}")
+    shards.append(sj)
+merged = os.path.join(scratch, "merged.json")
+r = subprocess.run([rb, "merge", *shards, "--json", merged, "-q"], capture_output=True,
+                   text=True)
+if r.returncode not in (0, 1):
+    fail(f"merge: exit {r.returncode}: {r.stderr.strip()[:300]}")
+named = 0
+if os.path.exists(merged) and os.path.exists(os.path.join(scratch, "files.json")):
+    by_batch = governing_of_summary(os.path.join(scratch, "files.json"))
+    by_merge = governing_of_summary(merged)
+    for p in paths:
+        if p not in check_json:
+            continue
+        rep = json.loads(check_json[p])
+        g = rep["motions"][rep["suite"]["governing_index"] - 1]
+        want = (rep["suite"]["governing_name"],
+                None if g["verdict"]["pass"] else rep["suite"]["governing_reason"])
+        src_ = os.path.relpath(p)
+        for who, got in (("batch", by_batch.get(src_)), ("merge", by_merge.get(src_))):
+            if got != want:
+                fail(f"{p}: {who} governs {got}, check {want}")
+        named += 1
+print(f"governing motion and reason: check, batch and merge agree on {named} cases")
 
 # batch on a list with one row per case, nothing overridden
 lst = os.path.join(scratch, "list.csv")

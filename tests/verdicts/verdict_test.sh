@@ -62,12 +62,27 @@ validity)
     expect_rc 1 "validity: fail"
     first_line | grep -q '^FAIL (2 validity warnings: lift-off, bolt impact): .*(criteria: validity: fail)' ||
         fail "fail verdict line: $(first_line)"
-    # a friction coefficient makes sliding a check, ok or warning
-    run check $C/sliding.yaml --json "$D/s.json" --quiet
-    [ "$(jget "$D/s.json" 'motions.0.validity.sliding.status')" = warning ] || fail "mu 0.2"
-    sed 's/friction_coefficient: 0.2/friction_coefficient: 50/' $C/sliding.yaml >$C/.sliding-50.yaml
-    run check $C/.sliding-50.yaml --json "$D/s50.json" --quiet
+    # anchored, the anchors carry the horizontal reaction: a friction demand
+    # above the coefficient is reported, not judged
+    run check $C/sliding.yaml --json "$D/s.json"
+    expect_rc 0 "anchored, mu 0.2"
+    [ "$(jget "$D/s.json" 'motions.0.validity.sliding.status')" = not-checked ] || fail "mu 0.2"
+    awk -v d="$(jget "$D/s.json" 'motions.0.validity.sliding.max_friction_demand')" \
+        'BEGIN { exit !(d > 0.2) }' || fail "the anchored demand is not above 0.2"
+    grep -q 'sliding              not-checked (anchored: reported, not judged' "$D/out" ||
+        fail "the text does not say the anchored demand is not judged"
+    # free-standing, friction alone holds the base: a demand above the
+    # coefficient fails the verdict, one below it passes
+    run check $C/sliding-free.yaml --json "$D/f.json"
+    expect_rc 1 "free-standing, mu 0.5"
+    [ "$(jget "$D/f.json" 'motions.0.validity.sliding.status')" = warning ] || fail "free mu 0.5"
+    first_line | grep -q "^FAIL (2 validity warnings: lift-off, sliding): motion 'motion': the base slides: friction demand 4\.[0-9]* exceeds the friction coefficient 0\.5 (free-standing" ||
+        fail "free-standing sliding verdict: $(first_line)"
+    [ "$(jget "$D/f.json" suite.governing_limit)" = sliding ] || fail "sliding does not govern"
+    sed 's/friction_coefficient: 0.5/friction_coefficient: 50/' $C/sliding-free.yaml >$C/.sliding-50.yaml
+    run check $C/.sliding-50.yaml --json "$D/s50.json"
     rm -f $C/.sliding-50.yaml
+    expect_rc 0 "free-standing, mu 50"
     [ "$(jget "$D/s50.json" 'motions.0.validity.sliding.status')" = ok ] || fail "mu 50"
     # the batch summary, CSV and JUnit carry the warnings
     run batch $C/validity-warn.yaml $C/validity-fail.yaml --json "$D/b.json" --csv "$D/b.csv" \
@@ -81,6 +96,57 @@ validity)
     grep -q '<system-out>PASS (2 validity warnings: lift-off, bolt impact)</system-out>' "$D/b.xml" ||
         fail "JUnit lacks the headline"
     echo "validity: ok"
+    ;;
+default_model)
+    # A case that names no bolt model gets elastic-plastic rows (n E A / L_d),
+    # which meet the impacts the thesis's rigid stops hide.
+    run check $C/panel.yaml --json "$D/p.json"
+    expect_rc 1 "panel, default rows"
+    [ "$(jget "$D/p.json" model.bolt_model)" = elastic-plastic ] || fail "default model"
+    first_line | grep -q "^FAIL .*: motion 'ac156-1': the anchorage reaches its concrete design strength: 17\.8\.[123] utilization 1\.[0-9]* at" ||
+        fail "panel verdict: $(first_line)"
+    # every motion drives a row to Fy = 2 x (pi / 4) (0.5 in)^2 x 36 ksi =
+    # 14.137 kip = 62 885 N or near it, past the design strength
+    i=0
+    while [ $i -lt 6 ]; do
+        tn=$(jget "$D/p.json" motions.$i.anchorage.tension_n)
+        u=$(jget "$D/p.json" motions.$i.anchorage.utilization)
+        awk -v t="$tn" -v u="$u" 'BEGIN { exit !(t > 0.94 * 62885.25 && t <= 62885.25 * (1 + 1e-6) && u >= 1) }' ||
+            fail "motion $i: tension $tn N, utilization $u"
+        i=$((i + 1))
+    done
+    # the same panel on rigid stops passes, and says what they hid: the
+    # largest elastic impact of its motions, over Fy, in its verdict line
+    run check $C/panel-rigid.yaml --json "$D/r.json"
+    expect_rc 0 "panel, rigid-plastic"
+    line=$(first_line)
+    x=$(echo "$line" | sed -n "s/^PASS (2 validity warnings: lift-off, bolt impact): all 6 motions meet the no-break criterion; rigid bolts: an elastic bolt would load the row to \([0-9.]*\) Fy (motion '[a-z0-9-]*')\$/\1/p")
+    [ -n "$x" ] || fail "rigid panel verdict: $line"
+    big=0
+    i=0
+    while [ $i -lt 6 ]; do
+        f=$(jget "$D/r.json" motions.$i.validity.bolt_impact.max_force_over_fy)
+        big=$(awk -v a="$big" -v b="$f" 'BEGIN { print (b > a ? b : a) }')
+        jget "$D/r.json" motions.$i.verdict.reason | grep -q '; rigid bolts: an elastic bolt would load the row to [0-9.]* Fy$' ||
+            fail "motion $i's reason lacks the note"
+        i=$((i + 1))
+    done
+    awk -v x="$x" -v b="$big" 'BEGIN { exit !(b >= 1 && x == sprintf("%.3g", b) + 0) }' ||
+        fail "note says $x Fy, the largest impact is $big Fy"
+    # validity: fail keeps its meaning: the warning fails the run
+    printf 'extends: panel-rigid.yaml\ncriteria:\n  validity: fail\n' >"$C/.panel-rigid-fail.yaml"
+    run check "$C/.panel-rigid-fail.yaml"
+    rm -f "$C/.panel-rigid-fail.yaml"
+    expect_rc 1 "rigid-plastic, validity: fail"
+    first_line | grep -q '(criteria: validity: fail); rigid bolts: an elastic bolt would load the row' ||
+        fail "validity: fail verdict: $(first_line)"
+    # the reference cabinet at Table 5.1's 0.085 A* under no-yield: the
+    # thesis's rigid rows stay at 0.117 Fy (cases/thesis), the default rows yield
+    run check $C/reference-0.085-noyield.yaml --json "$D/e.json"
+    expect_rc 1 "reference cabinet, 0.085 A*, no-yield"
+    first_line | grep -q '^FAIL .*a bolt row yields at t = [0-9.]* s (criterion: no yield)$' ||
+        fail "reference verdict: $(first_line)"
+    echo "default_model: ok (rigid note $x Fy)"
     ;;
 *)
     fail "unknown test"
