@@ -51,13 +51,21 @@ typedef struct {
     rb_synth_info synth;
 } rb_case_motion;
 
+/* The default largest gap the recommendation searches: 1/4 in, above
+ * which ASCE 7 13.6.4 doubles the design force on snubbed equipment. */
+#define RB_DESIGN_MAX_GAP_M 6.35e-3
+
 /* Options for `rockbolt design` (issue: design checks). */
 typedef struct {
     double scan_start;   /* in A*, default 0.05 */
     double scan_step;    /* in A*, default 0.05 */
     double scan_end;     /* in A*, default 1.5 */
     double resolution;   /* in A*, default 0.001 */
-    double gap_ratio_min, gap_ratio_max, gap_ratio_step; /* defaults 0, 0.06, 0.0025 */
+    double gap_ratio_min, gap_ratio_max, gap_ratio_step; /* defaults 0, 0.03, 0.0025 */
+    /* the largest gap the recommendation searches, default 1/4 in =
+     * 6.35 mm: above it ASCE 7 13.6.4 doubles the force on snubbed
+     * equipment; <= 0: no bound but gap_ratio_max */
+    double max_gap_m;
 } rb_design_opts;
 
 /* Sweeps and the code-static comparison a case asks `rockbolt design`

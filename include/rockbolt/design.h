@@ -114,6 +114,12 @@ void rb_design_factor_describe(const rb_design_factor_result *f, const rb_out_un
 
 /* ---- Recommended gap ratio ---------------------------------------------- */
 
+/* What bounds the searched range from above. */
+typedef enum {
+    RB_GAP_BOUND_RATIO = 0,   /* design.gap_ratio_max */
+    RB_GAP_BOUND_MAX_GAP      /* design.max_gap over the lever arm */
+} rb_gap_bound;
+
 typedef struct {
     double gap_ratio;           /* g0 / l of this grid point */
     int evaluated;              /* 0: below the highest failing gap, not run
@@ -145,6 +151,18 @@ typedef struct {
     double yield_final_gap_ratio[2];   /* [RB_LEFT], [RB_RIGHT] */
     double yield_final_gap_ratio_max;
     double yield_usage[2];
+    /* The range searched and what bounds it: [points[0], range_max] by
+     * bound; the case's own gap ratio is always a point of the grid, and
+     * own_meets its verdict. own_only: the recommendation is the case's
+     * own gap because a larger grid gap (fail_index's) fails. */
+    double range_max;
+    int bound;                  /* rb_gap_bound */
+    int own_above;              /* the case's own gap lies above the bound: the
+                                   grid runs up to it */
+    double max_gap_m;           /* design.max_gap as used (0: none) */
+    double own_gap_ratio;
+    int own_meets;
+    int own_only;
 } rb_gap_result;
 
 /* Run the model, with its gap set to the grid ratios of [gap_ratio_min,

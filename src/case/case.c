@@ -216,8 +216,11 @@ static int case_defaults(rb_case *cs, const char *path)
     cs->design.scan_end = 1.5;
     cs->design.resolution = 0.001;
     cs->design.gap_ratio_min = 0.0;
-    cs->design.gap_ratio_max = 0.06;
+    /* a practical range: gaps beyond these are not built under the bolt
+     * heads of equipment (docs/design.md, Recommended gap) */
+    cs->design.gap_ratio_max = 0.03;
     cs->design.gap_ratio_step = 0.0025;
+    cs->design.max_gap_m = RB_DESIGN_MAX_GAP_M;
     size_t len = strlen(path) + 1;
     cs->path = malloc(len);
     if (!cs->path)

@@ -14,7 +14,7 @@
 
 static const char *const design_keys[] = {
     "scan_start", "scan_step", "scan_end", "resolution", "gap_ratio_min",
-    "gap_ratio_max", "gap_ratio_step", "sweeps", "code", NULL};
+    "gap_ratio_max", "gap_ratio_step", "max_gap", "sweeps", "code", NULL};
 static const char *const sweep_keys[] = {
     "type", "from", "to", "points", "amplitude", "duration", "ramp", NULL};
 static const char *const code_keys[] = {
@@ -213,6 +213,8 @@ void rb_case_read_design(rb_cctx *c, rb_ynode *d, rb_case *cs)
     design_value(c, d, "design", "gap_ratio_min", 1, 0, &o->gap_ratio_min);
     design_value(c, d, "design", "gap_ratio_max", 1, 0, &o->gap_ratio_max);
     design_value(c, d, "design", "gap_ratio_step", 0, 0, &o->gap_ratio_step);
+    rb_cv_number(c, d, "design", "max_gap", 0, RB_DIM_LENGTH, 0, 0, (double)NAN, 0,
+                 &o->max_gap_m);
     rb_yentry *re = rb_ymap_find(d, "resolution");
     double finest = RB_DESIGN_MIN_RESOLUTION * (o->scan_end > 1 ? o->scan_end : 1);
     if (re && o->resolution > 0 && o->resolution < finest)

@@ -309,6 +309,10 @@ void rb_design_factor_describe(const rb_design_factor_result *f, const rb_out_un
                  f->resolution_astar, f->runs);
     size_t len = strlen(buf);
     if (f->confirm_fails > 0 && len < n)
-        snprintf(buf + len, n - len, "; %ld higher pass%s not confirmed at tighter "
-                 "tolerances", f->confirm_fails, f->confirm_fails == 1 ? "" : "es");
+        len += (size_t)snprintf(buf + len, n - len, "; %ld higher pass%s not confirmed at "
+                                "tighter tolerances", f->confirm_fails,
+                                f->confirm_fails == 1 ? "" : "es");
+    /* why the failing level fails, as its verdict line says it */
+    if (!f->no_failure && f->fail_reason[0] && len < n)
+        snprintf(buf + len, n - len, "; at %.4f A*: %s", f->fail_astar, f->fail_reason);
 }

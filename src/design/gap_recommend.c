@@ -145,21 +145,64 @@ rb_status rb_gap_recommend(const rb_model *model, const rb_motion *motion,
     if ((st = check_grid(design, model, diag)) != RB_OK
         || (st = rb_design_ctx_init(&ctx, model, motion, opts, criteria, diag)) != RB_OK)
         return st;
-    size_t n = (size_t)floor((design->gap_ratio_max - design->gap_ratio_min)
-                             / design->gap_ratio_step + 1e-9) + 1;
-    double *ratios = malloc(n * sizeof *ratios);
-    out->points = calloc(n, sizeof *out->points);
+    /* the range: gap_ratio_max, or max_gap over the lever arm where that is
+     * less, but never below gap_ratio_min */
+    double top = design->gap_ratio_max;
+    out->bound = RB_GAP_BOUND_RATIO;
+    out->max_gap_m = design->max_gap_m > 0 ? design->max_gap_m : 0;
+    if (out->max_gap_m > 0 && out->max_gap_m / model->lever_arm_m < top) {
+        top = fmax(out->max_gap_m / model->lever_arm_m, design->gap_ratio_min);
+        out->bound = RB_GAP_BOUND_MAX_GAP;
+    }
+    size_t n = (size_t)floor((top - design->gap_ratio_min) / design->gap_ratio_step + 1e-9)
+               + 1;
+    /* the case's own gap is always a point, so that a case that passes at
+     * it can never read "no gap meets" */
+    double own = model->gap_m / model->lever_arm_m;
+    double *ratios = malloc((n + 1) * sizeof *ratios);
+    out->points = calloc(n + 1, sizeof *out->points);
     if (!ratios || !out->points) {
         free(ratios);
         rb_gap_result_free(out);
         return RB_ERR_NOMEM;
     }
+    size_t k = 0, own_i = 0;
+    int own_placed = 0;
+    for (size_t i = 0; i < n; i++) {
+        double x = design->gap_ratio_min + (double)i * design->gap_ratio_step;
+        if (!own_placed && own <= x * (1 + 1e-12) + 1e-15) {
+            own_placed = 1;
+            own_i = k;
+            if (fabs(own - x) > 1e-12 * fmax(own, 1e-3))
+                ratios[k++] = own;
+        }
+        ratios[k++] = x;
+    }
+    if (!own_placed) {
+        own_i = k;
+        ratios[k++] = own;
+    }
+    n = k;
     out->n_points = n;
-    for (size_t i = 0; i < n; i++)
-        ratios[i] = design->gap_ratio_min + (double)i * design->gap_ratio_step;
+    out->own_gap_ratio = ratios[own_i];
+    out->range_max = ratios[n - 1];
+    out->own_above = own_i == n - 1 && own > top * (1 + 1e-12);
     for (size_t i = 0; i < n; i++)
         out->points[i].gap_ratio = ratios[i];
     st = run_grid(&ctx, ratios, n_threads, out, diag);
+    if (st == RB_OK && !out->points[own_i].evaluated) {
+        /* below the highest failing gap: the walk did not reach it */
+        rb_design_run run;
+        rb_model m = *ctx.model;
+        m.gap_m = ratios[own_i] * m.lever_arm_m;
+        rb_design_run_one(&ctx, &m, ctx.motion, &run);
+        out->runs++;
+        if (run.status != RB_OK)
+            st = rb_design_fail(diag, run.status, "gap_ratio",
+                                "the solver run at the case's own gap failed");
+        else
+            keep_point(&out->points[own_i], ratios[own_i], &run);
+    }
     if (st == RB_OK)
         st = yield_run(&ctx, out, diag);
     if (st != RB_OK) {
@@ -167,10 +210,17 @@ rb_status rb_gap_recommend(const rb_model *model, const rb_motion *motion,
         rb_gap_result_free(out);
         return st;
     }
+    out->own_meets = out->points[own_i].meets;
     /* the passing run that reaches the end of the range */
     size_t first = (size_t)(out->fail_index + 1);
     out->found = first < n;
     out->gap_ratio = out->found ? ratios[first] : 0;
+    if (!out->found && out->own_meets) {
+        /* a larger gap fails: the case's own gap, which passes, is the
+         * largest the search can stand behind */
+        out->found = out->own_only = 1;
+        out->gap_ratio = ratios[own_i];
+    }
     out->gap_m = out->found ? out->gap_ratio * model->lever_arm_m : 0;
     free(ratios);
     return RB_OK;
@@ -191,13 +241,30 @@ void rb_gap_describe(const rb_gap_result *g, const rb_out_units *u, char *buf, s
     const char *unit = u ? u->small_length : "mm";
     if (!buf || n == 0)
         return;
-    if (g->n_points == 0)
+    if (g->n_points == 0) {
         snprintf(buf, n, "no gap ratio was evaluated");
-    else if (!g->found)
-        snprintf(buf, n, "no gap ratio in [%.4g, %.4g] meets the criteria: the largest "
-                 "fails", g->points[0].gap_ratio, g->points[g->n_points - 1].gap_ratio);
+        return;
+    }
+    char range[240];
+    double lo = g->points[0].gap_ratio;
+    const char *own = g->own_above ? ", and the case's own gap ratio above it" : "";
+    if (g->bound == RB_GAP_BOUND_MAX_GAP)
+        snprintf(range, sizeof range, "searched [%.4g, %.4g], bounded by design.max_gap "
+                 "%.4g %s (above 1/4 in ASCE 7 13.6.4 doubles the force on snubbed "
+                 "equipment)%s", lo, g->range_max,
+                 u ? g->max_gap_m / u->small_length_f : 1e3 * g->max_gap_m, unit, own);
+    else
+        snprintf(range, sizeof range, "searched [%.4g, %.4g], bounded by "
+                 "design.gap_ratio_max%s", lo, g->range_max, own);
+    if (!g->found)
+        snprintf(buf, n, "no gap ratio meets the criteria, the case's own %.4g neither "
+                 "(%s)", g->own_gap_ratio, range);
+    else if (g->own_only)
+        snprintf(buf, n, "recommended gap ratio %.4g (gap %.4g %s), the case's own: it "
+                 "meets the criteria, and the larger gap ratio %.4g fails (%s)",
+                 g->gap_ratio, gap, unit, g->points[g->fail_index].gap_ratio, range);
     else
         snprintf(buf, n, "recommended gap ratio %.4g (gap %.4g %s): every grid gap ratio "
-                 "from there to %.4g meets the criteria", g->gap_ratio, gap, unit,
-                 g->points[g->n_points - 1].gap_ratio);
+                 "from there to %.4g meets the criteria (%s)", g->gap_ratio, gap, unit,
+                 g->range_max, range);
 }

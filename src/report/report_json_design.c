@@ -21,7 +21,7 @@ static void j_level(rb_jctx *cx, cJSON *o, const char *key, double v)
 static void add_factor(rb_jctx *cx, cJSON *parent, const char *key,
                        const rb_design_factor_result *f, const rb_criteria *crit)
 {
-    char sentence[320];
+    char sentence[640];
     cJSON *o = rb_j_obj(cx, parent, key);
     rb_design_factor_describe(f, NULL, 0, sentence, sizeof sentence);
     rb_j_str(cx, o, "criterion", rb_enum_str(rb_criterion_names, (int)crit->kind));
@@ -70,7 +70,7 @@ static void add_gap(rb_jctx *cx, cJSON *parent, const rb_motion_design *md,
                     const rb_criteria *crit)
 {
     const rb_gap_result *g = &md->gap;
-    char sentence[320];
+    char sentence[512];
     cJSON *o, *y;
     if (!md->has_gap) {
         rb_j_null(cx, parent, "recommended_gap");
@@ -83,6 +83,15 @@ static void add_gap(rb_jctx *cx, cJSON *parent, const rb_motion_design *md,
     rb_j_opt(cx, o, "gap_ratio", g->found, g->gap_ratio);
     rb_j_opt(cx, o, "gap_m", g->found, g->gap_m);
     rb_j_str(cx, o, "summary", sentence);
+    rb_j_num(cx, o, "range_min", g->points[0].gap_ratio);
+    rb_j_num(cx, o, "range_max", g->range_max);
+    rb_j_str(cx, o, "bounded_by", g->bound == RB_GAP_BOUND_MAX_GAP ? "max_gap"
+                                                                  : "gap_ratio_max");
+    rb_j_bool(cx, o, "own_above", g->own_above);
+    rb_j_opt(cx, o, "max_gap_m", g->max_gap_m > 0, g->max_gap_m);
+    rb_j_num(cx, o, "own_gap_ratio", g->own_gap_ratio);
+    rb_j_bool(cx, o, "own_meets", g->own_meets);
+    rb_j_bool(cx, o, "own_only", g->own_only);
     rb_j_num(cx, o, "runs", (double)g->runs);
     add_gap_points(cx, o, g);
     if (!g->yield_run) {

@@ -238,16 +238,16 @@ rb_status rb_report_text_motion_design(const rb_report *r, size_t i, rb_txt_aren
         return RB_OK;
     md = &d->motions[i];
     g = &md->gap;
-    if (!(sc = new_scope(a, &t, 1)) || !(text = arena_alloc(a, 3, 320)))
+    if (!(sc = new_scope(a, &t, 1)) || !(text = arena_alloc(a, 3, 640)))
         return RB_ERR_NOMEM;
-    factor_vars(r, &t, "factor_no_yield", "factor_no_yield_text", &md->no_yield, text, 320);
+    factor_vars(r, &t, "factor_no_yield", "factor_no_yield_text", &md->no_yield, text, 640);
     factor_vars(r, &t, "factor_no_break", "factor_no_break_text", &md->no_break,
-                text + 320, 320);
+                text + 640, 640);
     rb_tv_num(&t, "no_break_usage_limit", d->no_break.usage_limit);
     rb_tv_str(&t, "gap_criterion", rb_enum_str(rb_criterion_names, (int)d->gap_criteria.kind));
     if (md->has_gap)
-        rb_gap_describe(g, rb_out_units_of(r->kase->output_units), text + 640, 320);
-    rb_tv_str(&t, "gap_text", md->has_gap ? text + 640 : NULL);
+        rb_gap_describe(g, rb_out_units_of(r->kase->output_units), text + 1280, 640);
+    rb_tv_str(&t, "gap_text", md->has_gap ? text + 1280 : NULL);
     rb_tv_int(&t, "has_yield_run", md->has_gap && g->yield_run);
     rb_tv_num(&t, "yield_initial_gap_ratio", g->yield_initial_gap_ratio);
     rb_tv_num(&t, "yield_final_gap_left", g->yield_final_gap_ratio[RB_LEFT]);

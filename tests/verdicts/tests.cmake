@@ -2,7 +2,7 @@
 # model's validity checks, and list rows that keep what they do not name.
 rb_shell_tests(PREFIX verdict SCRIPT tests/verdicts/verdict_test.sh SCRATCH verdict
                LABEL verdicts TIMEOUT 300 TOOLS $<TARGET_FILE:jsonget>
-               TESTS no_yield validity default_model)
+               TESTS no_yield validity default_model gap)
 add_executable(judge_probe ${PROJECT_SOURCE_DIR}/tests/verdicts/judge_probe.c)
 rb_target_defaults(judge_probe)
 target_link_libraries(judge_probe PRIVATE rb_all PkgConfig::CJSON)

@@ -148,6 +148,50 @@ default_model)
         fail "reference verdict: $(first_line)"
     echo "default_model: ok (rigid note $x Fy)"
     ;;
+gap)
+    # The recommended gap: its range is stated and bounded (gap ratio 0.03,
+    # design.max_gap 1/4 in = 6.35 mm by default), the case's own gap is
+    # one of its points, and a case that passes there never reads "no gap
+    # meets".
+    run design $C/gap-own.yaml --json "$D/g.json"
+    expect_rc 0 "gap-own"
+    g=motions.0.design.recommended_gap
+    # own gap 1/16 in over the lever arm 36 - 3 = 33 in: 0.0625 / 33
+    awk -v o="$(jget "$D/g.json" $g.own_gap_ratio)" -v m="$(jget "$D/g.json" $g.range_max)" \
+        -v r="$(jget "$D/g.json" $g.gap_ratio)" -v lo="$(jget "$D/g.json" $g.range_min)" \
+        'BEGIN { top = 6.35 / (33 * 25.4);   # 1/4 in over 33 in = 0.0075758
+                 exit !(o > 0.0625 / 33 * (1 - 1e-12) && o < 0.0625 / 33 * (1 + 1e-12) &&
+                        m <= top && m > top - 0.0025 && r >= lo && r <= m) }' ||
+        fail "gap-own: own $(jget "$D/g.json" $g.own_gap_ratio), range to $(jget "$D/g.json" $g.range_max), recommended $(jget "$D/g.json" $g.gap_ratio)"
+    [ "$(jget "$D/g.json" $g.bounded_by)" = max_gap ] || fail "bounded by $(jget "$D/g.json" $g.bounded_by)"
+    [ "$(jget "$D/g.json" $g.own_meets)" = true ] || fail "own gap not evaluated as passing"
+    grep -q 'bounded by design.max_gap 0.25 in (above 1/4 in ASCE 7 13.6.4' "$D/out" ||
+        fail "the text does not say what bounds the range"
+    # a larger max_gap leaves gap_ratio_max to bound it: 0.03
+    printf 'extends: gap-own.yaml\ndesign:\n  max_gap: 2 in\n' >"$C/.gap-wide.yaml"
+    run design "$C/.gap-wide.yaml" --json "$D/w.json"
+    rm -f "$C/.gap-wide.yaml"
+    [ "$(jget "$D/w.json" $g.bounded_by)" = gap_ratio_max ] &&
+        awk -v m="$(jget "$D/w.json" $g.range_max)" 'BEGIN { exit !(m > 0.03 - 1e-12 && m < 0.03 + 1e-12) }' ||
+        fail "max_gap 2 in: bounded by $(jget "$D/w.json" $g.bounded_by) at $(jget "$D/w.json" $g.range_max)"
+    # every passing motion of these cases has a recommendation within its
+    # range or at its own gap
+    for c in $C/gap-own.yaml cases/thesis/gap-recommendation-0.2.yaml cases/reference-harmonic.yaml \
+             tests/verdicts/cases/panel-rigid.yaml; do
+        "$RB" design "$c" --json "$D/p.json" --quiet >/dev/null 2>&1
+        python3 - "$D/p.json" "$c" <<'PY' || fail "$c: a passing motion without a recommendation"
+import json, sys
+d = json.load(open(sys.argv[1]))
+for m in d["motions"]:
+    g = m["design"]["recommended_gap"]
+    if m["verdict"]["pass"]:
+        assert g["found"] and "no gap" not in g["summary"], (sys.argv[2], m["name"], g["summary"])
+        assert g["range_min"] <= g["gap_ratio"] <= g["range_max"] or g["gap_ratio"] == g["own_gap_ratio"]
+        assert g["own_meets"]
+PY
+    done
+    echo "gap: ok"
+    ;;
 *)
     fail "unknown test"
     ;;
