@@ -19,8 +19,9 @@ void rb_design_opts_defaults(rb_design_opts *o)
     o->scan_end = 1.5;
     o->resolution = 0.001;
     o->gap_ratio_min = 0.0;
-    o->gap_ratio_max = 0.06;
+    o->gap_ratio_max = 0.03;
     o->gap_ratio_step = 0.0025;
+    o->max_gap_m = RB_DESIGN_MAX_GAP_M;
 }
 
 rb_status rb_design_fail(rb_diag *diag, rb_status st, const char *key, const char *msg)

@@ -245,7 +245,8 @@ static void gap_search_known_rotation(void)
     mo.amplitude_mps2 = 2 * dv.a_uplift_mps2;
     c.max_theta_over_alpha = 2 * asin(0.03125 / 2) / dv.alpha; /* between 0.03 and 0.0325 */
     rb_design_opts_defaults(&d);
-    d.gap_ratio_max = 0.03;
+    CHECK(d.gap_ratio_max == 0.03 && d.max_gap_m == 6.35e-3);   /* 1/4 in */
+    d.max_gap_m = 0;   /* the grid alone bounds the range here */
     CHECK(rb_gap_recommend(&m, &mo, NULL, &c, &d, 1, &g, NULL) == RB_OK);
     CHECK(g.found && g.gap_ratio == 0 && g.fail_index == -1 && g.n_points == 13);
     for (size_t i = 0; i < g.n_points; i++) {
@@ -254,20 +255,34 @@ static void gap_search_known_rotation(void)
         CHECK_NEAR(g.points[i].max_theta_over_alpha, th0 / dv.alpha, 2e-3 * th0 / dv.alpha);
     }
     CHECK(g.runs == 14 && g.yield_run);
-    char line[300];
+    char line[512];
     rb_gap_describe(&g, NULL, line, sizeof line);
     CHECK(strstr(line, "recommended gap ratio 0 (gap 0 mm)") != NULL);
     rb_gap_describe(&g, rb_out_units_of(RB_UNITS_US), line, sizeof line);
     CHECK(strstr(line, "recommended gap ratio 0 (gap 0 in)") != NULL);
     rb_gap_result_free(&g);
-    /* wider range: the largest gaps rotate too far, so no gap works */
+    /* wider range: the largest gaps rotate too far; the case's own gap
+     * ratio 0.01 (rotation 0.01 rad, below the limit's 0.03125) is run all
+     * the same, passes, and is the recommendation */
     d.gap_ratio_max = 0.06;
     CHECK(rb_gap_recommend(&m, &mo, NULL, &c, &d, 1, &g, NULL) == RB_OK);
-    CHECK(!g.found && g.fail_index == 24 && g.runs == 2 && g.points[24].evaluated);
-    CHECK(!g.points[24].meets && !g.points[23].evaluated);
+    CHECK(g.found && g.own_only && g.own_meets && g.gap_ratio == 0.01);
+    CHECK(g.fail_index == 24 && g.runs == 3 && g.points[24].evaluated);
+    CHECK(!g.points[24].meets && !g.points[23].evaluated && g.points[4].evaluated);
+    CHECK(g.bound == RB_GAP_BOUND_RATIO && g.range_max == g.points[24].gap_ratio);
     rb_gap_describe(&g, NULL, line, sizeof line);
     printf("%s\n", line);
-    CHECK(strstr(line, "no gap ratio in [0, 0.06]") != NULL);
+    CHECK(strstr(line, "the case's own: it meets the criteria, and the larger gap ratio "
+                       "0.06 fails (searched [0, 0.06], bounded by design.gap_ratio_max)")
+          != NULL);
+    rb_gap_result_free(&g);
+    /* the default bound: 6.35 mm over the lever arm 0.78 m = 0.00814, so
+     * the grid ends at 0.0075 and the own gap 0.01 above it joins it */
+    d.gap_ratio_max = 0.03;
+    d.max_gap_m = 6.35e-3;
+    CHECK(rb_gap_recommend(&m, &mo, NULL, &c, &d, 1, &g, NULL) == RB_OK);
+    CHECK(g.bound == RB_GAP_BOUND_MAX_GAP && g.own_above && g.n_points == 5);
+    CHECK(g.points[3].gap_ratio == 0.0075 && g.range_max == 0.01 && g.found);
     rb_gap_result_free(&g);
     rb_gap_result_free(NULL);
 }
@@ -312,6 +327,8 @@ static void gap_search_consistent(const rb_model *m, const rb_motion *mo)
     rb_criteria_init(&c);
     c.kind = RB_CRIT_NO_YIELD;
     rb_design_opts_defaults(&d);
+    d.gap_ratio_max = 0.06;   /* the thesis's grid */
+    d.max_gap_m = 0;
     for (int t = 0; t < 3; t++)
         CHECK(rb_gap_recommend(m, mo, NULL, &c, &d, t + 1, &g[t], NULL) == RB_OK);
     printf("El Centro 0.3 A*: recommended gap ratio %.4f, %ld runs; yielding run final "
@@ -319,7 +336,8 @@ static void gap_search_consistent(const rb_model *m, const rb_motion *mo)
            g[0].yield_final_gap_ratio[1]);
     CHECK(g[0].found && g[0].fail_index >= 0);
     for (size_t i = 0; i < g[0].n_points; i++)
-        CHECK(g[0].points[i].evaluated == ((long)i >= g[0].fail_index));
+        CHECK(g[0].points[i].evaluated == ((long)i >= g[0].fail_index
+                                           || g[0].points[i].gap_ratio == g[0].own_gap_ratio));
     /* the recommendation and the gap below it, run directly */
     rb_model mm = *m;
     mm.gap_m = g[0].gap_ratio * m->lever_arm_m;
@@ -345,6 +363,8 @@ static void factor_deterministic(const rb_model *m, const rb_motion *mo)
     rb_criteria_init(&c);
     c.kind = RB_CRIT_NO_YIELD;
     rb_design_opts_defaults(&d);
+    d.gap_ratio_max = 0.06;   /* the thesis's grid */
+    d.max_gap_m = 0;
     for (int t = 0; t < 3; t++)
         CHECK(rb_design_factor(m, mo, NULL, &c, &d, t + 1, NULL, &f[t], NULL) == RB_OK);
     printf("El Centro no-yield factor %.4f (level %.5f A*), %ld runs; speculative with "

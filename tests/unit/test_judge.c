@@ -94,15 +94,26 @@ static void validity(void)
     c.validity = RB_VALIDITY_FAIL;
     rb_judge(&c, &r, &v);
     CHECK(!v.pass && v.criteria_pass && strstr(v.reason, "validity: fail") != NULL);
-    /* sliding is a check only with a coefficient */
+    /* anchored, the anchors carry the horizontal reaction: the friction
+     * demand is reported, not judged */
     c.validity = RB_VALIDITY_WARN;
     c.friction_coefficient = 0.5;
-    r.max_friction_demand = 0.5;
-    rb_judge(&c, &r, &v);
-    CHECK(v.check[RB_CHECK_SLIDING] == RB_CHECK_OK);
     r.max_friction_demand = 0.51;
     rb_judge(&c, &r, &v);
-    CHECK(v.check[RB_CHECK_SLIDING] == RB_CHECK_WARNING);
+    CHECK(v.check[RB_CHECK_SLIDING] == RB_CHECK_NOT_CHECKED && v.pass);
+    /* free-standing, friction alone holds the base: a demand above the
+     * coefficient fails the verdict */
+    double fy = r.fy_row_n;
+    r.fy_row_n = 0;
+    r.max_friction_demand = 0.5;
+    rb_judge(&c, &r, &v);
+    CHECK(v.check[RB_CHECK_SLIDING] == RB_CHECK_OK && v.pass);
+    r.max_friction_demand = 0.51;
+    rb_judge(&c, &r, &v);
+    CHECK(v.check[RB_CHECK_SLIDING] == RB_CHECK_WARNING && !v.pass && !v.criteria_pass
+          && strstr(v.reason, "the base slides: friction demand 0.51") != NULL);
+    r.fy_row_n = fy;
+    r.max_friction_demand = 0;
     /* elastic bolts resolve the impact themselves */
     r.rigid_bolts = 0;
     rb_judge(&c, &r, &v);
@@ -138,12 +149,23 @@ static void margin(void)
     r.yielded[0] = 1;
     CHECK(rb_verdict_margin(&c, &r) == 0);
     r.yielded[0] = 0;
-    /* with validity: fail the checks it counts are limits too */
-    c.validity = RB_VALIDITY_FAIL;
+    /* an anchored base's friction demand is not a limit, a free-standing
+     * one's is, whatever the validity mode */
     c.friction_coefficient = 0.5;
     r.max_friction_demand = 0.45;
-    CHECK_NEAR(rb_verdict_margin(&c, &r), 0.1, 1e-15);
-    c.validity_mask = 1u << RB_CHECK_LIFT_OFF;   /* sliding not counted */
+    CHECK_NEAR(rb_verdict_margin(&c, &r), 0.3, 1e-15);
+    double fy = r.fy_row_n;
+    r.fy_row_n = 0;
+    c.kind = RB_CRIT_NO_BREAK;
+    CHECK_NEAR(rb_verdict_margin(&c, &r), 0.1, 1e-15);   /* 1 - 0.45 / 0.5 */
+    rb_governs_limit lim;
+    rb_verdict_margin_of(&c, &r, &lim);
+    CHECK(lim == RB_GOVERNS_SLIDING);
+    r.fy_row_n = fy;
+    c.kind = RB_CRIT_NO_YIELD;
+    /* with validity: fail the checks it counts are limits too */
+    c.validity = RB_VALIDITY_FAIL;
+    c.validity_mask = 1u << RB_CHECK_LIFT_OFF;
     CHECK_NEAR(rb_verdict_margin(&c, &r), 0.3, 1e-15);
     r.min_vertical_reaction_n = 0.05 * r.weight_n;
     CHECK_NEAR(rb_verdict_margin(&c, &r), 0.05, 1e-15);

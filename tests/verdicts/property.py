@@ -212,9 +212,15 @@ def governing_of_summary(path):
     for c in json.load(open(path))["cases"]:
         runs = c.get("runs") or []
         g = c.get("governing_motion")
-        rs = [x for x in runs if x["motion"] == g]
-        out[c["source"]] = (g, rs[0]["reason"] if rs and rs[0]["verdict"] == "fail"
-                            else None)
+        if not runs:
+            out[c["source"]] = (g, None)
+            continue
+        # two motions may share a name: find the run by the rule on the
+        # summary's own margins, and hold the name the summary gives to it
+        k = min(range(len(runs)), key=lambda i: (runs[i]["margin"], i))
+        if runs[k]["motion"] != g:
+            fail(f"{path}: {c['source']}: governing_motion {g}, least margin {runs[k]['motion']}")
+        out[c["source"]] = (g, runs[k]["reason"] if runs[k]["verdict"] == "fail" else None)
     return out
 
 
