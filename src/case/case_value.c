@@ -91,10 +91,12 @@ const rb_ynode *rb_cv_number(rb_cctx *c, rb_ynode *map, const char *path,
     if (bad) {
         range[0] = '\0';
         cv_range_str(range, sizeof range, lo, lo_incl, hi, hi_incl);
-        /* "damping: 5" meant 5 %: a bare number of 1 to 100 where a
-         * fraction of at most 1 is asked for */
-        int percent = dim == RB_DIM_RATIO && !isnan(hi) && hi <= 1 && q.value >= 1
-                      && q.value <= 100 && !strchr(v->text, '%');
+        /* "damping: 5" meant 5 %: a bare damping ratio of 1 to 100, the
+         * one ratio engineers say in percent (a z/h of 1.5 is no 1.5 %) */
+        size_t kl = strlen(key);
+        int percent = dim == RB_DIM_RATIO && kl >= 7 && strcmp(key + kl - 7, "damping") == 0
+                      && !isnan(hi) && hi <= 1 && q.value >= 1 && q.value <= 100
+                      && !strchr(v->text, '%');
         if (percent)
             rb_cctx_error(c, v, k, "must be %s (got '%s'; did you mean '%s %%'?)", range,
                           v->text, v->text);
