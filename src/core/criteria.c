@@ -222,7 +222,9 @@ static int route_fails(const rb_criteria *c, rb_route_applied route)
 static void route_reason(const rb_criteria *c, const rb_result *r, rb_route_applied route,
                          rb_verdict *v)
 {
-    char why[256];
+    /* the three conditions together are 157 characters; the reason's 256
+     * hold them after the longest prefix (95) */
+    char why[160];
     int yielded = r->yielded[0] || r->yielded[1];
     if (route == RB_ROUTE_APPLIED_DUCTILE)
         SAY(v, 0, "the anchorage is not ductile (ACI 318-19 17.10.5.3(a)%s): %s",

@@ -759,7 +759,7 @@ static void copy_meta(const struct rb_out_temp *t, int fd)
 static rb_status open_temp(const rb_out *o, const char *opt, struct rb_out_temp **tp,
                            FILE **fp, rb_diag *d)
 {
-    int fd, err;
+    int fd = -1, err = 0;
     *fp = NULL;
     *tp = temp_create(o->dir_fd, base_of(o->target), o->path, o->exists, o->dev, o->ino,
                       &fd, &err);
