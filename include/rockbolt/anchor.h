@@ -234,6 +234,13 @@ typedef struct {
 rb_status rb_anchor_check(const rb_model *m, const rb_anchor_inputs *in,
                           rb_anchor_strength *out, rb_diag *diag);
 
+/* The mode that governs a run's demand at one instant: the concrete-
+ * governed tension or shear mode, whichever of tension / phi N_n,c and
+ * shear / phi V_n,c is the larger (tension on a tie). The one place
+ * reports, the batch summary and the JSON take it from. */
+rb_anchor_mode rb_anchor_governing_mode(const rb_anchor_strength *s, double tension_n,
+                                        double shear_n);
+
 /* The clause of a mode ("17.6.2"); never NULL. */
 const char *rb_anchor_clause(rb_anchor_mode mode);
 

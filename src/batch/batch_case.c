@@ -123,9 +123,8 @@ void rb_batch_case_solve(rb_batch_slot *s, rb_batch_case *bc, size_t m, int desi
         const rb_anchor_strength *a = &s->c.anchor;
         run->has_anchor = 1;
         run->anchor_utilization = r->anchor_max_ratio;
-        run->anchor_mode = (int)(r->anchor_tension_n / a->phi_nn_n
-                                 >= r->anchor_shear_n / a->phi_vn_n
-                                 ? a->tension_mode : a->shear_mode);
+        run->anchor_mode = (int)rb_anchor_governing_mode(a, r->anchor_tension_n,
+                                                         r->anchor_shear_n);
     }
     if (!design)
         return;

@@ -36,6 +36,13 @@ const char *rb_anchor_clause(rb_anchor_mode mode)
     return (unsigned)mode < RB_ANCHOR_N_MODES ? clauses[mode] : "?";
 }
 
+rb_anchor_mode rb_anchor_governing_mode(const rb_anchor_strength *s, double tension_n,
+                                        double shear_n)
+{
+    return tension_n / s->phi_nn_concrete_n >= shear_n / s->phi_vn_concrete_n
+           ? s->concrete_tension_mode : s->concrete_shear_mode;
+}
+
 bool rb_anchor_mode_in_tension(rb_anchor_mode mode)
 {
     return mode <= RB_ANCHOR_BOND_N;

@@ -194,10 +194,10 @@ static void concrete(rb_strbuf *b, const rb_report *rep, const rb_out_units *u)
         cell_num(b, r->anchor_max_s);
         cell_sig(b, r->anchor_tension_n / u->force_f);
         cell_sig(b, r->anchor_shear_n / u->force_f);
-        int tension = r->anchor_tension_n / s->phi_nn_n >= r->anchor_shear_n / s->phi_vn_n;
-        cell_text(b, "td", NULL, rb_enum_str(rb_anchor_mode_names,
-                                              (int)(tension ? s->tension_mode
-                                                            : s->shear_mode)));
+        cell_text(b, "td", NULL,
+                  rb_enum_str(rb_anchor_mode_names,
+                              (int)rb_anchor_governing_mode(s, r->anchor_tension_n,
+                                                            r->anchor_shear_n)));
         rb_strbuf_puts(b, "</tr>\n");
     }
     rb_strbuf_puts(b, "</table></div>\n");

@@ -92,6 +92,9 @@ void rb_report_json_motion_anchorage(rb_jctx *cx, cJSON *motion_o, const rb_repo
     rb_j_num(cx, o, "tension_ratio", res->anchor_tension_n / a->phi_nn_concrete_n);
     rb_j_num(cx, o, "shear_ratio", res->anchor_shear_n / a->phi_vn_concrete_n);
     rb_j_num(cx, o, "max_shear_n", res->max_shear_total_n);
+    rb_j_str(cx, o, "governs", rb_enum_str(rb_anchor_mode_names,
+                                           (int)rb_anchor_governing_mode(a, res->anchor_tension_n,
+                                                                         res->anchor_shear_n)));
     rb_j_str(cx, o, "seismic_route", rb_enum_str(rb_route_applied_names, m->verdict.anchor_route));
     /* each mode's demand / design strength at that instant */
     cJSON *modes = rb_j_obj(cx, o, "mode_ratios");

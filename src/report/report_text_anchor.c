@@ -162,10 +162,7 @@ void rb_report_text_motion_anchorage(rb_tvars *t, const rb_report *r,
     rb_tv_num(t, "anchor_shear_max", res->max_shear_total_n / u->force_f);
     rb_tv_num(t, "anchor_shear_max_ratio", res->max_shear_total_n / s->phi_vn_concrete_n);
     rb_tv_str(t, "anchor_route", rb_enum_str(rb_route_applied_names, m->verdict.anchor_route));
-    /* the mode that governs at that instant, the larger share */
-    int tension = res->anchor_tension_n / s->phi_nn_concrete_n
-                  >= res->anchor_shear_n / s->phi_vn_concrete_n;
     rb_tv_str(t, "anchor_mode", rb_enum_str(rb_anchor_mode_names,
-                                            (int)(tension ? s->concrete_tension_mode
-                                                          : s->concrete_shear_mode)));
+                                            (int)rb_anchor_governing_mode(
+                                                s, res->anchor_tension_n, res->anchor_shear_n)));
 }
