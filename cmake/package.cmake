@@ -65,7 +65,7 @@ target_include_directories(rockbolt PRIVATE ${PROJECT_SOURCE_DIR}/src/cli)
 option(RB_LIBRARY "Build and install librockbolt (static and shared)" ON)
 if(RB_LIBRARY)
   set(RB_LIB_SOURCES)
-  foreach(tgt rb_util rb_core rb_record rb_synth rb_case rb_design rb_report rb_run rb_batch)
+  foreach(tgt rb_util rb_core rb_record rb_synth rb_case rb_design rb_report rb_pdf rb_run rb_batch)
     if(TARGET ${tgt})
       get_target_property(srcs ${tgt} SOURCES)
       list(APPEND RB_LIB_SOURCES ${srcs})
@@ -82,7 +82,8 @@ if(RB_LIBRARY)
       RB_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   target_include_directories(rockbolt_objects PRIVATE ${PROJECT_SOURCE_DIR}/include
       ${PROJECT_BINARY_DIR}/include ${PROJECT_SOURCE_DIR}/src)
-  set(RB_LIB_DEPS PkgConfig::YAML PkgConfig::CJSON PkgConfig::NETTLE PkgConfig::FFTW Threads::Threads m)
+  set(RB_LIB_DEPS PkgConfig::YAML PkgConfig::CJSON PkgConfig::NETTLE PkgConfig::FFTW
+      PkgConfig::PDF Threads::Threads m)
   target_link_libraries(rockbolt_objects PRIVATE ${RB_LIB_DEPS})
   add_dependencies(rockbolt_objects rb_batch)
 
@@ -134,6 +135,7 @@ install(TARGETS rockbolt RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/cases/records/
         DESTINATION ${CMAKE_INSTALL_DATADIR}/rockbolt/records)
 install(FILES ${PROJECT_SOURCE_DIR}/templates/report.txt
+              ${PROJECT_SOURCE_DIR}/templates/calc.txt
               ${PROJECT_SOURCE_DIR}/templates/starter.yaml
               ${PROJECT_SOURCE_DIR}/templates/ac156.yaml
         DESTINATION ${CMAKE_INSTALL_DATADIR}/rockbolt/templates)

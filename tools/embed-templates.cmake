@@ -4,7 +4,7 @@
 #   cmake -DTEMPLATES_DIR=templates -DOUT=template_builtin.c -P embed-templates.cmake
 # Byte arrays, not string literals, because C11 only promises
 # 4095-character literals.
-set(names report.txt starter.yaml ac156.yaml)
+set(names report.txt calc.txt starter.yaml ac156.yaml)
 set(c "/* Compiled-in copies of templates/, generated at build time by\n")
 string(APPEND c " * tools/embed-templates.cmake. */\n#include <string.h>\n")
 string(APPEND c "#include \"rockbolt/report.h\"\n\n")

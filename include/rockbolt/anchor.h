@@ -243,5 +243,8 @@ rb_anchor_mode rb_anchor_governing_mode(const rb_anchor_strength *s, double tens
 
 /* The clause of a mode ("17.6.2"); never NULL. */
 const char *rb_anchor_clause(rb_anchor_mode mode);
+/* The code's equation of a mode's nominal strength, in words and the
+ * code's symbols ("N_sa = A_se,N f_uta (Eq. 17.6.1.2), ..."); never NULL. */
+const char *rb_anchor_equation(rb_anchor_mode mode);
 
 #endif

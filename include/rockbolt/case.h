@@ -125,6 +125,16 @@ typedef struct {
     size_t n_weights;         /* 0: FEMA P-58's 0.7 and 0.3 */
 } rb_case_fragility_opts;
 
+/* project: who and what the calculation is for, printed on the cover of
+ * the PDF calculation package (docs/pdf.md). Each owned, one line of 1 to
+ * 200 characters, or NULL when not given. */
+typedef struct {
+    char *project, *client, *engineer, *checker, *date, *revision, *job_number;
+    int given;                /* the section was there */
+} rb_case_project;
+/* Free the texts of p and set them to NULL. */
+void rb_case_project_free(rb_case_project *p);
+
 typedef struct {
     char *path;               /* owned; the file as given */
     char *name;               /* owned; case name (defaults to the file stem) */
@@ -149,6 +159,7 @@ typedef struct {
     double anchor_static_utilization;
     int anchor_static_clause;
     rb_case_fragility_opts fragility; /* fragility: */
+    rb_case_project project;  /* project: */
     rb_case_motion *motions;  /* owned array of n_motions (>= 1) */
     size_t n_motions;
     rb_case_target *targets;  /* owned array: the synthetic motions' targets */

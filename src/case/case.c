@@ -140,6 +140,7 @@ void rb_case_free(rb_case *c)
     free(c->name);
     free(c->description);
     free(c->fragility.p58_id);
+    rb_case_project_free(&c->project);
     for (size_t i = 0; c->motions && i < c->n_motions; i++) {
         free(c->motions[i].name);
         free(c->motions[i].source);

@@ -315,6 +315,7 @@ void rb_cv_note_field(rb_cctx *c, const char *field, const char *key,
 void rb_case_read_schema(rb_cctx *c, rb_ynode *root, rb_case *cs);
 /* case_fragility.c: the fragility: section */
 void rb_case_read_fragility(rb_cctx *c, rb_ynode *map, rb_case *cs);
+void rb_case_read_project(rb_cctx *c, rb_ynode *map, rb_case *cs);   /* case_project.c */
 void rb_case_read_motions(rb_cctx *c, rb_ynode *root);
 void rb_case_read_design(rb_cctx *c, rb_ynode *d, rb_case *cs);   /* case_design.c */
 void rb_case_resolve(rb_cctx *c, rb_case *cs, const rb_ynode *root);

@@ -18,7 +18,7 @@
 static const char *const top_keys[] = {
     "name", "description", "extends", "equipment", "anchorage", "gap",
     "gap_ratio", "motion", "motions", "criteria", "analysis", "design",
-    "output_units", "concrete", "fragility", NULL};
+    "output_units", "concrete", "fragility", "project", NULL};
 int rb_case_top_key(const char *key)
 {
     for (size_t k = 0; top_keys[k]; k++)
@@ -402,6 +402,8 @@ void rb_case_read_schema(rb_cctx *c, rb_ynode *root, rb_case *cs)
         rb_case_read_design(c, v, cs);
     if ((v = schema_section(c, root, "fragility", 0, "")))
         rb_case_read_fragility(c, v, cs);
+    if ((v = schema_section(c, root, "project", 0, "")))
+        rb_case_read_project(c, v, cs);
     rb_case_read_motions(c, root);
     /* Output units: as asked, else the system most quantities were written
      * in (SI on a tie, and for a case with no unit of either system). */

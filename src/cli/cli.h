@@ -47,6 +47,7 @@ typedef struct {
     const char *help_command; /* help: the command asked about, or NULL */
     const char *csv_path;     /* fragility: --csv FILE, or NULL */
     const char *p58_path;     /* fragility: --p58 FILE, or NULL */
+    const char *pdf_path;     /* --pdf FILE: the calculation package, or NULL */
     unsigned long long seed;  /* fragility: --seed N of the bootstrap */
     rb_spectrum_opts spectrum; /* spectrum: --damping, --from, --to, --per-octave */
     rb_plot_scale x_scale;    /* fragility: --x-scale of the figure (log) */
@@ -74,7 +75,7 @@ rb_exit rb_cli_take_intensity(const char *v, rb_fragility_intensity *out, int *g
 rb_exit rb_cli_sandbox(const char *dir);
 
 /* fragility and spectrum (cli_case_outputs.c): plan --json, --csv, --svg,
- * --html and --p58 against the case; load the case and add the files it read to
+ * --html, --p58 and --pdf against the case; load the case and add the files it read to
  * the plan's inputs. Each prints what went wrong. */
 #include "rockbolt/outplan.h"
 rb_exit rb_cli_plan_case_outputs(const rb_cli_opts *o, rb_outplan *p);
@@ -90,6 +91,7 @@ typedef struct {
     char *(*csv)(const void *ctx);
     rb_status (*figure)(const void *ctx, const char *title, char **out, rb_diag *d);
     char *(*p58)(const void *ctx);  /* fragility --p58; NULL elsewhere */
+    const rb_case *kase;      /* --pdf: the cover's case; NULL elsewhere */
 } rb_cli_renders;
 /* Write the planned outputs (all or none), then the text on stdout unless
  * --quiet or an output is stdout. */

@@ -130,7 +130,7 @@ static rb_exit take_threads(const char *v, rb_cli_opts *o)
 
 enum { OPT_JSON = 256, OPT_TEXT, OPT_HISTORY, OPT_SVG, OPT_HTML, OPT_SANDBOX,
        OPT_SWEEP_CSV, OPT_CSV, OPT_SEED, OPT_DAMPING, OPT_FROM, OPT_TO, OPT_PER_OCTAVE,
-       OPT_AC156, OPT_X_SCALE, OPT_SWEEP_GAP, OPT_INTENSITY, OPT_P58 };
+       OPT_AC156, OPT_X_SCALE, OPT_SWEEP_GAP, OPT_INTENSITY, OPT_P58, OPT_PDF };
 
 /* Every long option once, with the commands that take it: each command's
  * table is drawn from this one, so an option means the same everywhere. */
@@ -148,6 +148,7 @@ static const struct {
     {{"history", required_argument, NULL, OPT_HISTORY}, CHECK | DESIGN},
     {{"svg", required_argument, NULL, OPT_SVG}, CHECK | DESIGN | FRAGILITY | SPECTRUM},
     {{"html", required_argument, NULL, OPT_HTML}, CHECK | DESIGN | FRAGILITY | SPECTRUM},
+    {{"pdf", required_argument, NULL, OPT_PDF}, CHECK | DESIGN | FRAGILITY},
     {{"csv", required_argument, NULL, OPT_CSV}, FRAGILITY | SPECTRUM},
     {{"p58", required_argument, NULL, OPT_P58}, FRAGILITY},
     {{"sandbox", required_argument, NULL, OPT_SANDBOX},
@@ -229,6 +230,8 @@ static rb_exit take_option(int c, const rb_cli_getopt *g, rb_cli_opts *o)
         return take_value(g->name, g->arg, &o->csv_path);
     case OPT_P58:
         return take_value(g->name, g->arg, &o->p58_path);
+    case OPT_PDF:
+        return take_value(g->name, g->arg, &o->pdf_path);
     case OPT_SEED:
         return rb_cli_take_seed(g->arg, &o->seed);
     case OPT_SWEEP_GAP:
@@ -285,15 +288,15 @@ static rb_exit take_option(int c, const rb_cli_getopt *g, rb_cli_opts *o)
 /* Two outputs, or an output and the case, must not be the same file. */
 static rb_exit check_distinct(const rb_cli_opts *o)
 {
-    const char *p[9] = { o->json_path, o->text_path, o->history_path,
-                         o->sweep_csv_path, o->svg_path, o->html_path, o->csv_path,
-                         o->p58_path, o->case_path };
-    static const char *const what[9] = { "--json", "--text", "--history",
-                                         "--sweep-csv", "--svg", "--html", "--csv",
-                                         "--p58", "the case" };
+    const char *p[10] = { o->json_path, o->text_path, o->history_path,
+                          o->sweep_csv_path, o->svg_path, o->html_path, o->csv_path,
+                          o->p58_path, o->pdf_path, o->case_path };
+    static const char *const what[10] = { "--json", "--text", "--history",
+                                          "--sweep-csv", "--svg", "--html", "--csv",
+                                          "--p58", "--pdf", "the case" };
     int a, b;
-    for (a = 0; a < 8; a++)
-        for (b = a + 1; b < 9; b++)
+    for (a = 0; a < 9; a++)
+        for (b = a + 1; b < 10; b++)
             if (p[a] && p[b] && strcmp(p[a], p[b]) == 0) {
                 rb_cli_error(p[a], what[a], "same file as %s", what[b]);
                 return RB_EXIT_USAGE;

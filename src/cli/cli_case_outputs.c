@@ -1,5 +1,5 @@
 /* What the commands that read one case and write figures and tables from
- * it (fragility, spectrum) share: planning --json, --csv, --svg and --html
+ * it (fragility, spectrum) share: planning --json, --csv, --svg, --html and --pdf
  * against the case, loading the case with its own files added to the
  * plan's inputs, so that no output can replace one, and writing the
  * outputs and the table on stdout from the command's renderers. */
@@ -8,17 +8,19 @@
 #include <string.h>
 #include "cli.h"
 #include "cli_batch.h"
+#include "rockbolt/pdf.h"
 #include "rockbolt/plot.h"
 
 rb_exit rb_cli_plan_case_outputs(const rb_cli_opts *o, rb_outplan *p)
 {
-    const char *paths[5] = {o->json_path, o->csv_path, o->svg_path, o->html_path,
-                            o->p58_path};
-    static const char *const opts[5] = {"--json", "--csv", "--svg", "--html", "--p58"};
+    const char *paths[6] = {o->json_path, o->csv_path, o->svg_path, o->html_path,
+                            o->p58_path, o->pdf_path};
+    static const char *const opts[6] = {"--json", "--csv", "--svg", "--html", "--p58",
+                                        "--pdf"};
     rb_diag d;
     rb_diag_clear(&d);
     rb_status st = rb_outplan_add_input(p, o->case_path, &d);
-    for (int k = 0; k < 5 && st == RB_OK; k++)
+    for (int k = 0; k < 6 && st == RB_OK; k++)
         if (paths[k])
             st = rb_outplan_add(p, opts[k], paths[k], &d);
     return st == RB_OK ? RB_EXIT_PASS : rb_cli_plan_error(st, &d);
@@ -57,6 +59,26 @@ static rb_status page(const rb_cli_renders *r, char **out, rb_diag *d)
     return st;
 }
 
+/* --pdf: the cover from the case, the table as printed and the figure */
+static rb_status pdf(const rb_cli_renders *r, FILE *fp, rb_diag *d)
+{
+    char *svg = NULL, *text = r->text(r->ctx), *doc = NULL;
+    size_t len = 0;
+    rb_status st = text && r->kase ? r->figure(r->ctx, r->title, &svg, d) : RB_ERR_NOMEM;
+    if (st == RB_OK) {
+        const char *svgs[1] = {svg};
+        rb_pdf_cover cv = {r->title, &r->kase->project, r->kase->name, r->kase->path, NULL,
+                           r->kase->output_units};
+        st = rb_pdf_text_render(&cv, r->title, text, svgs, 1, &doc, &len, d);
+    }
+    if (st == RB_OK && fwrite(doc, 1, len, fp) != len)
+        st = RB_ERR_IO;
+    free(doc);
+    free(svg);
+    free(text);
+    return st;
+}
+
 static rb_status fill(void *ctx, size_t i, FILE *fp, rb_diag *d)
 {
     const void *const *cx = ctx;
@@ -65,6 +87,12 @@ static rb_status fill(void *ctx, size_t i, FILE *fp, rb_diag *d)
     const char *opt = plan->outs[i].opt;
     char *text = NULL;
     rb_status st = RB_OK;
+    if (strcmp(opt, "--pdf") == 0) {
+        st = pdf(r, fp, d);
+        if (st != RB_OK && !d->msg[0])
+            snprintf(d->msg, sizeof d->msg, "%s", rb_status_str(st));
+        return st;
+    }
     if (strcmp(opt, "--json") == 0)
         text = r->json(r->ctx);
     else if (strcmp(opt, "--csv") == 0)

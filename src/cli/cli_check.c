@@ -14,12 +14,13 @@
 #include "cli.h"
 #include "util/pool.h"
 #include "rockbolt/outplan.h"
+#include "rockbolt/pdf.h"
 #include "rockbolt/plot.h"
 #include "rockbolt/run.h"
 #include "rockbolt/textsafe.h"
 
 
-typedef enum { OUT_JSON, OUT_TEXT, OUT_HISTORY, OUT_SWEEP, OUT_SVG, OUT_HTML } out_kind;
+typedef enum { OUT_JSON, OUT_TEXT, OUT_HISTORY, OUT_SWEEP, OUT_SVG, OUT_HTML, OUT_PDF } out_kind;
 
 /* What one output of the plan holds; sweeps are numbered frequency sweeps
  * first, then each motion's amplitude sweeps, in case order; figures each
@@ -42,6 +43,10 @@ typedef struct {
                                 sweep; n_svgs owned strings */
     size_t n_svgs;
     char *html;              /* owned */
+    char *calc_tmpl;         /* --pdf: the package's template, owned */
+    const char *calc_origin;
+    char *pdf;               /* owned: pdf_len bytes */
+    size_t pdf_len;
     rb_outplan plan;         /* every output, in the order of outs */
     struct out_file *outs;   /* owned, plan.n of them */
 } check_run;
@@ -62,6 +67,8 @@ static void run_free(check_run *r)
         free(r->svgs[i]);
     free(r->svgs);
     free(r->html);
+    free(r->calc_tmpl);
+    free(r->pdf);
     free(r->outs);
     rb_outplan_free(&r->plan);
     rb_case_free(&r->c);
@@ -103,6 +110,12 @@ static rb_exit prepare(const rb_cli_opts *o, check_run *r)
         rb_cli_error(NULL, NULL, "out of memory");
         return RB_EXIT_INTERNAL;
     }
+    /* the PDF's template, before any solving: an unreadable one is exit 2 */
+    if (o->pdf_path
+        && (st = rb_template_load("calc.txt", &r->calc_tmpl, &r->calc_origin, &d)) != RB_OK) {
+        rb_cli_diag_print(&d);
+        return st == RB_ERR_IO ? RB_EXIT_USAGE : RB_EXIT_INTERNAL;
+    }
     /* the HTML page carries the text report */
     if (!o->text_path && !o->html_path && o->quiet)
         return RB_EXIT_PASS;
@@ -135,7 +148,7 @@ static rb_status motion_job(void *v, size_t i)
 static rb_exit solve_all(const rb_cli_opts *o, check_run *r)
 {
     size_t n = r->c.n_motions;
-    motion_jobs m = {r, o->history_path || o->svg_path || o->html_path, NULL};
+    motion_jobs m = {r, o->history_path || o->svg_path || o->html_path || o->pdf_path, NULL};
     rb_status *sts = calloc(n ? n : 1, sizeof *sts);
     m.diags = calloc(n ? n : 1, sizeof *m.diags);
     rb_status st = sts && m.diags ? rb_pool_map(n, o->threads, motion_job, &m, sts)
@@ -223,7 +236,7 @@ static rb_exit render_figures(const rb_cli_opts *o, check_run *r)
     rb_status st = RB_OK;
     rb_diag d;
     char title[320];
-    if (!o->svg_path && !o->html_path)
+    if (!o->svg_path && !o->html_path && !o->pdf_path)
         return RB_EXIT_PASS;
     if (!(r->svgs = calloc(n ? n : 1, sizeof *r->svgs))) {
         rb_cli_error(NULL, NULL, "out of memory");
@@ -247,6 +260,19 @@ static rb_exit render_figures(const rb_cli_opts *o, check_run *r)
                  r->c.name ? r->c.name : "case", r->rep.headline);
         st = rb_plot_html_page(&r->rep, title, r->text, (const char *const *)r->svgs,
                                r->n_svgs, &r->html, &d);
+    }
+    if (st == RB_OK && o->pdf_path) {
+        st = rb_pdf_report_render(&r->rep, o->command == RB_CMD_DESIGN ? "design" : "check",
+                                  r->calc_tmpl, (const char *const *)r->svgs, r->n_svgs,
+                                  &r->pdf, &r->pdf_len, &d);
+        if (st == RB_ERR_PARSE) {
+            /* an error of the template, at its line and column */
+            int user = strcmp(r->calc_origin, "RB_TEMPLATE_DIR") == 0;
+            snprintf(d.file, sizeof d.file, "%s/calc.txt",
+                     user ? getenv("RB_TEMPLATE_DIR") : "templates");
+            rb_cli_diag_print(&d);
+            return user ? RB_EXIT_USAGE : RB_EXIT_INTERNAL;
+        }
     }
     if (st != RB_OK) {
         rb_cli_error(NULL, d.key[0] ? d.key : NULL, "cannot draw the figures: %s%s%s",
@@ -310,6 +336,8 @@ static rb_exit plan_fixed(const rb_cli_opts *o, check_run *r)
         e = plan_add(r, "--history", o->history_path, OUT_HISTORY, 0);
     if (e == RB_EXIT_PASS && o->html_path)
         e = plan_add(r, "--html", o->html_path, OUT_HTML, 0);
+    if (e == RB_EXIT_PASS && o->pdf_path)
+        e = plan_add(r, "--pdf", o->pdf_path, OUT_PDF, 0);
     return e;
 }
 
@@ -398,6 +426,14 @@ static rb_status fill_output(void *ctx, size_t i, FILE *fp, rb_diag *d)
     case OUT_SVG:
         s = of->k < r->n_svgs ? r->svgs[of->k] : NULL;
         break;
+    case OUT_PDF:
+        if (!r->pdf)
+            break;
+        if (fwrite(r->pdf, 1, r->pdf_len, fp) != r->pdf_len) {
+            snprintf(d->msg, sizeof d->msg, "cannot write");
+            return RB_ERR_IO;
+        }
+        return RB_OK;
     }
     if (!s) {
         /* the plan counted more sweeps or figures than were made */

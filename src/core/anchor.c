@@ -31,6 +31,30 @@ static const char *const clauses[RB_ANCHOR_N_MODES] = {
     [RB_ANCHOR_BREAKOUT_V] = "17.7.2", [RB_ANCHOR_PRYOUT_V] = "17.7.3",
 };
 
+/* The code's equation of each mode's nominal strength, as the
+ * calculation package quotes it (in-lb and SI editions alike). */
+static const char *const equations[RB_ANCHOR_N_MODES] = {
+    [RB_ANCHOR_STEEL_N] = "N_sa = A_se,N f_uta (Eq. 17.6.1.2), n anchors of a row",
+    [RB_ANCHOR_BREAKOUT_N] = "N_cbg = (A_Nc / A_Nco) psi_ec,N psi_ed,N psi_c,N psi_cp,N N_b "
+                             "(Eq. 17.6.2.1b)",
+    [RB_ANCHOR_PULLOUT_N] = "N_pn = psi_c,P N_p (Eq. 17.6.3.1), N_p = 8 A_brg f'c "
+                            "(Eq. 17.6.3.2.2a) or the evaluation report's",
+    [RB_ANCHOR_SIDEFACE_N] = "N_sb = k c_a1 sqrt(A_brg) lambda_a sqrt(f'c) (Eq. 17.6.4.1), "
+                             "k = 160 in-lb, 13 SI",
+    [RB_ANCHOR_BOND_N] = "N_ag = (A_Na / A_Nao) psi_ec,Na psi_ed,Na psi_cp,Na N_ba "
+                         "(Eq. 17.6.5.1b)",
+    [RB_ANCHOR_STEEL_V] = "V_sa = 0.6 A_se,V f_uta (Eq. 17.7.1.2b), all anchors; x 0.8 on a "
+                          "grout pad (17.7.1.2.1)",
+    [RB_ANCHOR_BREAKOUT_V] = "V_cbg = (A_Vc / A_Vco) psi_ec,V psi_ed,V psi_c,V psi_h,V V_b "
+                             "(Eq. 17.7.2.1b)",
+    [RB_ANCHOR_PRYOUT_V] = "V_cpg = k_cp N_cpg (Eq. 17.7.3.1b)",
+};
+
+const char *rb_anchor_equation(rb_anchor_mode mode)
+{
+    return (unsigned)mode < RB_ANCHOR_N_MODES ? equations[mode] : "?";
+}
+
 const char *rb_anchor_clause(rb_anchor_mode mode)
 {
     return (unsigned)mode < RB_ANCHOR_N_MODES ? clauses[mode] : "?";

@@ -29,6 +29,7 @@ static int modes_list(rb_txt_arena *a, const rb_report *r, rb_tlist *out)
             return 0;
         rb_tv_str(&t, "mode", rb_enum_str(rb_anchor_mode_names, k));
         rb_tv_str(&t, "clause", rb_anchor_clause((rb_anchor_mode)k));
+        rb_tv_str(&t, "equation", rb_anchor_equation((rb_anchor_mode)k));
         rb_tv_opt(&t, "nominal", m->applies, m->nominal_n / u->force_f);
         rb_tv_num(&t, "phi", m->phi);
         rb_tv_num(&t, "seismic", m->seismic);

@@ -1,4 +1,4 @@
-/* Finding a shipped template (report.txt, starter.yaml, ac156.yaml) at run
+/* Finding a shipped template (report.txt, calc.txt, starter.yaml, ac156.yaml) at run
  * time.
  *
  * A developer edits templates/ and wants the change seen without a
