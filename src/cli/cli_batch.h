@@ -11,6 +11,7 @@ typedef struct {
     size_t n_inputs;
     const char *json_path, *csv_path, *junit_path;
     const char *p58_path;     /* batch: --p58 FILE, or NULL */
+    const char *pdf_path;     /* batch: --pdf FILE, the summary's package, or NULL */
     const char *reports_dir;  /* batch only */
     const char *base;         /* batch: --base CASE */
     const char *sandbox;      /* batch: --sandbox DIR, or NULL */

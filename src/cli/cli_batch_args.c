@@ -55,7 +55,7 @@ static rb_exit parse_shard(const char *v, rb_batch_cli *o)
 
 enum { OPT_JSON = 256, OPT_CSV, OPT_JUNIT, OPT_REPORTS, OPT_BASE, OPT_SANDBOX,
        OPT_DESIGN, OPT_SHARD, OPT_ENCODING, OPT_FRAGILITY, OPT_SEED, OPT_INTENSITY,
-       OPT_P58 };
+       OPT_P58, OPT_PDF };
 
 /* Options shared by batch and merge are the output files and --quiet. */
 static const struct option merge_longs[] = {
@@ -77,6 +77,7 @@ static const struct option batch_longs[] = {
     {"design", no_argument, NULL, OPT_DESIGN},
     {"fragility", no_argument, NULL, OPT_FRAGILITY},
     {"p58", required_argument, NULL, OPT_P58},
+    {"pdf", required_argument, NULL, OPT_PDF},
     {"seed", required_argument, NULL, OPT_SEED},
     {"intensity", required_argument, NULL, OPT_INTENSITY},
     {"shard", required_argument, NULL, OPT_SHARD},
@@ -100,6 +101,8 @@ static rb_exit take_option(int c, const rb_cli_getopt *g, rb_batch_cli *o)
         return take(g->name, g->arg, &o->junit_path);
     case OPT_P58:
         return take(g->name, g->arg, &o->p58_path);
+    case OPT_PDF:
+        return take(g->name, g->arg, &o->pdf_path);
     case OPT_REPORTS:
         return take(g->name, g->arg, &o->reports_dir);
     case OPT_BASE:

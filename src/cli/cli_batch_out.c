@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "cli_batch.h"
+#include "rockbolt/pdf.h"
 
 rb_exit rb_cli_batch_begin(int argc, char **argv, int is_merge, rb_batch_cli *o,
                            int *done)
@@ -33,8 +34,9 @@ rb_exit rb_cli_plan_error(rb_status st, const rb_diag *d)
 
 rb_exit rb_cli_batch_check_outputs(rb_batch_cli *o)
 {
-    const char *paths[4] = {o->json_path, o->csv_path, o->junit_path, o->p58_path};
-    static const char *const names[4] = {"--json", "--csv", "--junit", "--p58"};
+    const char *paths[5] = {o->json_path, o->csv_path, o->junit_path, o->p58_path,
+                            o->pdf_path};
+    static const char *const names[5] = {"--json", "--csv", "--junit", "--p58", "--pdf"};
     rb_status st = RB_OK;
     rb_diag d;
     rb_diag_clear(&d);
@@ -44,10 +46,33 @@ rb_exit rb_cli_batch_check_outputs(rb_batch_cli *o)
         st = rb_outplan_add_input(&o->plan, o->inputs[i], &d);
     if (st == RB_OK && o->base)
         st = rb_outplan_add_input(&o->plan, o->base, &d);
-    for (int i = 0; i < 4 && st == RB_OK; i++)
+    for (int i = 0; i < 5 && st == RB_OK; i++)
         if (paths[i])
             st = rb_outplan_add(&o->plan, names[i], paths[i], &d);
     return st == RB_OK ? RB_EXIT_PASS : rb_cli_plan_error(st, &d);
+}
+
+/* --pdf: the summary table as printed, in a calculation package */
+static rb_status pdf(rb_batch_cli *o, const rb_batch_summary *s, FILE *fp, rb_diag *d)
+{
+    char *text = NULL, *doc = NULL;
+    size_t n = 0, len = 0;
+    FILE *mem = open_memstream(&text, &n);
+    if (!mem)
+        return RB_ERR_NOMEM;
+    rb_status st = rb_cli_stream_copy(o, RB_BATCH_TEXT, s, mem);
+    if (fclose(mem) != 0 && st == RB_OK)
+        st = RB_ERR_NOMEM;
+    if (st == RB_OK) {
+        rb_pdf_cover cv = {"Seismic anchorage batch summary", NULL, NULL, NULL, NULL,
+                           RB_UNITS_SI};
+        st = rb_pdf_text_render(&cv, "Summary", text, NULL, 0, &doc, &len, d);
+    }
+    if (st == RB_OK && fwrite(doc, 1, len, fp) != len)
+        st = RB_ERR_IO;
+    free(doc);
+    free(text);
+    return st;
 }
 
 static rb_status fill(void *ctx, size_t i, FILE *fp, rb_diag *d)
@@ -56,6 +81,16 @@ static rb_status fill(void *ctx, size_t i, FILE *fp, rb_diag *d)
     rb_batch_cli *o = (rb_batch_cli *)cx[0];
     const rb_batch_summary *s = cx[1];
     const char *opt = o->plan.outs[i].opt;
+    if (strcmp(opt, "--pdf") == 0) {
+        rb_status st = pdf(o, s, fp, d);
+        if (st != RB_OK && o->spool_failed)
+            return rb_diag_set(d, RB_ERR_IO, o->spool_failed, 0, 0, "",
+                               "cannot read back the summary's temporary file: %.200s",
+                               strerror(o->spool_errno));
+        if (st != RB_OK && !d->msg[0])
+            snprintf(d->msg, sizeof d->msg, "%s", rb_status_str(st));
+        return st;
+    }
     rb_batch_format f = strcmp(opt, "--json") == 0 ? RB_BATCH_JSON
                       : strcmp(opt, "--csv") == 0 ? RB_BATCH_CSV
                       : strcmp(opt, "--p58") == 0 ? RB_BATCH_P58
@@ -117,7 +152,8 @@ rb_exit rb_cli_batch_finish(rb_batch_cli *o, const rb_batch_summary *s)
     rb_exit e = write_all(o, s);
     if (e != RB_EXIT_PASS)
         return e;
-    if (o->spool[RB_BATCH_TEXT]) {
+    /* the text is spooled for --pdf too, and printed only when asked */
+    if (o->spool[RB_BATCH_TEXT] && !o->quiet && !rb_outplan_uses_stdout(&o->plan)) {
         rb_status st = rb_cli_stream_copy(o, RB_BATCH_TEXT, s, stdout);
         if (st != RB_OK && o->spool_failed)
             return rb_cli_stream_error(o);

@@ -51,7 +51,7 @@ rb_exit rb_cli_stream_open(rb_batch_cli *o)
     want[RB_BATCH_JUNIT] = o->junit_path != NULL;
     want[RB_BATCH_P58] = o->p58_path != NULL;
     /* an output on standard output is all that goes there */
-    want[RB_BATCH_TEXT] = !o->quiet && !rb_outplan_uses_stdout(&o->plan);
+    want[RB_BATCH_TEXT] = (!o->quiet && !rb_outplan_uses_stdout(&o->plan)) || o->pdf_path;
     for (int f = 0; f < RB_BATCH_N_FORMATS; f++)
         if (want[f] && !(o->spool[f] = spool_open(&o->spool_path[f])))
             return RB_EXIT_USAGE;

@@ -25,8 +25,8 @@ void rb_pdf_cover_markup(rb_strbuf *b, const rb_pdf_cover *cv)
     if (cv->case_name) {
         field(b, "case", cv->case_name);
         field(b, "case file", cv->case_path);
+        field(b, "units", cv->units == RB_UNITS_US ? "US customary" : "SI");
     }
-    field(b, "units", cv->units == RB_UNITS_US ? "US customary" : "SI");
     rb_strbuf_printf(b, "| calculated with | rockbolt %s\n", RB_VERSION_STRING);
     if (cv->verdict)
         field(b, "result", cv->verdict);
