@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "plot_internal.h"
+#include "report_internal.h"
 #include "rockbolt/names.h"
 
 static void cell_text(rb_strbuf *b, const char *tag, const char *cls, const char *s)
@@ -203,6 +204,68 @@ static void concrete(rb_strbuf *b, const rb_report *rep, const rb_out_units *u)
     rb_strbuf_puts(b, "</table></div>\n");
 }
 
+/* The design (`rockbolt design`): each motion's design factors and
+ * recommended gap, in the words of the text report, then the code-static
+ * check; the design page's summary as the PDF package has it. */
+static void design(rb_strbuf *b, const rb_report *rep, const rb_out_units *u)
+{
+    const rb_case_design *d = rep->design;
+    char name[32], text[640];
+    rb_strbuf_puts(b, "<div class=\"scroll\"><table class=\"design\">\n<caption>Design "
+                      "factor of each motion: A* over the largest floor peak the design "
+                      "withstands</caption>\n<tr><th>motion</th><th>bolts elastic</th>"
+                      "<th>bolts not breaking</th><th>recommended gap</th></tr>\n");
+    for (size_t i = 0; i < rep->n_motions && i < d->n_motions; i++) {
+        const rb_motion_design *md = &d->motions[i];
+        rb_strbuf_puts(b, "<tr>");
+        cell_text(b, "td", NULL, motion_name(&rep->motions[i], i, name, sizeof name));
+        rb_design_factor_describe(&md->no_yield, u, rep->derived.g, text, sizeof text);
+        cell_text(b, "td", NULL, text);
+        rb_design_factor_describe(&md->no_break, u, rep->derived.g, text, sizeof text);
+        cell_text(b, "td", NULL, text);
+        if (md->has_gap)
+            rb_gap_describe(&md->gap, u, text, sizeof text);
+        cell_text(b, "td", NULL, md->has_gap ? text : "no bolts");
+        rb_strbuf_puts(b, "</tr>\n");
+    }
+    rb_strbuf_puts(b, "</table></div>\n");
+    rb_strbuf_puts(b, "<p class=\"criterion\">The recommended gap is bounded by the ");
+    rb_plot_escape(b, rb_enum_str(rb_criterion_names, (int)d->gap_criteria.kind));
+    rb_strbuf_printf(b, " criterion; the design factor without breaking by usage limit "
+                        "%.2f.</p>\n", d->no_break.usage_limit);
+    if (!d->has_code)
+        return;
+    const rb_code_result *k = &d->code;
+    rb_strbuf_printf(b, "<div class=\"scroll\"><table class=\"code\">\n<caption>"
+                        "Code-static check, %s</caption>\n",
+                     rep->kase->code.edition == RB_ASCE7_16 ? "ASCE 7-16" : "ASCE 7-22");
+    row_num(b, "horizontal seismic design force F_p", k->fp_n / u->force_f, u->force);
+    row_num(b, "F_p / W_p", k->fp_over_wp, "");
+    rb_strbuf_puts(b, "<tr><th>bound</th>");
+    cell_text(b, "td", NULL, rb_report_code_bound_str(k->bound));
+    rb_strbuf_puts(b, "<td></td></tr>\n");
+    row_num(b, "H_f", k->hf, "");
+    row_num(b, "R_mu", k->rmu, "");
+    row_num(b, "anchor design force", k->fp_anchor_n / u->force_f, u->force);
+    row_num(b, "as a floor acceleration", k->accel_astar, "A*");
+    row_num(b, "bolt row tension T", k->tension_n / u->force_f, u->force);
+    row_num(b, "phi N_sa of a row", k->phi_nsa_n / u->force_f, u->force);
+    rb_strbuf_puts(b, "<tr><th>T / phi N_sa</th>");
+    cell_num(b, k->ratio);
+    int ok = rb_report_code_steel_pass(k);
+    cell_text(b, "td", ok ? "pass" : "fail", ok ? "PASS" : "FAIL");
+    rb_strbuf_puts(b, "</tr>\n");
+    if (k->has_concrete) {
+        rb_strbuf_puts(b, "<tr>");
+        cell_text(b, "th", NULL, rb_aci17_interaction_clause(k->concrete_clause));
+        cell_num(b, k->concrete_utilization);
+        ok = rb_report_code_concrete_pass(k);
+        cell_text(b, "td", ok ? "pass" : "fail", ok ? "PASS" : "FAIL");
+        rb_strbuf_puts(b, "</tr>\n");
+    }
+    rb_strbuf_puts(b, "</table></div>\n");
+}
+
 void rb_plot_summary_tables(rb_strbuf *b, const rb_report *rep)
 {
     if (!rep || !rep->kase)
@@ -219,5 +282,7 @@ void rb_plot_summary_tables(rb_strbuf *b, const rb_report *rep)
     anchorage(b, rep, u);
     if (rep->kase->has_concrete)
         concrete(b, rep, u);
+    if (rep->design)
+        design(b, rep, u);
     rb_strbuf_puts(b, "</section>\n");
 }

@@ -79,6 +79,13 @@ rb_status rb_report_text_motion_design(const rb_report *r, size_t i, rb_txt_aren
  * memory (and every later call then fails too). */
 void *rb_txt_arena_alloc(rb_txt_arena *a, size_t n, size_t size);
 
+/* What bounds the code-static F_p, in words (rb_code_result.bound). */
+const char *rb_report_code_bound_str(int bound);
+/* Whether the code-static check passes: the steel (T / phi N_sa at most
+ * 1), and the anchorage in concrete (its 17.8 utilization below 1). */
+int rb_report_code_steel_pass(const rb_code_result *k);
+int rb_report_code_concrete_pass(const rb_code_result *k);
+
 /* ---- report_text_anchor.c: the concrete check of the text report ------- */
 /* The top-level list "concrete" (one item for a case with concrete:, none
  * otherwise) with its list "modes"; and a motion's variables has_anchorage

@@ -146,6 +146,22 @@ static int sweep_list(rb_txt_arena *a, const char *name, const rb_sweep *s, size
     return 1;
 }
 
+const char *rb_report_code_bound_str(int bound)
+{
+    return bound < 0 ? "the minimum 0.3 SDS Ip Wp governs"
+           : bound > 0 ? "the maximum 1.6 SDS Ip Wp governs" : "within the bounds";
+}
+
+int rb_report_code_steel_pass(const rb_code_result *k)
+{
+    return k->ratio <= 1.0;
+}
+
+int rb_report_code_concrete_pass(const rb_code_result *k)
+{
+    return k->concrete_utilization < 1.0;
+}
+
 static void code_vars(rb_tvars *t, const rb_report *r)
 {
     const rb_case_design *d = r->design;
@@ -160,8 +176,7 @@ static void code_vars(rb_tvars *t, const rb_report *r)
     rb_tv_num(t, "code_rmu", k->rmu);
     rb_tv_num(t, "code_fp_formula_kn", k->fp_formula_n * 1e-3);
     rb_tv_num(t, "code_fp_kn", k->fp_n * 1e-3);
-    rb_tv_str(t, "code_bound", k->bound < 0 ? "the minimum 0.3 SDS Ip Wp governs"
-              : k->bound > 0 ? "the maximum 1.6 SDS Ip Wp governs" : "within the bounds");
+    rb_tv_str(t, "code_bound", rb_report_code_bound_str(k->bound));
     rb_tv_num(t, "code_fp_over_wp", k->fp_over_wp);
     rb_tv_num(t, "code_fp_anchor_kn", k->fp_anchor_n * 1e-3);
     rb_tv_num(t, "code_accel_g", k->fp_over_wp);
@@ -169,7 +184,7 @@ static void code_vars(rb_tvars *t, const rb_report *r)
     rb_tv_num(t, "code_tension_kn", k->tension_n * 1e-3);
     rb_tv_num(t, "code_phi_nsa_kn", k->phi_nsa_n * 1e-3);
     rb_tv_num(t, "code_ratio", k->ratio);
-    rb_tv_str(t, "code_verdict", k->ratio <= 1.0 ? "PASS" : "FAIL");
+    rb_tv_str(t, "code_verdict", rb_report_code_steel_pass(k) ? "PASS" : "FAIL");
     const rb_out_units *u = rb_out_units_of(r->kase->output_units);
     rb_tv_num(t, "code_fp_formula", k->fp_formula_n / u->force_f);
     rb_tv_num(t, "code_fp", k->fp_n / u->force_f);
@@ -179,7 +194,7 @@ static void code_vars(rb_tvars *t, const rb_report *r)
     rb_tv_int(t, "code_concrete", k->has_concrete);
     rb_tv_num(t, "code_concrete_utilization", k->concrete_utilization);
     rb_tv_str(t, "code_concrete_clause", rb_aci17_interaction_clause(k->concrete_clause));
-    rb_tv_str(t, "code_concrete_verdict", k->concrete_utilization < 1.0 ? "PASS" : "FAIL");
+    rb_tv_str(t, "code_concrete_verdict", rb_report_code_concrete_pass(k) ? "PASS" : "FAIL");
 }
 
 rb_status rb_report_text_case_design(const rb_report *r, rb_txt_arena *a, rb_tlist *out)
