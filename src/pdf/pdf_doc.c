@@ -273,7 +273,7 @@ static void table(pen *p, const rb_pdf_block *t)
     free(w);
 }
 
-/* Text as printed: monospaced, made smaller (to 5 pt) until its widest
+/* Text as printed: monospaced, made smaller (to 6 pt) until its widest
  * line fits the page, wrapped beyond that; split between lines. */
 static void pre(pen *p, const char *text)
 {
@@ -282,7 +282,7 @@ static void pre(pen *p, const char *text)
     for (;;) {
         pango_font_description_set_size(f, (int)(size * PANGO_SCALE));
         set_text(p, f, text, 0, PANGO_ALIGN_LEFT);
-        if (text_width(p) <= p->width || size <= 5)
+        if (text_width(p) <= p->width || size <= 6)
             break;
         size -= 0.5;
     }

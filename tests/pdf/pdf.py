@@ -170,8 +170,9 @@ for i, mo in enumerate(rep["motions"]):
     head = f"17.8 demand of motion {i + 1}, {mo['name']}"
     if head not in ft:
         e2e.fail(f"'{head}' missing")
-    want = (f"N_ua / phi N_n = {a['tension_n'] / KIP:.3f} kip / phi N_n = "
-            f"{a['tension_ratio']:.3f}")
+    want = (f"N_ua = {a['tension_n'] / KIP:.3f} kip, N_ua / phi N_n = "
+            f"{a['tension_ratio']:.3f}; V_ua = {a['shear_n'] / KIP:.3f} kip, "
+            f"V_ua / phi V_n = {a['shear_ratio']:.3f}")
     if want not in ft:
         e2e.fail(f"motion {i + 1}: '{want}' missing")
     for mode, ratio in a["mode_ratios"].items():
