@@ -59,4 +59,12 @@ size_t rb_utf8_invalid_at(const char *s, size_t len);
  * keep control characters but must be UTF-8 (JSON). s NULL is "". */
 char *rb_utf8_fix(const char *s);
 
+/* JSON text (as cJSON prints it) with each C1 control and each of the
+ * format characters rb_text_escape shows as \uXXXX written as that JSON
+ * escape instead of raw UTF-8, so that a reader sees them for what they
+ * are and the text still reads back to the same strings. Only valid
+ * UTF-8 is touched: in JSON it can only be inside strings. A new string
+ * (free it); NULL on NOMEM. */
+char *rb_json_escape_format(const char *json);
+
 #endif

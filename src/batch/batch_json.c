@@ -19,6 +19,7 @@
 #include "rockbolt/criteria.h"
 #include "rockbolt/names.h"
 #include "rockbolt/jsonnum.h"
+#include "rockbolt/jsonprint.h"
 #include "util/strbuf.h"
 #include "rockbolt/report.h"
 #include "rockbolt/textsafe.h"
@@ -189,11 +190,11 @@ static int add_case(cJSON *arr, const rb_batch_case *c, const rb_batch_summary *
 static int add_digest(cJSON *o)
 {
     char d[RB_BATCH_DIGEST_CHARS];
-    char *text = cJSON_PrintUnformatted(o);
+    char *text = rb_json_print(o, 0);
     if (!text)
         return 0;
     rb_batch_digest_text(text, d);
-    cJSON_free(text);
+    free(text);
     return cJSON_AddStringToObject(o, "digest", d) != NULL;
 }
 
@@ -234,14 +235,14 @@ void rb_batch_json_head(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_
         && add_num(counts, "errors", (double)n->errors)
         && add_num(counts, "runs", (double)n->runs)
         && cJSON_AddArrayToObject(root, "cases") != NULL;
-    char *head = ok ? cJSON_Print(root) : NULL;
+    char *head = ok ? rb_json_print(root, 1) : NULL;
     cJSON_Delete(root);
     size_t hl = head ? strlen(head) : 0;
     if (!head || hl < 4 || strcmp(head + hl - 4, "[]\n}") != 0)
         b->oom = 1;
     else
         rb_strbuf_putn(b, head, hl - 3);
-    cJSON_free(head);
+    free(head);
 }
 
 void rb_batch_json_case(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_case *c,
@@ -249,7 +250,7 @@ void rb_batch_json_case(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_
 {
     cJSON *one = cJSON_CreateArray();
     char *text = one && add_case(one, c, s) && add_digest(one->child)
-                 ? cJSON_Print(one->child) : NULL;
+                 ? rb_json_print(one->child, 1) : NULL;
     cJSON_Delete(one);
     if (!text) {
         b->oom = 1;
@@ -268,7 +269,7 @@ void rb_batch_json_case(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_
         rb_strbuf_putn(b, p, (size_t)(nl - p) + 1);
         rb_strbuf_puts(b, "\t\t");
     }
-    cJSON_free(text);
+    free(text);
 }
 
 void rb_batch_json_tail(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_counts *n)
@@ -425,7 +426,7 @@ static void rd_digest(rd_ctx *r, const cJSON *dg, const rb_batch_case *c,
     char want[RB_BATCH_DIGEST_CHARS], msg[400];
     cJSON *arr = cJSON_CreateArray();
     char *text = arr && add_case(arr, c, s)
-        ? cJSON_PrintUnformatted(cJSON_GetArrayItem(arr, 0)) : NULL;
+        ? rb_json_print(cJSON_GetArrayItem(arr, 0), 0) : NULL;
     /* counted from 1, as merge's other messages count cases */
     snprintf(msg, sizeof msg, "case %zu (tag '%.100s') ", c->index + 1, c->tag ? c->tag : "?");
     if (!text) {
@@ -442,7 +443,7 @@ static void rd_digest(rd_ctx *r, const cJSON *dg, const rb_batch_case *c,
             rd_fail(r, "digest", msg);
         }
     }
-    cJSON_free(text);
+    free(text);
     cJSON_Delete(arr);
 }
 

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <cjson/cJSON.h>
 #include "rockbolt/jsonnum.h"
+#include "rockbolt/jsonprint.h"
 #include "rockbolt/names.h"
 #include "rockbolt/report.h"
 #include "rockbolt/textsafe.h"
@@ -83,21 +84,23 @@ void rb_report_json_num(rb_strbuf *b, const char *key, double v, int comma)
     rb_strbuf_printf(b, "\"%s\": %s%s", key, buf, comma ? ", " : "");
 }
 
-/* A JSON string of text from the case: bytes that are not UTF-8 and
- * control characters shown as \xHH first (rockbolt/textsafe.h), as every
- * other output shows them, then cJSON's quoting. */
+/* A JSON string of text from the case: bytes that are not UTF-8 shown as
+ * \xHH first (rockbolt/textsafe.h), as the other JSON outputs show them,
+ * then JSON's own escapes (rockbolt/jsonprint.h): the text reads back as
+ * it was. */
 void rb_report_json_str(rb_strbuf *b, const char *s)
 {
-    char safe[1024];
-    cJSON *j = cJSON_CreateString(rb_text_escape_buf(s, safe, sizeof safe));
-    char *e = j ? cJSON_PrintUnformatted(j) : NULL;
+    char *fixed = rb_utf8_fix(s);
+    cJSON *j = fixed ? cJSON_CreateString(fixed) : NULL;
+    char *e = j ? rb_json_print(j, 0) : NULL;
     cJSON_Delete(j);
+    free(fixed);
     if (!e) {
         b->oom = 1;
         return;
     }
     rb_strbuf_puts(b, e);
-    cJSON_free(e);
+    free(e);
 }
 
 void rb_report_fragility_limit_json(rb_strbuf *b, const rb_case_fragility *f, int k)

@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <cjson/cJSON.h>
+#include "rockbolt/jsonprint.h"
 #include "rockbolt/rockbolt.h"
 #include "rockbolt/names.h"
 #include "report_internal.h"
@@ -363,7 +364,7 @@ static void add_suite(rb_jctx *cx, cJSON *root, const rb_report *r)
  * in memory the caller can free(). */
 static char *print_with_newline(cJSON *root)
 {
-    char *p = cJSON_Print(root), *q;
+    char *p = rb_json_print(root, 1), *q;
     size_t n;
     if (!p)
         return NULL;
@@ -373,7 +374,7 @@ static char *print_with_newline(cJSON *root)
         q[n] = '\n';
         q[n + 1] = '\0';
     }
-    cJSON_free(p);
+    free(p);
     return q;
 }
 

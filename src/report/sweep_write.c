@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <cjson/cJSON.h>
+#include "rockbolt/jsonprint.h"
 #include "rockbolt/jsonnum.h"
 #include "rockbolt/report.h"
 #include "rockbolt/textsafe.h"
@@ -113,13 +114,13 @@ struct cJSON *rb_sweep_to_json(const rb_sweep *s)
 rb_status rb_sweep_write_json(const rb_sweep *s, FILE *fp)
 {
     cJSON *o = rb_sweep_to_json(s);
-    char *text = o ? cJSON_Print(o) : NULL;
+    char *text = o ? rb_json_print(o, 1) : NULL;
     cJSON_Delete(o);
     if (!text)
         return RB_ERR_NOMEM;
     fputs(text, fp);
     fputc('\n', fp);
-    cJSON_free(text);
+    free(text);
     return ferror(fp) ? RB_ERR_IO : RB_OK;
 }
 

@@ -54,6 +54,26 @@ static int shown_as_code(unsigned cp)
            || (cp >= 0xfff9 && cp <= 0xfffb) || cp == 0xfffe || cp == 0xffff;
 }
 
+/* C1 controls (CSI is 0x9b) and the characters above: the one set every
+ * output escapes as \uXXXX, for people and in JSON alike. */
+static int escaped_as_code(unsigned cp)
+{
+    return (cp >= 0x80 && cp <= 0x9f) || shown_as_code(cp);
+}
+
+/* \uXXXX of a character of the Basic Multilingual Plane, into rep. */
+static size_t code_of(unsigned cp, char rep[8])
+{
+    static const char hex[] = "0123456789abcdef";
+    rep[0] = '\\';
+    rep[1] = 'u';
+    rep[2] = hex[cp >> 12];
+    rep[3] = hex[(cp >> 8) & 15];
+    rep[4] = hex[(cp >> 4) & 15];
+    rep[5] = hex[cp & 15];
+    return 6;
+}
+
 /* The next character of s at *p: its shown form in rep (escaped or not)
  * and its length there; advances *p. keep_lines keeps tab and newline as
  * they are (preformatted text). */
@@ -88,15 +108,8 @@ static size_t next_char(const unsigned char **p, char rep[8], int keep_lines)
         rep[3] = hex[cp & 15];
         return 4;
     }
-    if ((cp >= 0x80 && cp <= 0x9f) || shown_as_code(cp)) {  /* C1: CSI 0x9b */
-        rep[0] = '\\';
-        rep[1] = 'u';
-        rep[2] = hex[cp >> 12];
-        rep[3] = hex[(cp >> 8) & 15];
-        rep[4] = hex[(cp >> 4) & 15];
-        rep[5] = hex[cp & 15];
-        return 6;
-    }
+    if (escaped_as_code(cp))
+        return code_of(cp, rep);
     memcpy(rep, s, n);
     return n;
 }
@@ -273,6 +286,32 @@ char *rb_utf8_fix(const char *s)
             *o++ = 'x';
             *o++ = hex[c >> 4];
             *o++ = hex[c & 15];
+        }
+    }
+    *o = '\0';
+    return out;
+}
+
+char *rb_json_escape_format(const char *json)
+{
+    const unsigned char *p = (const unsigned char *)json;
+    size_t len = strlen(json), extra = 0;
+    unsigned cp;
+    /* each such character is 2 or 3 bytes of UTF-8 and 6 escaped */
+    for (size_t i = 0, n; i < len; i += n ? n : 1)
+        if ((n = utf8_len(p + i, &cp)) > 1 && escaped_as_code(cp))
+            extra += 6 - n;
+    char *out = malloc(len + extra + 1), *o = out;
+    if (!out)
+        return NULL;
+    for (size_t i = 0, n; i < len; i += n) {
+        n = utf8_len(p + i, &cp);
+        if (n > 1 && escaped_as_code(cp)) {
+            o += code_of(cp, o);
+        } else {
+            n = n ? n : 1;
+            memcpy(o, p + i, n);
+            o += n;
         }
     }
     *o = '\0';

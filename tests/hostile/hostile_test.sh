@@ -166,6 +166,62 @@ for r in csv.DictReader(open(s + "/b.csv", newline="", encoding="utf-8")):
 PY
     fi
     ;;
+json_format_chars)
+    # every bidirectional and invisible format character in a case name, a
+    # motion name and a list tag: each JSON output holds it as a JSON
+    # escape (\u202e), never raw, and reads back to the same text
+    all='\u202a\u202b\u202c\u202d\u202e\u2066\u2067\u2068\u2069\u200b\u200c\u200d\u200e\u200f\u2028\u2029\ufeff'
+    cat >"$s/c.yaml" <<YAML
+extends: $base
+name: "c$all."
+motion:
+  type: harmonic
+  name: "m$all."
+  amplitude: 0.9 A*
+  frequency: 4 Hz
+  duration: 0.5 s
+criteria: {kind: no-yield}
+YAML
+    # the second row's base is missing: its error object quotes the path
+    python3 - "$s/l.csv" "$base" "$all" <<'PY' || fail "cannot write the list"
+import sys
+tag = "t" + sys.argv[3].encode().decode("unicode_escape") + "."
+with open(sys.argv[1], "w", encoding="utf-8") as f:
+    f.write('tag,base\n"%s",%s\n"u%s",missing%s.yaml\n' % (tag, sys.argv[2], tag[1:], tag))
+PY
+    run 1 check "$s/c.yaml" --json "$s/c.json"
+    run 0 spectrum "$s/c.yaml" --json "$s/sp.json"
+    run 2 batch "$s/l.csv" "$s/c.yaml" -q --json "$s/b.json"
+    run 2 merge "$s/b.json" -q --json "$s/m.json"
+    cmp "$s/b.json" "$s/m.json" || fail "merge's JSON differs from batch's"
+    python3 - "$s" <<'PY' || fail "JSON outputs hold raw format characters"
+import json, sys
+s = sys.argv[1]
+chars = [chr(c) for c in list(range(0x202a, 0x202f)) + list(range(0x2066, 0x206a))
+         + list(range(0x200b, 0x2010)) + [0x2028, 0x2029, 0xfeff]]
+def strings(v):
+    if isinstance(v, dict):
+        for x in v.values():
+            yield from strings(x)
+    elif isinstance(v, list):
+        for x in v:
+            yield from strings(x)
+    elif isinstance(v, str):
+        yield v
+for f in ("c.json", "sp.json", "b.json", "m.json"):
+    raw = open(s + "/" + f, "rb").read()
+    for ch in chars:
+        assert ch.encode() not in raw, (f, hex(ord(ch)), "raw")
+        assert ("\\u%04x" % ord(ch)).encode() in raw, (f, hex(ord(ch)), "no escape")
+    found = set(strings(json.loads(raw.decode("utf-8"))))
+    for want in ("c", "m") + (("t", "u") if f in ("b.json", "m.json") else ()):
+        text = want + "".join(chars) + "."
+        assert text in found, (f, want, [x for x in found if x.startswith(want)])
+    if f in ("b.json", "m.json"):
+        errs = [c["error"] for c in json.loads(raw)["cases"] if c["error"]]
+        assert len(errs) == 1 and "missing" in errs[0]["message"], errs
+PY
+    ;;
 no_quote)
     # a system file named as a record, a YAML file of another kind named as
     # a base: refused at a line and column, none of their text quoted into

@@ -3,5 +3,5 @@
 # diagnostics, --sandbox, and merge's digests. See hostile_test.sh.
 rb_shell_tests(PREFIX hostile SCRIPT tests/hostile/hostile_test.sh SCRATCH hostile
                LABEL hostile TIMEOUT 300
-               TESTS csv_formula control_chars format_chars no_quote sandbox merge_digest
+               TESTS csv_formula control_chars format_chars json_format_chars no_quote sandbox merge_digest
                      row_base_line)
