@@ -13,6 +13,7 @@
 #ifndef ROCKBOLT_BATCH_H
 #define ROCKBOLT_BATCH_H
 
+#include <stdio.h>
 #include <stddef.h>
 #include <stdint.h>
 #include "rockbolt/status.h"
@@ -276,16 +277,56 @@ char *rb_batch_render_case(rb_batch_format f, const rb_batch_summary *s,
 char *rb_batch_render_tail(rb_batch_format f, const rb_batch_summary *s,
                            const rb_batch_counts *n);
 
-/* Read a JSON summary written by rb_batch_render_json. RB_ERR_PARSE with
- * the reason in diag->msg (diag->key names the field) when it is not one. */
+/* Reading a JSON summary as batch --json writes it, one case at a time,
+ * so that memory does not grow with the summary (docs/robustness.md): the
+ * head (every member before "cases", which must come last, as batch writes
+ * it) into head, then rb_batch_reader_next for each case in the file's
+ * order. Each piece has a limit, a summary none; a piece over its limit is
+ * RB_ERR_LIMIT, text that is not a summary RB_ERR_PARSE, a read error
+ * RB_ERR_IO, each with the file, line, column, field and reason in diag. */
+#define RB_BATCH_READ_HEAD_MAX (64u * 1024u)       /* the head's values */
+#define RB_BATCH_READ_CASE_MAX (4u * 1024u * 1024u) /* one case's text: 1000
+                             motions of a case take about 0.7 MB */
+#define RB_BATCH_READ_KEY_MAX 256                   /* a key of the head */
+#define RB_BATCH_READ_DEPTH 32                      /* nesting in a value */
+#define RB_BATCH_READ_KEEP (1024u * 1024u)          /* a buffer grown past
+                             this for one long case is not kept */
+typedef struct rb_batch_reader rb_batch_reader;
+/* name: the file's name in diagnostics. fp stays the caller's. */
+rb_status rb_batch_reader_open(FILE *fp, const char *name, rb_batch_summary *head,
+                               rb_batch_reader **out, rb_diag *diag);
+/* The next case into c (owned by the caller then), *got 1; *got 0 at the
+ * end of the list, once the rest of the file is checked. */
+rb_status rb_batch_reader_next(rb_batch_reader *r, rb_batch_case *c, int *got,
+                               rb_diag *diag);
+void rb_batch_reader_close(rb_batch_reader *r);
+
+/* A whole summary in text, read with the reader above (no file name in
+ * its diagnostics). */
 rb_status rb_batch_summary_parse(const char *text, rb_batch_summary *out,
                                  rb_diag *diag);
 
 /* Merge the summaries of the shards of one work list into out, which then
  * renders byte for byte as a single run's. Every shard must come from the
  * same list (same total, design and fragility flags and seed) and
- * together they must hold each index once. RB_ERR_INVALID with the reason in diag otherwise. */
+ * together they must hold each index once, each summary in the list's
+ * order. RB_ERR_INVALID with the reason in diag otherwise. */
 rb_status rb_batch_merge(const rb_batch_summary *shards, size_t n,
                          rb_batch_summary *out, rb_diag *diag);
+
+/* The same, streamed: heads are the n shards' heads (rb_batch_reader_open),
+ * next gives shard k's next case (*got 0 at its end; the case is then the
+ * merge's) and each merged case goes to sink, in the list's order, and is
+ * freed; out gets the head and counts (streamed). Each shard's cases must
+ * come in the list's order, as batch writes them: the merge holds one case
+ * per shard at a time. */
+typedef rb_status (*rb_batch_next_fn)(void *ctx, size_t k, rb_batch_case *c, int *got,
+                                      rb_diag *diag);
+rb_status rb_batch_merge_stream(const rb_batch_summary *heads, size_t n,
+                                rb_batch_next_fn next, void *next_ctx,
+                                rb_status (*sink)(void *ctx, const rb_batch_summary *s,
+                                                  const rb_batch_case *cases,
+                                                  size_t first, size_t n),
+                                void *sink_ctx, rb_batch_summary *out, rb_diag *diag);
 
 #endif

@@ -599,15 +599,10 @@ static void rd_fragility_head(rd_ctx *r, const cJSON *root, rb_batch_summary *ou
     out->intensity = (rb_fragility_intensity)imv;
 }
 
-rb_status rb_batch_summary_parse(const char *text, rb_batch_summary *out, rb_diag *diag)
+rb_status rb_batch_json_read_head(const cJSON *root, rb_batch_summary *out, rb_diag *diag)
 {
     rd_ctx r = {diag, 0};
     memset(out, 0, sizeof *out);
-    cJSON *root = cJSON_Parse(text);
-    if (!root) {
-        rd_fail(&r, "summary", "not JSON");
-        return RB_ERR_PARSE;
-    }
     const cJSON *fmt = cJSON_GetObjectItemCaseSensitive(root, "format");
     if (!cJSON_IsString(fmt) || strcmp(fmt->valuestring, "rockbolt-batch") != 0)
         rd_fail(&r, "format", "not a rockbolt batch summary");
@@ -626,25 +621,19 @@ rb_status rb_batch_summary_parse(const char *text, rb_batch_summary *out, rb_dia
     if (cJSON_IsString(sh) && sscanf(sh->valuestring, "%zu/%zu", &out->shard,
                                      &out->n_shards) != 2)
         rd_fail(&r, "shard", "expected i/n");
-    const cJSON *cases = cJSON_GetObjectItemCaseSensitive(root, "cases"), *it;
-    if (!r.bad && !cJSON_IsArray(cases))
-        rd_fail(&r, "cases", "expected a list");
-    int n = r.bad ? 0 : cJSON_GetArraySize(cases);
-    if (n > 0 && !(out->cases = calloc((size_t)n, sizeof *out->cases)))
-        rd_fail(&r, "cases", "out of memory");
-    if (!r.bad) {
-        cJSON_ArrayForEach(it, cases) {
-            if (r.bad)
-                break;
-            rd_case(&r, it, &out->cases[out->n_cases++], out);
-            if (!r.bad)
-                rd_digest(&r, cJSON_GetObjectItemCaseSensitive(it, "digest"),
-                          &out->cases[out->n_cases - 1], out);
-        }
-    }
-    cJSON_Delete(root);
+    return r.bad ? RB_ERR_PARSE : RB_OK;
+}
+
+rb_status rb_batch_json_read_case(const cJSON *o, const rb_batch_summary *s,
+                                  rb_batch_case *c, rb_diag *diag)
+{
+    rd_ctx r = {diag, 0};
+    memset(c, 0, sizeof *c);
+    rd_case(&r, o, c, s);
+    if (!r.bad)
+        rd_digest(&r, cJSON_GetObjectItemCaseSensitive(o, "digest"), c, s);
     if (r.bad) {
-        rb_batch_summary_free(out);
+        rb_batch_case_free(c);
         return RB_ERR_PARSE;
     }
     return RB_OK;

@@ -1,7 +1,10 @@
 /* Merging the summaries of the shards of one work list. Cases move out of
  * the shard summaries' order into the list's order (by index); nothing is
  * recomputed from them except what every renderer derives anyway, so the
- * result renders exactly as one run over the whole list would. */
+ * result renders exactly as one run over the whole list would. Each shard
+ * holds its cases in the list's order (batch writes them so), so the merge
+ * is a merge of sorted runs: one case per shard is held at a time, and the
+ * memory does not grow with the list. */
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -61,10 +64,9 @@ static int copy_case(rb_batch_case *dst, const rb_batch_case *src)
     return 1;
 }
 
-rb_status rb_batch_merge(const rb_batch_summary *shards, size_t n,
-                         rb_batch_summary *out, rb_diag *diag)
+/* The shards must be of one list, run with the same options. */
+static rb_status check_heads(const rb_batch_summary *shards, size_t n, rb_diag *diag)
 {
-    memset(out, 0, sizeof *out);
     if (n == 0)
         return fail(diag, "no summaries to merge");
     size_t total = shards[0].total;
@@ -88,43 +90,155 @@ rb_status rb_batch_merge(const rb_batch_summary *shards, size_t n,
             return fail(diag, "summary %zu was run on other inputs than the first "
                         "(a different list, case or base: their inputs digests "
                         "differ)", k + 1);
-    rb_batch_case **at = calloc(total ? total : 1, sizeof *at);
-    if (!at)
+    return RB_OK;
+}
+
+typedef struct {
+    rb_batch_case c;          /* the shard's next case, when has */
+    int has;
+    size_t last;              /* index of the case before it, + 1 (0: none) */
+} pending;
+
+/* Shard k's next case into p; its index within the list and after the one
+ * before it. messages count cases from 1, as summaries and shards are
+ * counted and as a reader counts a list's items (the JSON's index is from
+ * 0). */
+static rb_status advance(pending *p, size_t k, size_t total, rb_batch_next_fn next,
+                         void *ctx, rb_diag *diag)
+{
+    if (p->has)
+        p->last = p->c.index + 1;
+    rb_batch_case_free(&p->c);
+    p->has = 0;
+    rb_status st = next(ctx, k, &p->c, &p->has, diag);
+    if (st != RB_OK || !p->has)
+        return st;
+    size_t i = p->c.index;
+    if (i >= total)
+        return fail(diag, "case %zu is outside the work list of %zu", i + 1, total);
+    if (p->last && i + 1 == p->last)
+        return fail(diag, "case %zu is in more than one summary (twice in summary %zu)",
+                    i + 1, k + 1);
+    if (p->last && i + 1 < p->last)
+        return fail(diag, "case %zu comes after case %zu in summary %zu: merge reads "
+                    "each summary's cases in the list's order, as batch writes them",
+                    i + 1, p->last, k + 1);
+    return RB_OK;
+}
+
+rb_status rb_batch_merge_stream(const rb_batch_summary *heads, size_t n,
+                                rb_batch_next_fn next, void *next_ctx,
+                                rb_status (*sink)(void *ctx, const rb_batch_summary *s,
+                                                  const rb_batch_case *cases,
+                                                  size_t first, size_t n),
+                                void *sink_ctx, rb_batch_summary *out, rb_diag *diag)
+{
+    memset(out, 0, sizeof *out);
+    rb_status st = check_heads(heads, n, diag);
+    if (st != RB_OK)
+        return st;
+    size_t total = heads[0].total;
+    out->design = heads[0].design;
+    out->fragility = heads[0].fragility;
+    out->seed = heads[0].seed;
+    out->intensity = heads[0].intensity;
+    memcpy(out->inputs_digest, heads[0].inputs_digest, sizeof out->inputs_digest);
+    out->total = total;
+    out->streamed = 1;
+    pending *p = calloc(n, sizeof *p);
+    if (!p)
         return RB_ERR_NOMEM;
-    rb_status st = RB_OK;
-    /* messages count cases from 1, as summaries and shards are counted and
-     * as a reader counts a list's items (the JSON's index is from 0) */
-    for (size_t k = 0; k < n && st == RB_OK; k++) {
-        for (size_t i = 0; i < shards[k].n_cases && st == RB_OK; i++) {
-            rb_batch_case *c = &shards[k].cases[i];
-            if (c->index >= total)
-                st = fail(diag, "case %zu is outside the work list of %zu",
-                          c->index + 1, total);
-            else if (at[c->index])
-                st = fail(diag, "case %zu is in more than one summary (summary %zu)",
-                          c->index + 1, k + 1);
-            else
-                at[c->index] = c;
-        }
-    }
-    for (size_t i = 0; i < total && st == RB_OK; i++)
-        if (!at[i])
+    for (size_t k = 0; k < n && st == RB_OK; k++)
+        st = advance(&p[k], k, total, next, next_ctx, diag);
+    for (size_t i = 0; i < total && st == RB_OK; i++) {
+        size_t g = n;           /* the shard whose next case comes first */
+        for (size_t k = 0; k < n; k++)
+            if (p[k].has && (g == n || p[k].c.index < p[g].c.index))
+                g = k;
+        if (g == n || p[g].c.index > i) {
             st = fail(diag, "case %zu of %zu is in no summary: a shard is missing",
                       i + 1, total);
-    if (st == RB_OK && !(out->cases = calloc(total ? total : 1, sizeof *out->cases)))
-        st = RB_ERR_NOMEM;
-    out->design = shards[0].design;
-    out->fragility = shards[0].fragility;
-    out->seed = shards[0].seed;
-    out->intensity = shards[0].intensity;
-    memcpy(out->inputs_digest, shards[0].inputs_digest, sizeof out->inputs_digest);
-    out->total = total;
-    for (size_t i = 0; i < total && st == RB_OK; i++) {
-        out->n_cases++;
-        if (!copy_case(&out->cases[i], at[i]))
-            st = RB_ERR_NOMEM;
+        } else if (p[g].c.index < i) {
+            st = fail(diag, "case %zu is in more than one summary (summary %zu)",
+                      p[g].c.index + 1, g + 1);
+        } else if ((st = sink(sink_ctx, out, &p[g].c, i, 1)) == RB_OK) {
+            rb_batch_count_case(&out->counts, &p[g].c);
+            out->n_cases++;
+            st = advance(&p[g], g, total, next, next_ctx, diag);
+        }
     }
-    free(at);
+    /* a case left over was merged already from another summary */
+    for (size_t k = 0; k < n && st == RB_OK; k++)
+        if (p[k].has)
+            st = fail(diag, "case %zu is in more than one summary (summary %zu)",
+                      p[k].c.index + 1, k + 1);
+    for (size_t k = 0; k < n; k++)
+        rb_batch_case_free(&p[k].c);
+    free(p);
+    return st;
+}
+
+/* The in-memory form on top of the stream: next walks the summaries'
+ * arrays, the sink copies each case into out. */
+typedef struct {
+    const rb_batch_summary *shards;
+    size_t *at;
+    rb_batch_case *cases;     /* merged so far, grown as they come: a
+                                 summary's total is not trusted for a size */
+    size_t n, cap;
+} mem_ctx;
+
+static rb_status mem_next(void *ctx, size_t k, rb_batch_case *c, int *got, rb_diag *diag)
+{
+    mem_ctx *m = ctx;
+    (void)diag;
+    *got = 0;
+    if (m->at[k] >= m->shards[k].n_cases)
+        return RB_OK;
+    if (!copy_case(c, &m->shards[k].cases[m->at[k]++])) {
+        rb_batch_case_free(c);
+        return RB_ERR_NOMEM;
+    }
+    *got = 1;
+    return RB_OK;
+}
+
+static rb_status mem_sink(void *ctx, const rb_batch_summary *s, const rb_batch_case *cases,
+                          size_t first, size_t n)
+{
+    mem_ctx *m = ctx;
+    (void)s, (void)first;
+    for (size_t i = 0; i < n; i++) {
+        if (m->n == m->cap) {
+            size_t cap = m->cap ? 2 * m->cap : 16;
+            rb_batch_case *p = realloc(m->cases, cap * sizeof *p);
+            if (!p)
+                return RB_ERR_NOMEM;
+            m->cases = p;
+            m->cap = cap;
+        }
+        if (!copy_case(&m->cases[m->n], &cases[i])) {
+            rb_batch_case_free(&m->cases[m->n]);
+            return RB_ERR_NOMEM;
+        }
+        m->n++;
+    }
+    return RB_OK;
+}
+
+rb_status rb_batch_merge(const rb_batch_summary *shards, size_t n,
+                         rb_batch_summary *out, rb_diag *diag)
+{
+    memset(out, 0, sizeof *out);
+    mem_ctx m = {shards, calloc(n ? n : 1, sizeof *m.at), NULL, 0, 0};
+    if (!m.at)
+        return RB_ERR_NOMEM;
+    rb_status st = rb_batch_merge_stream(shards, n, mem_next, &m, mem_sink, &m, out, diag);
+    free(m.at);
+    out->cases = m.cases;
+    out->n_cases = m.n;
+    out->streamed = 0;
+    memset(&out->counts, 0, sizeof out->counts);
     if (st != RB_OK)
         rb_batch_summary_free(out);
     return st;

@@ -2,6 +2,7 @@
 #ifndef RB_BATCH_SUMMARY_H
 #define RB_BATCH_SUMMARY_H
 
+#include <cjson/cJSON.h>
 #include "batch_internal.h"
 
 const char *rb_batch_verdict_str(rb_batch_verdict v);
@@ -37,5 +38,13 @@ RB_BATCH_PIECES(p58)
 
 /* "sha256:" and the hex SHA-256 of text (batch_digest.c). */
 void rb_batch_digest_text(const char *text, char out[RB_BATCH_DIGEST_CHARS]);
+
+/* Reading a summary back (batch_json.c), a piece at a time for
+ * batch_read.c: the head's members (all but "cases") from root, and one
+ * element of "cases", which must match its digest. RB_ERR_PARSE with the
+ * field in diag->key and the reason in diag->msg, no place. */
+rb_status rb_batch_json_read_head(const cJSON *root, rb_batch_summary *out, rb_diag *diag);
+rb_status rb_batch_json_read_case(const cJSON *o, const rb_batch_summary *s,
+                                  rb_batch_case *c, rb_diag *diag);
 
 #endif

@@ -148,7 +148,7 @@ usage)
     run 2 merge
     printf 'not json' >"$s/junk.json"
     run 2 merge "$s/junk.json"
-    has "$s/err" "junk.json: error: summary: not JSON"
+    has "$s/err" "junk.json:1:1: error: summary: not JSON"
     ;;
 reports)
     run 2 batch $inputs -q --reports "$s/rep"

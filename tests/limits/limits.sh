@@ -28,9 +28,14 @@
 #                 it in other units are refused at the third, naming the limit
 #                 (each motion read its file again: 20 motions of a 260 MB
 #                 record took 160 s)
-#   merge_huge    a shard's summary over 1 GiB (sparse) is refused at once,
-#                 naming the limit (it was read to 1 GiB, then "cannot read
-#                 the summary")
+#   merge_huge    a sparse 2 GB shard, /dev/zero, a sparse terabyte after a
+#                 summary's head, a case of 5 MiB and a head of 100 KiB are
+#                 refused at once, at their place, naming the limit (a shard
+#                 was read whole, up to 1 GiB)
+#   merge_memory  merge of 100 000 rows (made from one real row) peaks under
+#                 32 MB and no higher than 1 000 rows plus 2 MB, and writes the
+#                 summary back byte for byte (read whole, 100 000 rows took
+#                 490 MB)
 #   batch_memory  peak memory of a batch with every summary output grows by
 #                 under 512 bytes per list row, which is the list itself
 #                 (2 000 against 20 000 rows; it grew by 2.8 KB before the
@@ -172,11 +177,100 @@ open(sys.argv[1], 'w').write(line * (100 * 1024 * 1024 // len(line)))" "$D/big.t
         || fail "no diagnostic at the third motion naming the limit"
     ;;
 merge_huge)
+    # a shard is read a case at a time: a sparse 2 GB file is no JSON at
+    # its first byte, and a case or a head over its limit is refused
+    # there, the limit named, whatever the file's size
     truncate -s 2G "$D/s.json" || exit 77
     run 20 merge "$D/s.json"
     [ "$rc" -eq 2 ] || fail "exit code $rc, want 2"
-    grep -q "s.json: error: cannot read the summary: it is larger than the limit of 1024 MiB" "$D/err" \
-        || fail "no diagnostic naming the limit"
+    grep -q "s.json:1:1: error: summary: not JSON" "$D/err" || fail "no diagnostic at 1:1"
+    run 5 merge /dev/zero
+    [ "$rc" -eq 2 ] || fail "/dev/zero: exit code $rc, want 2"
+    grep -q "/dev/zero: error: cannot read the summary: not a regular file" "$D/err" \
+        || fail "/dev/zero: no diagnostic naming why"
+    cheap_case "$D/a.yaml"
+    "$R" batch "$D/a.yaml" -q --json "$D/one.json" || fail "no summary to start from"
+    # a head, then a sparse terabyte after "cases": [
+    python3 -c 'import sys
+t = open(sys.argv[1]).read()
+open(sys.argv[2], "w").write(t[:t.index("\"cases\":\t[") + 10])' "$D/one.json" "$D/t.json" \
+        && truncate -s 1T "$D/t.json" || exit 77
+    run 20 merge "$D/t.json"
+    [ "$rc" -eq 2 ] || fail "1 TB: exit code $rc, want 2"
+    grep -q "t.json:[0-9]*:[0-9]*: error: cases: case 1 of the list is longer than the limit of 4096 KiB" \
+        "$D/err" || fail "1 TB: no diagnostic naming the limit of a case"
+    # a case of 5 MiB, and a head of 100 KiB
+    python3 -c 'import sys
+t = open(sys.argv[1]).read()
+i = t.index("\"index\":")
+open(sys.argv[2], "w").write(t[:i] + "\"tag\": \"" + "x" * (5 << 20) + "\", " + t[i:])
+i = t.index("\"counts\":")
+open(sys.argv[3], "w").write(t[:i] + "\"note\": \"" + "x" * (100 << 10) + "\", " + t[i:])' \
+        "$D/one.json" "$D/c.json" "$D/h.json" || exit 77
+    run 20 merge "$D/c.json"
+    [ "$rc" -eq 2 ] || fail "long case: exit code $rc, want 2"
+    grep -q "c.json:15:12: error: cases: case 1 of the list is longer than the limit of 4096 KiB: rockbolt batch writes none so long" \
+        "$D/err" || fail "long case: no diagnostic naming the limit"
+    run 20 merge "$D/h.json"
+    [ "$rc" -eq 2 ] || fail "long head: exit code $rc, want 2"
+    grep -q "h.json:7:.*: error: note: the summary's head (what comes before \"cases\") is longer than the limit of 64 KiB" \
+        "$D/err" || fail "long head: no diagnostic naming the limit"
+    ;;
+merge_memory)
+    # merge streams its shards: peak memory of a merge of 100 000 rows is
+    # that of 1 000 rows, under 32 MB. The rows are made from one real row
+    # (index and digest changed), not run; the merged JSON must be the
+    # summary itself, byte for byte.
+    if grep -q __asan_init "$R" 2>/dev/null; then
+        echo "AddressSanitizer build: peak memory not comparable, skipped"
+        exit 77
+    fi
+    if [ -x /usr/bin/time ]; then
+        peak() { /usr/bin/time -v "$@" 2>&1 >/dev/null | sed -n 's/.*Maximum resident set size (kbytes): //p'; }
+    else
+        peak() {
+            python3 -c 'import resource, subprocess, sys
+subprocess.run(sys.argv[1:], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+print(resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss)' "$@"
+        }
+    fi
+    cheap_case "$D/a.yaml"
+    "$R" batch "$D/a.yaml" -q --json "$D/one.json" || fail "no summary to start from"
+    for n in 1000 100000; do
+        python3 - "$D/one.json" "$D/s$n.json" "$n" <<'PY' || fail "cannot make the summary"
+import hashlib, re, sys
+t = open(sys.argv[1]).read()
+n = int(sys.argv[3])
+head, rest = t.split('"cases":\t[', 1)
+row = rest[:rest.rindex("]")]
+assert row.startswith("{") and row.endswith("}"), row[:40]
+# the digest is over the row as cJSON prints it unformatted, without the
+# digest: the formatted row without its blanks outside strings
+bare = re.sub(r',\s*"digest":\t"sha256:[0-9a-f]{64}"', "", row)
+flat = "".join(p if i % 2 else re.sub(r"[ \t\n]", "", p)
+               for i, p in enumerate(re.split(r'("(?:[^"\\]|\\.)*")', bare)))
+assert '"index":0,' in flat and '"index":\t0,' in row
+for k in ("total", "cases", "passed", "failed", "unreadable", "errors", "runs"):
+    head = re.sub(r'("%s":\t)(\d+)' % k, lambda m: m.group(1) + str(int(m.group(2)) * n), head)
+with open(sys.argv[2], "w") as f:
+    f.write(head + '"cases":\t[')
+    for i in range(n):
+        one = flat.replace('"index":0,', '"index":%d,' % i, 1)
+        d = "sha256:" + hashlib.sha256(one.encode()).hexdigest()
+        r = row.replace('"index":\t0,', '"index":\t%d,' % i, 1)
+        r = re.sub(r'"digest":\t"sha256:[0-9a-f]{64}"', '"digest":\t"%s"' % d, r)
+        f.write((", " if i else "") + r)
+    f.write("]\n}\n")
+PY
+    done
+    small=$(peak "$R" merge "$D/s1000.json" -q --json "$D/m1000.json")
+    large=$(peak "$R" merge "$D/s100000.json" -q --json "$D/m100000.json")
+    cmp -s "$D/s1000.json" "$D/m1000.json" || fail "1000 rows: the merge is not the summary"
+    cmp -s "$D/s100000.json" "$D/m100000.json" || fail "100000 rows: the merge is not the summary"
+    [ -n "$small" ] && [ -n "$large" ] || fail "no peak memory measured"
+    echo "peak RSS of merge: $small KB for 1000 rows, $large KB for 100000 rows"
+    [ "$large" -lt 32768 ] || fail "merge of 100000 rows took $large KB (want < 32 MB)"
+    [ $((large - small)) -lt 2048 ] || fail "memory grew by $((large - small)) KB from 1000 to 100000 rows"
     ;;
 digest_huge)
     truncate -s 1T "$D/huge.yaml" || exit 77

@@ -5,4 +5,4 @@ rb_shell_tests(PREFIX limits SCRIPT tests/limits/limits.sh SCRATCH limits LABEL 
                TIMEOUT 180
                TESTS fifo_batch fifo_check fifo_list fifo_base record_bytes batch_tmpdir
                      batch_memory digest_huge merge_fifo batch_tmpdir_full
-                     record_once merge_huge)
+                     record_once merge_huge merge_memory)
