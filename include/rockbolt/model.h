@@ -11,12 +11,13 @@
 #define ROCKBOLT_MODEL_H
 
 #include "rockbolt/status.h"
+#include "rockbolt/units.h"
 
 #define RB_LEFT 0
 #define RB_RIGHT 1
 
 /* Standard gravity, used for g in the equations and for the unit "g". */
-#define RB_G0 9.80665
+#define RB_G0 RB_UNIT_G_MPS2
 
 typedef enum {
     RB_BOLT_NONE = 0,        /* free-standing: no anchorage at all */

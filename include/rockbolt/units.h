@@ -51,20 +51,73 @@ typedef struct {
 rb_status rb_unit_parse(const char *text, rb_dim dim, rb_quantity *out,
                         char *msg, size_t msg_size);
 
-/* The units a text report and the figures show in one unit system: each
- * name with the SI value of one such unit (a shown value is SI / factor).
- * SI: kg, kN, m, mm, mm^2, MPa, J, MN/m; US customary: lb, kip, in, in,
- * in^2, ksi, ft-lbf, kip/in. Accelerations are shown in g in both. */
+/* The system of the unit of a quantity's text ("7.8 mm": SI, "1/2 in":
+ * US), without checking its dimension; RB_UNITS_NEUTRAL for a text that is
+ * no number with a known unit, and for the neutral units. */
+rb_unit_system rb_unit_system_of_text(const char *text);
+
+/* The exact factors of the US customary units to SI. */
+#define RB_UNIT_IN_M 0.0254               /* inch in m */
+#define RB_UNIT_FT_M 0.3048               /* foot in m */
+#define RB_UNIT_LB_KG 0.45359237          /* pound (mass) in kg */
+#define RB_UNIT_LBF_N 4.4482216152605     /* pound-force in N */
+#define RB_UNIT_PSI_PA 6894.757293168361  /* lbf/in^2 in Pa */
+#define RB_UNIT_G_MPS2 9.80665            /* standard gravity, the unit g */
+
+/* The units every output for people shows in one unit system: each name
+ * with the SI value of one such unit (a shown value is SI / factor).
+ * SI: kg, kN, m, mm, mm^2, MPa, J, MN/m, kN*m, m/s^2, kJ/m^3; US customary:
+ * lb, kip, in, in, in^2, ksi, ft-lbf, kip/in, kip-in, g, in-lb/in^3. */
 typedef struct {
     rb_unit_system system;    /* RB_UNITS_SI or RB_UNITS_US */
     const char *mass, *force, *length, *small_length, *area, *stress,
                *energy, *stiffness;
     double mass_f, force_f, length_f, small_length_f, area_f, stress_f,
            energy_f, stiffness_f;
+    const char *moment, *accel, *energy_density;
+    double moment_f, accel_f, energy_density_f;
 } rb_out_units;
 
 /* The output units of system (RB_UNITS_US, else SI); never NULL. */
 const rb_out_units *rb_out_units_of(rb_unit_system system);
+
+/* The kinds of quantity the outputs for people print. */
+typedef enum {
+    RB_Q_MASS = 0,
+    RB_Q_FORCE,
+    RB_Q_LENGTH,          /* a dimension of the cabinet: m, in */
+    RB_Q_SMALL_LENGTH,    /* a gap, a deflection, a bolt: mm, in */
+    RB_Q_AREA,            /* of a bolt: mm^2, in^2 */
+    RB_Q_STRESS,
+    RB_Q_ENERGY,
+    RB_Q_STIFFNESS,
+    RB_Q_MOMENT,
+    RB_Q_ACCEL,           /* m/s^2 in SI, g in US customary */
+    RB_Q_ENERGY_DENSITY,
+    RB_Q_COUNT
+} rb_qty;
+
+/* The unit name of q in system's output units ("kip"); never NULL. */
+const char *rb_qty_unit(rb_unit_system system, rb_qty q);
+/* The SI value si of q in system's output unit (14.14 for 62.89e3 N in US). */
+double rb_qty_value(rb_unit_system system, rb_qty q, double si);
+
+/* The kind of quantity that prints a value of dimension dim (a length as
+ * RB_Q_LENGTH); 0 for a dimension whose units are the same in both systems
+ * or have no output unit (ratio, frequency, time, inertia). */
+int rb_dim_qty(rb_dim dim, rb_qty *q);
+
+/* One quantity as text, value and unit: "62.89 kN", "14.14 kip". */
+typedef struct {
+    char s[48];
+} rb_qtext;
+/* si as q in system's output unit with digits significant digits (printf
+ * %.*g) and the unit after a blank; "n/a" when si is not finite. Returned
+ * by value, so that a call can stand as a printf argument:
+ * printf("tension %s", rb_qty_str(u, RB_Q_FORCE, t, 4).s). This is the one
+ * place that turns a quantity into text for people: every message,
+ * report and figure of a case prints through it or through rb_out_units. */
+rb_qtext rb_qty_str(rb_unit_system system, rb_qty q, double si, int digits);
 
 /* "a length", "a mass", ...: the dimension as a phrase; never NULL. */
 const char *rb_dim_str(rb_dim dim);

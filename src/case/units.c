@@ -16,8 +16,8 @@
 #include "rockbolt/model.h"
 #include "rockbolt/units.h"
 
-#define RB_PSI 6894.757293168361      /* lbf/in^2 in Pa */
-#define RB_LBF 4.4482216152605        /* lbf in N */
+#define RB_PSI RB_UNIT_PSI_PA
+#define RB_LBF RB_UNIT_LBF_N
 #define RB_TWO_PI 6.283185307179586
 
 typedef struct {
@@ -113,18 +113,6 @@ static const rb_dim_info dims[RB_DIM_COUNT] = {
     [RB_DIM_STIFFNESS] = {"a stiffness",
         "N/m, kN/m, MN/m, N/mm, kN/mm, lbf/in, kip/in", "520 MN/m", "stiffness"},
 };
-
-const rb_out_units *rb_out_units_of(rb_unit_system system)
-{
-    static const rb_out_units si = {
-        RB_UNITS_SI, "kg", "kN", "m", "mm", "mm^2", "MPa", "J", "MN/m",
-        1.0, 1e3, 1.0, 1e-3, 1e-6, 1e6, 1.0, 1e6 };
-    static const rb_out_units us = {
-        RB_UNITS_US, "lb", "kip", "in", "in", "in^2", "ksi", "ft-lbf", "kip/in",
-        0.45359237, 1e3 * RB_LBF, 0.0254, 0.0254, 0.0254 * 0.0254,
-        1e3 * RB_PSI, 0.3048 * RB_LBF, 1e3 * RB_LBF / 0.0254 };
-    return system == RB_UNITS_US ? &us : &si;
-}
 
 const char *rb_dim_str(rb_dim dim)
 {
@@ -365,4 +353,27 @@ rb_status rb_unit_parse(const char *text, rb_dim dim, rb_quantity *out,
     if (!isfinite(out->value))
         return unit_fail(msg, msg_size, "'%.*s' is out of range", (int)len, text);
     return RB_OK;
+}
+
+rb_unit_system rb_unit_system_of_text(const char *text)
+{
+    while (isspace((unsigned char)*text))
+        text++;
+    if (unit_is_nonfinite_word(text))
+        return RB_UNITS_NEUTRAL;
+    size_t nlen = unit_scan_number(text);
+    if (nlen == 0)
+        return RB_UNITS_NEUTRAL;
+    double v = 0;
+    nlen = unit_scan_fraction(text, nlen, &v);
+    if (nlen == 0)
+        return RB_UNITS_NEUTRAL;
+    const char *u = text + nlen;
+    while (isspace((unsigned char)*u))
+        u++;
+    size_t len = strlen(u);
+    while (len > 0 && isspace((unsigned char)u[len - 1]))
+        len--;
+    const rb_unit *unit = len ? unit_find(u, len, 0) : NULL;
+    return unit ? unit_system_of(unit->name) : RB_UNITS_NEUTRAL;
 }
