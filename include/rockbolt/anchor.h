@@ -23,6 +23,7 @@
 #include "rockbolt/aci17_post.h"
 #include "rockbolt/anchor_hardware.h"
 #include "rockbolt/model.h"
+#include "rockbolt/units.h"
 #include "rockbolt/status.h"
 
 typedef enum {
@@ -149,6 +150,9 @@ typedef struct {
     rb_edge_reinforcement edge_reinforcement; /* psi_c,V (17.7.2.5.1) */
     rb_aci17_interaction_rule interaction;    /* 17.8 or R17.8 */
     rb_seismic_route route;                   /* 17.10.5.3 */
+    /* the units the check's messages print lengths in (the case's output
+     * units); default RB_UNITS_SI, which names millimetres and inches */
+    rb_unit_system units;
 } rb_anchor_inputs;
 
 enum { RB_ASE_GIVEN = 0, RB_ASE_THREADS, RB_ASE_BOLT_AREA };

@@ -5,6 +5,7 @@
 
 #include <stddef.h>
 #include "rockbolt/solve.h"
+#include "rockbolt/units.h"
 
 typedef enum {
     RB_CRIT_NO_YIELD = 0,   /* bolts stay elastic */
@@ -74,6 +75,9 @@ typedef struct {
     unsigned validity_mask;
     rb_confirm_mode confirm;       /* default RB_CONFIRM_MARGINAL */
     double confirm_band;           /* default RB_CONFIRM_BAND_DEFAULT */
+    /* the units the verdict's reason prints its quantities in (the
+     * case's output_units); default RB_UNITS_SI */
+    rb_unit_system units;
 } rb_criteria;
 
 void rb_criteria_init(rb_criteria *c);

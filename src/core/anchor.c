@@ -89,6 +89,7 @@ void rb_anchor_inputs_init(rb_anchor_inputs *in)
     in->edge_reinforcement = RB_EDGE_REINF_NONE;
     in->interaction = RB_ACI17_TRILINEAR;
     in->route = RB_ROUTE_AUTO;
+    in->units = RB_UNITS_SI;
 }
 
 static rb_status bad(rb_diag *diag, const char *key, const char *msg)
@@ -96,12 +97,33 @@ static rb_status bad(rb_diag *diag, const char *key, const char *msg)
     return rb_diag_set(diag, RB_ERR_INVALID, NULL, 0, 0, key, "%s", msg);
 }
 
-/* A length within [lo, hi], named in mm and in as the user may write either */
-static rb_status within(rb_diag *diag, const char *key, double v, double lo, double hi,
-                        const char *why)
+/* A length of a message: in mm for SI, in inches for US customary. */
+static rb_qtext len(const rb_anchor_inputs *in, double m)
+{
+    return rb_qty_str(in->units, RB_Q_SMALL_LENGTH, m, 4);
+}
+
+/* A bolt's diameter: in SI in mm and in, as bolts are sized in both */
+static rb_qtext diameter(const rb_anchor_inputs *in, double m)
+{
+    rb_qtext t;
+    if (in->units == RB_UNITS_US)
+        return len(in, m);
+    snprintf(t.s, sizeof t.s, "%.4g mm (%.4g in)", m * 1e3, m / RB_ACI17_IN_M);
+    return t;
+}
+
+/* A length within [lo, hi]; in SI named in mm and in, as SI users may
+ * write either */
+static rb_status within(rb_diag *diag, const rb_anchor_inputs *in, const char *key,
+                        double v, double lo, double hi, const char *why)
 {
     if (v >= lo && v <= hi)
         return RB_OK;
+    if (in->units == RB_UNITS_US)
+        return rb_diag_set(diag, RB_ERR_INVALID, NULL, 0, 0, key,
+                           "must be from %s to %s%s%s; got %s", len(in, lo).s,
+                           len(in, hi).s, why[0] ? ": " : "", why, len(in, v).s);
     return rb_diag_set(diag, RB_ERR_INVALID, NULL, 0, 0, key,
                        "must be from %.4g mm (%.4g in) to %.4g mm (%.4g in)%s%s; got %.4g mm",
                        lo * 1e3, lo / RB_ACI17_IN_M, hi * 1e3, hi / RB_ACI17_IN_M,
@@ -150,26 +172,26 @@ static rb_status check_product(const rb_model *m, const rb_anchor_inputs *in, do
     if (!rb_aci17_post_hef_in_scope(t, in->hef_m, da))
         return rb_diag_set(diag, RB_ERR_INVALID, NULL, 0, 0, "anchorage.embedment",
                            "outside 17.3.3/17.3.4 for this anchor type (adhesive 4 d_a to "
-                           "20 d_a, screw 5 d_a to 10 d_a; d_a %.4g mm)", da * 1e3);
+                           "20 d_a, screw 5 d_a to 10 d_a; d_a %s)", len(in, da).s);
     if (p->min_embedment_m > 0 && in->hef_m < p->min_embedment_m)
         return rb_diag_set(diag, RB_ERR_INVALID, NULL, 0, 0, "anchorage.embedment",
-                           "below the report's h_ef,min %.4g mm", p->min_embedment_m * 1e3);
+                           "below the report's h_ef,min %s", len(in, p->min_embedment_m).s);
     if (!rb_aci17_post_hef_ok(in->coef, t, in->hef_m, in->thickness_m))
         return rb_diag_set(diag, RB_ERR_INVALID, NULL, 0, 0, "anchorage.embedment",
-                           "17.9.4: at most the greater of 2/3 h_a and h_a - 4 in (%.4g mm "
-                           "here)", rb_aci17_post_hef_max(in->coef, in->thickness_m) * 1e3);
+                           "17.9.4: at most the greater of 2/3 h_a and h_a - 4 in (%s "
+                           "here)", len(in, rb_aci17_post_hef_max(in->coef, in->thickness_m)).s);
     if (p->min_thickness_m > 0 && in->thickness_m < p->min_thickness_m)
         return rb_diag_set(diag, RB_ERR_INVALID, NULL, 0, 0, "concrete.thickness",
-                           "below the report's h_min %.4g mm", p->min_thickness_m * 1e3);
+                           "below the report's h_min %s", len(in, p->min_thickness_m).s);
     double s_min = p->min_spacing_m > 0 ? p->min_spacing_m
                                         : rb_aci17_post_s_min(t, da, in->hef_m);
     if (m->bolts_per_row > 1
-        && (st = within(diag, "anchorage.spacing", in->spacing_m, s_min, DIMENSION_MAX_M,
+        && (st = within(diag, in, "anchorage.spacing", in->spacing_m, s_min, DIMENSION_MAX_M,
                         "17.9.2, the report's s_min or Table 17.9.2(a)")) != RB_OK)
         return st;
     double c_min = rb_aci17_post_c_min(t, da, COVER_MIN_M, 0, p->min_edge_m);
     if (!isinf(in->edge_m)
-        && (st = within(diag, "concrete.edge_distance", in->edge_m, c_min, DIMENSION_MAX_M,
+        && (st = within(diag, in, "concrete.edge_distance", in->edge_m, c_min, DIMENSION_MAX_M,
                         "17.9.2, the report's c_min or Table 17.9.2(b)")) != RB_OK)
         return st;
     return RB_OK;
@@ -185,25 +207,26 @@ static rb_status check_inputs(const rb_model *m, const rb_anchor_inputs *in, rb_
         return bad(diag, "concrete.strength", "must be > 0");
     if (!(in->lambda_a > 0 && in->lambda_a <= 1))
         return bad(diag, "concrete.lightweight", "must be in (0, 1]");
-    if ((st = within(diag, "concrete.thickness", in->thickness_m, 0, DIMENSION_MAX_M, ""))
+    if ((st = within(diag, in, "concrete.thickness", in->thickness_m, 0, DIMENSION_MAX_M, ""))
         != RB_OK || !(in->thickness_m > 0))
         return st != RB_OK ? st : bad(diag, "concrete.thickness", "must be > 0");
     if (rb_anchor_post_installed(in->type) && (st = check_product(m, in, da, diag)) != RB_OK)
         return st;
     if (!isinf(in->edge_m)
-        && (st = within(diag, "concrete.edge_distance", in->edge_m, COVER_MIN_M + da / 2,
+        && (st = within(diag, in, "concrete.edge_distance", in->edge_m, COVER_MIN_M + da / 2,
                         DIMENSION_MAX_M, "17.9.2(a), the least cover of 20.5.1.3 (3/4 in) "
                         "plus half the anchor's diameter")) != RB_OK)
         return st;
-    if ((st = within(diag, "anchorage.embedment", in->hef_m, HEF_MIN_M, HEF_MAX_M,
+    if ((st = within(diag, in, "anchorage.embedment", in->hef_m, HEF_MIN_M, HEF_MAX_M,
                      "the range of Chapter 17's breakout equations")) != RB_OK)
         return st;
     if (!(in->hef_m < in->thickness_m))
         return rb_diag_set(diag, RB_ERR_INVALID, NULL, 0, 0, "anchorage.embedment",
                            "must be less than the slab's thickness (embedment "
-                           "%g mm, slab %g mm)", in->hef_m * 1e3, in->thickness_m * 1e3);
+                           "%s, slab %s)", rb_qty_str(in->units, RB_Q_SMALL_LENGTH, in->hef_m, 6).s,
+                           rb_qty_str(in->units, RB_Q_SMALL_LENGTH, in->thickness_m, 6).s);
     if (m->bolts_per_row > 1 && !rb_anchor_post_installed(in->type)
-        && (st = within(diag, "anchorage.spacing", in->spacing_m, SPACING_MIN_DA * da,
+        && (st = within(diag, in, "anchorage.spacing", in->spacing_m, SPACING_MIN_DA * da,
                         DIMENSION_MAX_M, "17.9.2, 4 d_a for cast-in anchors not torqued"))
            != RB_OK)
         return st;
@@ -235,10 +258,9 @@ static rb_status hardware(const rb_model *m, const rb_anchor_inputs *in, rb_anch
         o->ase_source = RB_ASE_THREADS;
         if (!(o->ase_m2 > 0))
             return rb_diag_set(diag, RB_ERR_INVALID, NULL, 0, 0, "anchorage.tensile_area",
-                               "the bolt's diameter %.4g mm (%.4g in) is no UNC or ISO "
+                               "the bolt's diameter %s is no UNC or ISO "
                                "metric size%s, so its tensile stress area cannot be worked "
-                               "out: give tensile_area (A_se)", o->da_m * 1e3,
-                               o->da_m / RB_ACI17_IN_M,
+                               "out: give tensile_area (A_se)", diameter(in, o->da_m).s,
                                o->thread_std != RB_THREAD_UNKNOWN ? " with that pitch" : "");
     }
     o->head = in->head_given ? in->head
@@ -251,10 +273,10 @@ static rb_status hardware(const rb_model *m, const rb_anchor_inputs *in, rb_anch
                    "a washer head needs washer_diameter, wider than the bolt");
     if (!(o->abrg_m2 > 0))
         return rb_diag_set(diag, RB_ERR_INVALID, NULL, 0, 0, "anchorage.head_bearing_area",
-                           "no %s head is tabulated for a bolt of %.4g mm (%.4g in): give "
+                           "no %s head is tabulated for a bolt of %s: give "
                            "head_bearing_area (A_brg) or a washer",
-                           rb_enum_str(rb_anchor_head_names, (int)o->head), o->da_m * 1e3,
-                           o->da_m / RB_ACI17_IN_M);
+                           rb_enum_str(rb_anchor_head_names, (int)o->head),
+                           diameter(in, o->da_m).s);
     return RB_OK;
 }
 
@@ -520,10 +542,11 @@ rb_status rb_anchor_check(const rb_model *m, const rb_anchor_inputs *in,
          * below and pass whatever it should have failed */
         if (!(isfinite(s->design_n) && s->design_n > 0))
             return rb_diag_set(diag, RB_ERR_INVALID, NULL, 0, 0, "concrete",
-                               "the %s strength (%s) is not a positive number (%g N): "
+                               "the %s strength (%s) is not a positive number (%s): "
                                "check the anchorage's dimensions",
                                rb_anchor_clause((rb_anchor_mode)k),
-                               k == RB_ANCHOR_BOND_N ? "bond" : "ACI 318-19", s->design_n);
+                               k == RB_ANCHOR_BOND_N ? "bond" : "ACI 318-19",
+                               rb_qty_str(in->units, RB_Q_FORCE, s->design_n, 4).s);
     }
     out->phi_nn_n = least(out, true, false, &out->tension_mode);
     out->phi_vn_n = least(out, false, false, &out->shear_mode);

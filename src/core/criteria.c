@@ -23,6 +23,7 @@ void rb_criteria_init(rb_criteria *c)
     c->validity = RB_VALIDITY_WARN;
     c->confirm = RB_CONFIRM_MARGINAL;
     c->confirm_band = RB_CONFIRM_BAND_DEFAULT;
+    c->units = RB_UNITS_SI;
 }
 
 const char *rb_check_name(rb_check k)
@@ -289,10 +290,11 @@ static void criteria(const rb_criteria *c, const rb_result *r, rb_verdict *v)
         route_reason(c, r, route, v);
     else if (c->concrete && r->anchor_checked && r->anchor_max_ratio >= 1.0)
         SAY(v, 0, "the anchorage reaches its concrete design strength: %s utilization %s at "
-            "t = %.3f s (tension %.4g kN, shear %.4g kN)",
+            "t = %.3f s (tension %s, shear %s)",
             rb_aci17_interaction_clause(r->anchor_clause),
             beside(r->anchor_max_ratio, 1.0, num, sizeof num), r->anchor_max_s,
-            r->anchor_tension_n / 1e3, r->anchor_shear_n / 1e3);
+            rb_qty_str(c->units, RB_Q_FORCE, r->anchor_tension_n, 4).s,
+            rb_qty_str(c->units, RB_Q_FORCE, r->anchor_shear_n, 4).s);
     else if (c->kind == RB_CRIT_NO_YIELD && isnan(force))
         SAY(v, 1, "no bolts to yield; the cabinet stands (max rotation / alpha = %s)",
             beside(r->max_theta_over_alpha, 1.0, num, sizeof num));
