@@ -178,6 +178,7 @@ static void read_anchors(rb_cctx *c, rb_ynode *an, int required, int per_row,
 void rb_case_read_concrete(rb_cctx *c, rb_ynode *root, rb_ynode *an, rb_case *cs)
 {
     rb_anchor_inputs_init(&cs->anchor_in);
+    cs->anchor_in.units = c->units;
     rb_ynode *cn = rb_cv_get(c, root, "", "concrete", 0, "");
     if (cn && rb_cv_map(c, cn, "concrete")) {
         cs->has_concrete = 1;

@@ -174,7 +174,8 @@ typedef struct {
     unsigned long long record_bytes; /* read, against RB_CASE_MAX_RECORD_BYTES */
     double history_dt_s;        /* output_interval, or the default */
     const rb_ynode *history_dt_node; /* NULL: not given */
-    size_t n_si_units, n_us_units; /* quantities written in SI / US units */
+    rb_unit_system units;       /* the case's output units, which its
+                                   messages about values print in */
     const rb_ynode *sweep_maps[RB_CASE_MAX_SWEEPS]; /* design.sweeps, by index */
     int overrides;              /* the root document is a list row's
                                    overrides: its `motion:` applies to each

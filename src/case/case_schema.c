@@ -83,11 +83,20 @@ static rb_ynode *schema_section(rb_cctx *c, rb_ynode *root, const char *name,
 
 /* A value outside [lo, hi] (what the solver takes, docs/robustness.md) is
  * an error at its node v, if v is set; range says the bounds in units. */
+/* An error unless lo <= x <= hi. si_range: the limits as SI users read
+ * them ("1 MPa and 10 GPa"); a case in US customary units gets them in its
+ * own units, made from lo and hi. */
 static void within(rb_cctx *c, const rb_ynode *v, const char *key, double x,
-                      double lo, double hi, const char *range)
+                      double lo, double hi, rb_qty q, const char *si_range)
 {
     if (!v || (x >= lo && x <= hi))
         return;
+    char range[120];
+    if (c->units == RB_UNITS_US)
+        snprintf(range, sizeof range, "%s and %s", rb_qty_str(c->units, q, lo, 4).s,
+                 rb_qty_str(c->units, q, hi, 4).s);
+    else
+        snprintf(range, sizeof range, "%s", si_range);
     rb_cctx_error(c, v, key, "must be between %s (got '%s')", range, v->text);
     c->model_errors++;
 }
@@ -116,7 +125,7 @@ static void read_equipment(rb_cctx *c, rb_ynode *eq, rb_model *m)
     const rb_ynode *mv = schema_field(c, eq, p, "mass", "mass", 1, RB_DIM_MASS, 0, 0,
                                   (double)NAN, 0, &m->mass_kg);
     within(c, mv, "equipment.mass", m->mass_kg, RB_CASE_MIN_MASS_KG,
-              RB_CASE_MAX_MASS_KG, "1 kg and 1e9 kg");
+              RB_CASE_MAX_MASS_KG, RB_Q_MASS, "1 kg and 1e9 kg");
     int which = one_of(c, eq, p, "height", "cm_height", 1,
                           "the total height, or the height of the centre of mass");
     if (which < 0)
@@ -173,14 +182,16 @@ static void read_lever_arm(rb_cctx *c, rb_ynode *an, rb_model *m)
         return;     /* base_width was bad, already reported */
     if (m->lever_arm_m <= 0 || m->lever_arm_m > width) {
         rb_cctx_error(c, v, which ? "anchorage.edge_distance" : "anchorage.lever_arm",
-                      "puts the bolt outside the base plate (base_width is %g m, "
-                      "lever arm would be %g m)", width, m->lever_arm_m);
+                      "puts the bolt outside the base plate (base_width is %s, "
+                      "lever arm would be %s)", rb_qty_str(c->units, RB_Q_LENGTH, width, 6).s,
+                      rb_qty_str(c->units, RB_Q_LENGTH, m->lever_arm_m, 6).s);
         c->model_errors++;
     } else if (m->lever_arm_m <= m->half_width_m) {
         rb_cctx_error(c, v, which ? "anchorage.edge_distance" : "anchorage.lever_arm",
                       "puts the bolt on the near half of the base plate: the "
-                      "lever arm %g m must exceed half the base width (%g m)",
-                      m->lever_arm_m, m->half_width_m);
+                      "lever arm %s must exceed half the base width (%s)",
+                      rb_qty_str(c->units, RB_Q_LENGTH, m->lever_arm_m, 6).s,
+                      rb_qty_str(c->units, RB_Q_LENGTH, m->half_width_m, 6).s);
         c->model_errors++;
     }
 }
@@ -217,7 +228,7 @@ static void read_anchorage(rb_cctx *c, rb_ynode *an, rb_model *m)
                                      RB_DIM_LENGTH, 0, 0, (double)NAN, 0, &x))) {
         m->bolt_area_m2 = RB_PI * x * x / 4;
         within(c, bv, "anchorage.diameter", x, RB_CASE_MIN_DIAMETER_M,
-                  RB_CASE_MAX_DIAMETER_M, "1 mm and 200 mm");
+                  RB_CASE_MAX_DIAMETER_M, RB_Q_SMALL_LENGTH, "1 mm and 200 mm");
     } else if (which == 1) {
         c->bolt_by_area = 1;
         bv = schema_field(c, an, p, "area", "bolt_area", 1, RB_DIM_AREA, 0, 0, (double)NAN, 0,
@@ -225,32 +236,34 @@ static void read_anchorage(rb_cctx *c, rb_ynode *an, rb_model *m)
         within(c, bv, "anchorage.area", m->bolt_area_m2,
                   RB_PI * RB_CASE_MIN_DIAMETER_M * RB_CASE_MIN_DIAMETER_M / 4,
                   RB_PI * RB_CASE_MAX_DIAMETER_M * RB_CASE_MAX_DIAMETER_M / 4,
-                  "0.785 mm^2 and 31 416 mm^2 (a bolt of 1 mm to 200 mm)");
+                  RB_Q_AREA, "0.785 mm^2 and 31 416 mm^2 (a bolt of 1 mm to 200 mm)");
     }
     else if (which < 0)
         c->model_errors++;
     bv = schema_field(c, an, p, "yield_stress", "yield_stress", 1, RB_DIM_STRESS, 0, 0,
                   (double)NAN, 0, &m->yield_stress_pa);
     within(c, bv, "anchorage.yield_stress", m->yield_stress_pa, RB_CASE_MIN_YIELD_PA,
-              RB_CASE_MAX_YIELD_PA, "1 MPa and 10 GPa");
+              RB_CASE_MAX_YIELD_PA, RB_Q_STRESS, "1 MPa and 10 GPa");
     bv = schema_field(c, an, p, "toughness", "toughness", 1, RB_DIM_ENERGY_DENSITY, 0,
                   0, (double)NAN, 0, &m->toughness_jpm3);
     within(c, bv, "anchorage.toughness", m->toughness_jpm3, RB_CASE_MIN_TOUGHNESS,
-              RB_CASE_MAX_TOUGHNESS, "1 kJ/m^3 and 1e7 kJ/m^3");
+              RB_CASE_MAX_TOUGHNESS, RB_Q_ENERGY_DENSITY, "1 kJ/m^3 and 1e7 kJ/m^3");
     v = (rb_ynode *)schema_field(c, an, p, "deformable_length", "deformable_length", 1,
                              RB_DIM_LENGTH, 0, 0, (double)NAN, 0,
                              &m->deformable_length_m);
     if (v && (m->deformable_length_m < RB_CASE_MIN_BOLT_LENGTH_M
               || m->deformable_length_m > RB_CASE_MAX_BOLT_LENGTH_M)) {
-        rb_cctx_error(c, v, "anchorage.deformable_length", "must be between %g mm "
-                      "and %g m (got '%s')", RB_CASE_MIN_BOLT_LENGTH_M * 1e3,
-                      RB_CASE_MAX_BOLT_LENGTH_M, v->text);
+        rb_cctx_error(c, v, "anchorage.deformable_length", "must be between %s "
+                      "and %s (got '%s')",
+                      rb_qty_str(c->units, RB_Q_SMALL_LENGTH, RB_CASE_MIN_BOLT_LENGTH_M, 4).s,
+                      rb_qty_str(c->units, RB_Q_LENGTH, RB_CASE_MAX_BOLT_LENGTH_M, 4).s,
+                      v->text);
         c->model_errors++;
     }
     bv = schema_field(c, an, p, "elastic_modulus", "elastic_modulus", 0, RB_DIM_STRESS,
                   0, 0, (double)NAN, 0, &m->elastic_modulus_pa);
     within(c, bv, "anchorage.elastic_modulus", m->elastic_modulus_pa,
-              RB_CASE_MIN_MODULUS_PA, RB_CASE_MAX_MODULUS_PA, "1 GPa and 1000 GPa");
+              RB_CASE_MIN_MODULUS_PA, RB_CASE_MAX_MODULUS_PA, RB_Q_STRESS, "1 GPa and 1000 GPa");
     read_lever_arm(c, an, m);
     /* unknown keys once the concrete check has read its own */
 }
@@ -284,8 +297,9 @@ static void read_gap(rb_cctx *c, rb_ynode *root, rb_model *m)
     double l = m->lever_arm_m;
     if (v && l > 0 && m->gap_m > 0 && m->gap_m < RB_CASE_MIN_GAP_RATIO * l) {
         rb_cctx_error(c, v, which ? "gap_ratio" : "gap", "must be 0 or at least "
-                      "%g of the lever arm (%g mm here; got '%s')",
-                      RB_CASE_MIN_GAP_RATIO, RB_CASE_MIN_GAP_RATIO * l * 1e3, v->text);
+                      "%g of the lever arm (%s here; got '%s')", RB_CASE_MIN_GAP_RATIO,
+                      rb_qty_str(c->units, RB_Q_SMALL_LENGTH, RB_CASE_MIN_GAP_RATIO * l, 6).s,
+                      v->text);
         c->model_errors++;
     }
 }
@@ -365,8 +379,48 @@ static void default_name(rb_cctx *c, rb_case *cs)
     cs->name = p;
 }
 
+/* How many of the quantities under n are written in each unit system
+ * (n_sys[RB_UNITS_SI], n_sys[RB_UNITS_US]); names and descriptions are
+ * text, not quantities. */
+static void count_units(const rb_ynode *n, size_t n_sys[3])
+{
+    if (n->kind == RB_YNODE_SCALAR) {
+        if (n->text)
+            n_sys[rb_unit_system_of_text(n->text)]++;
+    } else if (n->kind == RB_YNODE_MAP) {
+        for (size_t i = 0; i < n->n; i++)
+            if (strcmp(n->entries[i].key, "name") != 0
+                && strcmp(n->entries[i].key, "description") != 0)
+                count_units(n->entries[i].value, n_sys);
+    } else {
+        for (size_t i = 0; i < n->n; i++)
+            count_units(n->items[i], n_sys);
+    }
+}
+
+/* Output units: as asked, else the system most quantities were written
+ * in (SI on a tie, and for a case with no unit of either system). Read
+ * before anything else, so that every message about a value of the case
+ * speaks the case's units. */
+static void read_output_units(rb_cctx *c, rb_ynode *root, rb_case *cs)
+{
+    size_t n_sys[3] = {0, 0, 0};
+    count_units(root, n_sys);
+    cs->output_units = n_sys[RB_UNITS_US] > n_sys[RB_UNITS_SI] ? RB_UNITS_US : RB_UNITS_SI;
+    rb_ynode *v = rb_cv_get(c, root, "", "output_units", 0, "");
+    if (v) {
+        static const char *const systems[] = {"si", "us", NULL};
+        int i;
+        if (rb_cv_enum(c, v, "output_units", systems, &i))
+            cs->output_units = i == 1 ? RB_UNITS_US : RB_UNITS_SI;
+    }
+    c->units = cs->output_units;
+    cs->criteria.units = cs->output_units;
+}
+
 void rb_case_read_schema(rb_cctx *c, rb_ynode *root, rb_case *cs)
 {
+    read_output_units(c, root, cs);
     rb_ynode *v = rb_cv_get(c, root, "", "name", 0, "");
     if (!v || !rb_cv_string(c, v, "name", &cs->name))
         default_name(c, cs);
@@ -405,15 +459,5 @@ void rb_case_read_schema(rb_cctx *c, rb_ynode *root, rb_case *cs)
     if ((v = schema_section(c, root, "project", 0, "")))
         rb_case_read_project(c, v, cs);
     rb_case_read_motions(c, root);
-    /* Output units: as asked, else the system most quantities were written
-     * in (SI on a tie, and for a case with no unit of either system). */
-    cs->output_units = c->n_us_units > c->n_si_units ? RB_UNITS_US : RB_UNITS_SI;
-    v = rb_cv_get(c, root, "", "output_units", 0, "");
-    if (v) {
-        static const char *const systems[] = {"si", "us", NULL};
-        int i;
-        if (rb_cv_enum(c, v, "output_units", systems, &i))
-            cs->output_units = i == 1 ? RB_UNITS_US : RB_UNITS_SI;
-    }
     rb_cv_unknown_keys(c, root, "", top_keys);
 }

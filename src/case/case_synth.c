@@ -327,9 +327,10 @@ static int build_one(rb_cctx *c, const rb_cmotion *cm, const rb_case_target *ct,
     if (t->kind == RB_TARGET_AC156) {
         double flx, rig;
         rb_ac156_levels(t->edition, t->sds_mps2, t->z_over_h, &flx, &rig);
-        snprintf(desc, sizeof desc, "synthetic: AC156 (%s) S_DS %g m/s^2, z/h %g, seed "
+        snprintf(desc, sizeof desc, "synthetic: AC156 (%s) S_DS %s, z/h %g, seed "
                  "%llu, motion %u", rb_enum_str(rb_ac156_edition_names, (int)t->edition),
-                 t->sds_mps2, t->z_over_h, cm->seed, index + 1);
+                 rb_qty_str(c->units, RB_Q_ACCEL, t->sds_mps2, 6).s, t->z_over_h,
+                 cm->seed, index + 1);
     } else {
         snprintf(desc, sizeof desc, "synthetic: table %.120s, seed %llu, motion %u",
                  ct->file, cm->seed, index + 1);

@@ -39,10 +39,11 @@ static int check_gap_angle(rb_cctx *c, const rb_model *m)
     double theta0 = g < 2 * l ? 2 * asin(g / (2 * l)) : (double)INFINITY;
     if (theta0 < alpha)
         return 1;
-    rb_cctx_error(c, f->node, f->key, "the gap (%g mm, %g of the lever arm) "
+    rb_cctx_error(c, f->node, f->key, "the gap (%s, %g of the lever arm) "
                   "lets the plate rotate %.3g deg before the bolts hold it, "
                   "past the overturning angle alpha = %.3g deg",
-                  g * 1e3, g / l, theta0 * RB_DEG, alpha * RB_DEG);
+                  rb_qty_str(c->units, RB_Q_SMALL_LENGTH, g, 6).s, g / l, theta0 * RB_DEG,
+                  alpha * RB_DEG);
     return 0;
 }
 
@@ -276,8 +277,10 @@ static int load_record(rb_cctx *c, const rb_cmotion *cm, rb_case_motion *out,
         if (p < RB_CASE_MIN_RECORD_PEAK) {
             rb_case_keypath(k, cm->key, "peak");
             rb_cctx_error(c, cm->peak_node, k, "cannot scale the record to a "
-                          "peak: its largest sample is %g m/s^2, below %g m/s^2 "
-                          "(noise, or the wrong units)", p, RB_CASE_MIN_RECORD_PEAK);
+                          "peak: its largest sample is %s, below %s "
+                          "(noise, or the wrong units)",
+                          rb_qty_str(c->units, RB_Q_ACCEL, p, 6).s,
+                          rb_qty_str(c->units, RB_Q_ACCEL, RB_CASE_MIN_RECORD_PEAK, 6).s);
             return 0;
         }
         rb_series_scale(&out->series, peak_mps2 / p);
@@ -301,9 +304,9 @@ static int build_motion(rb_cctx *c, const rb_cmotion *cm, rb_case_motion *out,
                               cm->amplitude, d, have_model,
                               &out->motion.amplitude_mps2))
             return 0;
-        snprintf(desc, sizeof desc, "%s %g m/s^2",
+        snprintf(desc, sizeof desc, "%s %s",
                  cm->motion.kind == RB_MOTION_HARMONIC ? "harmonic" : "pulse",
-                 out->motion.amplitude_mps2);
+                 rb_qty_str(c->units, RB_Q_ACCEL, out->motion.amplitude_mps2, 6).s);
         out->source = rb_case_strdup(c, desc);
         out->name = rb_case_strdup(c, cm->name ? cm->name : cm->key);
         return out->source && out->name;

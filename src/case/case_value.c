@@ -50,21 +50,33 @@ int rb_cv_quantity(rb_cctx *c, const rb_ynode *v, const char *key, rb_dim dim,
         rb_cctx_error(c, v, key, "%s", msg);
         return 0;
     }
-    c->n_si_units += out->system == RB_UNITS_SI;
-    c->n_us_units += out->system == RB_UNITS_US;
     return 1;
 }
 
-/* "> 0", ">= 0 and < 1", ... for a range message. */
-static void cv_range_str(char *buf, size_t size, double lo, int lo_incl,
-                            double hi, int hi_incl)
+/* A bound of a range message: a bare number for a ratio, a time or a
+ * zero, else the quantity in the case's units. */
+static rb_qtext cv_bound(const rb_cctx *c, rb_dim dim, double x)
+{
+    rb_qty q;
+    rb_qtext t;
+    if (x == 0 || !rb_dim_qty(dim, &q)) {
+        snprintf(t.s, sizeof t.s, "%g", x);
+        return t;
+    }
+    return rb_qty_str(c->units, q, x, 4);
+}
+
+/* "> 0", ">= 0 and < 1", ">= 1000 psi and <= 20000 psi" ... for a range
+ * message. */
+static void cv_range_str(const rb_cctx *c, rb_dim dim, char *buf, size_t size, double lo,
+                         int lo_incl, double hi, int hi_incl)
 {
     int n = 0;
     if (!isnan(lo))
-        n = snprintf(buf, size, "%s %g", lo_incl ? ">=" : ">", lo);
+        n = snprintf(buf, size, "%s %s", lo_incl ? ">=" : ">", cv_bound(c, dim, lo).s);
     if (!isnan(hi))
-        snprintf(buf + n, size - (size_t)n, "%s%s %g", n ? " and " : "",
-                 hi_incl ? "<=" : "<", hi);
+        snprintf(buf + n, size - (size_t)n, "%s%s %s", n ? " and " : "",
+                 hi_incl ? "<=" : "<", cv_bound(c, dim, hi).s);
 }
 
 const rb_ynode *rb_cv_number(rb_cctx *c, rb_ynode *map, const char *path,
@@ -72,7 +84,7 @@ const rb_ynode *rb_cv_number(rb_cctx *c, rb_ynode *map, const char *path,
                              double lo, int lo_incl, double hi, int hi_incl,
                              double *out)
 {
-    char k[RB_CASE_KEY_MAX], expected[200], range[80];
+    char k[RB_CASE_KEY_MAX], expected[200], range[120];
     rb_quantity q;
     if (dim == RB_DIM_RATIO)
         snprintf(expected, sizeof expected, "a dimensionless number such as "
@@ -90,7 +102,7 @@ const rb_ynode *rb_cv_number(rb_cctx *c, rb_ynode *map, const char *path,
            || (!isnan(hi) && (hi_incl ? q.value > hi : q.value >= hi));
     if (bad) {
         range[0] = '\0';
-        cv_range_str(range, sizeof range, lo, lo_incl, hi, hi_incl);
+        cv_range_str(c, dim, range, sizeof range, lo, lo_incl, hi, hi_incl);
         /* "damping: 5" meant 5 %: a bare damping ratio of 1 to 100, the
          * one ratio engineers say in percent (a z/h of 1.5 is no 1.5 %) */
         size_t kl = strlen(key);

@@ -147,29 +147,14 @@ static void suite_vars(rb_tvars *t, const rb_report *r)
     }
 }
 
-/* The source of a motion: the record's path, or the closed form's
- * description, which the loader writes in m/s^2 and which is restated in g
- * for a report in US customary units. */
-static const char *motion_source(const rb_report *r, const rb_case_motion *cm,
-                                 char *buf, size_t n)
-{
-    if (r->kase->output_units != RB_UNITS_US || cm->motion.kind == RB_MOTION_SAMPLED
-        || !(r->derived.g > 0))
-        return cm->source;
-    snprintf(buf, n, "%s %g g", cm->motion.kind == RB_MOTION_HARMONIC ? "harmonic" : "pulse",
-             cm->motion.amplitude_mps2 / r->derived.g);
-    return buf;
-}
-
 static void motion_head_vars(rb_tvars *t, const rb_report *r, size_t i,
-                             const rb_report_norms *n, char *rm_headline, size_t hn,
-                             char *src, size_t sn)
+                             const rb_report_norms *n, char *rm_headline, size_t hn)
 {
     const rb_report_motion *rm = &r->motions[i];
     const rb_result *res = rm->result;
     rb_tv_int(t, "index", (long)(i + 1));
     rb_tv_str(t, "name", rm->motion->name);
-    rb_tv_str(t, "source", motion_source(r, rm->motion, src, sn));
+    rb_tv_str(t, "source", rm->motion->source);
     rb_report_headline(rm->verdict.pass, rm->verdict.warnings, rm_headline, hn);
     rb_tv_str(t, "motion_verdict", rm->verdict.pass ? "PASS" : "FAIL");
     rb_tv_str(t, "motion_headline", rm_headline);
@@ -352,11 +337,10 @@ rb_status rb_report_text_render(const rb_report *r, const char *tmpl,
     rb_tlist lists[3] = { { "motions", NULL, 0 }, { "design", NULL, 0 },
                           { "concrete", NULL, 0 } };
     char (*heads)[RB_HEADLINE_MAX] = calloc(n ? n : 1, sizeof *heads);
-    char (*srcs)[96] = calloc(n ? n : 1, sizeof *srcs);
     rb_tvars t;
     rb_status st = RB_ERR_NOMEM;
     *out = NULL;
-    if (!vars || !items || !motion_lists || !arena || !heads || !srcs)
+    if (!vars || !items || !motion_lists || !arena || !heads)
         goto done;
     t.v = vars;
     t.n = 0;
@@ -369,8 +353,7 @@ rb_status rb_report_text_render(const rb_report *r, const char *tmpl,
         rb_report_norms_compute(r, &r->motions[i], &norms);
         t.v = vars + (i + 1) * RB_TXT_MAX_VARS;
         t.n = 0;
-        motion_head_vars(&t, r, i, &norms, heads[i], sizeof heads[i],
-                         srcs[i], sizeof srcs[i]);
+        motion_head_vars(&t, r, i, &norms, heads[i], sizeof heads[i]);
         motion_row_vars(&t, r->motions[i].result, &norms, out_units(r));
         motion_outcome_vars(&t, r->motions[i].result, out_units(r));
         if (motion_validity_vars(&t, r, &r->motions[i], arena) != RB_OK)
@@ -397,7 +380,6 @@ done:
     rb_txt_arena_free(arena);
     free(motion_lists);
     free(heads);
-    free(srcs);
     free(vars);
     free(items);
     return st;
