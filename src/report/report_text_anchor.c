@@ -63,6 +63,8 @@ rb_status rb_report_text_concrete(const rb_report *r, rb_txt_arena *a, rb_tlist 
     rb_tv_num(&t, "fc", in->fc_pa / u->stress_f);
     rb_tv_str(&t, "cracked", in->cracked ? "cracked" : "uncracked");
     rb_tv_num(&t, "slab", in->thickness_m / u->small_length_f);
+    /* no edge near: the slab's edge plays no part, and has no number */
+    rb_tv_int(&t, "has_edge", isfinite(in->edge_m));
     rb_tv_opt(&t, "edge", isfinite(in->edge_m), in->edge_m / u->small_length_f);
     rb_tv_num(&t, "hef", in->hef_m / u->small_length_f);
     rb_tv_num(&t, "spacing", in->spacing_m / u->small_length_f);
