@@ -29,7 +29,9 @@
 typedef struct {
     char *source;         /* owned: the case file, or the equipment list */
     int line;             /* equipment lists: line of the row; else 0 */
-    int base_col;         /* rows: column of the base's cell; 0 for --base */
+    int base_line, base_col; /* rows: line and column of the base's cell (a
+                             multi-line cell before it puts it on a later
+                             line than the row's); 0 for --base */
     char *tag;            /* owned: the row's tag; NULL for case files */
     char *base;           /* owned: rows: the base case, as resolved */
     rb_case_override *ov; /* owned, with owned key and value strings */

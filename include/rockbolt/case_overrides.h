@@ -46,4 +46,10 @@ rb_status rb_case_load_overrides_at(const char *base_path, int base_line, int ba
                                     struct rb_record_cache *cache, rb_case *out,
                                     rb_diag_list *diags);
 
+/* 1 if the dotted key names a value a case file can give (one scalar), as
+ * the case schema knows its keys; else 0 with msg saying why: an unknown
+ * key (with the nearest known one), a section or a list, or a key a row
+ * gives otherwise (extends, name). */
+int rb_case_key_settable(const char *key, char *msg, size_t msg_size);
+
 #endif

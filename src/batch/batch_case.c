@@ -43,7 +43,8 @@ void rb_batch_case_load(rb_batch_slot *s, const rb_batch_item *it, rb_batch_case
         return;
     }
     if (it->tag)
-        st = rb_case_load_overrides_at(it->base, it->line, it->base_col, it->source,
+        st = rb_case_load_overrides_at(it->base, it->base_line ? it->base_line : it->line,
+                                       it->base_col, it->source,
                                        it->tag, it->ov, it->n_ov, s->cache, &s->c,
                                        &diags);
     else

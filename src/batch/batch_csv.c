@@ -2,11 +2,17 @@
  * fields of a base case (docs/batch.md lists the columns).
  *
  * Fields are separated by commas and may be double-quoted ("" for a quote
- * inside); spaces around unquoted fields are dropped; blank lines and lines
- * starting with '#' are skipped; the first other line is the header. An
- * empty cell keeps the base's value. Every column must be known, so that a
- * misspelt header cannot silently leave a field at the base's value. Each
- * value keeps its line and column, and errors in it are reported there.
+ * inside), as RFC 4180 has them: a quoted field may hold line breaks (a
+ * spreadsheet's multi-line cell), and its record then spans lines. Spaces
+ * around unquoted fields are dropped; blank lines and lines starting with
+ * '#' are skipped between records; the first other record is the header.
+ * A column is a short name (mass, diameter, ...) or any case key by its
+ * dotted path (concrete.strength), optionally with a unit in brackets
+ * (embedment [in]) that a bare number in its cells takes. An empty cell
+ * keeps the base's value. Every column must be a key of the case schema,
+ * so that a misspelt header cannot silently leave a field at the base's
+ * value. Each value keeps its line and column, and errors in it are
+ * reported there.
  *
  * Encodings and separators (docs/batch.md): a list is UTF-8, with or
  * without a byte-order mark, unless the batch declares another encoding
@@ -15,6 +21,7 @@
  * output ever carries text that is not UTF-8. Fields are separated by
  * commas, or by semicolons when the header has ';' and no ',' outside
  * quotes (spreadsheets in locales with a decimal comma write those). */
+#include <ctype.h>
 #include <errno.h>
 #include <iconv.h>
 #include <search.h>
@@ -25,8 +32,12 @@
 #include "rockbolt/datadir.h"
 #include "rockbolt/sandbox.h"
 #include "rockbolt/textsafe.h"
+#include "rockbolt/units.h"
+#include "util/nearest.h"
 
 #define RB_CSV_MAX_FIELDS 64
+#define RB_CSV_KEY_MAX 128      /* a column's dotted case key */
+#define RB_CSV_UNIT_MAX 32      /* a column's [unit] */
 
 typedef enum { COL_TAG, COL_BASE, COL_KEY, COL_MOTION } col_kind;
 
@@ -70,6 +81,8 @@ static const col_def csv_cols[] = {
 
 typedef struct {
     char *text;    /* owned */
+    int line;      /* 1-based line of the field's start (a record that holds
+                      a multi-line cell spans lines) */
     int col;       /* 1-based byte column of the field's start */
 } csv_field;
 
@@ -85,75 +98,146 @@ static void row_clear(csv_row *r)
     r->n = 0;
 }
 
-/* Split one line (without its newline) into fields; returns 0 with msg set
- * on a malformed line, -1 on NOMEM. */
-static int split_line(const char *s, size_t len, char sep, csv_row *r, char *msg,
-                      size_t msz, int *bad_col)
+/* Where a record stands in the buffer: pos and line of its next byte, and
+ * the start of that line (for columns). */
+typedef struct {
+    const char *buf;
+    size_t len, pos, line_start;
+    int line;
+} csv_cursor;
+
+static int is_eol(const csv_cursor *cu, size_t i)
 {
-    size_t i = 0;
+    return cu->buf[i] == '\n'
+        || (cu->buf[i] == '\r' && (i + 1 == cu->len || cu->buf[i + 1] == '\n'));
+}
+
+/* Past the end of the current line (its newline included). */
+static void skip_line(csv_cursor *cu)
+{
+    const char *nl = memchr(cu->buf + cu->pos, '\n', cu->len - cu->pos);
+    cu->pos = nl ? (size_t)(nl - cu->buf) + 1 : cu->len;
+    if (nl) {
+        cu->line++;
+        cu->line_start = cu->pos;
+    }
+}
+
+/* A quoted field from the quote at cu->pos: its text with "" as one quote
+ * and each line break (CRLF too) as LF, lines counted. NULL with msg on an
+ * unterminated field, *oom when memory runs out. */
+static char *quoted_field(csv_cursor *cu, char *msg, size_t msz, int *oom)
+{
+    const char *b = cu->buf;
+    size_t i = cu->pos + 1, end = i;
+    /* the closing quote first: the text is at most that long */
+    while (end < cu->len && !(b[end] == '"' && (end + 1 >= cu->len || b[end + 1] != '"')))
+        end += b[end] == '"' ? 2 : 1;
+    if (end >= cu->len) {
+        snprintf(msg, msz, "unterminated quoted field: its closing quote is missing, so "
+                 "it would run to the end of the list");
+        return NULL;
+    }
+    char *out = malloc(end - i + 1);
+    size_t o = 0;
+    if (!out) {
+        *oom = 1;
+        return NULL;
+    }
+    while (i < end) {
+        if (b[i] == '"') {
+            out[o++] = '"';
+            i += 2;
+        } else if (b[i] == '\r' && i + 1 < end && b[i + 1] == '\n') {
+            i++;
+        } else {
+            if (b[i] == '\n') {
+                cu->line++;
+                cu->line_start = i + 1;
+            }
+            out[o++] = b[i++];
+        }
+    }
+    out[o] = '\0';
+    cu->pos = end + 1;
+    return out;
+}
+
+/* Split the record at the cursor into fields, each with its line and
+ * column, and move past it. Returns 1; 0 with msg, *bad_line and *bad_col
+ * set on a malformed record (the cursor past its line); -1 on NOMEM. */
+static int split_record(csv_cursor *cu, char sep, csv_row *r, char *msg, size_t msz,
+                        int *bad_line, int *bad_col)
+{
+    const char *s = cu->buf;
     r->n = 0;
     for (;;) {
-        while (i < len && (s[i] == ' ' || s[i] == '\t'))
-            i++;
+        while (cu->pos < cu->len && (s[cu->pos] == ' ' || s[cu->pos] == '\t'))
+            cu->pos++;
+        *bad_line = cu->line;
+        *bad_col = (int)(cu->pos - cu->line_start) + 1;
         if (r->n == RB_CSV_MAX_FIELDS) {
             snprintf(msg, msz, "more than %d fields", RB_CSV_MAX_FIELDS);
-            *bad_col = (int)i + 1;
+            skip_line(cu);
             return 0;
         }
         csv_field *f = &r->f[r->n];
-        f->col = (int)i + 1;
-        char *out = malloc(len - i + 1);
-        size_t o = 0;
-        if (!out)
-            return -1;
-        if (i < len && s[i] == '"') {
-            i++;
-            for (;;) {
-                if (i >= len) {
-                    free(out);
-                    snprintf(msg, msz, "unterminated quoted field (a field "
-                             "cannot span lines)");
-                    *bad_col = f->col;
-                    return 0;
-                }
-                if (s[i] == '"' && i + 1 < len && s[i + 1] == '"') {
-                    out[o++] = '"';
-                    i += 2;
-                } else if (s[i] == '"') {
-                    i++;
-                    break;
-                } else {
-                    out[o++] = s[i++];
-                }
+        f->line = *bad_line;
+        f->col = *bad_col;
+        char *out;
+        if (cu->pos < cu->len && s[cu->pos] == '"') {
+            int oom = 0;
+            if (!(out = quoted_field(cu, msg, msz, &oom))) {
+                if (oom)
+                    return -1;
+                cu->pos = cu->len;   /* nothing after it can be told apart */
+                return 0;
             }
-            while (i < len && (s[i] == ' ' || s[i] == '\t'))
-                i++;
-            if (i < len && s[i] != sep) {
+            while (cu->pos < cu->len && (s[cu->pos] == ' ' || s[cu->pos] == '\t'))
+                cu->pos++;
+            if (cu->pos < cu->len && s[cu->pos] != sep && !is_eol(cu, cu->pos)) {
                 free(out);
                 snprintf(msg, msz, "text after a quoted field");
-                *bad_col = (int)i + 1;
+                *bad_line = cu->line;
+                *bad_col = (int)(cu->pos - cu->line_start) + 1;
+                skip_line(cu);
                 return 0;
             }
         } else {
-            while (i < len && s[i] != sep)
-                out[o++] = s[i++];
-            while (o > 0 && (out[o - 1] == ' ' || out[o - 1] == '\t'))
+            size_t i = cu->pos;
+            while (i < cu->len && s[i] != sep && !is_eol(cu, i))
+                i++;
+            size_t o = i - cu->pos;
+            while (o > 0 && (s[cu->pos + o - 1] == ' ' || s[cu->pos + o - 1] == '\t'))
                 o--;
+            if (!(out = malloc(o + 1)))
+                return -1;
+            memcpy(out, s + cu->pos, o);
+            out[o] = '\0';
+            cu->pos = i;
         }
-        out[o] = '\0';
         f->text = out;
         r->n++;
-        if (i >= len)
+        if (cu->pos >= cu->len || is_eol(cu, cu->pos)) {
+            skip_line(cu);
             return 1;
-        i++;   /* the separator */
+        }
+        cu->pos++;   /* the separator */
     }
 }
+
+/* A column of the list: what its cells set. */
+typedef struct {
+    col_kind kind;
+    char key[RB_CSV_KEY_MAX];   /* COL_KEY: the dotted case key */
+    char unit[RB_CSV_UNIT_MAX]; /* the header's [unit], for bare numbers; "" */
+} csv_col;
 
 typedef struct {
     const char *path;
     char *dir;            /* the list's directory with '/', or "" */
     const char *default_base;
-    int cols[RB_CSV_MAX_FIELDS];  /* index into csv_cols */
+    csv_col cols[RB_CSV_MAX_FIELDS];
     size_t n_cols;
     int tag_col, base_col;
     char sep;             /* ',' or ';', from the header */
@@ -234,17 +318,107 @@ static int find_col(const char *name)
     return -1;
 }
 
+/* The short column name nearest a misspelt one, or NULL. */
+static const char *nearest_col(const char *name)
+{
+    const char *best = NULL;
+    int bestd = 9;
+    for (size_t k = 0; k < RB_CSV_NCOLS; k++) {
+        int d = rb_edit_distance(name, csv_cols[k].name);
+        if (d < bestd) {
+            bestd = d;
+            best = csv_cols[k].name;
+        }
+    }
+    return bestd <= rb_typo_limit(strlen(name)) ? best : NULL;
+}
+
+/* A unit some quantity of a case can be written in ("in", "kip", "%"). */
+static int known_unit(const char *unit)
+{
+    char text[RB_CSV_UNIT_MAX + 4], msg[200];
+    rb_quantity q;
+    snprintf(text, sizeof text, "1 %s", unit);
+    for (int d = 0; d < RB_DIM_COUNT; d++)
+        if (rb_unit_parse(text, (rb_dim)d, &q, msg, sizeof msg) == RB_OK)
+            return 1;
+    return 0;
+}
+
+/* A header cell: "mass", "concrete.strength", "embedment [in]". Returns 1
+ * with *col filled, 0 with msg saying why the column is not known. */
+static int parse_column(const char *cell, csv_col *col, char *msg, size_t msz)
+{
+    char name[RB_CSV_KEY_MAX];
+    const char *br = strchr(cell, '[');
+    size_t n = br ? (size_t)(br - cell) : strlen(cell);
+    while (n > 0 && isspace((unsigned char)cell[n - 1]))
+        n--;
+    memset(col, 0, sizeof *col);
+    if (n >= sizeof name) {
+        snprintf(msg, msz, "unknown column '%.60s...' (longer than any case key)", cell);
+        return 0;
+    }
+    memcpy(name, cell, n);
+    name[n] = '\0';
+    if (br) {
+        const char *u = br + 1, *close = strchr(u, ']');
+        while (isspace((unsigned char)*u))
+            u++;
+        size_t un = close ? (size_t)(close - u) : 0;
+        while (un > 0 && isspace((unsigned char)u[un - 1]))
+            un--;
+        if (!close || close[1] || un == 0 || un >= sizeof col->unit) {
+            snprintf(msg, msz, "column '%.60s': expected a name and a unit in brackets "
+                     "at its end, such as 'embedment [in]'", cell);
+            return 0;
+        }
+        memcpy(col->unit, u, un);
+        col->unit[un] = '\0';
+        if (!known_unit(col->unit)) {
+            snprintf(msg, msz, "column '%.60s': unknown unit '%s' (units as a case file "
+                     "writes them: in, mm, lb, kip, psi, ksi, g, %%, ...)", cell, col->unit);
+            return 0;
+        }
+    }
+    int k = find_col(name);
+    if (k >= 0) {
+        col->kind = csv_cols[k].kind;
+        snprintf(col->key, sizeof col->key, "%s", csv_cols[k].key ? csv_cols[k].key
+                                                                  : csv_cols[k].name);
+    } else {
+        char why[300];
+        if (!rb_case_key_settable(name, why, sizeof why)) {
+            const char *near = strchr(name, '.') ? NULL : nearest_col(name);
+            if (near)
+                snprintf(why, sizeof why, "did you mean '%s'?", near);
+            snprintf(msg, msz, "unknown column '%.60s': %s (a column is tag, base, motion, a "
+                     "short name such as mass, or a dotted case key such as "
+                     "anchorage.embedment)",
+                     name, why);
+            return 0;
+        }
+        col->kind = COL_KEY;
+        snprintf(col->key, sizeof col->key, "%s", name);
+    }
+    if (col->unit[0] && col->kind != COL_KEY) {
+        snprintf(msg, msz, "column '%.60s' takes no unit", name);
+        return 0;
+    }
+    return 1;
+}
+
 /* Check the header; on a problem the whole list becomes one bad item. */
 static rb_status read_header(csv_ctx *cx, rb_batch_list *l, const csv_row *r, int line)
 {
-    char msg[512];
+    char msg[700];
     cx->tag_col = cx->base_col = -1;
     /* A header without one known column is not a list's (a CSV of another
      * kind, a system file named *.csv): say so without quoting it, since
      * the error goes into published summaries. */
     size_t known = 0;
     for (size_t i = 0; i < r->n; i++)
-        known += find_col(r->f[i].text) >= 0;
+        known += parse_column(r->f[i].text, &cx->cols[i], msg, sizeof msg);
     if (known == 0) {
         rb_batch_item *it = rb_batch_list_push(l, cx->path);
         if (!it)
@@ -254,31 +428,23 @@ static rb_status read_header(csv_ctx *cx, rb_batch_list *l, const csv_row *r, in
         return RB_ERR_INVALID;
     }
     for (size_t i = 0; i < r->n; i++) {
-        int k = find_col(r->f[i].text);
-        const char *bad = NULL;
-        if (k < 0)
-            bad = "unknown column";
-        for (size_t j = 0; j < i && !bad; j++)
-            if (cx->cols[j] == k)
-                bad = "duplicate column";
-        if (bad) {
+        int ok = parse_column(r->f[i].text, &cx->cols[i], msg, sizeof msg);
+        for (size_t j = 0; j < i && ok; j++)
+            if (strcmp(cx->cols[j].key, cx->cols[i].key) == 0) {
+                snprintf(msg, sizeof msg, "duplicate column '%.60s' (column %zu sets "
+                         "%s too)", r->f[i].text, j + 1, cx->cols[i].key);
+                ok = 0;
+            }
+        if (!ok) {
             rb_batch_item *it = rb_batch_list_push(l, cx->path);
             if (!it)
                 return RB_ERR_NOMEM;
-            snprintf(msg, sizeof msg, "%s '%.60s' (the columns are tag, base, "
-                     "description, mass, height, cm_height, base_width, frequency, "
-                     "damping, restitution, bolt_model, bolts_per_row, diameter, "
-                     "area, yield_stress, toughness, deformable_length, "
-                     "edge_distance, lever_arm, gap, gap_ratio, motion, peak, "
-                     "amplitude, building_frequency, building_damping, criterion, "
-                     "usage_limit)", bad, r->f[i].text);
-            rb_batch_item_bad(it, line, r->f[i].col, "header", msg);
+            rb_batch_item_bad(it, r->f[i].line, r->f[i].col, "header", msg);
             return RB_ERR_INVALID;
         }
-        cx->cols[i] = k;
-        if (csv_cols[k].kind == COL_TAG)
+        if (cx->cols[i].kind == COL_TAG)
             cx->tag_col = (int)i;
-        if (csv_cols[k].kind == COL_BASE)
+        if (cx->cols[i].kind == COL_BASE)
             cx->base_col = (int)i;
     }
     cx->n_cols = r->n;
@@ -348,6 +514,14 @@ static rb_batch_item *row_item(const csv_ctx *cx, rb_batch_list *l, const char *
     return (it->tag = copy(tag[0] ? tag : name)) ? it : NULL;
 }
 
+/* A cell that is a number without its unit ("4", "0.75", "3/4"): it
+ * takes its column's [unit]. One with a unit of its own keeps that. */
+static int bare_number(const char *v)
+{
+    size_t n = strlen(v);
+    return n > 0 && (isdigit((unsigned char)v[n - 1]) || v[n - 1] == '.');
+}
+
 static rb_status read_row(csv_ctx *cx, rb_batch_list *l, const csv_row *r, int line)
 {
     char msg[300];
@@ -362,7 +536,7 @@ static rb_status read_row(csv_ctx *cx, rb_batch_list *l, const csv_row *r, int l
         return RB_OK;
     }
     if (!tag[0]) {
-        rb_batch_item_bad(it, line, r->f[cx->tag_col].col, "tag", "the tag is empty");
+        rb_batch_item_bad(it, r->f[cx->tag_col].line, r->f[cx->tag_col].col, "tag", "the tag is empty");
         return RB_OK;
     }
     int first = tag_seen(cx, tag, line);
@@ -371,33 +545,42 @@ static rb_status read_row(csv_ctx *cx, rb_batch_list *l, const csv_row *r, int l
     if (first > 0) {
         snprintf(msg, sizeof msg, "duplicate tag '%.100s' (first given at line %d)",
                  tag, first);
-        rb_batch_item_bad(it, line, r->f[cx->tag_col].col, "tag", msg);
+        rb_batch_item_bad(it, r->f[cx->tag_col].line, r->f[cx->tag_col].col, "tag", msg);
         return RB_OK;
     }
     const char *base = cx->base_col >= 0 ? r->f[cx->base_col].text : "";
     if (base[0]) {
         it->base = base[0] == '/' ? rb_batch_strdup(base) : join(cx->dir, base);
+        it->base_line = r->f[cx->base_col].line;
         it->base_col = r->f[cx->base_col].col;
     }
     else if (cx->default_base)
         it->base = rb_batch_strdup(cx->default_base);
     else {
-        rb_batch_item_bad(it, line, r->f[cx->base_col].col, "base",
+        rb_batch_item_bad(it, r->f[cx->base_col].line, r->f[cx->base_col].col, "base",
                           "no base case: the cell is empty and no --base was given");
         return RB_OK;
     }
     if (!it->base)
         return RB_ERR_NOMEM;
     for (size_t i = 0; i < r->n; i++) {
-        const col_def *c = &csv_cols[cx->cols[i]];
+        const csv_col *c = &cx->cols[i];
         const char *v = r->f[i].text;
         rb_status st = RB_OK;
         if (!v[0] || c->kind == COL_TAG || c->kind == COL_BASE)
             continue;
-        if (c->kind == COL_MOTION)
-            st = add_motion(it, v, line, r->f[i].col);
-        else
-            st = add_ov(it, c->key, v, line, r->f[i].col);
+        if (c->kind == COL_MOTION) {
+            st = add_motion(it, v, r->f[i].line, r->f[i].col);
+        } else if (c->unit[0] && bare_number(v)) {
+            char *q = malloc(strlen(v) + strlen(c->unit) + 2);
+            if (!q)
+                return RB_ERR_NOMEM;
+            sprintf(q, "%s %s", v, c->unit);
+            st = add_ov(it, c->key, q, r->f[i].line, r->f[i].col);
+            free(q);
+        } else {
+            st = add_ov(it, c->key, v, r->f[i].line, r->f[i].col);
+        }
         if (st == RB_ERR_INVALID)
             return RB_OK;
         if (st != RB_OK)
@@ -440,12 +623,12 @@ static char *slurp(const char *path, size_t *len, int allow_nul, char *msg, size
     return buf;
 }
 
-/* The separator the header line uses: ';' when it has one and no comma
+/* The separator the header record uses: ';' when it has one and no comma
  * outside quotes, else ','. */
 static char header_sep(const char *s, size_t n)
 {
     int quoted = 0, comma = 0, semi = 0;
-    for (size_t i = 0; i < n; i++) {
+    for (size_t i = 0; i < n && (quoted || s[i] != '\n'); i++) {
         if (s[i] == '"')
             quoted = !quoted;
         else if (!quoted && s[i] == ',')
@@ -462,15 +645,29 @@ static char header_sep(const char *s, size_t n)
 /* A row with a byte that is not UTF-8 at column col: unreadable there. Its
  * tag is shown with that byte as \xHH, so no output carries it raw. */
 static rb_status bad_encoding_row(csv_ctx *cx, rb_batch_list *l, const csv_row *r,
-                                  int line, int col, unsigned char byte)
+                                  int line, int byte_line, int col, unsigned char byte)
 {
     char msg[300];
     rb_batch_item *it = row_item(cx, l, row_tag(cx, r), line, rb_utf8_fix);
     if (!it)
         return RB_ERR_NOMEM;
     snprintf(msg, sizeof msg, "byte 0x%02X is not UTF-8: " RB_CSV_HINT, byte);
-    rb_batch_item_bad(it, line, col, "encoding", msg);
+    rb_batch_item_bad(it, byte_line, col, "encoding", msg);
     return RB_OK;
+}
+
+/* Line and column of byte at in buf, from the record's start (line,
+ * line_start). */
+static void where_in(const char *buf, size_t line_start, int line, size_t at, int *out_line,
+                     int *out_col)
+{
+    for (size_t i = line_start; i < at; i++)
+        if (buf[i] == '\n') {
+            line++;
+            line_start = i + 1;
+        }
+    *out_line = line;
+    *out_col = (int)(at - line_start) + 1;
 }
 
 static rb_status read_lines(csv_ctx *cx, rb_batch_list *l, const char *buf, size_t len,
@@ -478,41 +675,40 @@ static rb_status read_lines(csv_ctx *cx, rb_batch_list *l, const char *buf, size
 {
     csv_row r;
     char msg[200];
-    int line = 0, have_header = 0;
-    size_t pos = 0;
+    int have_header = 0;
+    csv_cursor cu = {buf, len, 0, 0, 1};
     rb_status st = RB_OK;
     memset(&r, 0, sizeof r);
     if (len >= 3 && memcmp(buf, "\xEF\xBB\xBF", 3) == 0)
-        pos = 3;   /* a byte-order mark, as spreadsheets write */
-    while (pos < len && st == RB_OK) {
-        const char *s = buf + pos;
-        const char *nl = memchr(s, '\n', len - pos);
-        size_t n = nl ? (size_t)(nl - s) : len - pos;
-        pos += n + (nl != NULL);
-        line++;
-        if (n > 0 && s[n - 1] == '\r')
-            n--;
-        size_t k = 0;
-        while (k < n && (s[k] == ' ' || s[k] == '\t'))
+        cu.pos = cu.line_start = 3;   /* a byte-order mark, as spreadsheets write */
+    while (cu.pos < len && st == RB_OK) {
+        size_t k = cu.pos;
+        while (k < len && (buf[k] == ' ' || buf[k] == '\t'))
             k++;
-        if (k == n || s[k] == '#')
+        if (k == len || buf[k] == '#' || is_eol(&cu, k)) {
+            skip_line(&cu);   /* blank lines and comments, between records only */
             continue;
-        int bad_col = 1;
-        size_t bad_at = rb_utf8_invalid_at(s, n);
+        }
+        int line = cu.line, bad_line = line, bad_col = 1;
+        size_t start = cu.pos, line_start = cu.line_start;
         if (!have_header)
-            cx->sep = header_sep(s, n);
-        int ok = split_line(s, n, cx->sep, &r, msg, sizeof msg, &bad_col);
-        if (ok > 0 && bad_at < n) {
+            cx->sep = header_sep(buf + start, len - start);
+        int ok = split_record(&cu, cx->sep, &r, msg, sizeof msg, &bad_line, &bad_col);
+        size_t bad_at = ok > 0 ? rb_utf8_invalid_at(buf + start, cu.pos - start) : 0;
+        if (ok > 0 && bad_at < cu.pos - start) {
+            int bl, bc;
+            where_in(buf, line_start, line, start + bad_at, &bl, &bc);
             if (have_header) {
-                st = bad_encoding_row(cx, l, &r, line, (int)bad_at + 1,
-                                      (unsigned char)s[bad_at]);
+                st = bad_encoding_row(cx, l, &r, line, bl, bc,
+                                      (unsigned char)buf[start + bad_at]);
                 row_clear(&r);
                 continue;
             }
             ok = 0;
-            bad_col = (int)bad_at + 1;
+            bad_line = bl;
+            bad_col = bc;
             snprintf(msg, sizeof msg, "byte 0x%02X is not UTF-8: " RB_CSV_HINT,
-                     (unsigned char)s[bad_at]);
+                     (unsigned char)buf[start + bad_at]);
         }
         if (ok < 0) {
             st = RB_ERR_NOMEM;
@@ -523,8 +719,8 @@ static rb_status read_lines(csv_ctx *cx, rb_batch_list *l, const char *buf, size
                     st = RB_ERR_NOMEM;
                 else {
                     it->line = line;
-                    rb_batch_item_bad(it, line, bad_col, have_header ? "row" : "header",
-                                      msg);
+                    rb_batch_item_bad(it, bad_line, bad_col,
+                                      have_header ? "row" : "header", msg);
                 }
                 if (!have_header) {
                     row_clear(&r);
@@ -547,7 +743,7 @@ static rb_status read_lines(csv_ctx *cx, rb_batch_list *l, const char *buf, size
         rb_batch_item *it = rb_batch_list_push(l, cx->path);
         if (!it)
             return RB_ERR_NOMEM;
-        rb_batch_item_bad(it, line ? line : 1, 1, "header",
+        rb_batch_item_bad(it, cu.line > 1 ? cu.line - 1 : 1, 1, "header",
                           have_header ? "the list has no rows" : "the list is empty");
     }
     return st;

@@ -79,6 +79,8 @@ static const char *const product_keys[] = {
     "bond_strength_uncracked", "seismic_tension_factor", "seismic_shear",
     "seismic_shear_factor", "min_edge_distance", "min_spacing", "min_thickness",
     "min_embedment", NULL};
+const char *const *const rb_case_concrete_keys = concrete_keys;
+const char *const *const rb_case_product_keys = product_keys;
 
 /* A pullout strength from the report, or its "does not govern". */
 static void read_pullout(rb_cctx *c, rb_ynode *pm, const char *key, rb_anchor_product *p,

@@ -21,6 +21,8 @@ static const char *const code_keys[] = {
     "edition", "sds", "ip", "z_over_h", "at_or_below_grade", "ap", "rp", "car",
     "rpo", "ta", "r", "ie", "omega0", "anchorage_in_concrete", "omega0p",
     "futa", "ase", NULL};
+const char *const *const rb_case_design_keys = design_keys;
+const char *const *const rb_case_code_keys = code_keys;
 
 /* A plain fraction of A* or "<x> A*" (astar_ok), or a plain ratio; > 0, or
  * >= 0 when zero_ok. */

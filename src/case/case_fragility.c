@@ -11,6 +11,7 @@
 #define P58_ID_MAX 128
 
 static const char *const fragility_keys[] = {"p58_id", "damage_state_weights", NULL};
+const char *const *const rb_case_fragility_keys = fragility_keys;
 
 static void read_weights(rb_cctx *c, const rb_ynode *v, rb_case_fragility_opts *f)
 {

@@ -238,6 +238,19 @@ int rb_ynode_is_null(const rb_ynode *n);
 /* --- case_schema.c ------------------------------------------------------- */
 /* 1 if key is one a case file may give at its top level. */
 int rb_case_top_key(const char *key);
+/* The keys each section of the schema reads, NULL-terminated, where the
+ * readers keep them (case_schema.c, case_concrete.c, case_design.c,
+ * case_motion.c, case_synth.c, case_fragility.c); case_keys.c walks them
+ * to say which dotted keys a list column may name. */
+extern const char *const *const rb_case_top_keys, *const *const rb_case_equipment_keys,
+    *const *const rb_case_anchorage_keys, *const *const rb_case_criteria_keys,
+    *const *const rb_case_analysis_keys, *const *const rb_case_concrete_keys,
+    *const *const rb_case_product_keys, *const *const rb_case_design_keys,
+    *const *const rb_case_code_keys, *const *const rb_case_fragility_keys,
+    *const *const rb_case_harmonic_keys, *const *const rb_case_pulse_keys,
+    *const *const rb_case_record_keys, *const *const rb_case_building_keys,
+    *const *const rb_case_synthetic_keys, *const *const rb_case_ac156_keys,
+    *const *const rb_case_table_keys;
 
 /* --- case_extends.c ----------------------------------------------------- */
 /* Read file and everything it extends, merged; *root is the merged tree. */

@@ -20,6 +20,11 @@ static const char *const pulse_keys[] = {
 static const char *const record_keys[] = {
     "type", "name", "polarity", "file", "format", "units", "dt", "building",
     "peak", "window", "run_time", NULL};
+static const char *const building_keys[] = {"frequency", "damping", NULL};
+const char *const *const rb_case_harmonic_keys = harmonic_keys;
+const char *const *const rb_case_pulse_keys = pulse_keys;
+const char *const *const rb_case_record_keys = record_keys;
+const char *const *const rb_case_building_keys = building_keys;
 
 /* A time > 0 within the case's time limits (rb_cv_time_range); 1 if it is,
  * also when it is absent and not required. */
@@ -121,7 +126,6 @@ static int read_window(rb_cctx *c, const rb_ynode *v, rb_cmotion *cm)
 
 static int read_building(rb_cctx *c, rb_ynode *v, rb_cmotion *cm)
 {
-    static const char *const keys[] = {"frequency", "damping", NULL};
     char k[RB_CASE_KEY_MAX];
     rb_case_keypath(k, cm->key, "building");
     if (!rb_cv_map(c, v, k))
@@ -131,7 +135,7 @@ static int read_building(rb_cctx *c, rb_ynode *v, rb_cmotion *cm)
                           &cm->building_freq_hz) != NULL;
     ok &= rb_cv_number(c, v, k, "damping", 1, RB_DIM_RATIO, 0, 1, 1, 0,
                        &cm->building_damping) != NULL;
-    rb_cv_unknown_keys(c, v, k, keys);
+    rb_cv_unknown_keys(c, v, k, building_keys);
     return ok;
 }
 

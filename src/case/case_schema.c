@@ -44,6 +44,12 @@ static const char *const criteria_keys[] = {
 static const char *const analysis_keys[] = {
     "formulation", "integrator", "tolerance", "output_interval", "history",
     "stretch_past_failure", NULL};
+/* for the keys a list column may name (case_keys.c) */
+const char *const *const rb_case_top_keys = top_keys;
+const char *const *const rb_case_equipment_keys = equipment_keys;
+const char *const *const rb_case_anchorage_keys = anchorage_keys;
+const char *const *const rb_case_criteria_keys = criteria_keys;
+const char *const *const rb_case_analysis_keys = analysis_keys;
 
 /* Which of two alternative keys the map gives: 0 for a, 1 for b, -1 when
  * neither (an error if required) or both (always an error). */

@@ -23,6 +23,9 @@ static const char *const synthetic_keys[] = {
     "run_time", NULL};
 static const char *const ac156_keys[] = {"type", "sds", "z_over_h", "edition", NULL};
 static const char *const table_keys[] = {"type", "file", "units", "damping", NULL};
+const char *const *const rb_case_synthetic_keys = synthetic_keys;
+const char *const *const rb_case_ac156_keys = ac156_keys;
+const char *const *const rb_case_table_keys = table_keys;
 
 static int read_ac156(rb_cctx *c, rb_ynode *sp, const char *k, rb_cmotion *cm)
 {

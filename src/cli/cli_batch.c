@@ -136,7 +136,8 @@ static rb_exit plan_items(rb_batch_cli *o, const rb_batch_list *l)
         }
         memset(&c, 0, sizeof c);
         rb_status ls = it->tag
-            ? rb_case_load_overrides_at(it->base, it->line, it->base_col, it->source,
+            ? rb_case_load_overrides_at(it->base, it->base_line ? it->base_line : it->line,
+                                        it->base_col, it->source,
                                         it->tag, it->ov, it->n_ov, cache, &c, &diags)
             : rb_case_load_cached(it->source, cache, &c, &diags);
         rb_diag_list_free(&diags);
