@@ -11,6 +11,7 @@
  * were written in, so errors in inherited values point into the base. */
 #define _POSIX_C_SOURCE 200809L
 #include <limits.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -87,6 +88,92 @@ static void ymerge(rb_cctx *c, rb_ynode *dst, rb_ynode *base)
             continue;
         ymap_append(c, dst, e);
     }
+}
+
+/* Values a base gives for its own bolt size, which do not hold for another:
+ * under anchorage (A_se, A_brg, a pitch) and under design.code (A_se). */
+static const char *const size_bound_keys[] = {
+    "tensile_area", "head_bearing_area", "thread_pitch", "threads_per_inch", NULL};
+
+/* The gross area a size entry (diameter or area) gives, or 0. */
+static double size_area(const rb_yentry *e)
+{
+    rb_quantity q;
+    char msg[200];
+    int dia = strcmp(e->key, "diameter") == 0;
+    if (e->value->kind != RB_YNODE_SCALAR
+        || rb_unit_parse(e->value->text, dia ? RB_DIM_LENGTH : RB_DIM_AREA, &q, msg,
+                         sizeof msg) != RB_OK || !(q.value > 0))
+        return 0;
+    return dia ? 0.78539816339744831 * q.value * q.value : q.value;
+}
+
+static rb_yentry *size_entry(const rb_ynode *an)
+{
+    rb_yentry *e = an && an->kind == RB_YNODE_MAP ? rb_ymap_find(an, "diameter") : NULL;
+    return e ? e : an && an->kind == RB_YNODE_MAP ? rb_ymap_find(an, "area") : NULL;
+}
+
+static rb_ynode *submap(const rb_ynode *m, const char *key)
+{
+    rb_yentry *e = m && m->kind == RB_YNODE_MAP ? rb_ymap_find(m, key) : NULL;
+    return e && e->value->kind == RB_YNODE_MAP ? e->value : NULL;
+}
+
+static void drop_entry(rb_ynode *map, rb_yentry *e)
+{
+    size_t at = (size_t)(e - map->entries);
+    free(e->key);
+    rb_ynode_free(e->value);
+    memmove(&map->entries[at], &map->entries[at + 1], (map->n - at - 1) * sizeof *e);
+    map->n--;
+}
+
+/* One value of bmap (the base's section path) bound to the base's bolt
+ * size, which the case (its section cmap) does not give while it changes
+ * the size at sz: an error at sz, and the base's value dropped, so that
+ * it is not also judged against the new size. */
+static void size_conflict(rb_cctx *c, const rb_yentry *sz, const char *base_size,
+                          rb_ynode *cmap, rb_ynode *bmap, const char *path, const char *key,
+                          int row)
+{
+    rb_yentry *b = bmap ? rb_ymap_find(bmap, key) : NULL;
+    if (!b || (cmap && rb_ymap_find(cmap, key)))
+        return;
+    const char *who = row ? "row" : "case";
+    rb_cctx_error(c, sz->value, sz->key[0] == 'd' ? "anchorage.diameter" : "anchorage.area",
+                  "changes the bolt's size from the base's %s, for which the base gives "
+                  "%s.%s '%s' (%s:%d:%d): give this %s's %s.%s too, or take it out of the "
+                  "base so that each size gets its own from the thread and head standards",
+                  base_size, path, key, b->value->kind == RB_YNODE_SCALAR ? b->value->text
+                                                                         : "...",
+                  b->value->file, b->line, b->col, who, path, key);
+    drop_entry(bmap, b);
+}
+
+/* A case that changes the bolt's size (diameter or area) keeps nothing the
+ * base gives for its own size (docs/batch.md, "Values that follow the
+ * size"): a value the base derives from its size is derived anew from the
+ * case's, but one the base writes (a 1/2 in bolt's A_se of 0.142 in^2)
+ * would silently hold for a 3/4 in bolt, whose A_se is 0.334 in^2, or fail
+ * against a 3/8 in bolt's area pointing at the base; it is refused at the
+ * new size. */
+static void check_size_change(rb_cctx *c, rb_ynode *root, rb_ynode *base, int row)
+{
+    rb_ynode *ca = submap(root, "anchorage"), *ba = submap(base, "anchorage");
+    rb_yentry *cs = size_entry(ca), *bs = size_entry(ba);
+    if (!cs || !bs)
+        return;
+    double a = size_area(cs), b = size_area(bs);
+    if (!(a > 0 && b > 0) || fabs(a - b) <= 1e-9 * b)
+        return;
+    char base_size[200];
+    snprintf(base_size, sizeof base_size, "%s %.100s", bs->key,
+             bs->value->kind == RB_YNODE_SCALAR ? bs->value->text : "");
+    for (size_t k = 0; size_bound_keys[k]; k++)
+        size_conflict(c, cs, base_size, ca, ba, "anchorage", size_bound_keys[k], row);
+    size_conflict(c, cs, base_size, submap(submap(root, "design"), "code"),
+                  submap(submap(base, "design"), "code"), "design.code", "ase", row);
 }
 
 /* A deep copy of n (positions kept); NULL when memory runs out. */
@@ -299,8 +386,10 @@ static void follow_extends(rb_cctx *c, const char *file, rb_ynode *root,
     if (read_chain(c, path, v, chain, &base) == RB_OK && base) {
         if (c->overrides && chain->n == 1)
             distribute_row_motion(c, root, base);
-        if (!c->fatal)
+        if (!c->fatal) {
+            check_size_change(c, root, base, c->overrides && chain->n == 1);
             ymerge(c, root, base);
+        }
     }
     else
         c->fatal = 1;

@@ -227,7 +227,35 @@ static rb_status push_diag(rb_diag_list *l, const char *file, int line, int col,
     return RB_ERR_INVALID;
 }
 
-/* Point diagnostics of the generated document at the overrides' origin. */
+/* Every occurrence of what in msg (of size n) replaced by with. */
+static void replace_all(char *msg, size_t n, const char *what, const char *with)
+{
+    char *p = msg;
+    size_t wl = strlen(what), rl = strlen(with);
+    while (wl && (p = strstr(p, what)) != NULL) {
+        char rest[sizeof ((rb_diag *)0)->msg];
+        snprintf(rest, sizeof rest, "%s", p + wl);
+        snprintf(p, n - (size_t)(p - msg), "%s%s", with, rest);
+        if ((size_t)(p - msg) + rl >= n)
+            break;
+        p += rl;
+    }
+}
+
+/* The override that sets key, or -1. */
+static int override_of(const rb_ovgen *g, const char *key)
+{
+    for (size_t k = 0; k < g->n; k++)
+        if (strcmp(g->ov[k].key, key) == 0)
+            return (int)k;
+    return -1;
+}
+
+/* Point diagnostics of the generated document at the overrides' origin.
+ * An error of the row in another file (a value of the base that the
+ * row's values make wrong, a record the row names) is the row's too: it
+ * is reported at the row's cell for its key, else at the row's base cell,
+ * and says where the value it is about was written. */
 static void map_diags(rb_diag_list *l, size_t first, const char *tmp,
                       const rb_ovgen *g, const char *origin, int row_line,
                       int row_col, const char *cwd)
@@ -243,15 +271,23 @@ static void map_diags(rb_diag_list *l, size_t first, const char *tmp,
             if (k < 0 && strcmp(d->key, "extends") == 0)
                 snprintf(d->key, sizeof d->key, "base");
         } else {
+            char at[sizeof d->file + 40];
+            int k = override_of(g, d->key);
             strip_prefix(d->file, cwd);
+            if (d->file[0] && d->line > 0)
+                snprintf(at, sizeof at, " (the value at %s:%d:%d)", d->file, d->line,
+                         d->col);
+            else
+                snprintf(at, sizeof at, " (in %s)", d->file);
+            if (d->file[0] && strlen(d->msg) + strlen(at) < sizeof d->msg)
+                strcat(d->msg, at);
+            snprintf(d->file, sizeof d->file, "%s", origin);
+            d->line = k >= 0 ? g->ov[k].line : row_line;
+            d->col = k >= 0 ? g->ov[k].col : row_col;
         }
-        char *p;
-        while ((p = strstr(d->msg, tmp)) != NULL) {
-            /* messages quoting the generated document: name the origin */
-            char rest[sizeof d->msg];
-            snprintf(rest, sizeof rest, "%s", p + strlen(tmp));
-            snprintf(p, sizeof d->msg - (size_t)(p - d->msg), "%s%s", origin, rest);
-        }
+        /* messages quoting the generated document: name the origin */
+        replace_all(d->msg, sizeof d->msg, tmp, origin);
+        replace_all(d->msg, sizeof d->msg, cwd, "");
     }
 }
 
