@@ -145,6 +145,14 @@ typedef struct {
     size_t n_runs;
     rb_batch_fragility *fragility; /* owned: with --fragility, for a case
                              that was solved; else NULL */
+    /* the code-static comparison of a solved case with design.code (as
+     * `design` reports it): F_p and F_p / W_p, the static tension of the
+     * far bolt row and its ratio to the row's phi N_sa, and the 17.8
+     * utilization of that static demand (NaN without concrete:); has_code
+     * 0 without design.code */
+    int has_code;
+    double code_fp_n, code_fp_over_wp, code_tension_n, code_steel_ratio,
+           code_anchor_utilization;
 } rb_batch_case;
 
 /* "sha256:" and 64 hex digits, with the NUL. */

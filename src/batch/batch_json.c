@@ -154,6 +154,20 @@ static int add_fragility(cJSON *o, const rb_batch_fragility *f)
     return ok;
 }
 
+/* "code_static": the code-static numbers of a case with design.code, in SI
+ * as `design --json` names them; null without. */
+static int add_code(cJSON *o, const rb_batch_case *c)
+{
+    if (!c->has_code)
+        return cJSON_AddNullToObject(o, "code_static") != NULL;
+    cJSON *k = cJSON_AddObjectToObject(o, "code_static");
+    return k && add_num(k, "fp_n", c->code_fp_n)
+        && add_num(k, "fp_over_wp", c->code_fp_over_wp)
+        && add_num(k, "tension_n", c->code_tension_n)
+        && add_num(k, "steel_ratio", c->code_steel_ratio)
+        && add_num(k, "anchor_utilization", c->code_anchor_utilization);
+}
+
 static int add_case(cJSON *arr, const rb_batch_case *c, const rb_batch_summary *s)
 {
     int design = s->design;
@@ -182,6 +196,7 @@ static int add_case(cJSON *arr, const rb_batch_case *c, const rb_batch_summary *
     rb_batch_stats(c, &mean, &max);
     return ok && runs && add_stat(o, "mean", &mean, design, 0)
         && add_stat(o, "max", &max, design, 1)
+        && add_code(o, c)
         && (!s->fragility || !c->fragility || add_fragility(o, c->fragility));
 }
 
@@ -511,6 +526,25 @@ static void rd_fragility(rd_ctx *r, const cJSON *o, rb_batch_case *c)
     }
 }
 
+/* "code_static" (rb_batch_case.has_code): null or absent when the case has
+ * no design.code. */
+static void rd_code(rd_ctx *r, const cJSON *o, rb_batch_case *c)
+{
+    const cJSON *k = cJSON_GetObjectItemCaseSensitive(o, "code_static");
+    if (!k || cJSON_IsNull(k))
+        return;
+    if (!cJSON_IsObject(k)) {
+        rd_fail(r, "code_static", "expected an object or null");
+        return;
+    }
+    c->has_code = 1;
+    c->code_fp_n = rd_num(r, k, "fp_n");
+    c->code_fp_over_wp = rd_num(r, k, "fp_over_wp");
+    c->code_tension_n = rd_num(r, k, "tension_n");
+    c->code_steel_ratio = rd_num(r, k, "steel_ratio");
+    c->code_anchor_utilization = rd_num_or_nan(r, k, "anchor_utilization");
+}
+
 static void rd_case(rd_ctx *r, const cJSON *o, rb_batch_case *c, const rb_batch_summary *s)
 {
     int design = s->design;
@@ -558,6 +592,7 @@ static void rd_case(rd_ctx *r, const cJSON *o, rb_batch_case *c, const rb_batch_
     size_t m = 0;
     cJSON_ArrayForEach(it, runs)
         rd_run(r, it, &c->runs[m++], design);
+    rd_code(r, o, c);
     if (s->fragility)
         rd_fragility(r, o, c);
 }

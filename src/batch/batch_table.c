@@ -71,6 +71,19 @@ static void text_fragility(rb_strbuf *b, const rb_batch_case *c)
     }
 }
 
+/* The code-static line under a case with design.code: ratios only, so it
+ * reads alike in every unit system. */
+static void text_code(rb_strbuf *b, const rb_batch_case *c)
+{
+    rb_strbuf_printf(b, "%-24s %-18s %-10s Fp %.3f Wp; static tension of the far row "
+                     "%.3f phi Nsa", "", "[code-static]", c->code_steel_ratio > 1 ? "FAIL"
+                                                                                 : "pass",
+                     c->code_fp_over_wp, c->code_steel_ratio);
+    if (isfinite(c->code_anchor_utilization))
+        rb_strbuf_printf(b, "; 17.8 utilization %.3f", c->code_anchor_utilization);
+    rb_strbuf_puts(b, "\n");
+}
+
 static void text_case(rb_strbuf *b, const rb_batch_case *c, int design)
 {
     if (c->verdict != RB_BATCH_PASS && c->verdict != RB_BATCH_FAIL) {
@@ -118,6 +131,8 @@ static void text_case(rb_strbuf *b, const rb_batch_case *c, int design)
                   max.theta_over_alpha, design, max.has_factor, max.design_factor,
                   0, max.has_gap, max.gap_ratio);
     }
+    if (c->has_code)
+        text_code(b, c);
     if (c->fragility)
         text_fragility(b, c);
 }
@@ -250,8 +265,9 @@ void rb_batch_csv_head(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_c
         }
         rb_strbuf_puts(b, ",fragility_error");
     }
-    rb_strbuf_puts(b, ",validity_warnings,anchor_mode,anchor_utilization,governs,reason,"
-                    "error\n");
+    rb_strbuf_puts(b, ",validity_warnings,anchor_mode,anchor_utilization,code_fp_n,"
+                    "code_fp_over_wp,code_tension_n,code_steel_ratio,"
+                    "code_anchor_utilization,governs,reason,error\n");
 }
 
 void rb_batch_csv_tail(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_counts *n)
@@ -267,7 +283,7 @@ void rb_batch_csv_case(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_c
         char err[1400];
         const rb_diag *e = rb_batch_case_error(c);
         csv_head(b, c, "", 0, rb_batch_verdict_str(c->verdict));
-        rb_strbuf_puts(b, s->design ? ",,,,,,,,,,,,," : ",,,,,,,,,,");
+        rb_strbuf_puts(b, s->design ? ",,,,,,,,,,,,,,,,,," : ",,,,,,,,,,,,,,,");
         for (int k = 0; s->fragility && k < FRAGILITY_COLUMNS; k++)
             rb_strbuf_puts(b, ",");
         if (e->line > 0)
@@ -313,6 +329,15 @@ void rb_batch_csv_case(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_c
                              r->anchor_utilization);
         else
             rb_strbuf_puts(b, ",,");
+        if (c->has_code) {
+            csv_num(b, c->code_fp_n);
+            csv_num(b, c->code_fp_over_wp);
+            csv_num(b, c->code_tension_n);
+            csv_num(b, c->code_steel_ratio);
+            csv_num(b, c->code_anchor_utilization);
+        } else {
+            rb_strbuf_puts(b, ",,,,,");
+        }
         /* the limit nearest to failing; a failing run's reason */
         rb_strbuf_printf(b, ",%s,", rb_governs_name((rb_governs_limit)r->limit));
         csv_field(b, r->pass || !r->reason ? "" : r->reason);
