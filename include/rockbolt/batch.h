@@ -21,8 +21,10 @@
 #include "rockbolt/fragility.h"
 
 /* Bumped when a field of the JSON summary is renamed, removed or changes
- * meaning. */
-#define RB_BATCH_FORMAT_VERSION 1
+ * meaning, or when the reader needs one an older summary lacks: 2 added
+ * each run's margin, governs and reason, and the fragility's anchorage
+ * limit state and governing_limit_state (docs/report-format.md). */
+#define RB_BATCH_FORMAT_VERSION 2
 
 /* ---- Work list ----------------------------------------------------------- */
 
@@ -106,6 +108,8 @@ typedef struct {
 /* One limit state of a case's fragility (batch --fragility), as
  * rb_run_fragility gives it; the numbers are its own doubles. */
 typedef struct {
+    int present;          /* 0: the case has no such limit state (the
+                             anchorage's without concrete:); the rest 0 */
     int fitted;           /* 0: fewer than two motions reached it */
     double median_mps2, beta;
     double median_lo_mps2, median_hi_mps2; /* 90 % bootstrap interval; NaN
@@ -123,6 +127,8 @@ typedef struct {
     double im_freq_hz;    /* spectral acceleration: at this frequency (the
                              cabinet's f0); 0 for the peak floor acceleration */
     rb_batch_limit limits[RB_N_LIMITS];
+    int governing;        /* the limit state that governs
+                             (rb_fragility_governing), -1: none */
     double p58_weights[RB_P58_MAX_WEIGHTS]; /* the case's fragility:
                              damage_state_weights */
     size_t n_p58_weights; /* 0: FEMA P-58's */

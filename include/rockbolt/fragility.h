@@ -66,8 +66,21 @@ typedef enum {
     RB_LIMIT_OVERTURN,        /* the cabinet overturns, bolts stretching on */
     RB_LIMIT_LIFT_OFF,        /* the base lifts off the floor (the validity
                                  check), bolts stretching on */
+    RB_LIMIT_ANCHORAGE,       /* the concrete check fails as the judge fails
+                                 it: the 17.8 utilization of the run's own
+                                 demand reaches 1, or the 17.10.5.3 route the
+                                 judge applies is not met; bolts stretching
+                                 on. Only a case with concrete: has it */
     RB_N_LIMITS
 } rb_limit_state;
+
+/* The limit state that governs a case's fragility: of the limit states in
+ * the mask `judged` (bit 1 << k) that are fitted, the one of the lowest
+ * median; of medians that are equal, the first in rb_limit_state's order.
+ * -1 when none of them is fitted. One rule for every output (the fragility
+ * report, batch --fragility, merge and the P-58 row). */
+int rb_fragility_governing(unsigned judged, const int fitted[RB_N_LIMITS],
+                           const double median[RB_N_LIMITS]);
 
 /* Each motion's capacity for each limit state: the lowest peak floor
  * acceleration found to reach it (the design factor's scan and bisection,
@@ -91,6 +104,14 @@ typedef enum {
 typedef struct {
     rb_motion_fragility *motions;   /* owned, one per motion of the case */
     size_t n_motions;
+    /* the limit states the case has (bit 1 << k): all but the anchorage's,
+     * which only a case with concrete: has; an absent state has no search,
+     * no capacities and no fit, and no output shows it */
+    unsigned present;
+    /* those the case's own verdict fails on (rb_run_fragility_judged), and
+     * the one of them that governs (rb_fragility_governing; -1: none) */
+    unsigned judged;
+    int governing;
     rb_fragility_intensity intensity;
     double im_freq_hz, im_damping;  /* RB_IM_SA: where Sa is taken */
     double level_mps2;              /* the case's own level: motion 1's
@@ -107,6 +128,13 @@ typedef struct {
 } rb_case_fragility;
 
 void rb_case_fragility_free(rb_case_fragility *f);
+
+/* Whether f has limit state k (its present mask). */
+int rb_case_fragility_has(const rb_case_fragility *f, int k);
+
+/* The limit states of a mask, in rb_limit_state's order, as "usage,
+ * overturn, anchorage" ("none" for an empty mask). */
+void rb_limit_states_str(unsigned mask, char *buf, size_t n);
 
 /* A case's fragility at each gap ratio of a sweep
  * (rb_run_fragility_gap_sweep, rockbolt/run.h). */

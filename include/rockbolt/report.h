@@ -223,10 +223,18 @@ char *rb_fragility_render_csv(const rb_case *c, const rb_case_fragility *f);
 /* ---- FEMA P-58 fragility rows (docs/fragility.md, "FEMA P-58") ---------- */
 
 /* The limit states of a row, in the sequence a loss tool evaluates them:
- * LS1 the anchorage fails (the bolts' toughness used up), with the
- * damage states FEMA P-58 splits it into; LS2 the cabinet overturns. */
+ * LS1 the anchorage fails, with the damage states FEMA P-58 splits it
+ * into; LS2 the cabinet overturns. */
 #define RB_P58_N_LS 2
-extern const rb_limit_state rb_p58_limits[RB_P58_N_LS];
+/* The limit state of the fragility that row limit state ls (0: LS1, 1:
+ * LS2) is, for a fragility with the limit states present (bit 1 << k),
+ * their fits and medians: LS1 the anchorage's failure by whichever way
+ * comes first, of the bolts' toughness used up (usage) and, where the
+ * case has concrete:, the concrete check (anchorage), by
+ * rb_fragility_governing over the two (the usage when neither is
+ * fitted); LS2 the overturn state. */
+rb_limit_state rb_p58_limit(int ls, unsigned present, const int fitted[RB_N_LIMITS],
+                            const double median[RB_N_LIMITS]);
 /* FEMA P-58's weights of LS1's damage states: anchorage failure, and
  * anchorage failure with the equipment lost. */
 #define RB_P58_DEFAULT_W1 0.7

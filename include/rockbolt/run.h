@@ -77,6 +77,18 @@ rb_status rb_run_fragility(const rb_case *c, int n_threads, uint64_t seed, unsig
                            rb_case_fragility *out, rb_diag *diag,
                            rb_design_progress_fn progress, void *ctx);
 
+/* The limit states c's fragility has (bit 1 << k of rb_limit_state): all
+ * but RB_LIMIT_ANCHORAGE, which a case has with concrete: (whether or not
+ * its criteria judge it). */
+unsigned rb_run_fragility_present(const rb_case *c);
+/* Of those, the ones c's own verdict fails on: overturning always;
+ * first-yield under no-yield, usage under no-break; lift-off where
+ * validity: fail counts it; the anchorage where the criteria judge the
+ * concrete. rb_fragility_governing picks among these. */
+unsigned rb_run_fragility_judged(const rb_case *c);
+/* The searches of c's fragility: motions x limit states it has. */
+size_t rb_run_fragility_searches(const rb_case *c);
+
 /* ---- Response spectra ---------------------------------------------------- */
 
 /* The response spectra of every motion of c (after building filter and

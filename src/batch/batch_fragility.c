@@ -18,8 +18,10 @@ static void keep(const rb_case *c, const rb_case_fragility *f, rb_batch_fragilit
     for (size_t i = 0; i < c->fragility.n_weights; i++)
         out->p58_weights[i] = c->fragility.weights[i];
     out->n_p58_weights = c->fragility.n_weights;
+    out->governing = f->governing;
     for (int k = 0; k < RB_N_LIMITS; k++) {
         rb_batch_limit *l = &out->limits[k];
+        l->present = rb_case_fragility_has(f, k);
         l->fitted = f->fitted[k];
         l->median_mps2 = f->fit[k].median;
         l->beta = f->fit[k].beta;
@@ -42,6 +44,7 @@ void rb_batch_case_fragility(rb_batch_slot *s, rb_batch_case *bc, int n_threads,
         s->frag_status = RB_ERR_NOMEM;
         return;
     }
+    bc->fragility->governing = -1;
     s->frag_status = rb_run_fragility(&s->c, n_threads, o->seed, RB_FRAGILITY_RESAMPLES,
                                       &f, &s->frag_diag, NULL, NULL);
     /* restated in Sa(f0) as `fragility --intensity sa` does; a case without

@@ -135,9 +135,15 @@ static int add_fragility(cJSON *o, const rb_batch_fragility *f)
         return add_text(fo, "error", f->error) != NULL;
     int ok = (!(f->im_freq_hz > 0) || add_num(fo, "intensity_freq_hz", f->im_freq_hz))
         && add_num(fo, "g_mps2", f->g_mps2) && add_num(fo, "level_mps2", f->level_mps2)
+        && (f->governing >= 0
+            ? cJSON_AddStringToObject(fo, "governing_limit_state",
+                                      rb_enum_str(rb_limit_state_names, f->governing))
+            : cJSON_AddNullToObject(fo, "governing_limit_state")) != NULL
         && (ls = cJSON_AddArrayToObject(fo, "limit_states")) != NULL;
     for (int k = 0; ok && k < RB_N_LIMITS; k++) {
         const rb_batch_limit *l = &f->limits[k];
+        if (!l->present)
+            continue;
         cJSON *e = cJSON_CreateObject();
         if (!e || !cJSON_AddItemToArray(ls, e))
             return cJSON_Delete(e), 0;
@@ -470,16 +476,23 @@ static double rd_num_or_nan(rd_ctx *r, const cJSON *o, const char *k)
     return has ? v : (double)NAN;
 }
 
-static void rd_limit(rd_ctx *r, const cJSON *e, int k, rb_batch_limit *l)
+#define LIMITS_EXPECTED "expected first-yield, usage, overturn, lift-off and, with " \
+    "concrete:, anchorage, in that order"
+
+/* Limit state entry e, which must come after limit state *last. */
+static void rd_limit(rd_ctx *r, const cJSON *e, int *last, rb_batch_fragility *f)
 {
     const cJSON *name = cJSON_GetObjectItemCaseSensitive(e, "limit_state");
     const cJSON *fitted = cJSON_GetObjectItemCaseSensitive(e, "fitted");
-    if (!cJSON_IsString(name) || strcmp(name->valuestring,
-                                        rb_enum_str(rb_limit_state_names, k)) != 0) {
-        rd_fail(r, "limit_state", "expected first-yield, usage, overturn and lift-off, "
-                "in that order");
+    int k = -1;
+    if (!cJSON_IsString(name) || !rb_enum_parse(rb_limit_state_names, name->valuestring, &k)
+        || k <= *last) {
+        rd_fail(r, "limit_state", LIMITS_EXPECTED);
         return;
     }
+    *last = k;
+    rb_batch_limit *l = &f->limits[k];
+    l->present = 1;
     if (!cJSON_IsBool(fitted)) {
         rd_fail(r, "fitted", "expected true or false");
         return;
@@ -506,6 +519,7 @@ static void rd_fragility(rd_ctx *r, const cJSON *o, rb_batch_case *c)
         rd_fail(r, "fragility", "out of memory");
         return;
     }
+    c->fragility->governing = -1;
     if (cJSON_GetObjectItemCaseSensitive(f, "error")) {
         c->fragility->error = rd_str(r, f, "error");
         return;
@@ -515,15 +529,26 @@ static void rd_fragility(rd_ctx *r, const cJSON *o, rb_batch_case *c)
     c->fragility->g_mps2 = rd_num(r, f, "g_mps2");
     c->fragility->level_mps2 = rd_num(r, f, "level_mps2");
     const cJSON *ls = cJSON_GetObjectItemCaseSensitive(f, "limit_states");
-    if (!cJSON_IsArray(ls) || cJSON_GetArraySize(ls) != RB_N_LIMITS) {
-        rd_fail(r, "limit_states", "expected a list of the four limit states");
+    if (!cJSON_IsArray(ls)) {
+        rd_fail(r, "limit_states", "expected a list of the limit states");
         return;
     }
-    int k = 0;
-    cJSON_ArrayForEach(e, ls) {
-        rd_limit(r, e, k, &c->fragility->limits[k]);
-        k++;
-    }
+    int last = -1;
+    cJSON_ArrayForEach(e, ls)
+        rd_limit(r, e, &last, c->fragility);
+    /* every case with a fragility has the four; the anchorage's is the
+     * only one a case may lack */
+    for (int k = 0; k < RB_N_LIMITS; k++)
+        if (k != RB_LIMIT_ANCHORAGE && !c->fragility->limits[k].present)
+            rd_fail(r, "limit_states", LIMITS_EXPECTED);
+    const cJSON *gv = cJSON_GetObjectItemCaseSensitive(f, "governing_limit_state");
+    int gk = -1;
+    if (!cJSON_IsNull(gv)
+        && (!cJSON_IsString(gv) || !rb_enum_parse(rb_limit_state_names, gv->valuestring, &gk)
+            || !c->fragility->limits[gk].fitted))
+        rd_fail(r, "governing_limit_state", "expected null or the name of a fitted limit "
+                "state of the case");
+    c->fragility->governing = gk;
 }
 
 /* "code_static" (rb_batch_case.has_code): null or absent when the case has

@@ -87,9 +87,13 @@ static void fragility_properties(rb_strbuf *b, const rb_batch_fragility *f)
     }
     snprintf(v, sizeof v, "%.6g", f->level_mps2 / g);
     property(b, "fragility.level_g", v);
+    property(b, "fragility.governing", f->governing >= 0
+             ? rb_enum_str(rb_limit_state_names, f->governing) : "none");
     for (int k = 0; k < RB_N_LIMITS; k++) {
         const rb_batch_limit *l = &f->limits[k];
         const char *st = rb_enum_str(rb_limit_state_names, k);
+        if (!l->present)
+            continue;
         if (l->fitted) {
             number(b, st, "median_g", l->median_mps2 / g);
             number(b, st, "beta", l->beta);

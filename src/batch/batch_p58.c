@@ -32,8 +32,16 @@ void rb_batch_p58_case(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_c
     if (f) {
         r.weights = f->p58_weights;
         r.n_weights = f->n_p58_weights;
+        unsigned present = 0;
+        int fitted[RB_N_LIMITS];
+        double median[RB_N_LIMITS];
+        for (int k = 0; k < RB_N_LIMITS; k++) {
+            present |= (unsigned)(f->limits[k].present != 0) << k;
+            fitted[k] = f->limits[k].fitted;
+            median[k] = f->limits[k].median_mps2;
+        }
         for (int k = 0; k < RB_P58_N_LS; k++) {
-            const rb_batch_limit *l = &f->limits[rb_p58_limits[k]];
+            const rb_batch_limit *l = &f->limits[rb_p58_limit(k, present, fitted, median)];
             r.fitted[k] = l->fitted;
             r.median_g[k] = l->median_mps2 / f->g_mps2;
             r.beta[k] = l->beta;

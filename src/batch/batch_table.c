@@ -55,6 +55,8 @@ static void text_fragility(rb_strbuf *b, const rb_batch_case *c)
     for (int k = 0; k < RB_N_LIMITS; k++) {
         const rb_batch_limit *l = &f->limits[k];
         char name[32];
+        if (!l->present)
+            continue;
         snprintf(name, sizeof name, "[%s]", rb_enum_str(rb_limit_state_names, k));
         rb_strbuf_printf(b, "%-24s %-18s %-10s", "", name, "");
         /* in the spectral acceleration at the cabinet's f0, say so */
@@ -67,8 +69,12 @@ static void text_fragility(rb_strbuf *b, const rb_batch_case *c)
                              l->p_at_level, f->level_mps2 / f->g_mps2);
         else
             rb_strbuf_puts(b, " not fitted;");
-        rb_strbuf_printf(b, " reached by %zu of %zu\n", l->reached, c->n_runs);
+        rb_strbuf_printf(b, " reached by %zu of %zu%s\n", l->reached, c->n_runs,
+                         k == f->governing ? "; governs" : "");
     }
+    if (f->governing < 0)
+        rb_strbuf_printf(b, "%-24s %-18s %-10s none of the limit states its criteria fail "
+                         "on is reached by two motions\n", "", "[governs]", "");
 }
 
 /* The code-static line under a case with design.code: ratios only, so it
@@ -219,7 +225,7 @@ static void csv_fragility(rb_strbuf *b, const rb_batch_fragility *f,
         rb_strbuf_puts(b, ",");
         for (int k = 0; k < RB_N_LIMITS; k++)
             rb_strbuf_puts(b, ",,,,,,");
-        rb_strbuf_puts(b, ",");
+        rb_strbuf_puts(b, ",,");
         csv_field(b, f->error);
         return;
     }
@@ -227,6 +233,11 @@ static void csv_fragility(rb_strbuf *b, const rb_batch_fragility *f,
     csv_num(b, f->level_mps2 / g);
     for (int k = 0; k < RB_N_LIMITS; k++) {
         const rb_batch_limit *l = &f->limits[k];
+        if (!l->present) {
+            /* a state the case does not have: no reached count either */
+            rb_strbuf_puts(b, ",,,,,,");
+            continue;
+        }
         if (l->fitted) {
             csv_num(b, l->median_mps2 / g);
             csv_num(b, l->beta);
@@ -238,12 +249,16 @@ static void csv_fragility(rb_strbuf *b, const rb_batch_fragility *f,
         }
         rb_strbuf_printf(b, ",%zu", l->reached);
     }
-    rb_strbuf_puts(b, ",");
+    char gov[32] = "";
+    if (f->governing >= 0)
+        limit_column(f->governing, gov, sizeof gov);
+    rb_strbuf_printf(b, ",%s,", f->governing >= 0 ? gov : "none");
 }
 
 /* The columns of --fragility after the design's: intensity and its
- * frequency, level, six per limit state and the reason when there is none. */
-#define FRAGILITY_COLUMNS (2 + 1 + 6 * RB_N_LIMITS + 1)
+ * frequency, level, six per limit state, the governing one and the reason
+ * when there is none. */
+#define FRAGILITY_COLUMNS (2 + 1 + 6 * RB_N_LIMITS + 1 + 1)
 
 void rb_batch_csv_head(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_counts *n)
 {
@@ -263,7 +278,7 @@ void rb_batch_csv_head(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_c
                              "fragility_%s_p_at_level,fragility_%s_reached", st, st, st, st,
                              st, st);
         }
-        rb_strbuf_puts(b, ",fragility_error");
+        rb_strbuf_puts(b, ",fragility_governing,fragility_error");
     }
     rb_strbuf_puts(b, ",validity_warnings,anchor_mode,anchor_utilization,code_fp_n,"
                     "code_fp_over_wp,code_tension_n,code_steel_ratio,"

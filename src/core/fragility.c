@@ -11,7 +11,9 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <stdio.h>
 #include "rockbolt/fragility.h"
+#include "rockbolt/names.h"
 #include "util/rng.h"
 
 #define EM_MAX_ITERATIONS 10000
@@ -194,6 +196,33 @@ rb_status rb_fragility_bootstrap(const double *capacity, const int *censored, si
     }
     free(x), free(med), free(c);
     return st;
+}
+
+int rb_fragility_governing(unsigned judged, const int fitted[RB_N_LIMITS],
+                           const double median[RB_N_LIMITS])
+{
+    int best = -1;
+    for (int k = 0; k < RB_N_LIMITS; k++)
+        if ((judged >> k) & 1u && fitted[k] && (best < 0 || median[k] < median[best]))
+            best = k;
+    return best;
+}
+
+int rb_case_fragility_has(const rb_case_fragility *f, int k)
+{
+    return k >= 0 && k < RB_N_LIMITS && (f->present >> k) & 1u;
+}
+
+void rb_limit_states_str(unsigned mask, char *buf, size_t n)
+{
+    size_t len = 0;
+    if (!n)
+        return;
+    snprintf(buf, n, "none");
+    for (int k = 0; k < RB_N_LIMITS && len < n; k++)
+        if ((mask >> k) & 1u)
+            len += (size_t)snprintf(buf + len, n - len, "%s%s", len ? ", " : "",
+                                    rb_enum_str(rb_limit_state_names, k));
 }
 
 void rb_case_fragility_free(rb_case_fragility *f)

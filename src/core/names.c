@@ -86,7 +86,8 @@ const rb_enum_name rb_intensity_report_names[] = {
     {NULL, 0}};
 const rb_enum_name rb_limit_state_names[] = {
     {"first-yield", RB_LIMIT_FIRST_YIELD}, {"usage", RB_LIMIT_USAGE},
-    {"overturn", RB_LIMIT_OVERTURN}, {"lift-off", RB_LIMIT_LIFT_OFF}, {NULL, 0}};
+    {"overturn", RB_LIMIT_OVERTURN}, {"lift-off", RB_LIMIT_LIFT_OFF},
+    {"anchorage", RB_LIMIT_ANCHORAGE}, {NULL, 0}};
 
 const char *rb_enum_str(const rb_enum_name *t, int value)
 {

@@ -12,7 +12,20 @@
 #include "rockbolt/textsafe.h"
 #include "util/strbuf.h"
 
-const rb_limit_state rb_p58_limits[RB_P58_N_LS] = {RB_LIMIT_USAGE, RB_LIMIT_OVERTURN};
+rb_limit_state rb_p58_limit(int ls, unsigned present, const int fitted[RB_N_LIMITS],
+                            const double median[RB_N_LIMITS])
+{
+    if (ls != 0)
+        return RB_LIMIT_OVERTURN;
+    /* P-58's anchorage failure is the anchorage's, steel or concrete: with
+     * concrete: the concrete check's state drives it where it comes first
+     * (a shallow cast-in anchorage that is not ductile fails it at the
+     * bolts' first yield), the bolts' usage where the concrete outlasts
+     * them */
+    unsigned both = present & ((1u << RB_LIMIT_USAGE) | (1u << RB_LIMIT_ANCHORAGE));
+    int k = rb_fragility_governing(both, fitted, median);
+    return k < 0 ? RB_LIMIT_USAGE : (rb_limit_state)k;
+}
 
 char *rb_p58_render_head(void)
 {
@@ -77,8 +90,11 @@ char *rb_fragility_render_p58(const rb_case *c, const rb_case_fragility *f)
     r.id = c->fragility.p58_id ? c->fragility.p58_id : c->name ? c->name : "";
     r.weights = c->fragility.weights;
     r.n_weights = c->fragility.n_weights;
+    double median[RB_N_LIMITS];
+    for (int k = 0; k < RB_N_LIMITS; k++)
+        median[k] = f->fit[k].median;
     for (int k = 0; k < RB_P58_N_LS; k++) {
-        rb_limit_state ls = rb_p58_limits[k];
+        rb_limit_state ls = rb_p58_limit(k, f->present, f->fitted, median);
         r.fitted[k] = f->fitted[ls];
         r.median_g[k] = f->fit[ls].median / f->g_mps2;
         r.beta[k] = f->fit[ls].beta;

@@ -29,26 +29,34 @@ char *rb_fragility_sweep_render_text(const rb_case *c, const rb_fragility_sweep 
     rb_strbuf_puts(&b, "\n");
     rb_strbuf_printf(&b, "%-9s", "");
     for (int k = 0; k < RB_N_LIMITS; k++)
-        rb_strbuf_printf(&b, " %28s", rb_enum_str(rb_limit_state_names, k));
-    rb_strbuf_printf(&b, "\n%-9s", "gap ratio");
+        if (rb_case_fragility_has(f0, k))
+            rb_strbuf_printf(&b, " %28s", rb_enum_str(rb_limit_state_names, k));
+    rb_strbuf_printf(&b, " %s\n%-9s", "governing", "gap ratio");
     for (int k = 0; k < RB_N_LIMITS; k++)
-        rb_strbuf_printf(&b, " %11s %7s %8s", "median g", "beta", "P(level)");
+        if (rb_case_fragility_has(f0, k))
+            rb_strbuf_printf(&b, " %11s %7s %8s", "median g", "beta", "P(level)");
     rb_strbuf_puts(&b, "\n");
     long runs = 0;
     for (size_t i = 0; i < s->n_points; i++) {
         const rb_case_fragility *f = &s->points[i];
         rb_strbuf_printf(&b, "%-9.4g", s->gap_ratios[i]);
         for (int k = 0; k < RB_N_LIMITS; k++) {
+            if (!rb_case_fragility_has(f, k))
+                continue;
             if (f->fitted[k])
                 rb_strbuf_printf(&b, " %11.4g %7.3f %8.4f", f->fit[k].median / g,
                                  f->fit[k].beta, f->p_at_level[k]);
             else
                 rb_strbuf_printf(&b, " %28s", "not fitted");
         }
-        rb_strbuf_puts(&b, "\n");
+        rb_strbuf_printf(&b, " %s\n", f->governing >= 0
+                         ? rb_enum_str(rb_limit_state_names, f->governing) : "none");
         runs += f->runs;
     }
-    rb_strbuf_printf(&b, "%ld solver runs; P: probability at the case's level\n", runs);
+    char judged[96];
+    rb_limit_states_str(f0->judged, judged, sizeof judged);
+    rb_strbuf_printf(&b, "%ld solver runs; P: probability at the case's level; governing: "
+                     "the lowest median of %s (ties to the first listed)\n", runs, judged);
     return rb_strbuf_take(&b);
 }
 
@@ -80,12 +88,18 @@ char *rb_fragility_sweep_render_json(const rb_case *c, const rb_fragility_sweep 
         const rb_case_fragility *f = &s->points[i];
         rb_strbuf_puts(&b, "    {");
         rb_report_json_num(&b, "gap_ratio", s->gap_ratios[i], 1);
-        rb_strbuf_printf(&b, "\"runs\": %ld, \"limit_states\": [\n", f->runs);
+        rb_strbuf_printf(&b, "\"runs\": %ld, ", f->runs);
+        rb_report_fragility_governing_json(&b, f);
+        rb_strbuf_puts(&b, ", \"limit_states\": [\n");
+        const char *sep = "";
         for (int k = 0; k < RB_N_LIMITS; k++) {
-            rb_strbuf_puts(&b, "      ");
+            if (!rb_case_fragility_has(f, k))
+                continue;
+            rb_strbuf_printf(&b, "%s      ", sep);
             rb_report_fragility_limit_json(&b, f, k);
-            rb_strbuf_puts(&b, k + 1 < RB_N_LIMITS ? ",\n" : "\n");
+            sep = ",\n";
         }
+        rb_strbuf_puts(&b, "\n");
         rb_strbuf_printf(&b, "    ]}%s\n", i + 1 < s->n_points ? "," : "");
     }
     rb_strbuf_puts(&b, "  ]\n}\n");
@@ -105,12 +119,14 @@ char *rb_fragility_sweep_render_csv(const rb_fragility_sweep *s)
 {
     rb_strbuf b = {0};
     rb_strbuf_puts(&b, "gap_ratio,limit_state,fitted,median_g,beta,median_lo_g,median_hi_g,"
-                       "p_at_level,reached\n");
+                       "p_at_level,reached,governing\n");
     for (size_t i = 0; i < s->n_points; i++) {
         const rb_case_fragility *f = &s->points[i];
         double g = f->g_mps2;
         for (int k = 0; k < RB_N_LIMITS; k++) {
             size_t reached = 0;
+            if (!rb_case_fragility_has(f, k))
+                continue;
             for (size_t m = 0; m < f->n_motions; m++)
                 reached += f->motions[m].censored[k] == 0;
             rb_strbuf_printf(&b, "%.6g,%s,%d", s->gap_ratios[i],
@@ -124,7 +140,7 @@ char *rb_fragility_sweep_render_csv(const rb_fragility_sweep *s)
             } else {
                 rb_strbuf_puts(&b, ",,,,,");
             }
-            rb_strbuf_printf(&b, ",%zu\n", reached);
+            rb_strbuf_printf(&b, ",%zu,%d\n", reached, k == f->governing);
         }
     }
     return rb_strbuf_take(&b);

@@ -27,6 +27,21 @@ void rb_fragility_intensity_describe(const rb_case_fragility *f, char *buf, size
         snprintf(buf, n, "peak floor acceleration");
 }
 
+/* Which limit state governs and by what rule (rb_fragility_governing). */
+static void governing_line(rb_strbuf *b, const rb_case_fragility *f)
+{
+    char judged[96];
+    rb_limit_states_str(f->judged, judged, sizeof judged);
+    if (f->governing >= 0)
+        rb_strbuf_printf(b, "governing limit state: %s, median %.4f g (the lowest median of "
+                         "those the case's criteria fail on: %s; ties to the first "
+                         "listed)\n", rb_enum_str(rb_limit_state_names, f->governing),
+                         f->fit[f->governing].median / f->g_mps2, judged);
+    else
+        rb_strbuf_printf(b, "governing limit state: none (of those the case's criteria fail "
+                         "on, %s, none is reached by two motions)\n", judged);
+}
+
 char *rb_fragility_render_text(const rb_case *c, const rb_case_fragility *f)
 {
     rb_strbuf b = {0};
@@ -43,6 +58,8 @@ char *rb_fragility_render_text(const rb_case *c, const rb_case_fragility *f)
                      "reached", "censored");
     for (int k = 0; k < RB_N_LIMITS; k++) {
         size_t cens = 0;
+        if (!rb_case_fragility_has(f, k))
+            continue;
         for (size_t m = 0; m < f->n_motions; m++)
             cens += (size_t)f->motions[m].censored[k];
         rb_strbuf_printf(&b, "%-12s ", rb_enum_str(rb_limit_state_names, k));
@@ -55,17 +72,20 @@ char *rb_fragility_render_text(const rb_case *c, const rb_case_fragility *f)
                              "(fewer than 2 reach it)", "n/a", "n/a");
         rb_strbuf_printf(&b, " %8zu %8zu\n", f->n_motions - cens, cens);
     }
+    governing_line(&b, f);
     rb_strbuf_puts(&b, "capacities (g; > : not reached up to the scan's end)\n");
     rb_strbuf_printf(&b, "%-28s", "motion");
     for (int k = 0; k < RB_N_LIMITS; k++)
-        rb_strbuf_printf(&b, " %12s", rb_enum_str(rb_limit_state_names, k));
+        if (rb_case_fragility_has(f, k))
+            rb_strbuf_printf(&b, " %12s", rb_enum_str(rb_limit_state_names, k));
     rb_strbuf_puts(&b, "\n");
     for (size_t m = 0; m < f->n_motions; m++) {
         rb_strbuf_printf(&b, "%-28.28s", rb_text_escape_buf(motion_name(c, m), name,
                                                            sizeof name));
         for (int k = 0; k < RB_N_LIMITS; k++)
-            rb_strbuf_printf(&b, " %s%11.4f", f->motions[m].censored[k] ? ">" : " ",
-                             f->motions[m].capacity_mps2[k] / g);
+            if (rb_case_fragility_has(f, k))
+                rb_strbuf_printf(&b, " %s%11.4f", f->motions[m].censored[k] ? ">" : " ",
+                                 f->motions[m].capacity_mps2[k] / g);
         rb_strbuf_puts(&b, "\n");
     }
     rb_strbuf_printf(&b, "%ld solver runs; median interval: percentile bootstrap of %u "
@@ -121,6 +141,22 @@ void rb_report_fragility_limit_json(rb_strbuf *b, const rb_case_fragility *f, in
     rb_strbuf_puts(b, "}");
 }
 
+void rb_report_fragility_governing_json(rb_strbuf *b, const rb_case_fragility *f)
+{
+    rb_strbuf_puts(b, "\"judged_limit_states\": [");
+    for (int k = 0, first = 1; k < RB_N_LIMITS; k++)
+        if ((f->judged >> k) & 1u) {
+            rb_strbuf_printf(b, "%s\"%s\"", first ? "" : ", ",
+                             rb_enum_str(rb_limit_state_names, k));
+            first = 0;
+        }
+    rb_strbuf_puts(b, "], \"governing_limit_state\": ");
+    if (f->governing >= 0)
+        rb_strbuf_printf(b, "\"%s\"", rb_enum_str(rb_limit_state_names, f->governing));
+    else
+        rb_strbuf_puts(b, "null");
+}
+
 char *rb_fragility_render_json(const rb_case *c, const rb_case_fragility *f)
 {
     rb_strbuf b = {0};
@@ -137,13 +173,19 @@ char *rb_fragility_render_json(const rb_case *c, const rb_case_fragility *f)
     rb_report_json_num(&b, "a_star_mps2", f->a_star_mps2, 1);
     rb_report_json_num(&b, "level_mps2", f->level_mps2, 1);
     rb_strbuf_printf(&b, "\"bootstrap\": {\"resamples\": %u, \"seed\": %llu, "
-                     "\"interval\": 0.9}, \"runs\": %ld,\n  \"limit_states\": [\n",
+                     "\"interval\": 0.9}, \"runs\": %ld,\n  ",
                      f->n_boot, (unsigned long long)f->seed, f->runs);
+    rb_report_fragility_governing_json(&b, f);
+    rb_strbuf_puts(&b, ",\n  \"limit_states\": [\n");
+    const char *sep = "";
     for (int k = 0; k < RB_N_LIMITS; k++) {
-        rb_strbuf_puts(&b, "    ");
+        if (!rb_case_fragility_has(f, k))
+            continue;
+        rb_strbuf_printf(&b, "%s    ", sep);
         rb_report_fragility_limit_json(&b, f, k);
-        rb_strbuf_printf(&b, "%s\n", k + 1 < RB_N_LIMITS ? "," : "");
+        sep = ",\n";
     }
+    rb_strbuf_puts(&b, "\n");
     rb_strbuf_puts(&b, "  ],\n  \"motions\": [\n");
     for (size_t m = 0; m < f->n_motions; m++) {
         rb_strbuf_puts(&b, "    {\"name\": ");
@@ -153,14 +195,23 @@ char *rb_fragility_render_json(const rb_case *c, const rb_case_fragility *f)
             rb_report_json_num(&b, "im_per_pfa", f->motions[m].im_per_pfa, 0);
         }
         rb_strbuf_puts(&b, ", \"capacity_mps2\": {");
-        for (int k = 0; k < RB_N_LIMITS; k++)
+        for (int k = 0, first = 1; k < RB_N_LIMITS; k++) {
+            if (!rb_case_fragility_has(f, k))
+                continue;
+            rb_strbuf_puts(&b, first ? "" : ", ");
             rb_report_json_num(&b, rb_enum_str(rb_limit_state_names, k),
-                               f->motions[m].capacity_mps2[k], k + 1 < RB_N_LIMITS);
+                               f->motions[m].capacity_mps2[k], 0);
+            first = 0;
+        }
         rb_strbuf_puts(&b, "}, \"censored\": {");
-        for (int k = 0; k < RB_N_LIMITS; k++)
-            rb_strbuf_printf(&b, "\"%s\": %s%s", rb_enum_str(rb_limit_state_names, k),
-                             f->motions[m].censored[k] ? "true" : "false",
-                             k + 1 < RB_N_LIMITS ? ", " : "");
+        for (int k = 0, first = 1; k < RB_N_LIMITS; k++) {
+            if (!rb_case_fragility_has(f, k))
+                continue;
+            rb_strbuf_printf(&b, "%s\"%s\": %s", first ? "" : ", ",
+                             rb_enum_str(rb_limit_state_names, k),
+                             f->motions[m].censored[k] ? "true" : "false");
+            first = 0;
+        }
         rb_strbuf_printf(&b, "}, \"runs\": %ld}%s\n", f->motions[m].runs,
                          m + 1 < f->n_motions ? "," : "");
     }
@@ -171,19 +222,21 @@ char *rb_fragility_render_json(const rb_case *c, const rb_case_fragility *f)
 char *rb_fragility_render_csv(const rb_case *c, const rb_case_fragility *f)
 {
     rb_strbuf b = {0};
-    rb_strbuf_puts(&b, "motion,limit_state,capacity_g,capacity_astar,censored\n");
+    rb_strbuf_puts(&b, "motion,limit_state,capacity_g,capacity_astar,censored,governing\n");
     for (size_t m = 0; m < f->n_motions; m++)
         for (int k = 0; k < RB_N_LIMITS; k++) {
+            if (!rb_case_fragility_has(f, k))
+                continue;
             char *field = rb_csv_field(motion_name(c, m), 0);
             if (!field) {
                 b.oom = 1;
                 break;
             }
-            rb_strbuf_printf(&b, "%s,%s,%.6g,%.6g,%d\n", field,
+            rb_strbuf_printf(&b, "%s,%s,%.6g,%.6g,%d,%d\n", field,
                              rb_enum_str(rb_limit_state_names, k),
                              f->motions[m].capacity_mps2[k] / f->g_mps2,
                              f->motions[m].capacity_mps2[k] / f->a_star_mps2,
-                             f->motions[m].censored[k]);
+                             f->motions[m].censored[k], k == f->governing);
             free(field);
         }
     return rb_strbuf_take(&b);

@@ -20,7 +20,7 @@
 #define CURVE_POINTS 200
 
 const char *const rb_plot_limit_colours[RB_N_LIMITS] = {"#ff7f0e", "#d62728", "#7f7f7f",
-                                                       "#1f77b4"};
+                                                       "#1f77b4", "#2ca02c"};
 
 static int cmp(const void *a, const void *b)
 {
@@ -38,11 +38,13 @@ static void x_range(const rb_case_fragility *f, double *lo, double *hi)
     *lo = *hi = f->level_mps2;
     for (size_t m = 0; m < f->n_motions; m++)
         for (int k = 0; k < RB_N_LIMITS; k++) {
+            if (!rb_case_fragility_has(f, k))
+                continue;
             *lo = fmin(*lo, f->motions[m].capacity_mps2[k]);
             *hi = fmax(*hi, f->motions[m].capacity_mps2[k]);
         }
     for (int k = 0; k < RB_N_LIMITS; k++)
-        if (f->fitted[k]) {
+        if (f->fitted[k] && rb_case_fragility_has(f, k)) {
             *lo = fmin(*lo, rb_fragility_quantile(&f->fit[k], 0.01));
             *hi = fmax(*hi, rb_fragility_quantile(&f->fit[k], 0.99));
         }
@@ -75,6 +77,7 @@ rb_status rb_plot_fragility_svg(const rb_case_fragility *f, const char *title,
     double x[CURVE_POINTS], y[CURVE_POINTS];
     double *cap = malloc((f->n_motions ? f->n_motions : 1) * sizeof *cap);
     const char *names[RB_N_LIMITS];
+    char governs[48];
     const char *cols[RB_N_LIMITS];
     char line[256];
     int n_leg = 0;
@@ -98,8 +101,9 @@ rb_status rb_plot_fragility_svg(const rb_case_fragility *f, const char *title,
     rb_plot_escape(&b, title ? title : "Fragility");
     rb_strbuf_puts(&b, "</text>\n");
     snprintf(line, sizeof line, "lognormal fits to %zu motions; points: capacities at "
-             "their fractions; dashed: the case's level %.3g g (A* = %.3g g)",
-             f->n_motions, f->level_mps2 / f->g_mps2, f->a_star_mps2 / f->g_mps2);
+             "their fractions; dashed: the case's level %.3g g (A* = %.3g g); governs: %s",
+             f->n_motions, f->level_mps2 / f->g_mps2, f->a_star_mps2 / f->g_mps2,
+             f->governing >= 0 ? rb_enum_str(rb_limit_state_names, f->governing) : "none");
     rb_svg_text(&b, LEFT, 44, 11, "start", NULL, line);
     char im[96], x_title[140];
     rb_fragility_intensity_describe(f, im, sizeof im);
@@ -110,7 +114,7 @@ rb_status rb_plot_fragility_svg(const rb_case_fragility *f, const char *title,
                      "stroke=\"#555555\" stroke-dasharray=\"4 3\"/>\n", lx, p.y0, lx,
                      p.y0 + p.h);
     for (int k = 0; k < RB_N_LIMITS; k++) {
-        if (!f->fitted[k])
+        if (!f->fitted[k] || !rb_case_fragility_has(f, k))
             continue;
         for (int i = 0; i < CURVE_POINTS; i++) {
             /* evenly spaced along the axis, whichever its scale */
@@ -122,6 +126,10 @@ rb_status rb_plot_fragility_svg(const rb_case_fragility *f, const char *title,
                        rb_enum_str(rb_limit_state_names, k));
         points(&b, &p, f, k, cap);
         names[n_leg] = rb_enum_str(rb_limit_state_names, k);
+        if (k == f->governing) {
+            snprintf(governs, sizeof governs, "%s (governs)", names[n_leg]);
+            names[n_leg] = governs;
+        }
         cols[n_leg++] = rb_plot_limit_colours[k];
     }
     rb_panel_legend(&b, &p, names, cols, n_leg);

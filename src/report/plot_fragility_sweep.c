@@ -95,6 +95,8 @@ rb_status rb_plot_fragility_sweep_svg(const rb_fragility_sweep *s, const char *t
     int n_leg = 0;
     for (int k = 0; k < RB_N_LIMITS; k++) {
         char series[64];
+        if (!rb_case_fragility_has(f0, k))
+            continue;
         const char *name = rb_enum_str(rb_limit_state_names, k);
         int drawn = 0;
         for (int median = 0; median < 2; median++) {

@@ -107,5 +107,8 @@ void rb_report_json_num(rb_strbuf *b, const char *key, double v, int comma);
 void rb_report_json_str(rb_strbuf *b, const char *s);
 /* Limit state k of f as one JSON object, on one line. */
 void rb_report_fragility_limit_json(rb_strbuf *b, const rb_case_fragility *f, int k);
+/* "judged_limit_states": [...], "governing_limit_state": name or null
+ * (rb_fragility_governing), on one line with no comma after it. */
+void rb_report_fragility_governing_json(rb_strbuf *b, const rb_case_fragility *f);
 
 #endif

@@ -47,9 +47,55 @@ static void limit_criteria(const rb_case *c, rb_limit_state k, rb_criteria *cr,
             cr->validity_mask = 1u << RB_CHECK_LIFT_OFF;
         }
         break;
+    case RB_LIMIT_ANCHORAGE:
+        /* the judge's own concrete check (the utilization the run tracks,
+         * the route it applies) with nothing else to fail a run but
+         * overturning, which fails every criterion: a cabinet that
+         * overturns has pulled its anchorage out whatever the concrete */
+        cr->kind = RB_CRIT_NO_BREAK;
+        cr->usage_limit = INFINITY;
+        cr->concrete = 1;
+        cr->anchor_seismic = c->criteria.anchor_seismic;
+        cr->anchor_route = c->criteria.anchor_route;
+        cr->anchor_not_ductile = c->criteria.anchor_not_ductile;
+        cr->anchor_attachment_margin = c->criteria.anchor_attachment_margin;
+        cr->anchor_static_utilization = c->criteria.anchor_static_utilization;
+        so->stretch_past_failure = 1;
+        break;
     case RB_N_LIMITS:
         break;
     }
+}
+
+unsigned rb_run_fragility_present(const rb_case *c)
+{
+    unsigned all = (1u << RB_N_LIMITS) - 1;
+    /* the concrete check's strengths are on the solver's options once the
+     * case resolved its concrete: section */
+    if (!(c->has_concrete && c->solve.anchor_phi_nn_n > 0))
+        all &= ~(1u << RB_LIMIT_ANCHORAGE);
+    return all;
+}
+
+unsigned rb_run_fragility_judged(const rb_case *c)
+{
+    const rb_criteria *cr = &c->criteria;
+    unsigned m = 1u << RB_LIMIT_OVERTURN;
+    m |= 1u << (cr->kind == RB_CRIT_NO_YIELD ? RB_LIMIT_FIRST_YIELD : RB_LIMIT_USAGE);
+    if (cr->validity == RB_VALIDITY_FAIL && (cr->validity_mask >> RB_CHECK_LIFT_OFF) & 1u)
+        m |= 1u << RB_LIMIT_LIFT_OFF;
+    if (cr->concrete)
+        m |= 1u << RB_LIMIT_ANCHORAGE;
+    return m & rb_run_fragility_present(c);
+}
+
+size_t rb_run_fragility_searches(const rb_case *c)
+{
+    size_t n = 0;
+    unsigned present = rb_run_fragility_present(c);
+    for (int k = 0; k < RB_N_LIMITS; k++)
+        n += (present >> k) & 1u;
+    return n * c->n_motions;
 }
 
 static rb_status search(const rb_case *c, size_t m, rb_limit_state k, int n_threads,
@@ -85,25 +131,27 @@ typedef struct {
     void *progress_ctx;
     size_t done, total;
     pthread_mutex_t lock;       /* progress is told one call at a time */
-    /* runs shared by the searches: the usage, overturning and lift-off
-     * searches of a motion run with the same options and scan the same
-     * levels */
+    /* runs shared by the searches: the usage, overturning, lift-off and
+     * anchorage searches of a motion run with the same options and scan
+     * the same levels */
     rb_design_memo *memo;
+    rb_limit_state order[RB_N_LIMITS]; /* the case's limit states, longest first */
 } job_ctx;
 
 /* The limit states in the order their searches are handed out: the
  * longest first (overturning runs to the highest levels, rocking hard), so
  * that the last searches, which decide when the threads finish, are short. */
 static const rb_limit_state longest_first[RB_N_LIMITS] = {
-    RB_LIMIT_OVERTURN, RB_LIMIT_USAGE, RB_LIMIT_FIRST_YIELD, RB_LIMIT_LIFT_OFF};
+    RB_LIMIT_OVERTURN, RB_LIMIT_USAGE, RB_LIMIT_ANCHORAGE, RB_LIMIT_FIRST_YIELD,
+    RB_LIMIT_LIFT_OFF};
 
-/* Search i: limit state longest_first[i / n], motion i % n. The limit
- * states of one motion write their own fields of its slot. */
+/* Search i: limit state order[i / n], motion i % n. The limit states of
+ * one motion write their own fields of its slot. */
 static rb_status job(void *arg, size_t i)
 {
     job_ctx *jc = arg;
     size_t n = jc->out->n_motions, m = i % n;
-    int k = (int)longest_first[i / n];
+    int k = (int)jc->order[i / n];
     rb_motion_fragility one = {{0}, {0}, 0, 1.0};
     rb_diag_clear(&jc->diags[i]);
     rb_status st = search(jc->c, m, (rb_limit_state)k, 1, jc->memo, &one, &jc->diags[i]);
@@ -148,6 +196,18 @@ static void fit_one(rb_case_fragility *fr, rb_limit_state k)
     free(cens);
 }
 
+/* Every limit state the case has, and the one that governs. */
+static void fit_all(rb_case_fragility *fr)
+{
+    double median[RB_N_LIMITS];
+    for (int k = 0; k < RB_N_LIMITS; k++) {
+        if ((fr->present >> k) & 1u)
+            fit_one(fr, (rb_limit_state)k);
+        median[k] = fr->fit[k].median;
+    }
+    fr->governing = rb_fragility_governing(fr->judged, fr->fitted, median);
+}
+
 rb_status rb_run_fragility(const rb_case *c, int n_threads, uint64_t seed, unsigned n_boot,
                            rb_case_fragility *out, rb_diag *diag,
                            rb_design_progress_fn progress, void *ctx)
@@ -158,6 +218,9 @@ rb_status rb_run_fragility(const rb_case *c, int n_threads, uint64_t seed, unsig
     if (c->model.bolt_model == RB_BOLT_NONE || c->n_motions == 0)
         return rb_diag_set(diag, RB_ERR_INVALID, NULL, 0, 0, "anchorage",
                            "a fragility needs bolts and at least one motion");
+    out->present = rb_run_fragility_present(c);
+    out->judged = rb_run_fragility_judged(c);
+    out->governing = -1;
     if ((st = rb_model_derive(&c->model, &d, diag)) != RB_OK)
         return st;
     out->motions = calloc(c->n_motions, sizeof *out->motions);
@@ -172,8 +235,12 @@ rb_status rb_run_fragility(const rb_case *c, int n_threads, uint64_t seed, unsig
         out->motions[m].im_per_pfa = 1.0;
     out->seed = seed;
     out->n_boot = n_boot;
-    size_t total = c->n_motions * RB_N_LIMITS;
-    job_ctx jc = {c, out, NULL, progress, ctx, 0, total, PTHREAD_MUTEX_INITIALIZER, NULL};
+    size_t total = rb_run_fragility_searches(c);
+    job_ctx jc = {c, out, NULL, progress, ctx, 0, total, PTHREAD_MUTEX_INITIALIZER, NULL,
+                  {0}};
+    for (int i = 0, j = 0; i < RB_N_LIMITS; i++)
+        if ((out->present >> longest_first[i]) & 1u)
+            jc.order[j++] = longest_first[i];
     jc.diags = calloc(total, sizeof *jc.diags);
     rb_status *sts = calloc(total, sizeof *sts);
     jc.memo = rb_design_memo_new();
@@ -199,8 +266,7 @@ rb_status rb_run_fragility(const rb_case *c, int n_threads, uint64_t seed, unsig
         return st;
     for (size_t m = 0; m < c->n_motions; m++)
         out->runs += out->motions[m].runs;
-    for (int k = 0; k < RB_N_LIMITS; k++)
-        fit_one(out, (rb_limit_state)k);
+    fit_all(out);
     if (progress)
         progress(ctx, total, total, NULL);
     return RB_OK;
@@ -259,7 +325,6 @@ rb_status rb_run_fragility_intensity(const rb_case *c, rb_fragility_intensity im
     f->intensity = RB_IM_SA;
     f->im_freq_hz = c->model.freq_hz;
     f->im_damping = xi;
-    for (int k = 0; k < RB_N_LIMITS; k++)
-        fit_one(f, (rb_limit_state)k);
+    fit_all(f);
     return RB_OK;
 }

@@ -71,7 +71,7 @@ rb_status rb_run_fragility_gap_sweep(const rb_case *c, const double *gap_ratios,
     }
     memcpy(out->gap_ratios, gap_ratios, n * sizeof *gap_ratios);
     out->n_points = n;
-    size_t per_point = c->n_motions * RB_N_LIMITS;
+    size_t per_point = rb_run_fragility_searches(c);
     sweep_progress sp = {progress, ctx, 0, n * per_point};
     for (size_t i = 0; i < n && st == RB_OK; i++) {
         /* the motions and everything else are shared, read only */

@@ -180,11 +180,13 @@ fragility)
     has "$s/out" "^ *\[overturn\] *not fitted; reached by 0 of 3"
     has "$s/out" "d-broken .*UNREADABLE"
     has "$s/f.csv" ",theta_over_alpha,fragility_intensity,fragility_intensity_freq_hz,fragility_level_g,fragility_first_yield_median_g,fragility_first_yield_beta,fragility_first_yield_median_lo_g,fragility_first_yield_median_hi_g,fragility_first_yield_p_at_level,fragility_first_yield_reached,fragility_usage_median_g,"
-    has "$s/f.csv" ",fragility_lift_off_reached,fragility_error,validity_warnings,"
+    has "$s/f.csv" ",fragility_lift_off_reached,fragility_anchorage_median_g,"
+    has "$s/f.csv" ",fragility_anchorage_reached,fragility_governing,fragility_error,validity_warnings,"
     has "$s/f.json" '"seed":	"5"'
     has "$s/f.json" '"intensity":	"peak_floor_acceleration"'
     has "$s/f.json" '"limit_state":	"lift-off"'
     has "$s/f.xml" '<property name="fragility.usage.median_g" value="[0-9.]*"/>'
+    has "$s/f.xml" '<property name="fragility.governing" value="[a-z-]*"/>'
     check_junit "$s/f.xml"
     if command -v python3 >/dev/null 2>&1; then
         python3 - "$s/f.csv" "$s/f.json" <<'PY' || fail "fragility columns"
@@ -202,6 +204,12 @@ assert "fragility" not in cases["d-broken"], "an unreadable case has a fragility
 f = cases["c-suite"]["fragility"]
 assert [l["limit_state"] for l in f["limit_states"]] == \
     ["first-yield", "usage", "overturn", "lift-off"]
+# no concrete: no anchorage state, its columns empty; the governing state
+# named in the JSON and on every row of the CSV
+assert all(r["fragility_anchorage_reached"] == "" for r in suite)
+g = f["governing_limit_state"]
+assert g in ("usage", "overturn", "first-yield"), g
+assert {r["fragility_governing"] for r in suite} == {g.replace("-", "_")}
 PY
     fi
     # the seed belongs to --fragility, and is a whole number

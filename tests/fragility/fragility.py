@@ -111,8 +111,23 @@ for bad, msg in ((["--x-scale", "ln"], "option '--x-scale' needs log or linear (
         fail(f"{bad}: exit {r.returncode}, {r.stderr.strip()[:200]}")
 
 rows = open(csv).read().splitlines()
-if len(rows) != 1 + 2 * 4 or rows[0] != "motion,limit_state,capacity_g,capacity_astar,censored":
+if len(rows) != 1 + 2 * 4 or \
+        rows[0] != "motion,limit_state,capacity_g,capacity_astar,censored,governing":
     fail(f"the CSV has {len(rows)} lines: {rows[:2]}")
+elif {r.split(",")[1] for r in rows[1:] if r.endswith(",1")} != {fr["governing_limit_state"]}:
+    fail(f"the CSV's governing rows are not the JSON's {fr['governing_limit_state']}")
+
+# no concrete: no anchorage state; the governing state is the lowest fitted
+# median of those its criteria (no-break) fail on: usage and overturn
+if [s["limit_state"] for s in fr["limit_states"]] != \
+        ["first-yield", "usage", "overturn", "lift-off"] \
+        or fr["judged_limit_states"] != ["usage", "overturn"]:
+    fail(f"limit states {[s['limit_state'] for s in fr['limit_states']]}, judged "
+         f"{fr['judged_limit_states']}")
+cands = [k for k in fr["judged_limit_states"] if states[k]["fitted"]]
+want_g = min(cands, key=lambda k: states[k]["median_mps2"]) if cands else None
+if fr["governing_limit_state"] != want_g:
+    fail(f"governing {fr['governing_limit_state']}, the lowest median {want_g}")
 
 # free-standing: refused, nothing written
 fs = os.path.join(scratch, "free.yaml")

@@ -62,7 +62,8 @@ for p in sw["points"]:
         fail(f"fragility at gap ratio {p['gap_ratio']}: exit {r.returncode}")
         continue
     f = json.load(open(fj))
-    if p["limit_states"] != f["limit_states"] or p["runs"] != f["runs"]:
+    if p["limit_states"] != f["limit_states"] or p["runs"] != f["runs"] \
+            or p["governing_limit_state"] != f["governing_limit_state"]:
         fail(f"gap ratio {p['gap_ratio']}: the sweep's point is not the fragility of the "
              f"case with that gap ratio")
     for key in ("g_mps2", "a_star_mps2", "level_mps2"):
@@ -77,7 +78,7 @@ if len(set(meds)) != len(meds):
 g = sw["g_mps2"]
 rows = open(out["csv"]).read().splitlines()
 if rows[0] != "gap_ratio,limit_state,fitted,median_g,beta,median_lo_g,median_hi_g," \
-              "p_at_level,reached" or len(rows) != 1 + 3 * 4:
+              "p_at_level,reached,governing" or len(rows) != 1 + 3 * 4:
     fail(f"the CSV: {len(rows)} lines, header {rows[0]}")
 else:
     for line, (p, k) in zip(rows[1:], [(p, k) for p in sw["points"] for k in range(4)]):
@@ -88,6 +89,8 @@ else:
         elif ls["fitted"] and (f[3] != "%.6g" % (ls["median_mps2"] / g)
                                or f[7] != "%.6g" % ls["p_at_level"]):
             fail(f"CSV row {line}: median or P is not the JSON's")
+        elif f[9] != str(int(p["governing_limit_state"] == STATES[k])):
+            fail(f"CSV row {line}: governing is not the JSON's {p['governing_limit_state']}")
 
 lines = table.splitlines()
 data = [l for l in lines if l.split()[:1] and l.split()[0] in ("0.005", "0.01", "0.015")]

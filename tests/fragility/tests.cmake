@@ -8,3 +8,8 @@ rb_script_test(NAME fragility_batch_property SCRIPT tests/fragility/batch_proper
 rb_script_test(NAME fragility_sweep_gap SCRIPT tests/fragility/sweep.py LABEL fragility)
 # --p58: the FEMA P-58 rows, read back with Python's csv module
 rb_script_test(NAME fragility_p58 SCRIPT tests/fragility/p58.py LABEL fragility)
+# the anchorage limit state over random cases with concrete: each motion's
+# capacity is the level at which design finds its anchorage failing; the
+# governing state, the P-58 row, batch and merge; none without concrete
+rb_script_test(NAME fragility_anchorage SCRIPT tests/fragility/anchorage.py LABEL fragility
+               TIMEOUT 900)

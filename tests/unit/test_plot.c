@@ -489,8 +489,8 @@ static double circle_x(const char *svg, const char *state)
 static void test_fragility_figure(void)
 {
     static const double cap_g[4][RB_N_LIMITS] = {
-        {3.0, 4.6, 13.0, 0.033}, {3.2, 4.7, 14.0, 0.036}, {2.9, 4.8, 12.5, 0.034},
-        {3.4, 4.5, 13.5, 0.037}};
+        {3.0, 4.6, 13.0, 0.033, 4.1}, {3.2, 4.7, 14.0, 0.036, 4.3},
+        {2.9, 4.8, 12.5, 0.034, 4.0}, {3.4, 4.5, 13.5, 0.037, 4.2}};
     rb_motion_fragility m[4];
     rb_case_fragility f;
     memset(&f, 0, sizeof f);
@@ -499,6 +499,8 @@ static void test_fragility_figure(void)
     f.g_mps2 = 9.80665;
     f.a_star_mps2 = 11.7 * f.g_mps2;
     f.level_mps2 = 0.4 * f.a_star_mps2;
+    f.present = (1u << RB_N_LIMITS) - 1;
+    f.governing = RB_LIMIT_ANCHORAGE;
     for (int i = 0; i < 4; i++) {
         memset(&m[i], 0, sizeof m[i]);
         for (int k = 0; k < RB_N_LIMITS; k++)
@@ -519,6 +521,8 @@ static void test_fragility_figure(void)
     if (!log_svg || !lin_svg)
         goto done;
     CHECK(count(log_svg, "<path") == RB_N_LIMITS && count(lin_svg, "<path") == RB_N_LIMITS);
+    /* the governing state is named in the legend and the subtitle */
+    CHECK(strstr(log_svg, "anchorage (governs)") && strstr(log_svg, "governs: anchorage"));
     CHECK(!has_nonfinite(log_svg) && !has_nonfinite(lin_svg));
     CHECK(strstr(log_svg, "peak floor acceleration (g), log scale") != NULL);
     CHECK(strstr(lin_svg, "log scale") == NULL);
@@ -535,6 +539,19 @@ static void test_fragility_figure(void)
     rb_axis_log(&ax, 0.02, 20);
     double want = rb_axis_frac(&ax, 0.033);
     CHECK_NEAR(lo_log, want, 0.01);
+    /* a case without concrete: has no anchorage state: its zero
+     * capacities neither stretch the log axis nor draw a curve */
+    free(log_svg);
+    log_svg = NULL;
+    f.present &= ~(1u << RB_LIMIT_ANCHORAGE);
+    f.fitted[RB_LIMIT_ANCHORAGE] = 0;
+    f.governing = RB_LIMIT_FIRST_YIELD;
+    for (int i = 0; i < 4; i++)
+        m[i].capacity_mps2[RB_LIMIT_ANCHORAGE] = 0;
+    CHECK(rb_plot_fragility_svg(&f, "suite", RB_PLOT_SCALE_LOG, &log_svg, &d) == RB_OK);
+    CHECK(log_svg && count(log_svg, "<path") == RB_N_LIMITS - 1);
+    CHECK(log_svg && !strstr(log_svg, "anchorage") && !has_nonfinite(log_svg)
+          && strstr(log_svg, ">0.02<") && strstr(log_svg, ">20<"));
 done:
     free(log_svg);
     free(lin_svg);
