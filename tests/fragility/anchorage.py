@@ -27,8 +27,9 @@ windows through a building each) and asserts that
   - `batch --fragility` on the cases gives each its anchorage limit state
     and governing state with the fragility's doubles, and merge of two
     shards reads them back to the same summary.
-And on the same cases without `concrete:` the fragility has no anchorage
-limit state anywhere (JSON, CSV, table). The seed is printed so that a
+With `criteria: concrete: false` the state is there but neither judged
+nor governing. And on a case without `concrete:` the fragility has no
+anchorage limit state anywhere (JSON, CSV, table). The seed is printed so that a
 failure can be replayed."""
 import csv, json, math, os, random, re, sys
 
@@ -244,6 +245,23 @@ else:
         fail(f"merge of two shards: exit {r.returncode}, {r.stderr.strip()[:300]}; the same "
              "summary as one run: " + str(os.path.exists(mj) and
                                            open(mj).read() == open(bj).read()))
+
+# criteria: concrete: false keeps the state (the concrete still fails) but
+# out of those the verdict fails on, and so out of the governing choice
+off = os.path.join(scratch, "off.yaml")
+with open(off, "w") as f:
+    f.write(f"extends: {files[0]}\nname: off\ncriteria:\n  concrete: false\n")
+fj = os.path.join(scratch, "off.json")
+r = run("fragility", off, "--json", fj, "-q")
+if r.returncode != 0:
+    fail(f"concrete: false: fragility exit {r.returncode}: {r.stderr.strip()[:300]}")
+else:
+    fr = json.load(open(fj))
+    if [s["limit_state"] for s in fr["limit_states"]] != ORDER \
+            or "anchorage" in fr["judged_limit_states"] \
+            or fr["governing_limit_state"] == "anchorage":
+        fail(f"concrete: false: limit states {[s['limit_state'] for s in fr['limit_states']]}"
+             f", judged {fr['judged_limit_states']}, governing {fr['governing_limit_state']}")
 
 # without concrete: no anchorage state anywhere
 text, _ = draw(99)
