@@ -155,9 +155,14 @@ rb_status rb_batch_merge_stream(const rb_batch_summary *heads, size_t n,
         for (size_t k = 0; k < n; k++)
             if (p[k].has && (g == n || p[k].c.index < p[g].c.index))
                 g = k;
-        if (g == n || p[g].c.index > i) {
+        if (g == n) {
             st = fail(diag, "case %zu of %zu is in no summary: a shard is missing",
                       i + 1, total);
+        } else if (p[g].c.index > i) {
+            /* a summary out of order looks the same from here */
+            st = fail(diag, "case %zu of %zu is in no summary: a shard is missing, or a "
+                      "summary's cases are not in the list's order (the next case of "
+                      "summary %zu is case %zu)", i + 1, total, g + 1, p[g].c.index + 1);
         } else if (p[g].c.index < i) {
             st = fail(diag, "case %zu is in more than one summary (summary %zu)",
                       p[g].c.index + 1, g + 1);

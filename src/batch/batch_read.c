@@ -90,6 +90,8 @@ static rb_status ended(rb_batch_reader *r, rb_diag *d, const char *key)
     if (ferror(r->fp))
         return rb_diag_set(d, RB_ERR_IO, r->name, 0, 0, key, "cannot read: %s",
                            strerror(errno ? errno : EIO));
+    if (r->line == 1 && r->col == 1)
+        return FAIL(r, d, RB_ERR_PARSE, key, "the file is empty");
     return FAIL(r, d, RB_ERR_PARSE, key, "the summary ends early (cut short?)");
 }
 

@@ -149,6 +149,9 @@ usage)
     printf 'not json' >"$s/junk.json"
     run 2 merge "$s/junk.json"
     has "$s/err" "junk.json:1:1: error: summary: not JSON"
+    : >"$s/empty.json"
+    run 2 merge "$s/empty.json"
+    has "$s/err" "empty.json:1:1: error: summary: the file is empty"
     ;;
 reports)
     run 2 batch $inputs -q --reports "$s/rep"

@@ -337,6 +337,18 @@ merge_digest)
     run 1 merge "$s/s1.json" "$s/s2.json" --json "$s/m.json"
     run 1 batch $c -q --json "$s/all.json"
     cmp "$s/m.json" "$s/all.json" || fail "merged shards differ from one run"
+    # merge reads a summary's cases in the list's order, as batch writes them
+    python3 - "$s/all.json" "$s/rev.json" <<'PY' || fail "cannot reverse the summary"
+import sys
+t = open(sys.argv[1]).read()
+head, rest = t.split('"cases":\t[', 1)
+rows = rest[:rest.rindex("]")].split(', {\n\t\t\t"index"')
+rows = [rows[0]] + ['{\n\t\t\t"index"' + r for r in rows[1:]]
+assert len(rows) == 2
+open(sys.argv[2], "w").write(head + '"cases":\t[' + ", ".join(rows[::-1]) + "]\n}\n")
+PY
+    run 2 merge "$s/rev.json"
+    has "$s/err" "merge: case 1 of 2 is in no summary: .*not in the list's order"
     printf 'tag,base,mass\nA,%s,454 kg\nB,%s,454 kg\n' "$base" "$base" >"$s/l1.csv"
     printf 'tag,base,mass\nA,%s,454 kg\nB,%s,600 kg\n' "$base" "$base" >"$s/l2.csv"
     "$rb" batch "$s/l1.csv" -q --shard 1/2 --json "$s/l1-1.json"
