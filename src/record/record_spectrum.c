@@ -4,6 +4,7 @@
 #include "record_internal.h"
 #include "rockbolt/sandbox.h"
 #include "rockbolt/spectrum.h"
+#include "rockbolt/units.h"
 
 static rb_status table_row(const rb_rec_reader *r, double units, rb_rec_values *f,
                            rb_rec_values *a, int *header_ok)
@@ -42,8 +43,8 @@ static rb_status table_row(const rb_rec_reader *r, double units, rb_rec_values *
                            "acceleration > 0, found %g", av);
     if (!(av * units <= RB_SPECTRUM_MAX_ACCEL_MPS2))
         return rb_rec_fail(r, RB_ERR_INVALID, tok[1].col, "expected a spectral "
-                           "acceleration of at most 1000 g (%g m/s^2), found %g (%g m/s^2)",
-                           RB_SPECTRUM_MAX_ACCEL_MPS2, av, av * units);
+                           "acceleration of at most 1000 g, found %g (%g g)", av,
+                           av * units / RB_UNIT_G_MPS2);
     st = rb_rec_values_push(f, r, &tok[0], fv, 1.0);
     if (st == RB_OK)
         st = rb_rec_values_push(a, r, &tok[1], av, units);

@@ -1,5 +1,6 @@
 /* Unit tests for the quantity parser (units.h): every accepted unit against
  * its SI value, and every class of error with the start of its message. */
+#include <math.h>
 #include <string.h>
 #include "harness.h"
 #include "rockbolt/units.h"
@@ -169,6 +170,51 @@ static void test_schedule_spellings(void)
     CHECK_REL(parse_ok("1-1/2 in", RB_DIM_LENGTH), 0.0381, 1e-15);
 }
 
+/* The formatter of outputs for people: each quantity against its value in
+ * the other system worked out here from the definitions (1 lbf = 0.45359237
+ * kg x 9.80665 m/s^2, 1 in = 25.4 mm, 1 psi = 1 lbf/in^2). */
+static void test_format(void)
+{
+    double lbf = 0.45359237 * 9.80665, in = 0.0254, psi = lbf / (in * in);
+    CHECK(strcmp(rb_qty_str(RB_UNITS_SI, RB_Q_FORCE, 62890, 4).s, "62.89 kN") == 0);
+    /* 62.89 kN / 4448.22 N = 14.138 kip */
+    CHECK(strcmp(rb_qty_str(RB_UNITS_US, RB_Q_FORCE, 62890, 4).s, "14.14 kip") == 0);
+    CHECK_REL(rb_qty_value(RB_UNITS_US, RB_Q_FORCE, 1e3 * lbf), 1.0, 1e-14);
+    CHECK(strcmp(rb_qty_str(RB_UNITS_SI, RB_Q_LENGTH, 0.4064, 6).s, "0.4064 m") == 0);
+    CHECK(strcmp(rb_qty_str(RB_UNITS_US, RB_Q_LENGTH, 0.4064, 6).s, "16 in") == 0);
+    CHECK(strcmp(rb_qty_str(RB_UNITS_SI, RB_Q_SMALL_LENGTH, 7.8e-3, 4).s, "7.8 mm") == 0);
+    CHECK(strcmp(rb_qty_str(RB_UNITS_US, RB_Q_SMALL_LENGTH, 1.5 * in, 4).s, "1.5 in") == 0);
+    CHECK(strcmp(rb_qty_str(RB_UNITS_US, RB_Q_AREA, 0.142 * in * in, 4).s, "0.142 in^2") == 0);
+    CHECK(strcmp(rb_qty_str(RB_UNITS_SI, RB_Q_AREA, 126.7e-6, 4).s, "126.7 mm^2") == 0);
+    CHECK(strcmp(rb_qty_str(RB_UNITS_US, RB_Q_STRESS, 36e3 * psi, 4).s, "36 ksi") == 0);
+    CHECK(strcmp(rb_qty_str(RB_UNITS_SI, RB_Q_STRESS, 248e6, 4).s, "248 MPa") == 0);
+    CHECK(strcmp(rb_qty_str(RB_UNITS_US, RB_Q_MASS, 1200 * 0.45359237, 6).s, "1200 lb") == 0);
+    /* accelerations: m/s^2 in SI, g in US customary */
+    CHECK(strcmp(rb_qty_str(RB_UNITS_SI, RB_Q_ACCEL, 14.71, 4).s, "14.71 m/s^2") == 0);
+    CHECK(strcmp(rb_qty_str(RB_UNITS_US, RB_Q_ACCEL, 1.5 * 9.80665, 4).s, "1.5 g") == 0);
+    /* 1 ft-lbf = 0.3048 m x 4.44822 N = 1.35582 J; 1 kip-in = 112.985 N m */
+    CHECK_REL(rb_qty_value(RB_UNITS_US, RB_Q_ENERGY, 0.3048 * lbf), 1.0, 1e-14);
+    CHECK_REL(rb_qty_value(RB_UNITS_US, RB_Q_MOMENT, 1e3 * lbf * in), 1.0, 1e-14);
+    CHECK_REL(rb_qty_value(RB_UNITS_US, RB_Q_ENERGY_DENSITY, 12000 * psi), 12000, 1e-14);
+    CHECK_REL(rb_qty_value(RB_UNITS_US, RB_Q_STIFFNESS, 1e3 * lbf / in), 1.0, 1e-14);
+    CHECK(strcmp(rb_qty_unit(RB_UNITS_SI, RB_Q_MOMENT), "kN*m") == 0);
+    CHECK(strcmp(rb_qty_unit(RB_UNITS_US, RB_Q_MOMENT), "kip-in") == 0);
+    /* a neutral system prints SI, as the outputs of a case with no unit */
+    CHECK(strcmp(rb_qty_str(RB_UNITS_NEUTRAL, RB_Q_FORCE, 1e3, 4).s, "1 kN") == 0);
+    CHECK(strcmp(rb_qty_str(RB_UNITS_US, RB_Q_FORCE, (double)NAN, 4).s, "n/a") == 0);
+    rb_qty q;
+    CHECK(rb_dim_qty(RB_DIM_STRESS, &q) && q == RB_Q_STRESS);
+    CHECK(!rb_dim_qty(RB_DIM_TIME, &q));
+    /* the system of a quantity's text */
+    CHECK(rb_unit_system_of_text("1/2 in") == RB_UNITS_US);
+    CHECK(rb_unit_system_of_text(" 7.8 mm ") == RB_UNITS_SI);
+    CHECK(rb_unit_system_of_text("12000 in-lb/in^3") == RB_UNITS_US);
+    CHECK(rb_unit_system_of_text("5 Hz") == RB_UNITS_NEUTRAL);
+    CHECK(rb_unit_system_of_text("0.4 A*") == RB_UNITS_NEUTRAL);
+    CHECK(rb_unit_system_of_text("1200 lb panel") == RB_UNITS_NEUTRAL);
+    CHECK(rb_unit_system_of_text("mm") == RB_UNITS_NEUTRAL);
+}
+
 int main(void)
 {
     test_schedule_spellings();
@@ -177,5 +223,6 @@ int main(void)
     test_accelerations();
     test_other_dimensions();
     test_errors();
+    test_format();
     TEST_MAIN_END();
 }
