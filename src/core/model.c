@@ -54,8 +54,9 @@ static rb_status check_equipment(const rb_model *m, rb_diag *diag)
             "must be finite (got %g kg m^2)", m->inertia_kgm2);
     REQUIRE(m->inertia_kgm2 <= 0 || m->inertia_kgm2 >= m->mass_kg *
             (m->half_width_m * m->half_width_m + m->cm_height_m * m->cm_height_m) * (1 - 1e-12),
-            "inertia", "must be at least M R^2, the point-mass value about the pivot (got %g kg m^2)",
-            m->inertia_kgm2);
+            "inertia", "must be at least M R^2, the point-mass value about the pivot (got "
+            "%.4g M R^2)", m->inertia_kgm2 / (m->mass_kg * (m->half_width_m * m->half_width_m
+                                                             + m->cm_height_m * m->cm_height_m)));
     REQUIRE(isfinite(m->restitution) && m->restitution <= 1 && m->restitution != 0,
             "restitution", "must be in (0, 1] (got %g)", m->restitution);
     REQUIRE(isfinite(m->gravity_mps2), "gravity", "must be finite (got %g)", m->gravity_mps2);

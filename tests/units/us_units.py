@@ -152,6 +152,8 @@ want = [
     ("bad-embedment-past-slab.stderr", r"\(embedment 7 in, slab 6 in\)",
      "the embedment against the slab"),
     ("batch.stdout", r"kip", "a batch reason's force"),
+    # 100 lb in^2 over 1200 lb x (18^2 + 45^2) in^2 = 3.5476e-5
+    ("bad-inertia.stderr", r"\(got 3\.548e-05 M R\^2\)", "the inertia's message"),
 ]
 for name, rx, what in want:
     try:
