@@ -67,6 +67,12 @@ static const col_def csv_cols[] = {
     {"deformable_length", COL_KEY, "anchorage.deformable_length"},
     {"edge_distance", COL_KEY, "anchorage.edge_distance"},
     {"lever_arm", COL_KEY, "anchorage.lever_arm"},
+    {"anchor_type", COL_KEY, "anchorage.type"},
+    {"embedment", COL_KEY, "anchorage.embedment"},
+    {"spacing", COL_KEY, "anchorage.spacing"},
+    {"ultimate_stress", COL_KEY, "anchorage.ultimate_stress"},
+    {"tensile_area", COL_KEY, "anchorage.tensile_area"},
+    {"head_bearing_area", COL_KEY, "anchorage.head_bearing_area"},
     {"gap", COL_KEY, "gap"},
     {"gap_ratio", COL_KEY, "gap_ratio"},
     {"motion", COL_MOTION, NULL},
@@ -389,7 +395,10 @@ static int parse_column(const char *cell, csv_col *col, char *msg, size_t msz)
     } else {
         char why[300];
         if (!rb_case_key_settable(name, why, sizeof why)) {
-            const char *near = strchr(name, '.') ? NULL : nearest_col(name);
+            /* a misspelt short name: the nearest short name, unless the
+             * schema knows the key and says why it cannot be a column */
+            const char *near = strchr(name, '.') || strncmp(why, "unknown key", 11) != 0
+                             ? NULL : nearest_col(name);
             if (near)
                 snprintf(why, sizeof why, "did you mean '%s'?", near);
             snprintf(msg, msz, "unknown column '%.60s': %s (a column is tag, base, motion, a "
