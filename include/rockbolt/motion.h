@@ -101,7 +101,7 @@ typedef enum {
     RB_PULSE_HALF_SINE  /* a sin(pi t / t1) */
 } rb_pulse_shape;
 
-typedef struct {
+typedef struct rb_motion {
     rb_motion_kind kind;
     double amplitude_mps2;     /* peak of the closed forms; sampled: multiplier
                                   applied to the samples is 'scale' instead */
@@ -113,6 +113,13 @@ typedef struct {
     double scale;              /* sampled: factor on the samples (1 if unset) */
     int polarity;              /* +1 as given, -1 reversed */
     double duration_s;         /* how long the solver runs */
+    /* The floor's vertical total acceleration z''(t) in m/s^2, positive
+     * upward, or NULL for none (rb_motion_init): a harmonic, pulse or
+     * sampled motion with its own scale, polarity and breaks (its
+     * duration_s is not read; past its end it is 0). The building is taken
+     * as rigid vertically: the vertical reaches the floor unfiltered.
+     * Borrowed, must outlive the run; it has no vertical of its own. */
+    const struct rb_motion *vertical;
 } rb_motion;
 
 /* A motion with polarity +1, scale 1 and everything else zero. */
@@ -122,14 +129,14 @@ void rb_motion_init(rb_motion *m);
  * RB_MOTION_CRITICAL theta_dot gives the sign; elsewhere it is ignored. */
 double rb_motion_accel(const rb_motion *m, double t, double theta_dot);
 
-/* The next time strictly after t where x''(t) has a kink or jump (a sample
- * time, a pulse end, the end of a ramp), or INFINITY if none. The solver
- * never steps across one. */
+/* The next time strictly after t where x''(t), or the vertical z''(t), has
+ * a kink or jump (a sample time, a pulse end, the end of a ramp), or
+ * INFINITY if none. The solver never steps across one. */
 double rb_motion_next_break(const rb_motion *m, double t);
 
-/* Whether x'' jumps at t (t > 0): a rectangular pulse, or one that ends at
- * its peak, drops to zero at its end. Everywhere else the breaks are kinks,
- * across which x'' is continuous. */
+/* Whether x'' or z'' jumps at t (t > 0): a rectangular pulse, or one that
+ * ends at its peak, drops to zero at its end. Everywhere else the breaks
+ * are kinks, across which x'' and z'' are continuous. */
 int rb_motion_jumps_at(const rb_motion *m, double t);
 
 /* Taylor coefficients of x''(t0 + tau), valid for tau from 0 up to the
@@ -145,5 +152,24 @@ int rb_motion_floor_line(const rb_motion *m, double t0, rb_floor_line *fl);
 /* Largest |x''| the motion can reach (the peak floor acceleration 'a').
  * Non-finite samples are left out: the solver stops where it meets one. */
 double rb_motion_peak(const rb_motion *m);
+
+/* The apparent gravity g + z''(t) the body feels on a floor that
+ * accelerates vertically (z'' of m->vertical, polarity and scale applied);
+ * g itself, to the bit, without a vertical. */
+double rb_motion_gravity(const rb_motion *m, double g, double t);
+
+/* The least value the motion's acceleration reaches for t in [0, t_end]
+ * (signed; 0 where it has ended; a sine's trough -|a| whatever t_end, a
+ * series' least sample, -peak through a building, whose floor peaks
+ * between samples). */
+double rb_motion_least(const rb_motion *m, double t_end);
+
+/* Whether m's vertical can drive the solver under gravity g: a harmonic,
+ * pulse or sampled motion without a vertical of its own, whose z'' stays
+ * above -g throughout (a floor falling faster than gravity would throw the
+ * body off it: free flight, which the model does not follow). RB_OK
+ * without a vertical; else RB_ERR_INVALID with diag->key "vertical" and
+ * the reason. */
+rb_status rb_motion_vertical_check(const rb_motion *m, double g, rb_diag *diag);
 
 #endif

@@ -49,31 +49,41 @@ double rb_dyn_lever(const rb_sys *S, double th)
     return S->form == RB_FORM_SMALL ? S->l : S->l * cos(th / 2);
 }
 
-/* Generalized loads of the mirrored 2-DOF system at angle th. */
+/* Generalized loads of the mirrored 2-DOF system at angle th, under the
+ * apparent gravity ge = g + z'' (g itself without a vertical). H_U and
+ * H_th are the partial derivatives of the height function H whose g H is
+ * the potential of rb_dyn_potential: the gravity loads are -ge of them
+ * (the large and small U-equations' N* ge sin th aside, which is the
+ * printed equations' coupling), and the vertical floor's power is
+ * -z'' (H_U U' + H_th th'). */
 typedef struct {
-    double QU, Qth, J, cent, gyro, in_U, in_th, cpl_U;
+    double QU, Qth, J, cent, gyro, in_U, in_th, cpl_U, H_U, H_th;
     double c, sn; /* cos th, sin th */
 } rb_loads;
 
-static void loads(const rb_sys *S, double x, double U, double Ud, double th,
+static void loads(const rb_sys *S, double x, double ge, double U, double Ud, double th,
                   double thd, rb_loads *L)
 {
     const rb_derived *d = &S->d;
-    double g = d->g, M = S->M, b = S->b, h = S->h;
+    double g = ge, M = S->M, b = S->b, h = S->h;
+    /* d->W to the bit without a vertical */
+    double W = ge == d->g ? d->W : M * ge;
     double c, sn;
     cos_sin(th, &c, &sn);
     L->c = c;
     L->sn = sn;
+    L->H_U = 0;
     switch (S->form) {
     case RB_FORM_SMALL:
         L->in_U = d->Nstar;
         L->in_th = M * d->R;
         L->QU = d->Nstar * (x + g * th) - d->Kstar * U;
-        L->Qth = M * d->R * x - d->W * d->R * (d->alpha - th);
+        L->Qth = M * d->R * x - W * d->R * (d->alpha - th);
         L->J = d->Io;
         L->cent = d->Nstar * b * thd * thd;
         L->gyro = 0;
         L->cpl_U = d->Nstar * (g * th - b * thd * thd);
+        L->H_th = M * d->R * (d->alpha - th);
         return;
     case RB_FORM_CONSISTENT: {
         double Mb = M * b - d->Nstar * U;
@@ -85,6 +95,8 @@ static void loads(const rb_sys *S, double x, double U, double Ud, double th,
         L->cent = (d->Nstar * b - d->Mstar * U) * thd * thd;
         L->gyro = (2 * d->Mstar * U - 2 * b * d->Nstar) * Ud * thd;
         L->cpl_U = 0;
+        L->H_U = -d->Nstar * sn;
+        L->H_th = Mb * c - M * h * sn;
         return;
     }
     case RB_FORM_LARGE:
@@ -95,11 +107,20 @@ static void loads(const rb_sys *S, double x, double U, double Ud, double th,
     L->in_U = d->Nstar * c;
     L->in_th = M * (h * c + b * sn);
     L->QU = d->Nstar * (x * c + g * sn) - d->Kstar * U;
-    L->Qth = x * L->in_th - d->W * (b * c - h * sn);
+    L->Qth = x * L->in_th - W * (b * c - h * sn);
     L->J = d->Io;
     L->cent = d->Nstar * b * thd * thd;
     L->gyro = 0;
     L->cpl_U = d->Nstar * (g * sn - b * thd * thd);
+    L->H_th = M * (b * c - h * sn);
+}
+
+/* The vertical floor's power on the body, -z'' dH/dt: the input besides
+ * the horizontal's, booked with it (rb_dyn_potential keeps the static g). */
+static double vertical_power(const rb_sys *S, double ge, const rb_loads *L, double Ud,
+                             double thd)
+{
+    return -(ge - S->d.g) * (L->H_U * Ud + L->H_th * thd);
 }
 
 /* Floor acceleration; the critical excitation takes its sign from theta',
@@ -134,7 +155,7 @@ static void solve_rocking(const rb_sys *S, const rb_disc *D, double x, const dou
     const rb_derived *d = &S->d;
     rb_loads L;
     double U = m[0], Ud = m[1], th = m[2], thd = m[3];
-    loads(S, x, U, Ud, th, thd, &L);
+    loads(S, x, a->gz, U, Ud, th, thd, &L);
     double Mb = bolt_moment(S, D, th, &a->bolt_force);
     a->cos_th = L.c;
     a->sin_th = L.sn;
@@ -149,6 +170,8 @@ static void solve_rocking(const rb_sys *S, const rb_disc *D, double x, const dou
         a->thdd = (d->Mstar * Rth - d->Fstar * RU) / det;
     }
     a->p_input = x * (L.in_U * Ud + L.in_th * thd);
+    if (S->motion->vertical)
+        a->p_input += vertical_power(S, a->gz, &L, Ud, thd);
     a->p_coupling = L.cpl_U * Ud;
 }
 
@@ -160,7 +183,7 @@ static void solve_still(const rb_sys *S, const rb_disc *D, double x, const doubl
     const rb_derived *d = &S->d;
     rb_loads L;
     double U = m[0], Ud = m[1], th = m[2];
-    loads(S, x, U, Ud, th, 0, &L);
+    loads(S, x, a->gz, U, Ud, th, 0, &L);
     a->cos_th = L.c;
     a->sin_th = L.sn;
     a->udd = S->model->rigid ? 0 : (L.QU - d->Cstar * Ud) / d->Mstar;
@@ -169,6 +192,8 @@ static void solve_still(const rb_sys *S, const rb_disc *D, double x, const doubl
     if (D->stage == RB_STAGE_HELD)
         a->bolt_force = (L.Qth - d->Fstar * a->udd) / rb_dyn_lever(S, th);
     a->p_input = x * L.in_U * Ud;
+    if (S->motion->vertical)
+        a->p_input += vertical_power(S, a->gz, &L, Ud, 0);
     a->p_coupling = L.cpl_U * Ud;
 }
 
@@ -188,6 +213,7 @@ void rb_dyn_rhs(const rb_sys *S, const rb_disc *D, double t, const double *y,
     rb_aux a;
     mirror(D, y, m);
     a.x = floor_accel(S, t, y);
+    a.gz = rb_motion_gravity(S->motion, S->d.g, t);
     if (D->stage == RB_STAGE_HELD && S->bolt->rigid_stop)
         m[2] = D->theta_hold;
     if (rb_dyn_rocking(S, D))
@@ -212,7 +238,8 @@ void rb_dyn_rhs(const rb_sys *S, const rb_disc *D, double t, const double *y,
  * theta = 0 (solve_still), so that the two agree in sign to the last bit:
  * an uplift into a zero gap is never met by a bolt force of the other sign,
  * which would bounce the state between stages 1 and 4 for ever. */
-static double uplift_guard_at(const rb_sys *S, double xp, const double *y, int side)
+static double uplift_guard_at(const rb_sys *S, double xp, double ge, const double *y,
+                              int side)
 {
     const rb_derived *d = &S->d;
     rb_disc D = {0};
@@ -222,7 +249,7 @@ static double uplift_guard_at(const rb_sys *S, double xp, const double *y, int s
     D.stage = RB_STAGE_FIXED;
     mirror(&D, y, m);
     double x = (side < 0 ? -1.0 : 1.0) * xp;
-    loads(S, x, m[0], m[1], 0, 0, &L);
+    loads(S, x, ge, m[0], m[1], 0, 0, &L);
     if (S->model->rigid)
         return L.Qth;
     double udd = (L.QU - d->Cstar * m[1]) / d->Mstar;
@@ -231,21 +258,24 @@ static double uplift_guard_at(const rb_sys *S, double xp, const double *y, int s
 
 double rb_dyn_uplift_guard(const rb_sys *S, double t, const double *y, int side)
 {
-    return uplift_guard_at(S, floor_accel(S, t, y), y, side);
+    return uplift_guard_at(S, floor_accel(S, t, y), rb_motion_gravity(S->motion, S->d.g, t),
+                           y, side);
 }
 
 /* one evaluation of the floor for both edges: through a building it is
  * an exponential and a sine and cosine */
 void rb_dyn_uplift_guards(const rb_sys *S, double t, const double *y, double *g)
 {
-    rb_dyn_uplift_guards_x(S, floor_accel(S, t, y), y, g);
+    rb_dyn_uplift_guards_x(S, floor_accel(S, t, y), rb_motion_gravity(S->motion, S->d.g, t),
+                           y, g);
 }
 
-void rb_dyn_uplift_guards_x(const rb_sys *S, double x, const double *y, double *g)
+void rb_dyn_uplift_guards_x(const rb_sys *S, double x, double ge, const double *y,
+                            double *g)
 {
     if (S->form != RB_FORM_LARGE) {
-        g[0] = uplift_guard_at(S, x, y, 1);
-        g[1] = uplift_guard_at(S, x, y, -1);
+        g[0] = uplift_guard_at(S, x, ge, y, 1);
+        g[1] = uplift_guard_at(S, x, ge, y, -1);
         return;
     }
     /* At theta = 0 the large formulation's loads are x M h - W b and
@@ -254,7 +284,7 @@ void rb_dyn_uplift_guards_x(const rb_sys *S, double x, const double *y, double *
      * turned: the same bits as uplift_guard_at for each side, at half the
      * cost (the floor stage reads both at every check point). */
     const rb_derived *d = &S->d;
-    double p = x * (S->M * S->h), q = d->W * S->b;
+    double p = x * (S->M * S->h), q = (ge == d->g ? d->W : S->M * ge) * S->b;
     if (S->model->rigid) {
         g[0] = p - q;
         g[1] = -p - q;
@@ -319,13 +349,14 @@ void rb_dyn_reactions(const rb_sys *S, const rb_disc *D, const double *y,
     double Ad = d->Nstar * a->udd + S->M * S->h * a->thdd + Mb * thd * thd;
     double A2 = -S->M * S->h * thd * thd - 2 * d->Nstar * m[1] * thd + Mb * a->thdd;
     *horizontal = s * (-S->M * s * a->x + c * Ad + sn * A2);
-    *vertical = d->W - sn * Ad + c * A2;
+    *vertical = (a->gz == d->g ? d->W : S->M * a->gz) - sn * Ad + c * A2;
 }
 
 /* The same reactions as rb_dyn_reactions, summed over the frame's mass
  * points instead of through the mode's integrals N*, M h and M b: a point
  * at height y sits at p = b - U phi(y) along the base from the pivot, and
- * the floor and bolts give it m (x'' + X'') and m (g + Z''). Composite
+ * the floor and bolts give it m (x'' + X'') and m (g + z'' + Z''), z''
+ * the floor's own vertical acceleration. Composite
  * Simpson over 2h in RB_REACTION_PANELS panels; only tests pay for it. */
 #define RB_REACTION_PANELS 256
 void rb_dyn_reactions_points(const rb_sys *S, const rb_disc *D, const double *y,
@@ -352,5 +383,5 @@ void rb_dyn_reactions_points(const rb_sys *S, const rb_disc *D, const double *y,
     sum_x *= mass_per_height * dy / 3;
     sum_z *= mass_per_height * dy / 3;
     *horizontal = -(S->M * a->x + s * sum_x);
-    *vertical = S->d.W + sum_z;
+    *vertical = (a->gz == S->d.g ? S->d.W : S->M * a->gz) + sum_z;
 }

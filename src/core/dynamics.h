@@ -44,6 +44,7 @@ typedef struct {
 /* What one evaluation yields besides the derivatives. */
 typedef struct {
     double x;          /* floor acceleration, physical */
+    double gz;         /* apparent gravity g + z'' (g without a vertical) */
     double udd, thdd;  /* mirrored accelerations */
     double bolt_force; /* tension of the loaded row (0 when slack) */
     double p_input, p_coupling;
@@ -72,10 +73,14 @@ void rb_dyn_rhs(const rb_sys *S, const rb_disc *D, double t, const double *y,
 double rb_dyn_uplift_guard(const rb_sys *S, double t, const double *y, int side);
 /* Both sides at once: g[0] about the left edge, g[1] about the right. */
 void rb_dyn_uplift_guards(const rb_sys *S, double t, const double *y, double *g);
-/* The same with the floor acceleration x (physical) given. */
-void rb_dyn_uplift_guards_x(const rb_sys *S, double x, const double *y, double *g);
+/* The same with the floor acceleration x (physical) and the apparent
+ * gravity ge = g + z'' given. */
+void rb_dyn_uplift_guards_x(const rb_sys *S, double x, double ge, const double *y,
+                            double *g);
 
-/* Energies in the relative frame (J). */
+/* Energies in the relative frame (J). The potential is gravity's at the
+ * static g; a vertical floor's work is booked with the input (rb_aux's
+ * p_input), so that the balance closes with it. */
 double rb_dyn_kinetic(const rb_sys *S, const rb_disc *D, const double *y);
 double rb_dyn_potential(const rb_sys *S, const rb_disc *D, const double *y);
 double rb_dyn_strain(const rb_sys *S, const rb_disc *D, const double *y);

@@ -211,7 +211,10 @@ void rb_exact_setup(rb_solver *sv)
     const rb_motion *m = sv->sys.motion;
     const rb_derived *d = &sv->sys.d;
     rb_exact_cache *c = &sv->exact;
+    /* the exact transition is the frame's under a constant g: under a
+     * vertical, stage 1 takes Taylor steps */
     c->on = m->kind == RB_MOTION_SAMPLED && m->series && !sv->sys.model->rigid
+            && !m->vertical
             && sv->opts.integrator == RB_INTEGRATOR_AUTO && sv->opts.exact_floor
             && sv->sys.form != RB_FORM_CONSISTENT;
     if (!c->on)
@@ -338,7 +341,7 @@ int rb_exact_step(rb_solver *sv, double target, double *g, rb_status *status)
         if (!point_finite(&p[j]))
             return 0;
         double tj = j == n ? t1 : t0 + dt_guard * j;
-        rb_guard_eval_x(sv, tj, p[j].y, p[j].x, gs[j]);
+        rb_guard_eval_x(sv, tj, p[j].y, p[j].x, sv->sys.d.g, gs[j]);
         /* a root inside: the Taylor step finds it */
         for (unsigned m = mask; m;) {
             int k = rb_guard_next(&m);

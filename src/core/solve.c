@@ -88,6 +88,10 @@ static double highest_frequency(const rb_solver *sv, int taut)
         f = fmax(f, m->freq_hz);
     if (m->kind == RB_MOTION_PULSE && m->pulse_s > 0)
         f = fmax(f, 1 / m->pulse_s);
+    if (m->vertical && m->vertical->kind == RB_MOTION_HARMONIC)
+        f = fmax(f, m->vertical->freq_hz);
+    if (m->vertical && m->vertical->kind == RB_MOTION_PULSE && m->vertical->pulse_s > 0)
+        f = fmax(f, 1 / m->vertical->pulse_s);
     if (taut && S->bolt->frequency_hz)
         f = fmax(f, S->bolt->frequency_hz(S));
     return f;
@@ -163,6 +167,8 @@ static rb_status setup(rb_solver *sv, const rb_model *model, const rb_motion *mo
         return st;
     if ((st = check_opts(&sv->opts, diag)) != RB_OK)
         return st;
+    if ((st = rb_motion_vertical_check(motion, S->d.g, diag)) != RB_OK)
+        return st;
     S->model = model;
     S->motion = motion;
     S->form = sv->opts.formulation;
@@ -182,6 +188,10 @@ static rb_status setup(rb_solver *sv, const rb_model *model, const rb_motion *mo
     }
     set_tolerances(sv);
     sv->t_end = motion->duration_s;
+    sv->friction_floor = RB_FRICTION_FLOOR * S->d.W;
+    if (motion->vertical)
+        sv->friction_floor = RB_FRICTION_FLOOR * S->M
+                             * (S->d.g + rb_motion_least(motion->vertical, sv->t_end));
     if (!(isfinite(sv->t_end) && sv->t_end > 0))
         return fail(sv, diag, RB_ERR_INVALID, "the run needs a finite duration > 0");
     sv->h_max = sv->opts.max_step_s > 0 ? sv->opts.max_step_s
@@ -495,6 +505,11 @@ static int find_event(rb_solver *sv, const rb_rk_step *st, const double *g0,
     int n = st->n_sub, turns = reads_turns(sv, st), force_turns = reads_force_turns(sv, st);
     double dt = st->h / n, rate[2] = {0, 0};
     double scale = force_turns ? rb_taylor_held_force_scale(&st->ts) : 0;
+    /* the side whose force is followed: the held row's, or on the floor
+     * the edge nearer uplift (under a vertical the two uplift guards turn
+     * apart, and only one can be near its boundary while g + z'' > 0) */
+    int side = sv->disc.stage == RB_STAGE_HELD ? sv->disc.side
+               : g0[G_UP_POS] >= g0[G_UP_NEG] ? 1 : -1;
     double thdd_max = -1; /* formed where an interval first needs it */
     const double *ya = st->y0;
     for (int j = 1; j <= n; j++) {
@@ -512,7 +527,9 @@ static int find_event(rb_solver *sv, const rb_rk_step *st, const double *g0,
         /* a Taylor step knows the floor at its check points and end */
         double x = !st->is_taylor ? (double)NAN
                    : j < n ? st->vcheck[j - 1][RB_TS_X] : st->aux1.x;
-        rb_guard_eval_x(sv, tb, ys[j - 1], x, gb);
+        double ge = !st->is_taylor ? (double)NAN
+                    : j < n ? sv->sys.d.g + st->vcheck[j - 1][RB_TS_Z] : st->aux1.gz;
+        rb_guard_eval_x(sv, tb, ys[j - 1], x, ge, gb);
         /* two turns inside, where the ends show no crossing */
         if (turns && fa != 0 && fb != 0 && (fa < 0) == (fb < 0)) {
             if (thdd_max < 0)
@@ -526,14 +543,15 @@ static int find_event(rb_solver *sv, const rb_rk_step *st, const double *g0,
         }
         if (force_turns) {
             /* the rate at a check point serves both intervals it bounds */
-            rate[0] = j == 1 ? rb_taylor_held_force_rate(&sv->sys, &st->ts, 0) : rate[1];
-            rate[1] = rb_taylor_held_force_rate(&sv->sys, &st->ts, tb - st->t0);
+            rate[0] = j == 1 ? rb_taylor_held_force_rate(&sv->sys, &st->ts, side, 0) : rate[1];
+            rate[1] = rb_taylor_held_force_rate(&sv->sys, &st->ts, side, tb - st->t0);
         }
         if (force_turns && rate[0] != 0 && rate[1] != 0 && (rate[0] < 0) != (rate[1] < 0)
             && !rb_force_turn_stays(mask, tb - ta, scale * fabs(rate[0]),
                                     scale * fabs(rate[1]), ga, gb)) {
-            double tm = st->t0 + rb_taylor_held_force_turn(&sv->sys, &st->ts, ta - st->t0,
-                                                           tb - st->t0, rate, 1e-14);
+            double tm = st->t0 + rb_taylor_held_force_turn(&sv->sys, &st->ts, side,
+                                                           ta - st->t0, tb - st->t0, rate,
+                                                           1e-14);
             int ev = tm > ta && tm < tb ? guards_at(sv, st, mask, &ta, tm, ga, t_event) : -1;
             if (ev >= 0)
                 return ev;

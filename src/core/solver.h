@@ -99,6 +99,11 @@ typedef struct {
     double h_max_slack, check_slack;
     double e_impact;
     double rest_theta;          /* rocking amplitude that counts as at rest */
+    /* the floor reaction above which a friction demand is taken:
+     * RB_FRICTION_FLOOR of the weight, under a vertical of the least
+     * weight M (g + z'') the run sees (a constant level, which the
+     * crossings are located against; the lower, the more is judged) */
+    double friction_floor;
     double window_start;        /* work bound: events since window_start */
     long window_events;
     long hist_k;                /* next history row is at hist_k * dt */
@@ -127,11 +132,13 @@ typedef struct {
 /* transitions.c */
 unsigned rb_guard_mask(const rb_solver *sv);
 void rb_guard_eval(const rb_solver *sv, double t, const double *y, double *g);
-/* The same where the floor acceleration x at t is known (a Taylor step's
- * series at its check points): the uplift guards read it instead of the
- * motion's closed form, which through a building is an exponential, a
- * sine and a cosine. NAN: evaluate it. */
-void rb_guard_eval_x(const rb_solver *sv, double t, const double *y, double x, double *g);
+/* The same where the floor acceleration x at t and the apparent gravity
+ * ge = g + z'' are known (a Taylor step's series at its check points):
+ * the uplift guards read them instead of the motion's closed form, which
+ * through a building is an exponential, a sine and a cosine. x NAN:
+ * evaluate both. */
+void rb_guard_eval_x(const rb_solver *sv, double t, const double *y, double x, double ge,
+                     double *g);
 /* One guard; what locating its root needs. */
 double rb_guard_one(const rb_solver *sv, int guard, double t, const double *y);
 int rb_guard_crossed(int guard, double before, double after);

@@ -36,6 +36,7 @@ int rb_taylor_applies(const rb_sys *S, const rb_disc *D)
 typedef struct {
     double Ns, Ks, Cs, Ms, Fs, Io, inv_det, inv_Io, inv_Ms, W, R, alpha, g, M, b, h;
     int rigid, small;
+    int vert; /* a vertical floor acceleration: gravity is the series G */
 } consts;
 
 static void load_consts(const rb_sys *S, consts *k)
@@ -49,6 +50,7 @@ static void load_consts(const rb_sys *S, consts *k)
     k->inv_Ms = 1 / d->Mstar;
     k->rigid = S->model->rigid;
     k->small = S->form == RB_FORM_SMALL;
+    k->vert = S->motion->vertical != NULL;
 }
 
 /* The mirrored series: U, V = U', T = theta, the floor acceleration X
@@ -63,6 +65,10 @@ typedef struct {
      * (stages 4 and 5 of the large formulation) */
     double C2[NT], S2[NT];
     int xd;
+    /* under a vertical: z'' (Z) and the apparent gravity g + z'' (G), of
+     * degree gd, zeros past it */
+    double Z[NT], G[NT];
+    int gd;
 } series;
 
 #define C_(s, k) ((s)->CSO[k][LC])
@@ -78,6 +84,15 @@ static inline double times_x(const double *a, int stride, const series *s, int k
     double sum = 0;
     for (int j = k > s->xd ? k - s->xd : 0; j <= k; j++)
         sum += a[j * stride] * s->X[k - j];
+    return sum;
+}
+
+/* sum_j G[j] a[k - j], as times_x: the apparent gravity's product */
+static inline double times_g(const double *a, int stride, const series *s, int k)
+{
+    double sum = 0;
+    for (int j = k > s->gd ? k - s->gd : 0; j <= k; j++)
+        sum += a[j * stride] * s->G[k - j];
     return sum;
 }
 
@@ -125,7 +140,23 @@ static void rocking_order(const consts *K, series *s, int k, double m_bolt, doub
     S_(s, k + 1) = (a0[LC] + a1[LC]) * inv[k + 1];
     C_(s, k + 1) = -(a0[LS] + a1[LS]) * inv[k + 1];
     double RU, Rth;
-    if (K->small) {
+    if (K->vert) {
+        /* W = M G: every gravity term a product with G's series */
+        double XC, XS, GS, GC;
+        if (K->small) {
+            XC = s->X[k];
+            XS = 0;
+            GS = times_g(s->T, 1, s, k);
+            GC = GS - K->alpha * s->G[k]; /* G (T - alpha) */
+        } else {
+            times_x_cs(s, k, &XC, &XS);
+            GS = times_g(&s->CSO[0][LS], LANES + 1, s, k);
+            GC = times_g(&s->CSO[0][LC], LANES + 1, s, k);
+        }
+        RU = K->Ns * (XC + GS) - K->Ks * s->U[k] - K->Cs * s->V[k] - K->Ns * K->b * s->Q[k];
+        Rth = K->small ? K->M * K->R * (XC + GC)
+                       : K->M * (K->h * XC + K->b * XS) - K->M * (K->b * GC - K->h * GS);
+    } else if (K->small) {
         RU = K->Ns * (s->X[k] + K->g * s->T[k]) - K->Ks * s->U[k] - K->Cs * s->V[k]
              - K->Ns * K->b * s->Q[k];
         Rth = K->M * K->R * s->X[k] + K->W * K->R * (s->T[k] - (k == 0 ? K->alpha : 0));
@@ -200,6 +231,11 @@ static double still_order(const consts *K, const series *s, int k)
 {
     if (K->rigid)
         return 0;
+    if (K->vert) {
+        double QU = K->Ns * (K->small ? s->X[k] + s->G[k] * s->T[0]
+                                      : s->X[k] * C_(s, 0) + s->G[k] * S_(s, 0));
+        return (QU - K->Ks * s->U[k] - K->Cs * s->V[k]) * K->inv_Ms;
+    }
     double QU = K->small ? K->Ns * (s->X[k] + (k == 0 ? K->g * s->T[0] : 0))
                          : K->Ns * (s->X[k] * C_(s, 0) + (k == 0 ? K->g * S_(s, 0) : 0));
     return (QU - K->Ks * s->U[k] - K->Cs * s->V[k]) * K->inv_Ms;
@@ -219,10 +255,29 @@ static void work_series(const consts *K, const series *s, int rocking, int n,
     for (int k = 0; k < n; k++) {
         P[k][WV] = s->V[k];
         P[k][WC] = C_(s, k);
-        P[k][WF] = K->Ns * (K->g * (K->small ? s->T[k] : S_(s, k))
-                            - (rocking ? K->b * s->Q[k] : 0));
+        if (K->vert) /* the still stages' angle is constant, G is not */
+            P[k][WF] = K->Ns * ((K->small ? times_g(s->T, 1, s, k)
+                                          : times_g(&s->CSO[0][LS], LANES + 1, s, k))
+                                - (rocking ? K->b * s->Q[k] : 0));
+        else
+            P[k][WF] = K->Ns * (K->g * (K->small ? s->T[k] : S_(s, k))
+                                - (rocking ? K->b * s->Q[k] : 0));
         P[k][WL] = 0;
     }
+    /* the vertical floor's power -z'' dH/dt (dynamics.c's vertical_power):
+     * dH/dt is M (b cos + h sin)' rocking (large), M R (alpha - theta)
+     * theta' (small), 0 with the plate still */
+    double DH[NT] = {0};
+    if (K->vert && rocking)
+        for (int k = 0; k < n; k++) {
+            if (K->small) {
+                double to = 0;
+                for (int j = 0; j <= k; j++)
+                    to += s->T[j] * O_(s, k - j);
+                DH[k] = K->M * K->R * (K->alpha * O_(s, k) - to);
+            } else
+                DH[k] = K->M * (k + 1) * (K->b * S_(s, k + 1) + K->h * C_(s, k + 1));
+        }
     for (int k = 0; k < n; k++) {
         double acc[WL + 1] = {0};
         if (rocking) {
@@ -236,7 +291,13 @@ static void work_series(const consts *K, const series *s, int rocking, int n,
                 vv += s->V[j] * s->V[k - j];
             acc[WV] = vv;
             acc[WC] = s->V[k] * P[0][WC];
-            acc[WF] = s->V[k] * P[0][WF];
+            if (K->vert) {
+                double f = 0;
+                for (int j = 0; j <= k; j++)
+                    f += s->V[j] * P[k - j][WF];
+                acc[WF] = f;
+            } else
+                acc[WF] = s->V[k] * P[0][WF];
         }
         /* input power per unit floor acceleration: N* cos U' + M (h cos +
          * b sin) theta'; the second is the derivative of M (h sin - b cos) */
@@ -247,7 +308,13 @@ static void work_series(const consts *K, const series *s, int rocking, int n,
                    + (rocking ? K->M * (k + 1) * (K->h * S_(s, k + 1) - K->b * C_(s, k + 1))
                               : 0);
         w[k + 1][0] = K->Cs * acc[WV] * inv[k + 1];
-        w[k + 1][1] = times_x(G, 1, s, k) * inv[k + 1];
+        if (K->vert) {
+            double pv = 0;
+            for (int j = 0; j <= k; j++)
+                pv += s->Z[j] * DH[k - j];
+            w[k + 1][1] = (times_x(G, 1, s, k) - pv) * inv[k + 1];
+        } else
+            w[k + 1][1] = times_x(G, 1, s, k) * inv[k + 1];
         w[k + 1][2] = acc[WF] * inv[k + 1];
     }
 }
@@ -283,6 +350,18 @@ static int floor_series(const rb_motion *m, double t0, double sgn, int n, series
     return s->xd < n ? NT : n;
 }
 
+/* The vertical's series z'' and g + z'' to the largest order at once: a
+ * sine or a line, no building. */
+static void gravity_series(const rb_motion *v, double g, double t0, series *s)
+{
+    s->gd = rb_motion_taylor(v, t0, RB_TAYLOR_MAX + 1, s->Z);
+    for (int k = RB_TAYLOR_MAX + 2; k < NT; k++)
+        s->Z[k] = 0;
+    for (int k = 0; k < NT; k++)
+        s->G[k] = s->Z[k];
+    s->G[0] += g;
+}
+
 double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double *y0,
                       double h_want, const double *atol, double atol_x, double rtol,
                       rb_taylor *ts)
@@ -294,6 +373,8 @@ double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double
     int rocking = rb_dyn_rocking(S, D);
     load_consts(S, &K);
     int xn = floor_series(S->motion, t0, sgn, RB_X_FIRST, &s);
+    if (K.vert)
+        gravity_series(S->motion->vertical, K.g, t0, &s);
     s.U[0] = sgn * y0[RB_Y_U];
     s.V[0] = sgn * y0[RB_Y_UD];
     s.T[0] = rocking ? sgn * y0[RB_Y_TH] : D->stage == RB_STAGE_HELD ? D->theta_hold : 0;
@@ -332,6 +413,8 @@ double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double
         n = k + 1;
         hk *= h;
         double e = scaled(&s, n, hk, tol, tol_x);
+        if (K.vert) /* the vertical's own series, on the floor's scale */
+            e = fmax(e, fabs(s.Z[n]) * tol_x * hk + 0.0 * s.Z[n]);
         if (!isfinite(e))
             return 0;
         /* two terms in a row, since a series can have a vanishing term */
@@ -361,6 +444,7 @@ double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double
         p[RB_TS_WDAMP] = w[k][0];
         p[RB_TS_WIN] = w[k][1];
         p[RB_TS_WCPL] = w[k][2];
+        p[RB_TS_Z] = K.vert ? s.Z[k] : 0;
         if (rocking) {
             p[RB_TS_TH] = sgn * s.T[k];
             p[RB_TS_THD] = sgn * O_(&s, k);
@@ -377,6 +461,7 @@ double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double
             p[RB_TS_TH] = p[RB_TS_THD] = p[RB_TS_COS] = p[RB_TS_SIN] = p[RB_TS_THDD] = 0;
     }
     ts->rocking = rocking;
+    ts->vertical = K.vert;
     ts->order = n;
     ts->lever_hold = D->stage == RB_STAGE_HELD ? rb_dyn_lever(S, D->theta_hold) : 0;
     return h;

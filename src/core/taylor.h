@@ -29,6 +29,7 @@ enum {
     RB_TS_SIN,
     RB_TS_UDD,         /* physical U'' and theta'' */
     RB_TS_THDD,
+    RB_TS_Z,           /* the floor's vertical acceleration z'' (0 without) */
     RB_TS_CHECK,
     RB_TS_WDAMP = RB_TS_CHECK, RB_TS_WIN, RB_TS_WCPL,
     RB_TS_N
@@ -39,6 +40,7 @@ typedef struct {
     double p[RB_TAYLOR_MAX + 2][RB_TS_N];     /* p[k][component] */
     double lever_hold;                        /* stage 4: lever arm at theta_hold */
     int rocking;                              /* theta moves (stage 2) */
+    int vertical;                             /* the motion has a vertical */
 } rb_taylor;
 
 /* Whether the current stage is integrated by Taylor series. */
@@ -89,18 +91,22 @@ double rb_taylor_angle_root(const rb_taylor *ts, double a, double b, double leve
 
 /* Where a rigid row's force turns in (a, b) (tau) while the plate is held
  * at theta_hold (stage 4), or the uplift moment on the floor (stage 1):
- * the force is affine in the floor and U'', and a peak between two check
- * points can pass Fy (or a trough reach slack) with both ends short of
- * it. rb_taylor_held_force_rate gives its rate at tau, up to a constant
- * factor; times rb_taylor_held_force_scale, the magnitude of the rate of
- * the stage's guards (the uplift guards', or the row's force).
+ * the force is affine in the floor, U'' and the vertical z'', and a peak
+ * between two check points can pass Fy (or a trough reach slack) with
+ * both ends short of it. rb_taylor_held_force_rate gives its rate at tau,
+ * up to a constant factor; times rb_taylor_held_force_scale, the
+ * magnitude of the rate of the stage's guards (the uplift guards', or the
+ * row's force). side is the edge whose guard is read (+1 about the left,
+ * -1 the right): under a vertical the two uplift guards turn apart, the
+ * mirror changing the sign of the horizontal's share but not of
+ * gravity's.
  * rb_taylor_held_force_turn finds the root where that rate changes sign
  * from rate[0] at a to rate[1] at b, by rb_root_illinois to
  * tol (1 + |tau|). */
-double rb_taylor_held_force_rate(const rb_sys *S, const rb_taylor *ts, double tau);
+double rb_taylor_held_force_rate(const rb_sys *S, const rb_taylor *ts, int side, double tau);
 double rb_taylor_held_force_scale(const rb_taylor *ts);
-double rb_taylor_held_force_turn(const rb_sys *S, const rb_taylor *ts, double a, double b,
-                                 const double *rate, double tol);
+double rb_taylor_held_force_turn(const rb_sys *S, const rb_taylor *ts, int side, double a,
+                                 double b, const double *rate, double tol);
 
 /* The end of the step: state, derivative and aux, as rb_dyn_rhs gives them. */
 void rb_taylor_end(const rb_sys *S, const rb_disc *D, const rb_taylor *ts, double h,

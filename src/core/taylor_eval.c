@@ -101,6 +101,13 @@ void rb_taylor_check(const rb_taylor *ts, double tau, double *v)
         v[RB_TS_SIN] = sn;
         v[RB_TS_THDD] = thdd;
     }
+    v[RB_TS_Z] = 0;
+    if (ts->vertical) {
+        double z = p[n][RB_TS_Z];
+        for (int k = n - 1; k >= 0; k--)
+            z = z * tau + p[k][RB_TS_Z];
+        v[RB_TS_Z] = z;
+    }
     v[RB_TS_U] = u;
     v[RB_TS_UD] = ud;
     v[RB_TS_X] = x;
@@ -126,7 +133,9 @@ void rb_aux_of_values(const rb_sys *S, const rb_disc *D, int rocking, double lev
 {
     const rb_derived *d = &S->d;
     double sgn = D->side < 0 ? -1.0 : 1.0;
+    int vert = S->motion->vertical != NULL;
     a->x = v[RB_TS_X];
+    a->gz = vert ? d->g + v[RB_TS_Z] : d->g;
     a->udd = sgn * v[RB_TS_UDD];
     a->thdd = sgn * v[RB_TS_THDD];
     a->cos_th = v[RB_TS_COS];
@@ -139,15 +148,20 @@ void rb_aux_of_values(const rb_sys *S, const rb_disc *D, int rocking, double lev
     double in_U = small ? d->Nstar : d->Nstar * c;
     double in_th = small ? S->M * d->R : S->M * (S->h * c + S->b * sn);
     a->p_input = xm * (in_U * ud + in_th * thd);
-    a->p_coupling = d->Nstar * (d->g * (small ? th : sn) - S->b * thd * thd) * ud;
+    /* the gravity terms with W = M gz (dynamics.c's loads) */
+    double kh = small ? d->R * (d->alpha - th) : S->b * c - S->h * sn;
+    double W = vert ? S->M * a->gz : d->W;
+    if (vert) /* the vertical floor's power, -z'' M kh theta' */
+        a->p_input -= v[RB_TS_Z] * S->M * kh * thd;
+    a->p_coupling = d->Nstar * (a->gz * (small ? th : sn) - S->b * thd * thd) * ud;
     a->bolt_force = 0;
     if (D->stage == RB_STAGE_YIELD)
         a->bolt_force = d->fy_row_n;
     else if (D->stage == RB_STAGE_HELD && rocking)
         a->bolt_force = S->bolt->tension(S, D, th);
     else if (D->stage == RB_STAGE_HELD) {
-        double Qth = small ? xm * in_th - d->W * d->R * (d->alpha - th)
-                           : xm * in_th - d->W * (S->b * c - S->h * sn);
+        double Qth = small ? xm * in_th - W * d->R * (d->alpha - th)
+                           : xm * in_th - W * (S->b * c - S->h * sn);
         a->bolt_force = (Qth - d->Fstar * a->udd) / lever_hold;
     }
 }
@@ -253,6 +267,7 @@ double rb_taylor_angle_root(const rb_taylor *ts, double a, double b, double leve
 typedef struct {
     const rb_taylor *ts;
     double in_th, fstar;
+    double kz; /* side M kh of the vertical's share, 0 without one */
 } held_force;
 
 static double held_force_rate(const void *ctx, double tau)
@@ -262,21 +277,36 @@ static double held_force_rate(const void *ctx, double tau)
     double r = 0;
     for (int k = h->ts->order; k >= 1; k--)
         r = r * tau + k * (h->in_th * p[k][RB_TS_X] - h->fstar * p[k][RB_TS_UDD]);
+    if (h->kz != 0) {
+        double z = 0;
+        for (int k = h->ts->order; k >= 1; k--)
+            z = z * tau + k * p[k][RB_TS_Z];
+        r -= h->kz * z;
+    }
     return r;
 }
 
-static held_force held_force_of(const rb_sys *S, const rb_taylor *ts)
+/* The force on side s is s (in_th x - F* U'') - M kh (g + z'') in the
+ * physical x and U'' (kh as in rb_aux_of_values, at the held angle):
+ * times s, its rate is in_th x' - F* U''' - s M kh z'''. */
+static held_force held_force_of(const rb_sys *S, const rb_taylor *ts, int side)
 {
     double c = ts->p[0][RB_TS_COS], sn = ts->p[0][RB_TS_SIN];
     held_force h = {ts, S->form == RB_FORM_SMALL ? S->M * S->d.R
                                                 : S->M * (S->h * c + S->b * sn),
-                    S->d.Fstar};
+                    S->d.Fstar, 0};
+    if (ts->vertical) {
+        double th = side * ts->p[0][RB_TS_TH];
+        double kh = S->form == RB_FORM_SMALL ? S->d.R * (S->d.alpha - th)
+                                             : S->b * c - S->h * sn;
+        h.kz = side * S->M * kh;
+    }
     return h;
 }
 
-double rb_taylor_held_force_rate(const rb_sys *S, const rb_taylor *ts, double tau)
+double rb_taylor_held_force_rate(const rb_sys *S, const rb_taylor *ts, int side, double tau)
 {
-    held_force h = held_force_of(S, ts);
+    held_force h = held_force_of(S, ts, side);
     return held_force_rate(&h, tau);
 }
 
@@ -285,9 +315,9 @@ double rb_taylor_held_force_scale(const rb_taylor *ts)
     return ts->lever_hold > 0 ? 1 / ts->lever_hold : 1;
 }
 
-double rb_taylor_held_force_turn(const rb_sys *S, const rb_taylor *ts, double a, double b,
-                                 const double *rate, double tol)
+double rb_taylor_held_force_turn(const rb_sys *S, const rb_taylor *ts, int side, double a,
+                                 double b, const double *rate, double tol)
 {
-    held_force h = held_force_of(S, ts);
+    held_force h = held_force_of(S, ts, side);
     return rb_root_illinois(held_force_rate, &h, a, b, rate[0], rate[1], tol);
 }

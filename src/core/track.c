@@ -51,7 +51,7 @@ static double anchor_ratio(const rb_solver *sv, const sample *s, int *which)
  * peak of its negative. */
 static double quantity(const rb_solver *sv, int q, const sample *s)
 {
-    double floor = RB_FRICTION_FLOOR * sv->sys.d.W;
+    double floor = sv->friction_floor;
     int which;
     switch (q) {
     case Q_SHEAR:
@@ -378,7 +378,7 @@ static void note_dip(rb_solver *sv, double at, double least)
 static void note_friction_dip(rb_solver *sv, double at, double least)
 {
     rb_result *r = sv->res;
-    double floor = RB_FRICTION_FLOOR * sv->sys.d.W, t0, v0, t1, v1;
+    double floor = sv->friction_floor, t0, v0, t1, v1;
     if (!dip_bracket(&sv->win_vertical, at, floor, &t0, &v0, &t1, &v1))
         return;
     double tc[2] = {floor_crossing(sv, t0, v0, at, least, floor),
@@ -406,7 +406,7 @@ void rb_track_reset(rb_solver *sv)
 static void note_friction(rb_solver *sv, double t, const sample *s)
 {
     rb_result *r = sv->res;
-    double floor = RB_FRICTION_FLOOR * sv->sys.d.W, H = s->H, v = s->floor_v;
+    double floor = sv->friction_floor, H = s->H, v = s->floor_v;
     if (sv->fric_have && t > sv->fric_t && (sv->fric_v > floor) != (v > floor)) {
         double f = (floor - sv->fric_v) / (v - sv->fric_v);
         double h = fabs(sv->fric_h + f * (H - sv->fric_h));
@@ -494,7 +494,7 @@ void rb_track_aux(rb_solver *sv, double t, const double *y, const rb_aux *a)
      * points all lie above the friction floor, or above zero, a dip is
      * also located where it could pass that level, for the friction
      * demand and the time off the floor, which the points never show */
-    double floor = RB_FRICTION_FLOOR * S->d.W, least_v = r->min_vertical_reaction_n;
+    double floor = sv->friction_floor, least_v = r->min_vertical_reaction_n;
     double gate = -least_v;
     if (least_v < floor && s.floor_v > floor && window_above(&sv->win_vertical, floor))
         gate = -floor;

@@ -178,10 +178,11 @@ int rb_guard_angle(const rb_solver *sv, int guard, double *level)
 
 void rb_guard_eval(const rb_solver *sv, double t, const double *y, double *g)
 {
-    rb_guard_eval_x(sv, t, y, NAN, g);
+    rb_guard_eval_x(sv, t, y, NAN, NAN, g);
 }
 
-void rb_guard_eval_x(const rb_solver *sv, double t, const double *y, double x, double *g)
+void rb_guard_eval_x(const rb_solver *sv, double t, const double *y, double x, double ge,
+                     double *g)
 {
     unsigned mask = rb_guard_mask(sv);
     for (int k = 0; k < G_COUNT; k++)
@@ -198,7 +199,7 @@ void rb_guard_eval_x(const rb_solver *sv, double t, const double *y, double x, d
         if (isnan(x))
             rb_dyn_uplift_guards(&sv->sys, t, y, g + G_UP_POS);
         else
-            rb_dyn_uplift_guards_x(&sv->sys, x, y, g + G_UP_POS);
+            rb_dyn_uplift_guards_x(&sv->sys, x, ge, y, g + G_UP_POS);
         mask &= ~(1u << G_UP_POS | 1u << G_UP_NEG);
     }
     for (unsigned m = mask; m;) {
@@ -262,7 +263,10 @@ static void floor_impact(rb_solver *sv)
     sv->res->floor_impacts++;
     impact_loss(sv, ke);
     double thd = sv->y[RB_Y_THD];
-    double rise = 0.5 * S->d.Io * thd * thd / (S->d.W * S->b);
+    /* the weight the floor gives now: g + z'' under a vertical */
+    double W = S->motion->vertical ? S->M * rb_motion_gravity(S->motion, S->d.g, sv->t)
+                                   : S->d.W;
+    double rise = 0.5 * S->d.Io * thd * thd / (W * S->b);
     if (rise < sv->rest_theta)
         come_to_rest(sv);
     else

@@ -68,7 +68,7 @@ int rb_motion_floor_line(const rb_motion *m, double t0, rb_floor_line *fl)
     return 1;
 }
 
-double rb_motion_next_break(const rb_motion *m, double t)
+static double own_break(const rb_motion *m, double t)
 {
     switch (m->kind) {
     case RB_MOTION_HARMONIC:
@@ -93,10 +93,92 @@ double rb_motion_next_break(const rb_motion *m, double t)
     return HUGE_VAL;
 }
 
-int rb_motion_jumps_at(const rb_motion *m, double t)
+double rb_motion_next_break(const rb_motion *m, double t)
+{
+    double b = own_break(m, t);
+    return m->vertical ? fmin(b, own_break(m->vertical, t)) : b;
+}
+
+static int own_jump(const rb_motion *m, double t)
 {
     return m->kind == RB_MOTION_PULSE && t == m->pulse_s && m->amplitude_mps2 != 0
            && (m->pulse == RB_PULSE_RECT || m->pulse == RB_PULSE_TRI_INC);
+}
+
+int rb_motion_jumps_at(const rb_motion *m, double t)
+{
+    return own_jump(m, t) || (m->vertical && own_jump(m->vertical, t));
+}
+
+double rb_motion_gravity(const rb_motion *m, double g, double t)
+{
+    return m->vertical ? g + rb_motion_accel(m->vertical, t, 0) : g;
+}
+
+/* The least of a pulse of signed amplitude a over [0, te]: a times its
+ * shape, whose range [lo, hi] there is known in closed form. */
+static double pulse_least(const rb_motion *m, double a, double te)
+{
+    double t1 = m->pulse_s, e = fmin(te, t1), lo = 0, hi = 1;
+    switch (m->pulse) {
+    case RB_PULSE_RECT: lo = 1; break;
+    case RB_PULSE_TRI_DEC: lo = 1 - e / t1; break;
+    case RB_PULSE_TRI_INC: hi = e / t1; break;
+    case RB_PULSE_HALF_SINE: hi = e >= 0.5 * t1 ? 1 : sin(M_PI * e / t1); break;
+    }
+    double least = fmin(a * lo, a * hi);
+    /* it is 0 once it has ended */
+    return te >= t1 ? fmin(least, 0) : least;
+}
+
+double rb_motion_least(const rb_motion *m, double t_end)
+{
+    double sign = m->polarity < 0 ? -1.0 : 1.0, least = HUGE_VAL;
+    switch (m->kind) {
+    case RB_MOTION_HARMONIC:
+    case RB_MOTION_CRITICAL:
+        return -fabs(m->amplitude_mps2);
+    case RB_MOTION_PULSE:
+        return m->pulse_s > 0 ? pulse_least(m, sign * m->amplitude_mps2, t_end) : 0;
+    case RB_MOTION_SAMPLED: {
+        const rb_series *s = m->series;
+        if (!s || s->n == 0)
+            return 0;
+        if (s->bld.ground_mps2)
+            return -rb_motion_peak(m);
+        /* before and after its samples the motion is 0 */
+        double f = sign * m->scale, t_last = s->t0_s + (double)(s->n - 1) * s->dt_s;
+        if (s->t0_s > 0 || t_end > t_last)
+            least = 0;
+        for (size_t i = 0; i < s->n && s->t0_s + (double)i * s->dt_s <= t_end; i++)
+            if (f * s->accel_mps2[i] < least)
+                least = f * s->accel_mps2[i];
+        return least < HUGE_VAL ? least : 0;
+    }
+    }
+    return 0;
+}
+
+rb_status rb_motion_vertical_check(const rb_motion *m, double g, rb_diag *diag)
+{
+    const rb_motion *v = m->vertical;
+    if (!v)
+        return RB_OK;
+    if (v->kind == RB_MOTION_CRITICAL || v->vertical)
+        return rb_diag_set(diag, RB_ERR_INVALID, NULL, 0, 0, "vertical",
+                           "must be a harmonic, pulse or sampled motion without a "
+                           "vertical of its own");
+    if (v->kind == RB_MOTION_SAMPLED && !v->series)
+        return rb_diag_set(diag, RB_ERR_INVALID, NULL, 0, 0, "vertical",
+                           "a sampled vertical needs its series");
+    double least = rb_motion_least(v, m->duration_s);
+    if (!(least > -g))
+        return rb_diag_set(diag, RB_ERR_INVALID, NULL, 0, 0, "vertical",
+                           "the floor's downward acceleration reaches %.4g m/s^2, at or "
+                           "beyond gravity %.4g m/s^2: the body would leave the floor in "
+                           "free flight, which the model does not follow",
+                           -least, g);
+    return RB_OK;
 }
 
 double rb_motion_peak(const rb_motion *m)
