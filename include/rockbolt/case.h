@@ -35,7 +35,7 @@ typedef struct {
     char *file;           /* owned: a table's path as resolved, else NULL */
 } rb_case_target;
 
-typedef struct {
+typedef struct rb_case_motion {
     rb_case_motion_type type;
     char *name;           /* owned; from the case or the record file name */
     char *source;         /* owned; record path as resolved, or a description */
@@ -49,6 +49,9 @@ typedef struct {
     unsigned synth_index;
     unsigned long long synth_seed;
     rb_synth_info synth;
+    /* `vertical:`: the floor's vertical acceleration, owned, NULL for
+     * none; motion.vertical points at its motion */
+    struct rb_case_motion *vertical;
 } rb_case_motion;
 
 /* The default largest gap the recommendation searches: 1/4 in, above

@@ -128,8 +128,13 @@ void rb_case_keypath(char *dst, const char *path, const char *key)
 
 void rb_cmotion_free(rb_cmotion *m)
 {
-    if (m)
-        free(m->name);
+    if (!m)
+        return;
+    free(m->name);
+    if (m->vertical) {
+        rb_cmotion_free(m->vertical);
+        free(m->vertical);
+    }
 }
 
 void rb_case_free(rb_case *c)
@@ -145,6 +150,13 @@ void rb_case_free(rb_case *c)
         free(c->motions[i].name);
         free(c->motions[i].source);
         rb_series_free(&c->motions[i].series);
+        rb_case_motion *v = c->motions[i].vertical;
+        if (v) {
+            free(v->name);
+            free(v->source);
+            rb_series_free(&v->series);
+            free(v);
+        }
     }
     free(c->motions);
     for (size_t i = 0; c->targets && i < c->n_targets; i++) {

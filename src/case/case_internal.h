@@ -113,7 +113,7 @@ typedef struct {
 #define RB_CASE_MAX_FIELDS 24
 
 /* A motion as read from the case, before A* and records are resolved. */
-typedef struct {
+typedef struct rb_cmotion {
     char key[RB_CASE_KEY_MAX];  /* "motion" or "motions[2]" */
     const rb_ynode *map;        /* the motion's mapping */
     rb_motion motion;           /* closed-form fields already in SI */
@@ -143,6 +143,10 @@ typedef struct {
     double total_s, strong_s, synth_dt_s;
     const rb_ynode *synth_dt_node;  /* NULL: the default */
     const rb_ynode *synth_total_node, *synth_strong_node; /* alike */
+    /* `vertical:` (case_motion.c): the floor's vertical acceleration as
+     * read, owned, NULL for none; is_vertical marks the vertical itself */
+    struct rb_cmotion *vertical;
+    int is_vertical;
     int ok;                     /* 0 when the motion had errors */
 } rb_cmotion;
 

@@ -14,17 +14,29 @@
 #include "rockbolt/datadir.h"
 
 static const char *const harmonic_keys[] = {
-    "type", "name", "polarity", "amplitude", "frequency", "duration", "ramp", NULL};
+    "type", "name", "polarity", "amplitude", "frequency", "duration", "ramp",
+    "vertical", NULL};
 static const char *const pulse_keys[] = {
-    "type", "name", "polarity", "shape", "amplitude", "duration", "run_time", NULL};
+    "type", "name", "polarity", "shape", "amplitude", "duration", "run_time",
+    "vertical", NULL};
 static const char *const record_keys[] = {
     "type", "name", "polarity", "file", "format", "units", "dt", "building",
-    "peak", "window", "run_time", NULL};
+    "peak", "window", "run_time", "vertical", NULL};
 static const char *const building_keys[] = {"frequency", "damping", NULL};
 const char *const *const rb_case_harmonic_keys = harmonic_keys;
 const char *const *const rb_case_pulse_keys = pulse_keys;
 const char *const *const rb_case_record_keys = record_keys;
 const char *const *const rb_case_building_keys = building_keys;
+
+/* A vertical runs as long as the motion it belongs to, and reaches the
+ * floor unfiltered (the building is rigid vertically): no duration,
+ * run_time or building of its own. */
+static const char *const vertical_harmonic_keys[] = {
+    "type", "polarity", "amplitude", "frequency", "ramp", NULL};
+static const char *const vertical_pulse_keys[] = {
+    "type", "polarity", "shape", "amplitude", "duration", NULL};
+static const char *const vertical_record_keys[] = {
+    "type", "polarity", "file", "format", "units", "dt", "peak", "window", NULL};
 
 /* A time > 0 within the case's time limits (rb_cv_time_range); 1 if it is,
  * also when it is absent and not required. */
@@ -70,9 +82,10 @@ static int read_harmonic(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
     ok &= cm->amplitude_node != NULL;
     ok &= rb_cv_number(c, map, p, "frequency", 1, RB_DIM_FREQUENCY, 0, 0,
                        RB_CASE_MAX_MOTION_FREQ_HZ, 1, &m->freq_hz) != NULL;
-    ok &= cmotion_time(c, map, p, "duration", 1, 0, &m->duration_s);
+    if (!cm->is_vertical)
+        ok &= cmotion_time(c, map, p, "duration", 1, 0, &m->duration_s);
     ok &= cmotion_time(c, map, p, "ramp", 0, 1, &m->ramp_s);
-    rb_cv_unknown_keys(c, map, p, harmonic_keys);
+    rb_cv_unknown_keys(c, map, p, cm->is_vertical ? vertical_harmonic_keys : harmonic_keys);
     return ok;
 }
 
@@ -93,8 +106,9 @@ static int read_pulse(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
     cm->amplitude_node = cmotion_accel(c, map, p, "amplitude", 1, &cm->amplitude);
     ok &= cm->amplitude_node != NULL;
     ok &= cmotion_time(c, map, p, "duration", 1, 0, &m->pulse_s);
-    ok &= cmotion_time(c, map, p, "run_time", 1, 0, &m->duration_s);
-    rb_cv_unknown_keys(c, map, p, pulse_keys);
+    if (!cm->is_vertical)
+        ok &= cmotion_time(c, map, p, "run_time", 1, 0, &m->duration_s);
+    rb_cv_unknown_keys(c, map, p, cm->is_vertical ? vertical_pulse_keys : pulse_keys);
     return ok;
 }
 
@@ -224,7 +238,7 @@ static int read_record(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
         }
         ok &= dv != NULL;
     }
-    if ((v = rb_cv_get(c, map, p, "building", 0, "")))
+    if (!cm->is_vertical && (v = rb_cv_get(c, map, p, "building", 0, "")))
         ok &= read_building(c, v, cm);
     if (rb_ymap_find(map, "peak")) {
         cm->peak_node = cmotion_accel(c, map, p, "peak", 0, &cm->peak);
@@ -232,11 +246,11 @@ static int read_record(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
     }
     if ((v = rb_cv_get(c, map, p, "window", 0, "")))
         ok &= read_window(c, v, cm);
-    if (rb_ymap_find(map, "run_time")) {
+    if (!cm->is_vertical && rb_ymap_find(map, "run_time")) {
         cm->has_duration = 1;
         ok &= cmotion_time(c, map, p, "run_time", 0, 0, &m->duration_s);
     }
-    rb_cv_unknown_keys(c, map, p, record_keys);
+    rb_cv_unknown_keys(c, map, p, cm->is_vertical ? vertical_record_keys : record_keys);
     return ok;
 }
 
@@ -255,6 +269,51 @@ static void read_polarity(rb_cctx *c, const rb_ynode *v, const char *key,
         rb_cctx_error(c, v, key, "expected +1 or -1, found %s",
                       rb_ynode_kind_str(v));
     }
+}
+
+/* `vertical:` of a harmonic, pulse or record motion: the floor's vertical
+ * acceleration, positive upward, itself a harmonic, pulse or record
+ * (docs/case-format.md). Into a new cm->vertical; 0 after an error. */
+static int read_vertical(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
+{
+    char k[RB_CASE_KEY_MAX];
+    int t;
+    rb_cmotion *vm = calloc(1, sizeof *vm);
+    if (!vm) {
+        c->nomem = 1;
+        return 0;
+    }
+    cm->vertical = vm;
+    rb_motion_init(&vm->motion);
+    rb_case_keypath(vm->key, cm->key, "vertical");
+    vm->map = map;
+    vm->is_vertical = 1;
+    if (!rb_cv_map(c, map, vm->key))
+        return 0;
+    rb_ynode *v = rb_cv_get(c, map, vm->key, "polarity", 0, "");
+    rb_case_keypath(k, vm->key, "polarity");
+    if (v)
+        read_polarity(c, v, k, &vm->motion.polarity);
+    v = rb_cv_get(c, map, vm->key, "type", 1, "harmonic, pulse or record");
+    rb_case_keypath(k, vm->key, "type");
+    if (!v || !rb_cv_enum_table(c, v, k, rb_case_motion_type_names, 0, &t)) {
+        for (size_t i = 0; i < map->n; i++)
+            map->entries[i].used = 1;
+        return 0;
+    }
+    /* the place for a vertical generated with its horizontal (AC156's
+     * triaxial suites): until then a vertical is given, not made */
+    if (t == RB_CASE_MOTION_SYNTHETIC) {
+        rb_cctx_error(c, v, k, "a synthetic vertical is not generated yet: give a "
+                      "harmonic, pulse or record");
+        for (size_t i = 0; i < map->n; i++)
+            map->entries[i].used = 1;
+        return 0;
+    }
+    vm->ok = t == RB_CASE_MOTION_HARMONIC ? read_harmonic(c, map, vm)
+             : t == RB_CASE_MOTION_PULSE   ? read_pulse(c, map, vm)
+                                           : read_record(c, map, vm);
+    return vm->ok;
 }
 
 static void read_motion(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
@@ -280,14 +339,25 @@ static void read_motion(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
             map->entries[i].used = 1;   /* no type: its keys cannot be judged */
         return;
     }
+    if (t == RB_CASE_MOTION_SYNTHETIC) {
+        /* the suites' triaxial sets will bring their vertical here */
+        if ((v = rb_cv_get(c, map, cm->key, "vertical", 0, ""))) {
+            rb_case_keypath(k, cm->key, "vertical");
+            rb_cctx_error(c, v, k, "a synthetic suite has no vertical yet: give the "
+                          "vertical with a harmonic, pulse or record motion");
+        }
+        cm->ok = rb_case_read_synthetic(c, map, cm);
+        return;
+    }
+    rb_ynode *vv = rb_cv_get(c, map, cm->key, "vertical", 0, "");
     if (t == RB_CASE_MOTION_HARMONIC)
         cm->ok = read_harmonic(c, map, cm);
     else if (t == RB_CASE_MOTION_PULSE)
         cm->ok = read_pulse(c, map, cm);
-    else if (t == RB_CASE_MOTION_RECORD)
-        cm->ok = read_record(c, map, cm);
     else
-        cm->ok = rb_case_read_synthetic(c, map, cm);
+        cm->ok = read_record(c, map, cm);
+    if (vv && !read_vertical(c, vv, cm))
+        cm->ok = 0;
 }
 
 void rb_case_read_motions(rb_cctx *c, rb_ynode *root)

@@ -346,6 +346,37 @@ static int build_motion(rb_cctx *c, const rb_cmotion *cm, rb_case_motion *out,
     return out->name != NULL;
 }
 
+/* The vertical of a motion (case_motion.c's read_vertical), built as a
+ * motion of its own into out->vertical, which out->motion then carries;
+ * 0 after an error. A floor that falls faster than gravity is refused
+ * here, at the vertical, as the solver would refuse it without a place. */
+static int build_vertical(rb_cctx *c, const rb_cmotion *cm, rb_case_motion *out,
+                          const rb_derived *d, int have_model)
+{
+    const rb_cmotion *vm = cm->vertical;
+    if (!vm)
+        return 1;
+    rb_case_motion *v = calloc(1, sizeof *v);
+    if (!v) {
+        c->nomem = 1;
+        return 0;
+    }
+    out->vertical = v;
+    if (!build_motion(c, vm, v, d, have_model))
+        return 0;
+    v->motion.duration_s = 0; /* the motion it belongs to sets the run */
+    out->motion.vertical = &v->motion;
+    double least = rb_motion_least(&v->motion, out->motion.duration_s);
+    if (have_model && !(least > -d->g)) {
+        rb_cctx_error(c, vm->map, vm->key, "the floor's downward acceleration reaches "
+                      "%.4g m/s^2 (%.3g g), at or beyond gravity (%.4g m/s^2): the "
+                      "cabinet would leave the floor in free flight, which the model "
+                      "does not follow", -least, -least / RB_G0, d->g);
+        return 0;
+    }
+    return 1;
+}
+
 /* The motions the case's entries make: one each, `count` for a synthetic
  * suite. 0 after an error (over RB_CASE_MAX_MOTIONS in all). */
 static size_t count_motions(rb_cctx *c, size_t *n_targets)
@@ -467,7 +498,8 @@ void rb_case_resolve(rb_cctx *c, rb_case *cs, const rb_ynode *root)
             if (!rb_case_check_suite(c, cm, ct, at - first))
                 continue;
             suite[i] = ct;
-        } else if (!build_motion(c, cm, &cs->motions[first], &d, have_model)) {
+        } else if (!build_motion(c, cm, &cs->motions[first], &d, have_model)
+                   || !build_vertical(c, cm, &cs->motions[first], &d, have_model)) {
             continue;
         }
         for (size_t j = first; j < at; j++) {

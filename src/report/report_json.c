@@ -142,6 +142,16 @@ static void add_motion_desc(rb_jctx *cx, cJSON *parent, const rb_case_motion *cm
     } else {
         rb_j_null(cx, o, "building");
     }
+    /* only where there is one: reports without a vertical keep their bytes */
+    if (cm->vertical) {
+        const rb_motion *v = &cm->vertical->motion;
+        b = rb_j_obj(cx, o, "vertical");
+        rb_j_str(cx, b, "kind", rb_enum_str(rb_case_motion_type_names, (int)cm->vertical->type));
+        rb_j_str(cx, b, "source", cm->vertical->source);
+        rb_j_num(cx, b, "peak_mps2", rb_motion_peak(v));
+        rb_j_num(cx, b, "least_mps2", rb_motion_least(v, m->duration_s));
+        rb_j_num(cx, b, "polarity", v->polarity);
+    }
 }
 
 static void add_peaks(rb_jctx *cx, cJSON *res_o, const rb_result *r,

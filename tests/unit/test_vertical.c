@@ -15,7 +15,9 @@
  *    that stops just after it has.
  * 3. Taylor series against Dormand-Prince with a vertical present (harmonic
  *    and sampled), and the energy balance with the vertical's work.
- * 4. A floor that falls faster than gravity is refused. */
+ * 4. The vertical floor reaction of a rigid cabinet that stays down under
+ *    a harmonic vertical, M (g + z''), against its least in closed form.
+ * 5. A floor that falls faster than gravity is refused. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -320,11 +322,51 @@ static void taylor_vs_rk45(void)
     rb_series_free(&s);
 }
 
-/* ---- 4. a floor that falls faster than gravity ---------------------------- */
+/* ---- 4. the floor's vertical reaction ------------------------------------- */
+
+/* A rigid cabinet that stays on the floor carries M (g + z''): the least
+ * vertical reaction under a harmonic vertical Z is M (g - Z), located
+ * between check points; the friction floor is 5 % of that least weight. */
+static void reaction_at_rest(void)
+{
+    printf("4. vertical reaction of a cabinet that stays down\n");
+    for (int integ = 0; integ < 2; integ++) {
+        rb_model m;
+        rb_model_reference(&m);
+        m.rigid = 1;
+        rb_motion h, v;
+        rb_motion_init(&h);
+        h.kind = RB_MOTION_HARMONIC;
+        h.amplitude_mps2 = 0.05 * RB_G0;
+        h.freq_hz = 1.3;
+        h.duration_s = 2;
+        rb_motion_init(&v);
+        v.kind = RB_MOTION_HARMONIC;
+        v.amplitude_mps2 = 0.6 * RB_G0;
+        v.freq_hz = 7.7;
+        h.vertical = &v;
+        rb_result r;
+        CHECK(run(&m, &h, RB_FORM_LARGE, integ ? RB_INTEGRATOR_RK45 : RB_INTEGRATOR_AUTO,
+                  &r) == RB_OK);
+        double want = m.mass_kg * (RB_G0 - v.amplitude_mps2);
+        printf("  %s: least vertical reaction %.9g N, M (g - Z) = %.9g N; uplifts %ld\n",
+               integ ? "rk45" : "auto", r.min_vertical_reaction_n, want, r.uplifts);
+        CHECK(r.uplifts == 0);
+        CHECK_REL(r.min_vertical_reaction_n, want, 1e-7);
+        /* the horizontal reaction is M x'' alone, so the friction demand
+         * is largest where the vertical is least: M a / (M (g - Z)) at
+         * most, and at least the demand at the horizontal's peak */
+        CHECK(r.max_friction_demand <= h.amplitude_mps2 / (RB_G0 - v.amplitude_mps2) + 1e-9);
+        CHECK(r.max_friction_demand >= h.amplitude_mps2 / (RB_G0 + v.amplitude_mps2));
+        rb_result_free(&r);
+    }
+}
+
+/* ---- 5. a floor that falls faster than gravity ---------------------------- */
 
 static void refused(void)
 {
-    printf("4. z'' below -g is refused\n");
+    printf("5. z'' below -g is refused\n");
     rb_model m;
     rb_model_reference(&m);
     rb_motion h, v;
@@ -364,6 +406,7 @@ int main(void)
     constant_is_gravity();
     uplift_threshold();
     taylor_vs_rk45();
+    reaction_at_rest();
     refused();
     TEST_MAIN_END();
 }
