@@ -112,10 +112,40 @@ static void test_utf8(void)
     CHECK(fix_is(NULL, ""));
 }
 
+static int json_is(const char *in, const char *want)
+{
+    char *got = rb_json_escape_format(in);
+    int ok = got && strcmp(got, want) == 0;
+    free(got);
+    return ok;
+}
+
+/* JSON text: the format characters and C1 controls become \u escapes,
+ * everything else (ASCII, other UTF-8, 4-byte characters, bytes that are
+ * not UTF-8, JSON's own escapes) is left as it is */
+static void test_json(void)
+{
+    CHECK(json_is("{\"a\":\t\"x\"}", "{\"a\":\t\"x\"}"));
+    CHECK(json_is("\"a\xe2\x80\xae" "b\"", "\"a\\u202eb\""));
+    CHECK(json_is("\xe2\x80\xaa\xe2\x80\xab\xe2\x80\xac\xe2\x80\xad",
+                  "\\u202a\\u202b\\u202c\\u202d"));
+    CHECK(json_is("\xe2\x81\xa6\xe2\x81\xa7\xe2\x81\xa8\xe2\x81\xa9",
+                  "\\u2066\\u2067\\u2068\\u2069"));
+    CHECK(json_is("\xe2\x80\x8b\xe2\x80\x8c\xe2\x80\x8d\xe2\x80\x8e\xe2\x80\x8f",
+                  "\\u200b\\u200c\\u200d\\u200e\\u200f"));
+    CHECK(json_is("\xe2\x80\xa8\xe2\x80\xa9\xef\xbb\xbf\xc2\x85",
+                  "\\u2028\\u2029\\ufeff\\u0085"));
+    CHECK(json_is("P\xc3\xa9rez \xe2\x80\x94 \xf0\x9f\x98\x80",
+                  "P\xc3\xa9rez \xe2\x80\x94 \xf0\x9f\x98\x80"));
+    CHECK(json_is("\\u202e \xff\xe2\x80", "\\u202e \xff\xe2\x80"));
+    CHECK(json_is("", ""));
+}
+
 int main(void)
 {
     test_escape();
     test_csv();
     test_utf8();
+    test_json();
     TEST_MAIN_END();
 }
