@@ -10,10 +10,11 @@ in, its bases' included, or by its output_units), and the cases of
 tests/units/cases (a panel with concrete, an AC156 suite, a record, the
 design searches and the code-static table, failing on its anchorage; an SI
 case asking for output_units: us; a free-standing cabinet that slides), go
-through check and design (text, HTML, SVG), fragility (text, HTML, SVG),
-spectrum (text, HTML, SVG), batch (table, CSV, JUnit, of the cases and of
-an equipment list), and the bad inputs of tests/units/bad through check
-(their diagnostics). si_leaks.py then reads every one of those outputs as
+through check (text, HTML, SVG), design (text, HTML, SVG, PDF), fragility
+(text, HTML, SVG, PDF), spectrum (text, HTML, SVG), batch (table, CSV,
+JUnit, PDF, of the cases; table, CSV, JUnit of an equipment list), and the bad inputs of tests/units/bad through check
+(their diagnostics). The PDFs are read as pdftotext gives their text.
+si_leaks.py then reads every one of those outputs as
 a person would and fails on any SI unit in them. JSON and CSV data files
 keep SI (with unit-suffixed names) and are not read, except the batch CSV's
 reasons. The test also asserts that it saw the quantities it looks for
@@ -109,7 +110,8 @@ for case in cases:
     run("check-" + n, ["check", case, "--text", "check-%s.txt" % n,
                        "--html", "check-%s.html" % n, "--svg", "check-%s.svg" % n])
     run("design-" + n, ["design", case, "-j", "2", "--text", "design-%s.txt" % n,
-                        "--html", "design-%s.html" % n, "--svg", "design-%s.svg" % n])
+                        "--html", "design-%s.html" % n, "--svg", "design-%s.svg" % n,
+                        "--pdf", "design-%s.pdf" % n])
     run("spectrum-" + n, ["spectrum", case, "--html", "spectrum-%s.html" % n,
                           "--svg", "spectrum-%s.svg" % n])
     for kind in ("check", "design", "spectrum"):
@@ -117,11 +119,11 @@ for case in cases:
 
 panel = os.path.join(HERE, "cases", "panel-us.yaml")
 run("fragility", ["fragility", panel, "-j", "2", "--html", "fragility.html",
-                  "--svg", "fragility.svg"])
+                  "--svg", "fragility.svg", "--pdf", "fragility.pdf"])
 people += outputs("fragility.") + outputs("fragility-")
 
 run("batch", ["batch", *cases, "-j", "2", "--design", "--csv", "batch.csv",
-              "--junit", "batch.xml"])
+              "--junit", "batch.xml", "--pdf", "batch.pdf"])
 run("batch-list", ["batch", os.path.join(HERE, "list.csv"), "-j", "2", "--fragility",
                    "--csv", "batch-list.csv", "--junit", "batch-list.xml"])
 people += outputs("batch.csv") + outputs("batch.xml") + outputs("batch-list.")
@@ -130,7 +132,17 @@ for case in bad:
     n = os.path.splitext(os.path.basename(case))[0]
     run("bad-" + n, ["check", case, "--text", "bad-%s.txt" % n], codes=(2,))
 
-people = sorted(set(p for p in people if os.path.isfile(p)))
+# a calculation package is read as its text (pdftotext, poppler-utils)
+pdfs = sorted(glob.glob(os.path.join(scratch, "*.pdf")))
+if len(pdfs) != len(cases) + 2:
+    fail("%d PDF files written, expected %d" % (len(pdfs), len(cases) + 2))
+for pdf in pdfs:
+    p = subprocess.run(["pdftotext", "-layout", pdf, pdf + ".txt"], capture_output=True,
+                       text=True)
+    if p.returncode != 0:
+        fail("pdftotext %s: %s" % (pdf, p.stderr[:200]))
+    people.append(pdf + ".txt")
+people = sorted(set(p for p in people if os.path.isfile(p) and not p.endswith(".pdf")))
 
 # the quantities the scan is about must be there, in US customary units
 # (an output that dropped them would pass the scan)
@@ -152,6 +164,7 @@ want = [
     ("bad-embedment-past-slab.stderr", r"\(embedment 7 in, slab 6 in\)",
      "the embedment against the slab"),
     ("batch.stdout", r"kip", "a batch reason's force"),
+    ("design-panel-us.pdf.txt", r"kip", "the calculation package's forces"),
     # 100 lb in^2 over 1200 lb x (18^2 + 45^2) in^2 = 3.5476e-5
     ("bad-inertia.stderr", r"\(got 3\.548e-05 M R\^2\)", "the inertia's message"),
 ]
