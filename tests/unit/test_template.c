@@ -167,6 +167,7 @@ static void test_builtin_and_load(void)
     rb_diag d;
     check_builtin("report.txt");
     check_builtin("starter.yaml");
+    check_builtin("calc.txt");
     CHECK(rb_template_builtin("nonexistent.txt") == NULL);
     /* a directory without the file falls through to the source tree or
      * the built-in copy; both equal the shipped file */
