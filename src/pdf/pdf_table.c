@@ -22,7 +22,9 @@ static int numeric(const char *s)
 }
 
 /* Column widths: each column its widest cell unwrapped, and where that is
- * more than the page, the wide columns share what the narrow leave. */
+ * more than the page, the wide columns share what the narrow leave. A
+ * table whose first row ends in an empty cell (the cover, whose blanks a
+ * hand fills in) is as wide as the page, its last column taking the rest. */
 static void column_widths(rb_pdf_pen *p, const rb_pdf_block *t, double *w)
 {
     size_t nc = t->n_cols, c, r;
@@ -32,13 +34,16 @@ static void column_widths(rb_pdf_pen *p, const rb_pdf_block *t, double *w)
     for (r = 0; r < t->n_rows; r++)
         for (c = 0; c < t->rows[r].n; c++) {
             rb_pdf_set_text(p, t->rows[r].head ? p->bold : p->body, t->rows[r].cells[c], 0,
-                     PANGO_ALIGN_LEFT);
+                            PANGO_ALIGN_LEFT);
             double x = rb_pdf_text_width(p) + 2 * RB_PDF_CELL_PAD + 1;
             if (x > w[c])
                 w[c] = x;
         }
     for (c = 0; c < nc; c++)
         total += w[c];
+    const rb_pdf_row *first = &t->rows[0];
+    if (total < p->width && nc && first->n == nc && first->cells[nc - 1][0] == '\0')
+        w[nc - 1] += p->width - total;
     if (total <= p->width)
         return;
     double share = p->width / (double)nc;
