@@ -48,7 +48,7 @@ outputs)
     # no progress line when stderr is not a terminal
     lacks "$s/err" "cases, "
     # CSV: header, one row per case and motion, errors last column
-    [ "$(head -1 "$s/b.csv")" = "index,source,line,tag,motion,governing,verdict,case_verdict,usage,shear_over_w,force_over_fy,theta_over_alpha,validity_warnings,anchor_mode,anchor_utilization,governs,reason,error" ] \
+    [ "$(head -1 "$s/b.csv")" = "index,source,line,tag,motion,governing,verdict,case_verdict,usage,shear_over_w,force_over_fy,theta_over_alpha,validity_warnings,anchor_mode,anchor_utilization,code_fp_n,code_fp_over_wp,code_tension_n,code_steel_ratio,code_anchor_utilization,governs,reason,error" ] \
         || fail "CSV header"
     [ "$(wc -l <"$s/b.csv")" -eq 13 ] || fail "CSV rows: $(wc -l <"$s/b.csv")"
     has "$s/b.csv" '^2,tests/batch/cases/c-suite.yaml,0,c-suite,strong,1,fail,fail,1,'
@@ -57,7 +57,7 @@ outputs)
     has "$s/b.csv" '^2,tests/batch/cases/c-suite.yaml,0,c-suite,strong,1,fail,fail,.*,bolt break,a bolt row breaks at t = [0-9.]* s; rigid bolts: an elastic bolt would load the row to [0-9.]* Fy,$'
     has "$s/out" '^ *a bolt row breaks at t = [0-9.]* s; rigid bolts: an elastic bolt would load the row to [0-9.]* Fy$'
     has "$s/b.csv" '^6,tests/batch/list.csv,5,"P-103, spare",motion,1,fail,fail,'
-    has "$s/b.csv" '^7,tests/batch/list.csv,6,P-104,,0,unreadable,unreadable,,,,,,,,,,"tests/batch/list.csv:6:26: '
+    has "$s/b.csv" '^7,tests/batch/list.csv,6,P-104,,0,unreadable,unreadable,,,,,,,,,,,,,,,"tests/batch/list.csv:6:26: '
     # JSON: counts, governing motion, mean and max of the suite
     has "$s/b.json" '"format":	"rockbolt-batch"'
     has "$s/b.json" '"unreadable":	4'
@@ -165,7 +165,7 @@ reports)
 design)
     run 1 batch tests/batch/cases/a-pass.yaml tests/batch/cases/c-suite.yaml --design \
         -q --json "$s/d.json" --csv "$s/d.csv"
-    has "$s/d.csv" "design_factor,design_factor_bound,gap_ratio,validity_warnings,anchor_mode,anchor_utilization,governs,reason,error"
+    has "$s/d.csv" "design_factor,design_factor_bound,gap_ratio,validity_warnings,anchor_mode,anchor_utilization,code_fp_n,code_fp_over_wp,code_tension_n,code_steel_ratio,code_anchor_utilization,governs,reason,error"
     has "$s/d.json" '"min_design_factor":'
     # the default range ends at design.max_gap, 6.35 mm / 0.78 m = 0.00814
     # for the reference cabinet, below gap_ratio_max 0.03
