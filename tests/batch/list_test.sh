@@ -176,7 +176,10 @@ errors)
              'design.code|.design.code. is a section: name one of its keys, such as .design.code.edition.' \
              'motions|.motions. is a list, which one cell cannot give' \
              'embedment [inch]|unknown unit .inch.' \
-             'mass,equipment.mass|duplicate column .equipment.mass.'; do
+             'mass,equipment.mass|duplicate column .equipment.mass.' \
+             'mass [kilograms-of-a-very-long-unit-name]|expected a name and a unit in brackets' \
+             'tag [in]|column .tag. takes no unit' \
+             'anchorage.product.kc_cracked.x|.anchorage.product.kc_cracked. is a value, not a section'; do
         col=${h%%|*}
         printf 'tag,%s\nH-1,1\n' "$col" >"$s/h.csv"
         run 2 batch "$s/h.csv" --base "$base" -q
