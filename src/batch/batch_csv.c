@@ -545,7 +545,8 @@ static rb_status read_row(csv_ctx *cx, rb_batch_list *l, const csv_row *r, int l
         return RB_OK;
     }
     if (!tag[0]) {
-        rb_batch_item_bad(it, r->f[cx->tag_col].line, r->f[cx->tag_col].col, "tag", "the tag is empty");
+        rb_batch_item_bad(it, r->f[cx->tag_col].line, r->f[cx->tag_col].col, "tag",
+                          "the tag is empty");
         return RB_OK;
     }
     int first = tag_seen(cx, tag, line);
