@@ -238,6 +238,15 @@ typedef struct {
 rb_status rb_anchor_check(const rb_model *m, const rb_anchor_inputs *in,
                           rb_anchor_strength *out, rb_diag *diag);
 
+/* The effective tensile area A_se of one anchor, by the one rule of the
+ * concrete check and the code-static comparison alike: tensile_area where
+ * given, the bolt's area where the case gave the bolt by its (tensile)
+ * area, else the thread standard of the bolt's diameter and pitch. 0 where
+ * no standard names the size. source (RB_ASE_*), std and pitch_m, when
+ * not NULL, say how it was found. */
+double rb_anchor_ase(const rb_model *m, const rb_anchor_inputs *in, int *source,
+                     rb_thread_std *std, double *pitch_m);
+
 /* The mode that governs a run's demand at one instant: the concrete-
  * governed tension or shear mode, whichever of tension / phi N_n,c and
  * shear / phi V_n,c is the larger (tension on a tie). The one place

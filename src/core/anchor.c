@@ -237,6 +237,29 @@ static rb_status check_inputs(const rb_model *m, const rb_anchor_inputs *in, rb_
     return RB_OK;
 }
 
+double rb_anchor_ase(const rb_model *m, const rb_anchor_inputs *in, int *source,
+                     rb_thread_std *std, double *pitch_m)
+{
+    double coarse = 0, da = sqrt(4 * m->bolt_area_m2 / M_PI);
+    rb_thread_std ts = rb_thread_standard(da, &coarse);
+    double pitch = in->thread_pitch_m > 0 ? in->thread_pitch_m : coarse;
+    int src;
+    double ase;
+    if (in->ase_m2 > 0)
+        src = RB_ASE_GIVEN, ase = in->ase_m2;
+    else if (in->area_is_tensile)
+        src = RB_ASE_BOLT_AREA, ase = m->bolt_area_m2;
+    else
+        src = RB_ASE_THREADS, ase = rb_thread_ase(ts, da, pitch);
+    if (source)
+        *source = src;
+    if (std)
+        *std = ts;
+    if (pitch_m)
+        *pitch_m = pitch;
+    return ase > 0 ? ase : 0;
+}
+
 /* A_se and A_brg: given, or from the standards of the bolt's size
  * (docs/anchor-hardware.md). The gross area would overstate the steel by
  * 26-38 %, and one head for every size the pullout by up to 64 %: where no
@@ -244,18 +267,9 @@ static rb_status check_inputs(const rb_model *m, const rb_anchor_inputs *in, rb_
 static rb_status hardware(const rb_model *m, const rb_anchor_inputs *in, rb_anchor_strength *o,
                           rb_diag *diag)
 {
-    double coarse = 0;
-    o->thread_std = rb_thread_standard(o->da_m, &coarse);
-    o->thread_pitch_used_m = in->thread_pitch_m > 0 ? in->thread_pitch_m : coarse;
-    if (in->ase_m2 > 0) {
-        o->ase_m2 = in->ase_m2;
-        o->ase_source = RB_ASE_GIVEN;
-    } else if (in->area_is_tensile) {
-        o->ase_m2 = m->bolt_area_m2;
-        o->ase_source = RB_ASE_BOLT_AREA;
-    } else {
-        o->ase_m2 = rb_thread_ase(o->thread_std, o->da_m, o->thread_pitch_used_m);
-        o->ase_source = RB_ASE_THREADS;
+    o->ase_m2 = rb_anchor_ase(m, in, &o->ase_source, &o->thread_std,
+                              &o->thread_pitch_used_m);
+    if (o->ase_source == RB_ASE_THREADS) {
         if (!(o->ase_m2 > 0))
             return rb_diag_set(diag, RB_ERR_INVALID, NULL, 0, 0, "anchorage.tensile_area",
                                "the bolt's diameter %s is no UNC or ISO "

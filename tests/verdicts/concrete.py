@@ -222,5 +222,30 @@ else:
     if abs(k.get("concrete_utilization", -1) - u) > 1e-12 * u:
         fail(f"static utilization {k.get('concrete_utilization')} is not {u}")
 
+# design.code without ase takes the anchorage's own A_se, by the thread
+# standard, not the bolt's gross area (26-38 % more steel): a 3/4-10 UNC rod
+# and a 1/2 in (12.7 mm) one, each against the formula worked out here
+IN2 = 0.0254 ** 2
+KSI = 6894757.29
+for name, path, d_in, tpi, n_row, futa in (
+        ("panel-us", "tests/pdf/panel-us.yaml", 0.75, 10, 2, 58 * KSI),
+        ("reference-design", "cases/reference-design.yaml", 0.5, 13, 2, 414e6)):
+    ase = 0.7854 * (d_in - 0.9743 / tpi) ** 2 * IN2
+    dj = os.path.join(scratch, name + "-code.json")
+    r = subprocess.run([rb, "design", os.path.join(src, path), "--json", dj, "-q"],
+                       capture_output=True, text=True)
+    if r.returncode not in (0, 1):
+        fail(f"design {name}: exit {r.returncode}: {r.stderr.strip()[:300]}")
+        continue
+    rep = json.load(open(dj))
+    k = rep["design"]["code_static"]
+    want = 0.75 * n_row * ase * futa
+    if abs(k["phi_nsa_n"] - want) > 1e-3 * want:
+        fail(f"{name}: code-static phi N_sa {k['phi_nsa_n']:.1f} N is not "
+             f"0.75 n A_se f_uta = {want:.1f} N (A_se {ase / IN2:.4f} in^2)")
+    a = rep.get("anchorage_check")
+    if a and abs(a["tensile_area_m2"] - ase) > 1e-3 * ase:
+        fail(f"{name}: the concrete check's A_se {a['tensile_area_m2']} is not {ase}")
+
 print(f"{len(failures)} failures")
 sys.exit(1 if failures else 0)
