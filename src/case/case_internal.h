@@ -244,7 +244,7 @@ int rb_ynode_is_null(const rb_ynode *n);
 int rb_case_top_key(const char *key);
 /* The keys each section of the schema reads, NULL-terminated, where the
  * readers keep them (case_schema.c, case_concrete.c, case_design.c,
- * case_motion.c, case_synth.c, case_fragility.c); case_keys.c walks them
+ * case_motion.c, case_synth.c, case_fragility.c, case_project.c); case_keys.c walks them
  * to say which dotted keys a list column may name. */
 extern const char *const *const rb_case_top_keys, *const *const rb_case_equipment_keys,
     *const *const rb_case_anchorage_keys, *const *const rb_case_criteria_keys,
@@ -254,7 +254,9 @@ extern const char *const *const rb_case_top_keys, *const *const rb_case_equipmen
     *const *const rb_case_harmonic_keys, *const *const rb_case_pulse_keys,
     *const *const rb_case_record_keys, *const *const rb_case_building_keys,
     *const *const rb_case_synthetic_keys, *const *const rb_case_ac156_keys,
-    *const *const rb_case_table_keys;
+    *const *const rb_case_table_keys, *const *const rb_case_project_keys,
+    *const *const rb_case_vertical_harmonic_keys, *const *const rb_case_vertical_pulse_keys,
+    *const *const rb_case_vertical_record_keys;
 
 /* --- case_extends.c ----------------------------------------------------- */
 /* Read file and everything it extends, merged; *root is the merged tree. */

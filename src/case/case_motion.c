@@ -37,6 +37,9 @@ static const char *const vertical_pulse_keys[] = {
     "type", "polarity", "shape", "amplitude", "duration", NULL};
 static const char *const vertical_record_keys[] = {
     "type", "polarity", "file", "format", "units", "dt", "peak", "window", NULL};
+const char *const *const rb_case_vertical_harmonic_keys = vertical_harmonic_keys;
+const char *const *const rb_case_vertical_pulse_keys = vertical_pulse_keys;
+const char *const *const rb_case_vertical_record_keys = vertical_record_keys;
 
 /* A time > 0 within the case's time limits (rb_cv_time_range); 1 if it is,
  * also when it is absent and not required. */

@@ -11,6 +11,7 @@
 
 static const char *const project_keys[] = {
     "project", "client", "engineer", "checker", "date", "revision", "job_number", NULL};
+const char *const *const rb_case_project_keys = project_keys;
 
 static char **field_of(rb_case_project *p, size_t k)
 {

@@ -179,12 +179,19 @@ errors)
              'mass,equipment.mass|duplicate column .equipment.mass.' \
              'mass [kilograms-of-a-very-long-unit-name]|expected a name and a unit in brackets' \
              'tag [in]|column .tag. takes no unit' \
-             'anchorage.product.kc_cracked.x|.anchorage.product.kc_cracked. is a value, not a section'; do
+             'anchorage.product.kc_cracked.x|.anchorage.product.kc_cracked. is a value, not a section' \
+             'project.enginer|unknown key .enginer. in .project. (did you mean .engineer.?)' \
+             'motion.vertical.frequncy|unknown key .frequncy. in .motion.vertical. (did you mean .frequency.?)'; do
         col=${h%%|*}
         printf 'tag,%s\nH-1,1\n' "$col" >"$s/h.csv"
         run 2 batch "$s/h.csv" --base "$base" -q
         has "$s/err" "h.csv:1:[0-9]*: error: header: .*${h#*|}"
     done
+    # the sections the loader reads besides the motion's own: the cover
+    # block and the vertical floor motion are columns like any other
+    printf 'tag,project.engineer\nP-1,A. Engineer\n' >"$s/p.csv"
+    "$rb" batch "$s/p.csv" --base "$base" -q >"$s/out" 2>"$s/err"
+    [ $? -le 1 ] || fail "project.engineer refused: $(cat "$s/err")"
     ;;
 *)
     fail "unknown test $t"
