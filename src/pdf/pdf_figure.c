@@ -53,7 +53,8 @@ void rb_pdf_figures(rb_pdf_pen *p)
         if (p->draw) {
             RsvgRectangle vp = {p->x0 + (p->width - dw) / 2, p->y, dw, dh};
             if (!rsvg_handle_render_document(h, p->cr, &vp, &err)) {
-                char what[64];
+                /* room for the longest index and the whole of the cut message */
+                char what[96];
                 snprintf(what, sizeof what, "%zu cannot be drawn: %.40s", i + 1,
                          err ? err->message : "");
                 rb_pdf_fail(p, RB_ERR_INVALID, "figure ", what);
