@@ -4,6 +4,7 @@
  * edge), with the same equations as rb_dyn_rhs, and the series are stored
  * in the physical frame, so that the mirror of a run is exact. */
 #include <math.h>
+#include <string.h>
 #include "bolt.h"
 #include "taylor.h"
 
@@ -369,6 +370,11 @@ double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double
     consts K;
     series s;
     bolt_law B;
+    /* the vertical's series are read only where there is one, but a
+     * vectorised pass over a row may load them: keep them defined */
+    memset(s.Z, 0, sizeof s.Z);
+    memset(s.G, 0, sizeof s.G);
+    s.gd = 0;
     double sgn = D->side < 0 ? -1.0 : 1.0, tol[RB_NY];
     int rocking = rb_dyn_rocking(S, D);
     load_consts(S, &K);
