@@ -135,6 +135,36 @@ static void code_factor(rb_cctx *c, rb_ynode *m, const char *key, int required,
                  1000, 1, out);
 }
 
+/* S_DS is a spectral acceleration the standard states in g: a bare
+ * number is read in g, as ASCE 7 writes it, and "1.0 g" or "9.8 m/s^2"
+ * is taken too, as the AC156 spectrum's sds is. */
+static void code_sds(rb_cctx *c, rb_ynode *m, double *sds_g)
+{
+    char msg[300];
+    rb_quantity q;
+    rb_ynode *v = rb_cv_get(c, m, "design.code", "sds", 1,
+                            "S_DS in g: a number such as 1.0, or '1.0 g'");
+    if (!v)
+        return;
+    if (v->kind == RB_YNODE_SCALAR && rb_unit_parse(v->text, RB_DIM_RATIO, &q, msg,
+                                                    sizeof msg) == RB_OK) {
+        q.value *= RB_UNIT_G_MPS2;   /* the bare number is in g */
+    } else if (!rb_cv_quantity(c, v, "design.code.sds", RB_DIM_ACCEL, &q)) {
+        return;
+    } else if (q.relative_a_star) {
+        rb_cctx_error(c, v, "design.code.sds",
+                      "S_DS is a site value: give it in g or m/s^2, not A*");
+        return;
+    }
+    double g = q.value / RB_UNIT_G_MPS2;
+    if (!(g > 0 && g <= 10)) {
+        rb_cctx_error(c, v, "design.code.sds", "must be > 0 and <= 10 g (got '%s')",
+                      v->text);
+        return;
+    }
+    *sds_g = g;
+}
+
 static void code_flag(rb_cctx *c, rb_ynode *m, const char *key, int *out)
 {
     char k[RB_CASE_KEY_MAX];
@@ -180,8 +210,7 @@ static void read_code(rb_cctx *c, rb_ynode *m, rb_case *cs)
     int e16 = in->edition == RB_ASCE7_16;
     code_flag(c, m, "at_or_below_grade", &in->at_or_below_grade);
     code_flag(c, m, "anchorage_in_concrete", &in->anchorage_in_concrete);
-    rb_cv_number(c, m, "design.code", "sds", 1, RB_DIM_RATIO, 0, 0, 10, 1,
-                 &in->sds);
+    code_sds(c, m, &in->sds);
     code_factor(c, m, "ip", 0, &in->ip);
     rb_cv_number(c, m, "design.code", "z_over_h", 1, RB_DIM_RATIO, 0, 1, 1, 1,
                  &in->z_over_h);

@@ -222,6 +222,25 @@ else:
     if abs(k.get("concrete_utilization", -1) - u) > 1e-12 * u:
         fail(f"static utilization {k.get('concrete_utilization')} is not {u}")
 
+# S_DS is in g: a bare number, or an acceleration in any unit the case
+# takes (as the AC156 spectrum's sds is); every spelling gives the same F_p
+if os.path.exists(cj):
+    fp = json.load(open(cj))["design"]["code_static"]["fp_n"]
+    for spelled in ("1.0 g", "9.80665 m/s^2", "386.0885826771654 in/s^2", "980.665 gal"):
+        sp = case("code-" + spelled.split()[1].replace("/", "").replace("^", ""),
+                  "design:\n  code:\n    edition: ASCE 7-22\n    sds: " + spelled + "\n"
+                  "    z_over_h: 0.5\n    car: 1\n    rpo: 1.5\n    r: 8\n    ie: 1\n"
+                  "    omega0: 2.5\n    futa: 58 ksi\n")
+        sj = os.path.join(scratch, "code-sds.json")
+        r = subprocess.run([rb, "design", sp, "--json", sj, "-q"], capture_output=True,
+                           text=True)
+        if r.returncode not in (0, 1):
+            fail(f"design.code.sds: {spelled}: exit {r.returncode}: {r.stderr.strip()[:300]}")
+            continue
+        got = json.load(open(sj))["design"]["code_static"]["fp_n"]
+        if abs(got - fp) > 1e-12 * fp:
+            fail(f"design.code.sds: {spelled} gives F_p {got} N, 1.0 gives {fp} N")
+
 # design.code without ase takes the anchorage's own A_se, by the thread
 # standard, not the bolt's gross area (26-38 % more steel): a 3/4-10 UNC rod
 # and a 1/2 in (12.7 mm) one, each against the formula worked out here
