@@ -186,6 +186,9 @@ typedef struct {
                              says how many there were, counts what they
                              were */
     rb_batch_counts counts; /* only when streamed */
+    const char *name;     /* borrowed: the file a summary was read from (the
+                             name given to rb_batch_reader_open), for merge's
+                             messages; NULL or "" when unnamed */
 } rb_batch_summary;
 
 void rb_batch_summary_free(rb_batch_summary *s);

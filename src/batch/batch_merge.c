@@ -26,6 +26,22 @@ static rb_status fail(rb_diag *d, const char *fmt, ...)
     return RB_ERR_INVALID;
 }
 
+/* How a message names summary k: its file where it was read from one,
+ * else its place among the summaries given (counted from 1). */
+typedef struct {
+    char s[300];
+} shard_label;
+
+static shard_label label(const rb_batch_summary *heads, size_t k)
+{
+    shard_label l;
+    if (heads[k].name && heads[k].name[0])
+        snprintf(l.s, sizeof l.s, "'%s'", heads[k].name);
+    else
+        snprintf(l.s, sizeof l.s, "summary %zu", k + 1);
+    return l;
+}
+
 static int copy_case(rb_batch_case *dst, const rb_batch_case *src)
 {
     *dst = *src;
@@ -75,21 +91,25 @@ static rb_status check_heads(const rb_batch_summary *shards, size_t n, rb_diag *
             return fail(diag, "the summaries come from different work lists "
                         "(%zu and %zu items)", total, shards[k].total);
         if (shards[k].design != shards[0].design)
-            return fail(diag, "summary %zu and the first differ in --design", k + 1);
+            return fail(diag, "%s and %s differ in --design", label(shards, k).s,
+                        label(shards, 0).s);
         if (shards[k].fragility != shards[0].fragility)
-            return fail(diag, "summary %zu and the first differ in --fragility", k + 1);
+            return fail(diag, "%s and %s differ in --fragility", label(shards, k).s,
+                        label(shards, 0).s);
         if (shards[k].intensity != shards[0].intensity)
-            return fail(diag, "summary %zu and the first differ in --intensity", k + 1);
+            return fail(diag, "%s and %s differ in --intensity", label(shards, k).s,
+                        label(shards, 0).s);
         if (shards[k].seed != shards[0].seed)
-            return fail(diag, "summary %zu and the first differ in --seed (%llu and "
-                        "%llu)", k + 1, (unsigned long long)shards[k].seed,
+            return fail(diag, "%s and %s differ in --seed (%llu and %llu)",
+                        label(shards, k).s, label(shards, 0).s,
+                        (unsigned long long)shards[k].seed,
                         (unsigned long long)shards[0].seed);
     }
     for (size_t k = 1; k < n; k++)
         if (strcmp(shards[k].inputs_digest, shards[0].inputs_digest) != 0)
-            return fail(diag, "summary %zu was run on other inputs than the first "
-                        "(a different list, case or base: their inputs digests "
-                        "differ)", k + 1);
+            return fail(diag, "%s was run on other inputs than %s (a different list, "
+                        "case or base: their inputs digests differ)", label(shards, k).s,
+                        label(shards, 0).s);
     return RB_OK;
 }
 
@@ -103,8 +123,8 @@ typedef struct {
  * before it. messages count cases from 1, as summaries and shards are
  * counted and as a reader counts a list's items (the JSON's index is from
  * 0). */
-static rb_status advance(pending *p, size_t k, size_t total, rb_batch_next_fn next,
-                         void *ctx, rb_diag *diag)
+static rb_status advance(pending *p, const rb_batch_summary *heads, size_t k, size_t total,
+                         rb_batch_next_fn next, void *ctx, rb_diag *diag)
 {
     if (p->has)
         p->last = p->c.index + 1;
@@ -117,12 +137,12 @@ static rb_status advance(pending *p, size_t k, size_t total, rb_batch_next_fn ne
     if (i >= total)
         return fail(diag, "case %zu is outside the work list of %zu", i + 1, total);
     if (p->last && i + 1 == p->last)
-        return fail(diag, "case %zu is in more than one summary (twice in summary %zu)",
-                    i + 1, k + 1);
+        return fail(diag, "case %zu is in more than one summary (twice in %s)",
+                    i + 1, label(heads, k).s);
     if (p->last && i + 1 < p->last)
-        return fail(diag, "case %zu comes after case %zu in summary %zu: merge reads "
+        return fail(diag, "case %zu comes after case %zu in %s: merge reads "
                     "each summary's cases in the list's order, as batch writes them",
-                    i + 1, p->last, k + 1);
+                    i + 1, p->last, label(heads, k).s);
     return RB_OK;
 }
 
@@ -149,7 +169,7 @@ rb_status rb_batch_merge_stream(const rb_batch_summary *heads, size_t n,
     if (!p)
         return RB_ERR_NOMEM;
     for (size_t k = 0; k < n && st == RB_OK; k++)
-        st = advance(&p[k], k, total, next, next_ctx, diag);
+        st = advance(&p[k], heads, k, total, next, next_ctx, diag);
     for (size_t i = 0; i < total && st == RB_OK; i++) {
         size_t g = n;           /* the shard whose next case comes first */
         for (size_t k = 0; k < n; k++)
@@ -162,21 +182,21 @@ rb_status rb_batch_merge_stream(const rb_batch_summary *heads, size_t n,
             /* a summary out of order looks the same from here */
             st = fail(diag, "case %zu of %zu is in no summary: a shard is missing, or a "
                       "summary's cases are not in the list's order (the next case of "
-                      "summary %zu is case %zu)", i + 1, total, g + 1, p[g].c.index + 1);
+                      "%s is case %zu)", i + 1, total, label(heads, g).s, p[g].c.index + 1);
         } else if (p[g].c.index < i) {
-            st = fail(diag, "case %zu is in more than one summary (summary %zu)",
-                      p[g].c.index + 1, g + 1);
+            st = fail(diag, "case %zu is in more than one summary (%s)",
+                      p[g].c.index + 1, label(heads, g).s);
         } else if ((st = sink(sink_ctx, out, &p[g].c, i, 1)) == RB_OK) {
             rb_batch_count_case(&out->counts, &p[g].c);
             out->n_cases++;
-            st = advance(&p[g], g, total, next, next_ctx, diag);
+            st = advance(&p[g], heads, g, total, next, next_ctx, diag);
         }
     }
     /* a case left over was merged already from another summary */
     for (size_t k = 0; k < n && st == RB_OK; k++)
         if (p[k].has)
-            st = fail(diag, "case %zu is in more than one summary (summary %zu)",
-                      p[k].c.index + 1, k + 1);
+            st = fail(diag, "case %zu is in more than one summary (%s)",
+                      p[k].c.index + 1, label(heads, k).s);
     for (size_t k = 0; k < n; k++)
         rb_batch_case_free(&p[k].c);
     free(p);

@@ -304,6 +304,7 @@ rb_status rb_batch_reader_open(FILE *fp, const char *name, rb_batch_summary *hea
         return st;
     }
     *head = r->head;
+    head->name = name;
     *out = r;
     return RB_OK;
 }

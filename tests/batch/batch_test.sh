@@ -109,7 +109,8 @@ shards)
     has "$s/err" "error: merge: case 3 of 10 is in no summary: a shard is missing"
     [ ! -e "$s/bad.json" ] || fail "merge wrote an output after an error"
     run 2 merge "$s/s1.json" "$s/s1.json" "$s/s2.json" "$s/s3.json"
-    has "$s/err" "error: merge: case 1 is in more than one summary (summary 2)"
+    # the summary is named by its file
+    has "$s/err" "error: merge: case 1 is in more than one summary ('$s/s1.json')"
     ;;
 errors)
     # exit codes: 0 all pass, 1 a failure, 2 an unreadable case wins over 1
