@@ -85,6 +85,11 @@ int rb_series_floor_line(const rb_series *s, double t0, rb_floor_line *fl);
  * linear between; a floor through a building is taken at its samples) and
  * the times at which 5 % and 95 % of it have built up. */
 void rb_series_arias(const rb_series *s, double *arias_mps, double *t5_s, double *t95_s);
+/* The velocity and displacement from rest of n accelerations dt apart,
+ * linear between them (exact for such a motion): at the end, and their
+ * largest magnitudes (v_peak, d_peak may be NULL). */
+void rb_samples_integrate(const double *a, size_t n, double dt, double *v_end,
+                          double *d_end, double *v_peak, double *d_peak);
 
 typedef enum {
     RB_MOTION_HARMONIC = 0, /* a sin(2 pi f t), optional linear ramp */

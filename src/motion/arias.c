@@ -1,6 +1,7 @@
-/* The Arias intensity of a sampled motion, and the times at which it
- * builds up: the strong-motion duration (5-95 %, Trifunac and Brady 1975)
- * that the synthetic motions and the spectra report. */
+/* What a sampled motion's integrals say of it: the Arias intensity and
+ * the times at which it builds up (the strong-motion duration, 5-95 %,
+ * Trifunac and Brady 1975), and the velocity and displacement a table
+ * must travel to play it. */
 #include <math.h>
 #include "rockbolt/motion.h"
 
@@ -28,4 +29,25 @@ void rb_series_arias(const rb_series *s, double *arias_mps, double *t5_s, double
         }
         cum += step;
     }
+}
+
+void rb_samples_integrate(const double *a, size_t n, double dt, double *v_end,
+                          double *d_end, double *v_peak, double *d_peak)
+{
+    /* exact for an acceleration linear between samples */
+    double v = 0, d = 0, vp = 0, dp = 0;
+    for (size_t i = 1; i < n; i++) {
+        d += dt * v + dt * dt * (2.0 * a[i - 1] + a[i]) / 6.0;
+        v += 0.5 * dt * (a[i - 1] + a[i]);
+        if (fabs(v) > vp)
+            vp = fabs(v);
+        if (fabs(d) > dp)
+            dp = fabs(d);
+    }
+    *v_end = v;
+    *d_end = d;
+    if (v_peak)
+        *v_peak = vp;
+    if (d_peak)
+        *d_peak = dp;
 }

@@ -320,7 +320,7 @@ rb_status rb_synth_describe(const rb_target *t, const rb_series *s, rb_synth_inf
     rb_spectrum_free(&check);
     info->peak_mps2 = rb_series_peak(s);
     rb_series_arias(s, &info->arias_mps, &info->arias_t5_s, &info->arias_t95_s);
-    rb_synth_integrate(s->accel_mps2, s->n, s->dt_s, &info->end_velocity_mps,
+    rb_samples_integrate(s->accel_mps2, s->n, s->dt_s, &info->end_velocity_mps,
                        &info->end_displacement_m, &info->peak_velocity_mps,
                        &info->peak_displacement_m);
     return st;

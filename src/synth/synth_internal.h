@@ -6,10 +6,6 @@
 
 /* The envelope at t: a sin^2 rise, the strong part at 1, a cos^2 decay. */
 double rb_synth_envelope(double t, double rise_s, double strong_s, double decay_s);
-/* End and peak velocity and displacement from rest of n samples dt apart,
- * linear between them (v_peak, d_peak may be NULL). */
-void rb_synth_integrate(const double *a, size_t n, double dt, double *v_end,
-                        double *d_end, double *v_peak, double *d_peak);
 /* Make the end velocity and displacement zero. */
 void rb_synth_baseline(double *a, size_t n, double dt);
 

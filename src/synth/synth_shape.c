@@ -22,27 +22,6 @@ double rb_synth_envelope(double t, double rise_s, double strong_s, double decay_
     return c * c;
 }
 
-void rb_synth_integrate(const double *a, size_t n, double dt, double *v_end,
-                        double *d_end, double *v_peak, double *d_peak)
-{
-    /* exact for an acceleration linear between samples */
-    double v = 0, d = 0, vp = 0, dp = 0;
-    for (size_t i = 1; i < n; i++) {
-        d += dt * v + dt * dt * (2.0 * a[i - 1] + a[i]) / 6.0;
-        v += 0.5 * dt * (a[i - 1] + a[i]);
-        if (fabs(v) > vp)
-            vp = fabs(v);
-        if (fabs(d) > dp)
-            dp = fabs(d);
-    }
-    *v_end = v;
-    *d_end = d;
-    if (v_peak)
-        *v_peak = vp;
-    if (d_peak)
-        *d_peak = dp;
-}
-
 void rb_synth_baseline(double *a, size_t n, double dt)
 {
     /* Two half-sines of the whole duration, zero at both ends and far below
@@ -51,7 +30,7 @@ void rb_synth_baseline(double *a, size_t n, double dt)
      * residuals are rounding. */
     double T = (double)(n - 1) * dt;
     double v0, d0, v1, d1, v2, d2;
-    rb_synth_integrate(a, n, dt, &v0, &d0, NULL, NULL);
+    rb_samples_integrate(a, n, dt, &v0, &d0, NULL, NULL);
     double q[2][2];   /* q[k] = (v_end, d_end) of sin((k + 1) pi t / T) */
     for (int k = 0; k < 2; k++) {
         double v = 0, d = 0, prev = 0;
