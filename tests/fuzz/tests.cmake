@@ -48,6 +48,8 @@ if(RB_FUZZ)
        ${PROJECT_SOURCE_DIR}/src/motion/*.c ${PROJECT_SOURCE_DIR}/src/record/*.c
        ${PROJECT_SOURCE_DIR}/src/design/*.c ${PROJECT_SOURCE_DIR}/src/synth/*.c
        ${PROJECT_SOURCE_DIR}/src/case/*.c ${PROJECT_SOURCE_DIR}/src/report/*.c
+       ${PROJECT_SOURCE_DIR}/src/output/*.c ${PROJECT_SOURCE_DIR}/src/codes/*.c
+       ${PROJECT_SOURCE_DIR}/src/fragility/*.c ${PROJECT_SOURCE_DIR}/src/plot/*.c
        ${PROJECT_SOURCE_DIR}/src/run/*.c ${PROJECT_SOURCE_DIR}/src/batch/*.c)
   add_library(rb_fuzz_lib STATIC ${RB_FUZZ_LIB_SOURCES}
               ${PROJECT_BINARY_DIR}/generated/template_builtin.c)

@@ -11,7 +11,7 @@
 #include "harness.h"
 #include "rockbolt/rockbolt.h"
 #include "rockbolt/plot.h"
-#include "../../src/report/plot_internal.h"
+#include "../../src/plot/plot_internal.h"
 
 static rb_case kase;
 static rb_case_motion cm;

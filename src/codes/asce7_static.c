@@ -5,7 +5,7 @@
  * row in tension. docs/design.md gives the clauses. */
 #include <math.h>
 #include <string.h>
-#include "design_internal.h"
+#include "design/design_internal.h"
 
 /* ACI 318-19 17.6.1.2: futa is taken as at most 1.9 fya and 125 ksi. */
 #define RB_FUTA_CAP_PA 861.8e6

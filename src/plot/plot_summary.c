@@ -6,7 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "plot_internal.h"
-#include "report_internal.h"
+#include "report/report_internal.h"
 #include "rockbolt/names.h"
 
 static void cell_text(rb_strbuf *b, const char *tag, const char *cls, const char *s)
