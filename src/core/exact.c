@@ -13,6 +13,7 @@
 #include <string.h>
 #include "../motion/matexp.h"
 #include "exact.h"
+#include "stepper.h"
 #include "taylor.h"
 
 enum { ZU, ZV, ZUB, ZVB, ZG, ZS, ZN = RB_EXACT_DIM };
@@ -304,7 +305,12 @@ static rb_status history(rb_solver *sv, double t0, const double *y0, double h, d
     return rb_history_sample(sv, &st, t0, t1);
 }
 
-int rb_exact_step(rb_solver *sv, double target, double *g, rb_status *status)
+/* An exact step of stage 1 towards target (the next break or the end):
+ * 1 when taken, with the state, the guards g at its end and the tracked
+ * quantities advanced as a Taylor step without an event would (*status
+ * says whether the time history's rows could be stored); 0 when the step
+ * must be a Taylor step instead (nothing changed). */
+static int exact_step(rb_solver *sv, double target, double *g, rb_status *status)
 {
     rb_floor_line fl;
     int landing;
@@ -394,3 +400,13 @@ int rb_exact_step(rb_solver *sv, double target, double *g, rb_status *status)
     rb_track_span_none(sv);
     return 1;
 }
+
+static rb_step_outcome exact_apply(rb_solver *sv, double target, double h, rb_rk_step *st,
+                                   double *g, rb_status *status)
+{
+    (void)h;
+    (void)st;
+    return exact_step(sv, target, g, status) ? RB_STEP_ADVANCED : RB_STEP_DECLINED;
+}
+
+const rb_stepper rb_stepper_exact = {"exact", exact_apply, NULL};

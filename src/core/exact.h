@@ -25,11 +25,8 @@
  * the building and the run's constants. */
 void rb_exact_setup(rb_solver *sv);
 
-/* An exact step of stage 1 towards target (the next break or the end):
- * 1 when taken, with the state, the guards g at its end and the tracked
- * quantities advanced as a Taylor step without an event would (*status
- * says whether the time history's rows could be stored); 0 when the step
- * must be a Taylor step instead (nothing changed). */
-int rb_exact_step(rb_solver *sv, double target, double *g, rb_status *status);
+/* The exact step is a stepper (stepper.h): rb_stepper_exact, which
+ * declines a step it cannot take (a root inside, a length it keeps no
+ * table for), for the Taylor step to take. */
 
 #endif

@@ -22,6 +22,7 @@ typedef struct {
     double cont[5][RB_NY];  /* dense-output coefficients */
     rb_aux aux1;            /* what the evaluation of k[6] yields besides it */
     int n_sub;              /* check points of the step (guards, peaks) */
+    int lands;              /* taken to land on the break it was taken towards */
     int is_taylor;          /* a Taylor step: the dense output is ts */
     rb_taylor ts;
     /* a Taylor step's series at its check points, what tracking reads */

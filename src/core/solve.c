@@ -15,7 +15,7 @@
 #include "bolt.h"
 #include "exact.h"
 #include "root.h"
-#include "solver.h"
+#include "stepper.h"
 
 void rb_solve_opts_init(rb_solve_opts *o)
 {
@@ -73,64 +73,6 @@ static rb_status check_opts(const rb_solve_opts *o, rb_diag *diag)
     return RB_OK;
 }
 
-/* The highest frequency of the model and the excitation; the rows' own
- * (a stiff spring's) only where taut, so that a run with elastic rows
- * keeps the long steps and the check spacing of the rigid model while
- * they are slack. */
-static double highest_frequency(const rb_solver *sv, int taut)
-{
-    const rb_sys *S = &sv->sys;
-    const rb_motion *m = S->motion;
-    double f = sqrt(S->d.W * S->d.R / S->d.Io) / (2 * M_PI);
-    if (!S->model->rigid)
-        f = fmax(f, S->model->freq_hz);
-    if (m->kind == RB_MOTION_HARMONIC)
-        f = fmax(f, m->freq_hz);
-    if (m->kind == RB_MOTION_PULSE && m->pulse_s > 0)
-        f = fmax(f, 1 / m->pulse_s);
-    if (m->vertical && m->vertical->kind == RB_MOTION_HARMONIC)
-        f = fmax(f, m->vertical->freq_hz);
-    if (m->vertical && m->vertical->kind == RB_MOTION_PULSE && m->vertical->pulse_s > 0)
-        f = fmax(f, 1 / m->vertical->pulse_s);
-    if (taut && S->bolt->frequency_hz)
-        f = fmax(f, S->bolt->frequency_hz(S));
-    return f;
-}
-
-/* The highest frequency of the response: the model's and the excitation's,
- * and the frame mode coupled with the rotation in stage 2, whose effective
- * mass (M* I_o - F*^2) / I_o is below M*. */
-static double fastest_mode(const rb_solver *sv, int taut)
-{
-    const rb_derived *d = &sv->sys.d;
-    double f = highest_frequency(sv, taut);
-    if (!sv->sys.model->rigid)
-        f = fmax(f, sqrt(d->Kstar * d->Io / (d->Mstar * d->Io - d->Fstar * d->Fstar))
-                    / (2 * M_PI));
-    return f;
-}
-
-static void set_tolerances(rb_solver *sv)
-{
-    const rb_sys *S = &sv->sys;
-    double a = fmax(sv->res->peak_floor_mps2, 0.01 * S->d.g);
-    double p = sqrt(S->d.W * S->d.R / S->d.Io);
-    double th = fmin(S->d.alpha, S->bolt->rows ? fmax(S->d.theta0_rad, 1e-3 * S->d.alpha)
-                                              : S->d.alpha);
-    double w = S->model->rigid ? p : S->d.omega;
-    double u = S->model->rigid ? 1 : 4 * a / (M_PI * w * w);
-    double rtol = sv->opts.rtol;
-    sv->atol[RB_Y_U] = rtol * u;
-    sv->atol[RB_Y_UD] = rtol * u * w;
-    sv->atol[RB_Y_TH] = rtol * th;
-    sv->atol[RB_Y_THD] = rtol * th * fmax(w, p);
-    sv->atol[RB_Y_WDAMP] = sv->atol[RB_Y_WIN] = sv->atol[RB_Y_WCPL] = 0;
-    sv->atol_x = rtol * a;
-    sv->rtol_rk = fmax(rtol * RB_RK_TOL_FACTOR, RB_RTOL_MIN); /* rtol >= RB_RTOL_MIN */
-    for (int i = 0; i < RB_NY; i++)
-        sv->atol_rk[i] = sv->atol[i] * (sv->rtol_rk / rtol);
-}
-
 static void fill_constants(rb_solver *sv, const rb_motion *motion)
 {
     const rb_sys *S = &sv->sys;
@@ -186,7 +128,6 @@ static rb_status setup(rb_solver *sv, const rb_model *model, const rb_motion *mo
         return fail(sv, diag, RB_ERR_INVALID, "the floor motion's amplitude or scale is not "
                     "finite");
     }
-    set_tolerances(sv);
     sv->t_end = motion->duration_s;
     sv->friction_floor = RB_FRICTION_FLOOR * S->d.W;
     if (motion->vertical)
@@ -194,13 +135,7 @@ static rb_status setup(rb_solver *sv, const rb_model *model, const rb_motion *mo
                              * (S->d.g + rb_motion_least(motion->vertical, sv->t_end));
     if (!(isfinite(sv->t_end) && sv->t_end > 0))
         return fail(sv, diag, RB_ERR_INVALID, "the run needs a finite duration > 0");
-    sv->h_max = sv->opts.max_step_s > 0 ? sv->opts.max_step_s
-                                        : 0.1 / highest_frequency(sv, 1);
-    sv->h_max_slack = sv->opts.max_step_s > 0 ? sv->opts.max_step_s
-                                              : 0.1 / highest_frequency(sv, 0);
-    sv->h = fmin(sv->h_max, 1e-3);
-    sv->check_spacing = 1 / (8 * fastest_mode(sv, 1));
-    sv->check_slack = 1 / (8 * fastest_mode(sv, 0));
+    rb_control_init(sv);
     double th0 = S->bolt->rows ? rb_dyn_contact_angle(S, model->gap_m) : HUGE_VAL;
     sv->rest_theta = sv->opts.rest_fraction * fmin(S->d.alpha, th0 > 0 ? th0 : S->d.alpha);
     if (sv->opts.theta_init_rad != 0) {
@@ -632,6 +567,8 @@ static rb_status restart(rb_solver *sv, double *g, rb_diag *diag)
     if (!state_finite(sv->y) || !state_finite(sv->f))
         return nonfinite(sv, diag, sv->t, sv->y);
     rb_guard_eval(sv, sv->t, sv->y, g);
+    /* the stage's steppers, once for the stage */
+    sv->n_steppers = rb_steppers_of_stage(sv, sv->steppers);
     rb_track_reset(sv);
     rb_track_span_none(sv);
     rb_track_point(sv, sv->t, sv->y);
@@ -698,70 +635,10 @@ static rb_status advance(rb_solver *sv, rb_rk_step *st, double *g, rb_diag *diag
     return restart(sv, g, diag);
 }
 
-/* A Taylor step towards the next break or the end, which it lands on
- * exactly when within reach (a sum of steps would stop a rounding error
- * short of it, and leave a step too small to take); 0 when its series is
- * not finite. */
-static int taut(const rb_solver *sv)
-{
-    return sv->disc.stage == RB_STAGE_HELD && !sv->sys.bolt->rigid_stop;
-}
-
-double rb_step_length(const rb_solver *sv, double target, int *landing)
-{
-    double h_max = taut(sv) ? sv->h_max : sv->h_max_slack;
-    double h_want = target - sv->t;
-    *landing = h_want <= 1.001 * h_max;
-    return *landing ? h_want : h_max;
-}
-
-/* The check points a step of length h needs at the check spacing, within
- * [lo, hi]. */
-static int checks_within(const rb_solver *sv, double h, int lo, int hi)
-{
-    int n = (int)ceil(h / (taut(sv) ? sv->check_spacing : sv->check_slack));
-    return n < lo ? lo : n > hi ? hi : n;
-}
-
-int rb_step_checks(const rb_solver *sv, double h)
-{
-    return checks_within(sv, h, sv->opts.min_checks < 2 ? 2 : sv->opts.min_checks,
-                         RB_SUB_MAX);
-}
-
-/* A Dormand-Prince step, held to a thousandth of the tolerance, is a small
- * fraction of the spacing: two points read its guards and peaks far closer
- * than the Taylor steps' points are. */
-static int rk_checks(const rb_solver *sv, double h)
-{
-    return checks_within(sv, h, 2, RB_SUB);
-}
-
-static int taylor_step(rb_solver *sv, rb_rk_step *st, double target)
-{
-    int landing;
-    double h_want = rb_step_length(sv, target, &landing);
-    double h = rb_taylor_step(&sv->sys, &sv->disc, sv->t, sv->y, h_want, sv->atol,
-                              sv->atol_x, sv->opts.rtol, &st->ts);
-    if (!(h > 0))
-        return 0;
-    st->is_taylor = 1;
-    st->t0 = sv->t;
-    st->h = h;
-    st->t1 = landing && h == h_want ? target : sv->t + h;
-    memcpy(st->y0, sv->y, sizeof st->y0);
-    rb_taylor_end(&sv->sys, &sv->disc, &st->ts, h, st->y1, st->k[6], &st->aux1);
-    st->n_sub = rb_step_checks(sv, h);
-    sv->res->steps++;
-    sv->res->stage_steps[sv->disc.stage]++;
-    return 1;
-}
-
 static rb_status run(rb_solver *sv, rb_diag *diag)
 {
     rb_rk_step st;
     double g[G_COUNT];
-    int nonfinite_trial = 0;
     rb_status s = rb_history_push(sv, 0, sv->y);
     sv->hist_k = 1;
     if (s == RB_OK)
@@ -770,56 +647,25 @@ static rb_status run(rb_solver *sv, rb_diag *diag)
         if ((s = check_work(sv, diag)) != RB_OK)
             break;
         double brk = rb_motion_next_break(sv->sys.motion, sv->t);
-        double target = fmin(brk, sv->t_end), h = fmin(fmin(sv->h, sv->h_max), target - sv->t);
+        double target = fmin(brk, sv->t_end), h = rb_control_trial(sv, target);
         if (!(h > 1e-14 * (1 + sv->t)))
-            return nonfinite_trial ? nonfinite_ahead(sv, diag, h)
+            return sv->nonfinite_trial ? nonfinite_ahead(sv, diag, h)
                    : fail(sv, diag, RB_ERR_STEP_TOO_SMALL, "step size underflow: the "
                           "tolerance cannot be met");
-        if (sv->exact.on && sv->disc.stage == RB_STAGE_FIXED
-            && rb_exact_step(sv, target, g, &s))
-            continue;
-        if (sv->opts.integrator == RB_INTEGRATOR_AUTO
-            && rb_taylor_applies(&sv->sys, &sv->disc)) {
-            if (taylor_step(sv, &st, target)) {
-                s = advance(sv, &st, g, diag);
-                if (s == RB_OK)
-                    s = after_landing(sv, target, g, diag);
-                continue;
-            }
-            /* a series that is not finite: the Runge-Kutta step below
-             * meets the same values and says where they come from */
+        const rb_stepper *stepper = NULL;
+        rb_step_outcome out = RB_STEP_DECLINED;
+        for (int i = 0; i < sv->n_steppers && out == RB_STEP_DECLINED; i++) {
+            stepper = sv->steppers[i];
+            out = stepper->apply(sv, target, h, &st, g, &s);
         }
-        /* a step to the break or the end lands on it exactly (t + (target -
-         * t) can round short of it, leaving a step a rounding error long),
-         * and its last stages see the excitation from before the break: a
-         * pulse that ends at its peak drops to zero there, and read after
-         * the drop it put an error of h times the drop into the step, which
-         * held to a tight tolerance shrank the steps to underflow */
-        int landing = h == target - sv->t;
-        double err = rb_rk_step_try(&sv->sys, &sv->disc, sv->t, sv->y, sv->f, h,
-                                    landing ? nextafter(target, -HUGE_VAL) : sv->t + h,
-                                    sv->atol_rk, sv->rtol_rk, &st);
-        if (landing)
-            st.t1 = target;
-        st.n_sub = rk_checks(sv, h);
-        sv->res->rhs_evals += 6;
-        nonfinite_trial = err == HUGE_VAL;
-        double fac = err > 0 ? 0.9 * pow(err, -0.2) : 5;
-        if (err > 1) {
-            sv->res->rejected_steps++;
-            sv->h = h * fmax(0.1, fmin(0.9, fac));
+        if (out != RB_STEP_DENSE)
             continue;
-        }
-        sv->res->steps++;
-        sv->res->stage_steps[sv->disc.stage]++;
-        rb_rk_dense_init(&st);
         s = advance(sv, &st, g, diag);
-        /* the next step starts from the excitation after the break */
-        if (s == RB_OK && landing && sv->t == target && !sv->done)
-            rb_dyn_rhs(&sv->sys, &sv->disc, sv->t, sv->y, sv->f, NULL);
-        if (s == RB_OK && landing)
+        if (s == RB_OK && st.lands) {
+            if (sv->t == target && !sv->done && stepper->landed)
+                stepper->landed(sv);
             s = after_landing(sv, target, g, diag);
-        sv->h = fmax(h, 1e-14) * fmin(5, fmax(0.2, fac));
+        }
     }
     return s;
 }

@@ -1,6 +1,7 @@
-/* Internal: the state of one solver run, shared by the driver (solve.c),
- * the stage transitions (transitions.c) and the peak/history tracking
- * (track.c). */
+/* Internal: the state of one solver run, shared by the run loop
+ * (solve.c), the steppers (stepper.h) and their control (control.c), the
+ * stage transitions (transitions.c) and the peak/history tracking
+ * (track.c, history.c). */
 #ifndef RB_SOLVER_H
 #define RB_SOLVER_H
 
@@ -16,6 +17,9 @@
  * steps meet at the tolerance itself (docs/solver.md, "Tolerance of the
  * Dormand-Prince steps"). */
 #define RB_RK_TOL_FACTOR 1e-3
+
+/* The most steppers a stage steps with (stepper.h). */
+#define RB_STEPPERS_MAX 3
 
 /* Guard functions: a stage ends where one crosses zero in its direction. */
 enum {
@@ -91,7 +95,7 @@ typedef struct {
     double t, y[RB_NY], f[RB_NY];
     double atol[RB_NY];
     double atol_x;              /* the floor acceleration's, for the series */
-    /* what a Dormand-Prince step is held to (set_tolerances in solve.c) */
+    /* what a Dormand-Prince step is held to (set_tolerances in control.c) */
     double rtol_rk, atol_rk[RB_NY];
     double h, h_max, t_end;
     double check_spacing;       /* largest spacing of a Taylor step's checks */
@@ -126,6 +130,11 @@ typedef struct {
     double fric_t, fric_h, fric_v;
     int fric_have;
     int done;
+    /* the last Dormand-Prince trial gave non-finite values */
+    int nonfinite_trial;
+    /* the stage's steppers (stepper.h), chosen as it starts */
+    const struct rb_stepper *steppers[RB_STEPPERS_MAX];
+    int n_steppers;
     rb_exact_cache exact;
 } rb_solver;
 
@@ -166,11 +175,20 @@ double rb_absorbed_now(const rb_solver *sv, int row);
  * RB_SUB for a Runge-Kutta step, whose steps are short. */
 #define RB_SUB 4
 
-/* solve.c: the length of a Taylor or exact step from the current point
- * towards target (a break or the end), whether it lands there, and the
- * check points of a step of length h. */
+/* control.c (step control, apart from the steps): the tolerances, the
+ * longest steps and the check spacing of a run; the control's trial
+ * length of a step towards target (a break or the end); the length of a
+ * Taylor or exact step from the current point towards target, whether it
+ * lands there, and the check points of a step of length h (of a
+ * Dormand-Prince step: rb_step_checks_rk); whether a Dormand-Prince step
+ * of scaled error err is accepted, with the next trial length set either
+ * way. */
+void rb_control_init(rb_solver *sv);
+double rb_control_trial(const rb_solver *sv, double target);
 double rb_step_length(const rb_solver *sv, double target, int *landing);
 int rb_step_checks(const rb_solver *sv, double h);
+int rb_step_checks_rk(const rb_solver *sv, double h);
+int rb_control_rk_accept(rb_solver *sv, double h, double err);
 /* Whether the guards of a force that turns inside a check interval of
  * length dt stay short of their boundaries at the turn, given the
  * magnitudes of their rates at its ends (transitions.c). */
@@ -189,9 +207,6 @@ void rb_track_reset(rb_solver *sv);
 void rb_track_span(rb_solver *sv, const rb_rk_step *st, double t0, double t1);
 void rb_track_span_series(rb_solver *sv, double t0, const double *y0, double h, double t1);
 void rb_track_span_none(rb_solver *sv);
-/* span.c: the state and what the equations give besides it at t on the
- * span's dense output; 0 where there is none. */
-int rb_span_state(rb_solver *sv, double t, double *y, rb_aux *a);
 /* An exact step's dense output: the Taylor series from (t0, y0) over h, to
  * RB_DENSE_TOL_FACTOR of the tolerances, not below RB_RTOL_MIN (the step
  * itself is exact to rounding; its peaks and history rows are read from

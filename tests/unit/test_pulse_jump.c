@@ -55,7 +55,7 @@ int main(void)
         mo.duration_s = mo.pulse_s + 0.5;
         CHECK(rb_motion_jumps_at(&mo, mo.pulse_s));
         CHECK(!rb_motion_jumps_at(&mo, 0.5 * mo.pulse_s));
-        double th[3];
+        double th[3] = {0, 0, 0}; /* set by every run that solves */
         long taylor = uplifts_of(&m, &mo, RB_INTEGRATOR_AUTO, 1e-7, 0, &th[0]);
         long fine = uplifts_of(&m, &mo, RB_INTEGRATOR_AUTO, 1e-11, 16, &th[1]);
         long dp = uplifts_of(&m, &mo, RB_INTEGRATOR_RK45, 1e-10, 0, &th[2]);
