@@ -63,11 +63,24 @@ static rb_status pdf(rb_batch_cli *o, const rb_batch_summary *s, FILE *fp, rb_di
     rb_status st = rb_cli_stream_copy(o, RB_BATCH_TEXT, s, mem);
     if (fclose(mem) != 0 && st == RB_OK)
         st = RB_ERR_NOMEM;
+    /* The rows of a list share --base, so its project: and units are the
+     * package's cover and paper; a base that does not load (its rows
+     * reported that already) leaves the cover without them. */
+    rb_case base;
+    int have_base = 0;
+    if (st == RB_OK && o->base) {
+        rb_diag_list dl = {NULL, 0, 0};
+        have_base = rb_case_load(o->base, &base, &dl) == RB_OK;
+        rb_diag_list_free(&dl);
+    }
     if (st == RB_OK) {
-        rb_pdf_cover cv = {"Seismic anchorage batch summary", NULL, NULL, NULL, NULL,
-                           RB_UNITS_SI};
+        rb_pdf_cover cv = {"Seismic anchorage batch summary",
+                           have_base && base.project.given ? &base.project : NULL, NULL,
+                           NULL, NULL, have_base ? base.output_units : RB_UNITS_SI};
         st = rb_pdf_text_render(&cv, "Summary", text, NULL, 0, &doc, &len, d);
     }
+    if (have_base)
+        rb_case_free(&base);
     if (st == RB_OK && fwrite(doc, 1, len, fp) != len)
         st = RB_ERR_IO;
     free(doc);

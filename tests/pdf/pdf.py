@@ -267,6 +267,22 @@ else:
     if "Seismic anchorage batch summary" not in t4:
         e2e.fail("batch: no title")
 
+# a list over --base takes the base's project: for its cover and the base's
+# units for its paper (the rows share the base)
+lst = e2e.write("panel-list.csv", "tag,gap_ratio\nEP-1,0.01\nEP-2,0.02\n")
+pdf6 = out("batch-base.pdf")
+r = e2e.run("batch", lst, "--base", PANEL, "--pdf", pdf6, "-q")
+if not os.path.exists(pdf6):
+    e2e.fail(f"batch --base --pdf: no PDF (exit {r.returncode}): {r.stderr[:300]}")
+else:
+    p1 = flat(page_text(pdf6, 1))
+    for name, value in PROJECT.items():
+        if not re.search(re.escape(name) + r"\s+" + re.escape(value), p1):
+            e2e.fail(f"batch cover: '{name}' is not followed by '{value}' on page 1")
+    size = page_size(pdf6)
+    if not size or abs(size[0] - 612) > 1 or abs(size[1] - 792) > 1:
+        e2e.fail(f"batch over a US base is on Letter paper (612 x 792 pt), not {size}")
+
 # ---- bad input and bad outputs: exit 2, nothing written --------------------
 bad = e2e.write("bad-project.yaml", open(PANEL).read().replace(
     "  revision: B\n", "  revison: B\n"))
