@@ -47,8 +47,10 @@ rb_status rb_history_push(rb_solver *sv, double t, const double *y)
     h->shear_elastic[i] = S->d.Nstar * S->d.omega * S->d.omega * y[RB_Y_U];
     h->shear_total[i] = H;
     h->vertical[i] = V;
-    h->energy_left[i] = rb_absorbed_now(sv, RB_LEFT);
-    h->energy_right[i] = rb_absorbed_now(sv, RB_RIGHT);
+    /* the row's own state: inside a yielding step the run's state is still
+     * the step's start */
+    h->energy_left[i] = rb_absorbed_at(sv, RB_LEFT, y);
+    h->energy_right[i] = rb_absorbed_at(sv, RB_RIGHT, y);
     h->kinetic[i] = rb_dyn_kinetic(S, &sv->disc, y);
     h->potential[i] = rb_dyn_potential(S, &sv->disc, y);
     h->strain[i] = rb_dyn_strain(S, &sv->disc, y);

@@ -167,6 +167,9 @@ void rb_transition(rb_solver *sv, int guard);
 /* Transitions that hold the moment a stage starts (a bolt impact that
  * leaves the bolt slack or beyond yield, a jump in the excitation). */
 int rb_transition_immediate(rb_solver *sv);
+/* A row's absorbed energy at the state y of the current stage (a yielding
+ * row's grows with the chord), and at the run's own state. */
+double rb_absorbed_at(const rb_solver *sv, int row, const double *y);
 double rb_absorbed_now(const rb_solver *sv, int row);
 
 /* Guards and peaks are checked at n_sub equally spaced points of a step,

@@ -124,13 +124,18 @@ unsigned rb_guard_mask(const rb_solver *sv)
     return m;
 }
 
-double rb_absorbed_now(const rb_solver *sv, int row)
+double rb_absorbed_at(const rb_solver *sv, int row, const double *y)
 {
     const rb_disc *D = &sv->disc;
     if (D->stage != RB_STAGE_YIELD || rb_row_of_side(D->side) != row)
         return D->absorbed[row];
-    double th = D->side * sv->y[RB_Y_TH];
+    double th = D->side * y[RB_Y_TH];
     return D->absorbed_entry + sv->sys.d.fy_row_n * (rb_dyn_chord(&sv->sys, th) - D->chord_entry);
+}
+
+double rb_absorbed_now(const rb_solver *sv, int row)
+{
+    return rb_absorbed_at(sv, row, sv->y);
 }
 
 double rb_guard_one(const rb_solver *sv, int guard, double t, const double *y)
@@ -147,8 +152,7 @@ double rb_guard_one(const rb_solver *sv, int guard, double t, const double *y)
     case G_UNLOAD: return D->side * y[RB_Y_THD];
     case G_SWITCH: return y[RB_Y_THD];
     case G_BREAK:
-        return D->absorbed_entry + S->d.fy_row_n * (rb_dyn_chord(S, th) - D->chord_entry)
-               - S->d.capacity_j;
+        return rb_absorbed_at(sv, rb_row_of_side(D->side), y) - S->d.capacity_j;
     case G_SLACK:
     case G_YIELD: {
         rb_aux a;
