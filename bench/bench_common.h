@@ -33,4 +33,28 @@ static inline int rb_bench_floor_motion(const char *path, rb_series *s)
     return 0;
 }
 
+/* The physical floor a solve is measured against: a plain linear SDOF
+ * (the frame alone, at frequency f_hz and damping xi) through the same
+ * floor series, by Newmark's average acceleration, one step a sample,
+ * nothing tracked but the peak displacement. Returns it (m), so that the
+ * loop is not optimised away. */
+static inline double rb_bench_sdof_newmark(const rb_series *s, double scale, double f_hz,
+                                           double xi)
+{
+    double w = 2 * 3.141592653589793 * f_hz, dt = s->dt_s;
+    double k = w * w, c = 2 * xi * w;
+    double khat = k + 2 * c / dt + 4 / (dt * dt);
+    double u = 0, v = 0, a = -scale * s->accel_mps2[0], peak = 0;
+    for (size_t i = 1; i < s->n; i++) {
+        double p = -scale * s->accel_mps2[i];
+        double un = (p + (4 / (dt * dt) + 2 * c / dt) * u + (4 / dt + c) * v + a) / khat;
+        double vn = 2 * (un - u) / dt - v;
+        a = p - c * vn - k * un;
+        u = un;
+        v = vn;
+        peak = u > peak ? u : -u > peak ? -u : peak;
+    }
+    return peak;
+}
+
 #endif

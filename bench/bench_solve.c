@@ -3,7 +3,10 @@
  * the 0.01 s record, zero-padded to 50 s), scaled to 0.4 A*, yielding bolts
  * that stretch on past their capacity (as chapter 6 runs earthquakes) so the
  * whole 50 s is simulated, summary only. Prints the median wall time of a solve, the time per
- * simulated second and the work counters, so the cost of each part shows.
+ * simulated second and the work counters, so the cost of each part shows, and each
+ * figure over a plain linear SDOF loop through the same record timed in the same
+ * process (the physical floor; bench/solve-ratios.sh gives the figures as ratios to
+ * another commit's build).
  * Usage: bench_solve [RECORD] [RUNS] [RTOL]. Target: median under 2 ms. */
 #include <stdio.h>
 #include <stdlib.h>
@@ -28,6 +31,23 @@ static int floor_motion_50hz(const char *path, rb_series *out)
         out->accel_mps2[i] = raw.accel_mps2[2 * i];
     rb_series_free(&raw);
     return 0;
+}
+
+/* The median time of the plain linear SDOF loop over the same record
+ * (bench_common.h), n runs: what each figure is also given over, as its
+ * distance to the physical floor. */
+static double sdof_median(const rb_series *s, double scale, const rb_model *m, int n,
+                          double *t)
+{
+    volatile double sink = 0;
+    for (int i = 0; i < n; i++) {
+        double t0 = rb_bench_now_s();
+        sink += rb_bench_sdof_newmark(s, scale, m->freq_hz, m->damping);
+        t[i] = rb_bench_now_s() - t0;
+    }
+    (void)sink;
+    qsort(t, (size_t)n, sizeof *t, cmp);
+    return t[n / 2];
 }
 
 /* Solve n times into r; the times, sorted, into t. 0, or -1 after
@@ -93,6 +113,9 @@ int main(int argc, char **argv)
     printf("simulated           %.2f s\n", r.t_end_s);
     printf("usage L/R           %.3f / %.3f\n", r.usage[0], r.usage[1]);
     printf("target              2 ms: %s\n", med < 2e-3 ? "met" : "NOT met");
+    double sdof = sdof_median(&s, mo.scale, &m, runs, t);
+    printf("linear SDOF loop    %.4f ms over the same record (Newmark, %zu steps); the "
+           "solve is %.1f x that\n", 1e3 * sdof, s.n - 1, med / sdof);
 
     /* What users run: the 40 s record at its own 100 Hz through the building,
      * whose floor is exact between samples, with yielding and with
@@ -109,11 +132,14 @@ int main(int argc, char **argv)
         if (time_solves(&m, &mo, &o, n_runs, t, &r) != 0)
             return 3;
         med = t[n_runs / 2];
+        double sdof_full = sdof_median(&full, mo.scale, &m, n_runs, t);
         printf("%s bolts, El Centro %.0f s at %.0f Hz through the 5 Hz building, "
-               "0.4 A*: median solve %.3f ms over %d runs (%ld steps; target %s: %s)\n",
+               "0.4 A*: median solve %.3f ms over %d runs (%ld steps; target %s: %s); "
+               "%.1f x the linear SDOF loop (%.4f ms)\n",
                model == 0 ? "rigid-plastic" : "elastic-plastic", mo.duration_s,
                1 / full.dt_s, 1e3 * med, n_runs, r.steps, model == 0 ? "1 ms" : "2 ms",
-               med < (model == 0 ? 1e-3 : 2e-3) ? "met" : "NOT met");
+               med < (model == 0 ? 1e-3 : 2e-3) ? "met" : "NOT met", med / sdof_full,
+               1e3 * sdof_full);
     }
     /* the same record at 0.002 A*: the cabinet never leaves the floor and
      * nearly every step is an exact one, so this is what the check points,
@@ -123,9 +149,12 @@ int main(int argc, char **argv)
     mo.scale = 0.002 * d.a_star_mps2 / rb_series_peak(&full);
     if (time_solves(&m, &mo, &o, runs, t, &r) != 0)
         return 3;
+    med = t[runs / 2];
+    double sdof_floor = sdof_median(&full, mo.scale, &m, runs, t);
     printf("on the floor throughout, the same at 0.002 A*: median solve %.3f ms over %d runs "
-           "(%ld steps, %ld exact, %ld events)\n", 1e3 * t[runs / 2], runs, r.steps,
-           r.exact_steps, r.events);
+           "(%ld steps, %ld exact, %ld events); %.1f x the linear SDOF loop (%.4f ms)\n",
+           1e3 * med, runs, r.steps, r.exact_steps, r.events, med / sdof_floor,
+           1e3 * sdof_floor);
     mo.scale = 0.4 * d.a_star_mps2 / rb_series_peak(&full);
     /* the independent cross-check, Dormand-Prince throughout at a
      * thousandth of the tolerance (no target: it is what a user pays to
@@ -135,8 +164,11 @@ int main(int argc, char **argv)
     int n_rk = (runs + 9) / 10;
     if (time_solves(&m, &mo, &o, n_rk, t, &r) != 0)
         return 3;
+    med = t[n_rk / 2];
+    double sdof_rk = sdof_median(&full, mo.scale, &m, n_rk, t);
     printf("rigid-plastic bolts, the same with integrator rk45: median solve %.3f ms over %d "
-           "runs (%ld steps)\n", 1e3 * t[n_rk / 2], n_rk, r.steps);
+           "runs (%ld steps); %.1f x the linear SDOF loop\n", 1e3 * med, n_rk, r.steps,
+           med / sdof_rk);
     rb_series_free(&full);
     free(t);
     rb_series_free(&s);
