@@ -22,6 +22,8 @@ extern const rb_enum_name rb_motion_type_names[];   /* rb_motion_kind: harmonic,
 extern const rb_enum_name rb_case_motion_type_names[]; /* rb_case_motion_type (case.h):
                                                        harmonic, pulse, record,
                                                        synthetic */
+extern const rb_enum_name rb_axis_names[];          /* rb_axis: h1, h2, v */
+extern const rb_enum_name rb_between_names[];       /* rb_between: linear, building, sampled */
 extern const rb_enum_name rb_target_type_names[];   /* rb_target_kind: ac156, table */
 extern const rb_enum_name rb_ac156_edition_names[]; /* rb_ac156_edition */
 extern const rb_enum_name rb_pulse_shape_names[];   /* rb_pulse_shape */

@@ -12,6 +12,7 @@
 
 #include "rockbolt/case.h"
 #include "rockbolt/design.h"
+#include "rockbolt/floors.h"
 #include "rockbolt/fragility.h"
 #include "rockbolt/report.h"
 
@@ -99,6 +100,19 @@ size_t rb_run_fragility_searches(const rb_case *c);
  * critical excitation). */
 rb_status rb_run_spectra(const rb_case *c, const rb_spectrum_opts *o, rb_case_spectra *out,
                          rb_diag *diag);
+/* ---- Floor accelerations for a table ------------------------------------ */
+
+/* Every motion of c as the cabinet feels it (rockbolt/floors.h): H1, and
+ * V where the motion has a vertical, sampled from t = 0 to the end of its
+ * run, polarity and scale applied; each with its peak, Arias intensity
+ * and, for a component matched to a target, its fit at the target's
+ * check points. out is owned by the caller (rb_case_floors_free, also
+ * after an error). RB_ERR_INVALID (diag->key the motion's name) for the
+ * critical excitation, which has no acceleration of its own, and a
+ * series whose first sample is off its own step from 0; RB_ERR_LIMIT for
+ * a component over RB_FLOOR_MAX_SAMPLES. */
+rb_status rb_run_floors(const rb_case *c, rb_case_floors *out, rb_diag *diag);
+
 /* Restate a fragility of c (from rb_run_fragility, in peak floor
  * acceleration) in another intensity: RB_IM_SA, the 5 % pseudo-spectral
  * acceleration at the cabinet's fixed-base frequency. A motion's Sa is

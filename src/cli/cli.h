@@ -27,7 +27,8 @@ typedef enum {
     RB_CMD_DESIGN,
     RB_CMD_INIT,
     RB_CMD_FRAGILITY,
-    RB_CMD_SPECTRUM
+    RB_CMD_SPECTRUM,
+    RB_CMD_MOTION
 } rb_cli_command;
 
 typedef struct {
@@ -46,6 +47,7 @@ typedef struct {
     const char *sandbox_dir;  /* --sandbox DIR: inputs must lie inside, or NULL */
     const char *help_command; /* help: the command asked about, or NULL */
     const char *csv_path;     /* fragility: --csv FILE, or NULL */
+    const char *dir_path;     /* motion: --dir DIR, or NULL */
     const char *p58_path;     /* fragility: --p58 FILE, or NULL */
     const char *pdf_path;     /* --pdf FILE: the calculation package, or NULL */
     unsigned long long seed;  /* fragility: --seed N of the bootstrap */
@@ -92,10 +94,22 @@ typedef struct {
     rb_status (*figure)(const void *ctx, const char *title, char **out, rb_diag *d);
     char *(*p58)(const void *ctx);  /* fragility --p58; NULL elsewhere */
     const rb_case *kase;      /* --pdf: the cover's case; NULL elsewhere */
+    /* the outputs planned under the option other_opt (motion's --dir),
+     * filled by other with the plan's index; NULL elsewhere */
+    const char *other_opt;
+    rb_status (*other)(const void *ctx, size_t i, FILE *fp, rb_diag *d);
 } rb_cli_renders;
 /* Write the planned outputs (all or none), then the text on stdout unless
  * --quiet or an output is stdout. */
 rb_exit rb_cli_emit_case_outputs(const rb_cli_opts *o, rb_outplan *p, const rb_cli_renders *r);
+
+/* rockbolt motion (cli_motion.c). */
+rb_exit rb_cli_motion_run(const rb_cli_opts *o);
+
+/* --reports DIR of batch, --dir DIR of motion: DIR is created if missing
+ * (its parent must exist; *created then set), else must be a writable
+ * directory. RB_EXIT_USAGE after printing why, naming opt. */
+rb_exit rb_cli_output_dir(const char *dir, const char *opt, int *created);
 
 /* rockbolt spectrum (cli_spectrum.c). */
 rb_exit rb_cli_spectrum_run(const rb_cli_opts *o);

@@ -130,7 +130,7 @@ static rb_exit take_threads(const char *v, rb_cli_opts *o)
 
 enum { OPT_JSON = 256, OPT_TEXT, OPT_HISTORY, OPT_SVG, OPT_HTML, OPT_SANDBOX,
        OPT_SWEEP_CSV, OPT_CSV, OPT_SEED, OPT_DAMPING, OPT_FROM, OPT_TO, OPT_PER_OCTAVE,
-       OPT_AC156, OPT_X_SCALE, OPT_SWEEP_GAP, OPT_INTENSITY, OPT_P58, OPT_PDF };
+       OPT_AC156, OPT_X_SCALE, OPT_SWEEP_GAP, OPT_INTENSITY, OPT_P58, OPT_PDF, OPT_DIR };
 
 /* Every long option once, with the commands that take it: each command's
  * table is drawn from this one, so an option means the same everywhere. */
@@ -139,11 +139,13 @@ enum { OPT_JSON = 256, OPT_TEXT, OPT_HISTORY, OPT_SVG, OPT_HTML, OPT_SANDBOX,
 #define FRAGILITY (1u << RB_CMD_FRAGILITY)
 #define INIT (1u << RB_CMD_INIT)
 #define SPECTRUM (1u << RB_CMD_SPECTRUM)
+#define MOTION (1u << RB_CMD_MOTION)
 static const struct {
     struct option o;
     unsigned commands;
 } all_longs[] = {
-    {{"json", required_argument, NULL, OPT_JSON}, CHECK | DESIGN | FRAGILITY | SPECTRUM},
+    {{"json", required_argument, NULL, OPT_JSON},
+     CHECK | DESIGN | FRAGILITY | SPECTRUM | MOTION},
     {{"text", required_argument, NULL, OPT_TEXT}, CHECK | DESIGN},
     {{"history", required_argument, NULL, OPT_HISTORY}, CHECK | DESIGN},
     {{"svg", required_argument, NULL, OPT_SVG}, CHECK | DESIGN | FRAGILITY | SPECTRUM},
@@ -151,8 +153,9 @@ static const struct {
     {{"pdf", required_argument, NULL, OPT_PDF}, CHECK | DESIGN | FRAGILITY},
     {{"csv", required_argument, NULL, OPT_CSV}, FRAGILITY | SPECTRUM},
     {{"p58", required_argument, NULL, OPT_P58}, FRAGILITY},
+    {{"dir", required_argument, NULL, OPT_DIR}, MOTION},
     {{"sandbox", required_argument, NULL, OPT_SANDBOX},
-     CHECK | DESIGN | FRAGILITY | SPECTRUM},
+     CHECK | DESIGN | FRAGILITY | SPECTRUM | MOTION},
     {{"sweep-csv", required_argument, NULL, OPT_SWEEP_CSV}, DESIGN},
     {{"seed", required_argument, NULL, OPT_SEED}, FRAGILITY},
     {{"damping", required_argument, NULL, OPT_DAMPING}, SPECTRUM},
@@ -164,8 +167,9 @@ static const struct {
     {{"sweep-gap", required_argument, NULL, OPT_SWEEP_GAP}, FRAGILITY},
     {{"intensity", required_argument, NULL, OPT_INTENSITY}, FRAGILITY},
     {{"threads", required_argument, NULL, 'j'}, DESIGN | FRAGILITY},
-    {{"quiet", no_argument, NULL, 'q'}, CHECK | DESIGN | FRAGILITY | SPECTRUM},
-    {{"help", no_argument, NULL, 'h'}, CHECK | DESIGN | FRAGILITY | INIT | SPECTRUM},
+    {{"quiet", no_argument, NULL, 'q'}, CHECK | DESIGN | FRAGILITY | SPECTRUM | MOTION},
+    {{"help", no_argument, NULL, 'h'},
+     CHECK | DESIGN | FRAGILITY | INIT | SPECTRUM | MOTION},
 };
 #define N_LONGS (sizeof all_longs / sizeof all_longs[0])
 
@@ -232,6 +236,8 @@ static rb_exit take_option(int c, const rb_cli_getopt *g, rb_cli_opts *o)
         return take_value(g->name, g->arg, &o->p58_path);
     case OPT_PDF:
         return take_value(g->name, g->arg, &o->pdf_path);
+    case OPT_DIR:
+        return take_value(g->name, g->arg, &o->dir_path);
     case OPT_SEED:
         return rb_cli_take_seed(g->arg, &o->seed);
     case OPT_SWEEP_GAP:
@@ -308,7 +314,8 @@ static rb_exit check_distinct(const rb_cli_opts *o)
 static rb_exit parse_rest(int argc, char **argv, rb_cli_opts *o)
 {
     int takes_case = o->command == RB_CMD_CHECK || o->command == RB_CMD_DESIGN
-                     || o->command == RB_CMD_FRAGILITY || o->command == RB_CMD_SPECTRUM;
+                     || o->command == RB_CMD_FRAGILITY || o->command == RB_CMD_SPECTRUM
+                     || o->command == RB_CMD_MOTION;
     const char **positional = takes_case ? &o->case_path : &o->init_path;
     const char *cmd = argv[1];
     rb_cli_getopt g;
@@ -329,6 +336,7 @@ static rb_exit parse_rest(int argc, char **argv, rb_cli_opts *o)
                          : strcmp(g.name, "--x-scale") == 0 ? "log or linear"
                          : strcmp(g.name, "--intensity") == 0 ? "pfa or sa"
                          : strcmp(g.name, "--sweep-gap") == 0 ? "FROM:TO:STEP"
+                         : strcmp(g.name, "--dir") == 0 ? "a directory"
                          : o->command == RB_CMD_SPECTRUM && strcmp(g.name, "--json")
                            && strcmp(g.name, "--csv") && strcmp(g.name, "--svg")
                            && strcmp(g.name, "--html") && strcmp(g.name, "--sandbox")
@@ -362,7 +370,7 @@ rb_exit rb_cli_args_parse(int argc, char **argv, rb_cli_opts *o)
     memset(o, 0, sizeof *o);
     rb_spectrum_opts_init(&o->spectrum);
     static const char *const commands[] = {"check", "design", "batch", "merge",
-                                           "init", "fragility", "spectrum", "help",
+                                           "init", "fragility", "spectrum", "motion", "help",
                                            "version",
                                            NULL};
     if (!cmd) {
@@ -398,6 +406,8 @@ rb_exit rb_cli_args_parse(int argc, char **argv, rb_cli_opts *o)
         o->command = RB_CMD_FRAGILITY;
     else if (!strcmp(cmd, "spectrum"))
         o->command = RB_CMD_SPECTRUM;
+    else if (!strcmp(cmd, "motion"))
+        o->command = RB_CMD_MOTION;
     else {
         rb_cli_unknown_word("command", cmd, commands, NULL);
         return RB_EXIT_USAGE;
@@ -412,7 +422,8 @@ rb_exit rb_cli_args_parse(int argc, char **argv, rb_cli_opts *o)
     if (!o->case_path) {
         const char *c = o->command == RB_CMD_DESIGN ? "design"
                         : o->command == RB_CMD_FRAGILITY ? "fragility"
-                        : o->command == RB_CMD_SPECTRUM ? "spectrum" : "check";
+                        : o->command == RB_CMD_SPECTRUM ? "spectrum"
+                        : o->command == RB_CMD_MOTION ? "motion" : "check";
         rb_cli_error(NULL, NULL, "'%s' needs a case file: rockbolt %s CASE.yaml", c, c);
         return RB_EXIT_USAGE;
     }

@@ -14,27 +14,6 @@
 #include "cli_batch.h"
 #include "rockbolt/record_cache.h"
 
-/* --reports DIR: created if missing (its parent must exist); *created set. */
-static rb_exit check_reports_dir(const char *dir, int *created)
-{
-    struct stat sb;
-    *created = 0;
-    if (stat(dir, &sb) != 0) {
-        if (errno == ENOENT && mkdir(dir, 0777) == 0) {
-            *created = 1;
-            return RB_EXIT_PASS;
-        }
-        rb_cli_error(dir, "--reports", "cannot create the directory: %s",
-                     strerror(errno));
-        return RB_EXIT_USAGE;
-    }
-    if (!S_ISDIR(sb.st_mode) || access(dir, W_OK | X_OK) != 0) {
-        rb_cli_error(dir, "--reports", "not a writable directory");
-        return RB_EXIT_USAGE;
-    }
-    return RB_EXIT_PASS;
-}
-
 /* --base must be a regular file it can open: a FIFO would block the open
  * (and every row's load) for ever, so it is opened without waiting and
  * looked at before anything is read. */
@@ -250,7 +229,7 @@ rb_exit rb_cli_batch_main(int argc, char **argv)
     if (e == RB_EXIT_PASS && o.base)
         e = check_base(o.base);
     if (e == RB_EXIT_PASS && o.reports_dir)
-        e = check_reports_dir(o.reports_dir, &made_dir);
+        e = rb_cli_output_dir(o.reports_dir, "--reports", &made_dir);
     l.encoding = o.encoding;
     if (e == RB_EXIT_PASS)
         e = build_list(&o, &l);

@@ -1,11 +1,15 @@
 /* What the commands that read one case and write figures and tables from
- * it (fragility, spectrum) share: planning --json, --csv, --svg, --html and --pdf
- * against the case, loading the case with its own files added to the
+ * it (fragility, spectrum, motion) share: planning --json, --csv, --svg,
+ * --html and --pdf against the case (and creating motion's and batch's
+ * output directories), loading the case with its own files added to the
  * plan's inputs, so that no output can replace one, and writing the
  * outputs and the table on stdout from the command's renderers. */
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include "cli.h"
 #include "cli_batch.h"
 #include "rockbolt/pdf.h"
@@ -24,6 +28,25 @@ rb_exit rb_cli_plan_case_outputs(const rb_cli_opts *o, rb_outplan *p)
         if (paths[k])
             st = rb_outplan_add(p, opts[k], paths[k], &d);
     return st == RB_OK ? RB_EXIT_PASS : rb_cli_plan_error(st, &d);
+}
+
+rb_exit rb_cli_output_dir(const char *dir, const char *opt, int *created)
+{
+    struct stat sb;
+    *created = 0;
+    if (stat(dir, &sb) != 0) {
+        if (errno == ENOENT && mkdir(dir, 0777) == 0) {
+            *created = 1;
+            return RB_EXIT_PASS;
+        }
+        rb_cli_error(dir, opt, "cannot create the directory: %s", strerror(errno));
+        return RB_EXIT_USAGE;
+    }
+    if (!S_ISDIR(sb.st_mode) || access(dir, W_OK | X_OK) != 0) {
+        rb_cli_error(dir, opt, "not a writable directory");
+        return RB_EXIT_USAGE;
+    }
+    return RB_EXIT_PASS;
 }
 
 rb_exit rb_cli_load_case_planned(const rb_cli_opts *o, rb_case *c, rb_outplan *p)
@@ -87,6 +110,12 @@ static rb_status fill(void *ctx, size_t i, FILE *fp, rb_diag *d)
     const char *opt = plan->outs[i].opt;
     char *text = NULL;
     rb_status st = RB_OK;
+    if (r->other_opt && strcmp(opt, r->other_opt) == 0) {
+        st = r->other(r->ctx, i, fp, d);
+        if (st != RB_OK && !d->msg[0])
+            snprintf(d->msg, sizeof d->msg, "%s", rb_status_str(st));
+        return st;
+    }
     if (strcmp(opt, "--pdf") == 0) {
         st = pdf(r, fp, d);
         if (st != RB_OK && !d->msg[0])

@@ -107,7 +107,7 @@ rb_exit rb_cli_fragility_run(const rb_cli_opts *o)
         snprintf(title, sizeof title, "Fragility of %.200s%s", c.name ? c.name : "the case",
                  o->sweep_gap ? " against the gap ratio" : "");
         rb_cli_renders r = {&out, title, "fragility", text_of, json_of, csv_of, figure,
-                           p58_of, &c};
+                           p58_of, &c, NULL, NULL};
         e = rb_cli_emit_case_outputs(o, &p, &r);
     }
     rb_case_fragility_free(&f);

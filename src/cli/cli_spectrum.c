@@ -68,7 +68,7 @@ rb_exit rb_cli_spectrum_run(const rb_cli_opts *o)
                  c.name ? c.name : "the case");
         outputs out = {&c, &s};
         rb_cli_renders r = {&out, title, "spectra", text_of, json_of, csv_of, figure,
-                           NULL, NULL};
+                           NULL, NULL, NULL, NULL};
         e = rb_cli_emit_case_outputs(o, &p, &r);
     }
     rb_case_spectra_free(&s);

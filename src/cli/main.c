@@ -35,6 +35,8 @@ int main(int argc, char **argv)
         return (int)rb_cli_fragility_run(&o);
     case RB_CMD_SPECTRUM:
         return (int)rb_cli_spectrum_run(&o);
+    case RB_CMD_MOTION:
+        return (int)rb_cli_motion_run(&o);
     case RB_CMD_NONE:
         break;
     }

@@ -1,6 +1,7 @@
 /* The name tables of include/rockbolt/names.h. */
 #include <string.h>
 #include "rockbolt/criteria.h"
+#include "rockbolt/floors.h"
 #include "rockbolt/model.h"
 #include "rockbolt/motion.h"
 #include "rockbolt/names.h"
@@ -31,6 +32,11 @@ const rb_enum_name rb_motion_type_names[] = {
     {"record", RB_MOTION_SAMPLED}, {"critical", RB_MOTION_CRITICAL}, {NULL, 0}};
 const rb_enum_name rb_case_motion_type_names[] = {
     {"harmonic", 0}, {"pulse", 1}, {"record", 2}, {"synthetic", 3}, {NULL, 0}};
+const rb_enum_name rb_axis_names[] = {
+    {"h1", RB_AXIS_H1}, {"h2", RB_AXIS_H2}, {"v", RB_AXIS_V}, {NULL, 0}};
+const rb_enum_name rb_between_names[] = {
+    {"linear", RB_BETWEEN_LINEAR}, {"building", RB_BETWEEN_BUILDING},
+    {"sampled", RB_BETWEEN_SAMPLED}, {NULL, 0}};
 const rb_enum_name rb_target_type_names[] = {
     {"ac156", RB_TARGET_AC156}, {"table", RB_TARGET_TABLE}, {NULL, 0}};
 const rb_enum_name rb_ac156_edition_names[] = {

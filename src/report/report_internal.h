@@ -105,6 +105,9 @@ rb_status rb_report_text_motion_anchor_modes(const rb_report *r, const rb_report
 void rb_report_json_num(rb_strbuf *b, const char *key, double v, int comma);
 /* Text from the case as a JSON string, escaped as every output escapes it. */
 void rb_report_json_str(rb_strbuf *b, const char *s);
+/* "target": {type, its levels, damping, check range and band}, then ", "
+ * (spectrum_write.c). */
+void rb_report_target_json(rb_strbuf *b, const rb_target *t);
 /* Limit state k of f as one JSON object, on one line. */
 void rb_report_fragility_limit_json(rb_strbuf *b, const rb_case_fragility *f, int k);
 /* "judged_limit_states": [...], "governing_limit_state": name or null

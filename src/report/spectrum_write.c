@@ -133,30 +133,6 @@ static void array(rb_strbuf *b, const char *key, const double *v, size_t n)
     rb_strbuf_puts(b, "]");
 }
 
-static void json_target(rb_strbuf *b, const rb_target *t)
-{
-    rb_strbuf_printf(b, "\"target\": {\"type\": \"%s\", ",
-                     rb_enum_str(rb_target_type_names, (int)t->kind));
-    if (t->kind == RB_TARGET_AC156) {
-        double flx, rig;
-        rb_ac156_levels(t->edition, t->sds_mps2, t->z_over_h, &flx, &rig);
-        rb_strbuf_printf(b, "\"edition\": \"%s\", ",
-                         rb_enum_str(rb_ac156_edition_names, (int)t->edition));
-        rb_report_json_num(b, "sds_mps2", t->sds_mps2, 1);
-        rb_report_json_num(b, "z_over_h", t->z_over_h, 1);
-        rb_report_json_num(b, "a_flx_mps2", flx, 1);
-        rb_report_json_num(b, "a_rig_mps2", rig, 1);
-        rb_report_json_num(b, "min_peak_mps2", t->min_peak_mps2, 1);
-    }
-    rb_report_json_num(b, "damping", t->damping, 1);
-    rb_report_json_num(b, "check_from_hz", t->check_from_hz, 1);
-    rb_report_json_num(b, "check_to_hz", t->check_to_hz, 1);
-    rb_report_json_num(b, "check_per_octave", t->check_per_octave, 1);
-    rb_report_json_num(b, "band_lower", t->band_lower, 1);
-    rb_report_json_num(b, "band_upper", t->band_upper, 0);
-    rb_strbuf_puts(b, "}, ");
-}
-
 char *rb_spectra_render_json(const rb_case *c, const rb_case_spectra *s)
 {
     rb_strbuf b = {0};
@@ -190,7 +166,7 @@ char *rb_spectra_render_json(const rb_case *c, const rb_case_spectra *s)
             rb_report_json_num(&b, "peak_displacement_m", cm->synth.peak_displacement_m, 1);
         }
         if (ms->has_target) {
-            json_target(&b, cm->target);
+            rb_report_target_json(&b, cm->target);
             rb_strbuf_puts(&b, "\"fit\": {");
             rb_report_json_num(&b, "min_ratio", ms->fit.min_ratio, 1);
             rb_report_json_num(&b, "min_at_hz", ms->fit.min_at_hz, 1);
@@ -232,4 +208,30 @@ char *rb_spectra_render_csv(const rb_case *c, const rb_case_spectra *s)
         free(name);
     }
     return rb_strbuf_take(&b);
+}
+
+/* "target": {...}, with ", " after it: what a target is, for every JSON
+ * output that compares a motion with one. */
+void rb_report_target_json(rb_strbuf *b, const rb_target *t)
+{
+    rb_strbuf_printf(b, "\"target\": {\"type\": \"%s\", ",
+                     rb_enum_str(rb_target_type_names, (int)t->kind));
+    if (t->kind == RB_TARGET_AC156) {
+        double flx, rig;
+        rb_ac156_levels(t->edition, t->sds_mps2, t->z_over_h, &flx, &rig);
+        rb_strbuf_printf(b, "\"edition\": \"%s\", ",
+                         rb_enum_str(rb_ac156_edition_names, (int)t->edition));
+        rb_report_json_num(b, "sds_mps2", t->sds_mps2, 1);
+        rb_report_json_num(b, "z_over_h", t->z_over_h, 1);
+        rb_report_json_num(b, "a_flx_mps2", flx, 1);
+        rb_report_json_num(b, "a_rig_mps2", rig, 1);
+        rb_report_json_num(b, "min_peak_mps2", t->min_peak_mps2, 1);
+    }
+    rb_report_json_num(b, "damping", t->damping, 1);
+    rb_report_json_num(b, "check_from_hz", t->check_from_hz, 1);
+    rb_report_json_num(b, "check_to_hz", t->check_to_hz, 1);
+    rb_report_json_num(b, "check_per_octave", t->check_per_octave, 1);
+    rb_report_json_num(b, "band_lower", t->band_lower, 1);
+    rb_report_json_num(b, "band_upper", t->band_upper, 0);
+    rb_strbuf_puts(b, "}, ");
 }
