@@ -6,6 +6,7 @@
 #define ROCKBOLT_FLOORS_H
 
 #include <stddef.h>
+#include "rockbolt/accept.h"
 #include "rockbolt/motion.h"
 #include "rockbolt/spectrum.h"
 
@@ -39,12 +40,11 @@ typedef struct {
     int present;
     rb_series s;            /* owned: samples at t = i dt from 0, m/s^2, up to
                                the run's end (the solver's floor is 0 past
-                               the last one); no building kept */
+                               the last one); through a building with the
+                               building's state (s.bld), the solver's own */
     rb_between between;
-    double peak_mps2;       /* the solver's floor's peak, between samples too */
-    double arias_mps, arias_t5_s, arias_t95_s; /* of the samples */
     const rb_target *target;/* borrowed: the target it was matched to, or NULL */
-    rb_target_fit fit;      /* against it at its check points (target set) */
+    rb_motion_summary sum;  /* rb_motion_summarise of s against target */
 } rb_floor_component;
 
 typedef struct {

@@ -9,6 +9,7 @@
 #include "rockbolt/floor_files.h"
 #include "rockbolt/names.h"
 #include "rockbolt/textsafe.h"
+#include "rockbolt/units.h"
 #include "report_internal.h"
 
 static const char *motion_name(const rb_case *c, size_t m)
@@ -77,42 +78,89 @@ static const char *file_of(const char *const *files, size_t m, int a, rb_floor_f
 
 /* ---- the summary --------------------------------------------------------- */
 
+/* A velocity in the case's units: its small length per second. */
+static void put_velocity(rb_strbuf *b, rb_unit_system u, double v)
+{
+    rb_strbuf_printf(b, "%.4g %s/s", rb_qty_value(u, RB_Q_SMALL_LENGTH, v),
+                     rb_qty_unit(u, RB_Q_SMALL_LENGTH));
+}
+
+static void text_component(rb_strbuf *b, const rb_case *c, const rb_floor_motion *fm,
+                           int a, const char *name)
+{
+    const rb_floor_component *fc = &fm->axis[a];
+    const rb_motion_summary *sm = &fc->sum;
+    rb_unit_system u = c->output_units;
+    rb_strbuf_printf(b, "%s %s: %zu samples at %g s, run %g s (%s)\n", name,
+                     rb_enum_str(rb_axis_names, a), fc->s.n, fc->s.dt_s, fm->run_s,
+                     rb_enum_str(rb_between_names, (int)fc->between));
+    rb_strbuf_printf(b, "    PGA %s, PGV ", rb_qty_str(u, RB_Q_ACCEL, sm->pga_mps2, 4).s);
+    put_velocity(b, u, sm->pgv_mps);
+    rb_strbuf_printf(b, ", PGD %s, Arias 5-95 %% %.2f s (%.2f to %.2f s)\n",
+                     rb_qty_str(u, RB_Q_SMALL_LENGTH, sm->pgd_m, 4).s,
+                     sm->arias_t95_s - sm->arias_t5_s, sm->arias_t5_s, sm->arias_t95_s);
+    if (!sm->has_target)
+        return;
+    const rb_accept_result *ac = &sm->accept;
+    rb_strbuf_printf(b, "    TRS / RRS %.3f (%.2f Hz) to %.3f (%.2f Hz) on the 1/%d-octave "
+                     "grid; least margin %.3f at offset %u: %s\n", ac->min_ratio,
+                     ac->min_at_hz, ac->max_ratio, ac->max_at_hz, RB_ACCEPT_PER_OCTAVE,
+                     ac->margin, ac->worst, ac->pass ? "accepted at every offset"
+                     : "NOT accepted at every offset");
+    if (fc->target->min_peak_mps2 > 0)
+        rb_strbuf_printf(b, "    peak %s the target's least, %s\n",
+                         sm->peak_ok ? "reaches" : "is BELOW",
+                         rb_qty_str(u, RB_Q_ACCEL, fc->target->min_peak_mps2, 4).s);
+}
+
 char *rb_floors_render_text(const rb_case *c, const rb_case_floors *f,
                             const char *const *files)
 {
     rb_strbuf b = {0};
     char name[128], path[512];
-    double g = f->g_mps2;
     rb_strbuf_printf(&b, "floor motions of %s as the cabinet feels them: %zu motion%s\n",
                      rb_text_escape_buf(c->name ? c->name : "case", name, sizeof name),
                      f->n_motions, f->n_motions == 1 ? "" : "s");
-    rb_strbuf_printf(&b, "%-24s %-4s %10s %9s %9s %9s %8s  %s\n", "motion", "axis", "dt s",
-                     "samples", "run s", "peak g", "5-95% s",
-                     "response / target at its check points");
     for (size_t m = 0; m < f->n_motions; m++) {
-        const rb_floor_motion *fm = &f->motions[m];
         rb_text_escape_buf(motion_name(c, m), name, sizeof name);
         for (int a = 0; a < RB_AXIS_COUNT; a++) {
-            const rb_floor_component *fc = &fm->axis[a];
-            if (!fc->present)
+            if (!f->motions[m].axis[a].present)
                 continue;
-            rb_strbuf_printf(&b, "%-24s %-4s %10.6g %9zu %9.3f %9.4f %8.2f", name,
-                             rb_enum_str(rb_axis_names, a), fc->s.dt_s, fc->s.n, fm->run_s,
-                             fc->peak_mps2 / g, fc->arias_t95_s - fc->arias_t5_s);
-            if (fc->target)
-                rb_strbuf_printf(&b, "  %.3f (%.2f Hz) to %.3f (%.2f Hz) %s",
-                                 fc->fit.min_ratio, fc->fit.min_at_hz, fc->fit.max_ratio,
-                                 fc->fit.max_at_hz, fc->fit.within ? "within" : "OUTSIDE");
-            rb_strbuf_puts(&b, "\n");
-            for (int k = 0; k < RB_FLOOR_FILE_KINDS; k++)
-                if (file_of(files, m, a, (rb_floor_file_kind)k))
-                    rb_strbuf_printf(&b, "    %s\n",
-                                     rb_text_escape_buf(file_of(files, m, a,
-                                                        (rb_floor_file_kind)k),
-                                                        path, sizeof path));
+            text_component(&b, c, &f->motions[m], a, name);
+            for (int k = 0; k < RB_FLOOR_FILE_KINDS; k++) {
+                const char *p = file_of(files, m, a, (rb_floor_file_kind)k);
+                if (p)
+                    rb_strbuf_printf(&b, "    %s\n", rb_text_escape_buf(p, path, sizeof path));
+            }
         }
     }
     return rb_strbuf_take(&b);
+}
+
+/* The acceptance as JSON: the rules' outcome at every offset. */
+static void json_accept(rb_strbuf *b, const rb_accept_result *ac)
+{
+    rb_strbuf_puts(b, "\"acceptance\": {");
+    rb_strbuf_printf(b, "\"pass\": %s, \"worst_offset\": %u, ", ac->pass ? "true" : "false",
+                     ac->worst);
+    rb_report_json_num(b, "margin", ac->margin, 1);
+    rb_report_json_num(b, "min_ratio", ac->min_ratio, 1);
+    rb_report_json_num(b, "min_at_hz", ac->min_at_hz, 1);
+    rb_report_json_num(b, "max_ratio", ac->max_ratio, 1);
+    rb_report_json_num(b, "max_at_hz", ac->max_at_hz, 1);
+    rb_strbuf_printf(b, "\"above_guide\": %s, ", ac->above_guide ? "true" : "false");
+    rb_report_json_num(b, "tail_min_ratio", ac->tail_min_ratio, 1);
+    rb_report_json_num(b, "tail_max_ratio", ac->tail_max_ratio, 1);
+    rb_strbuf_puts(b, "\"offsets\": [");
+    for (int k = 0; k < RB_ACCEPT_OFFSETS; k++) {
+        const rb_accept_offset *o = &ac->offset[k];
+        rb_strbuf_printf(b, "%s{\"pass\": %s, ", k ? ", " : "", o->pass ? "true" : "false");
+        rb_report_json_num(b, "margin", o->margin, 1);
+        rb_report_json_num(b, "min_ratio", o->min_ratio, 1);
+        rb_report_json_num(b, "max_ratio", o->max_ratio, 0);
+        rb_strbuf_puts(b, "}");
+    }
+    rb_strbuf_puts(b, "]}, ");
 }
 
 static void json_component(rb_strbuf *b, const rb_floor_component *fc, int a,
@@ -123,19 +171,19 @@ static void json_component(rb_strbuf *b, const rb_floor_component *fc, int a,
                      rb_enum_str(rb_between_names, (int)fc->between));
     rb_report_json_num(b, "dt_s", fc->s.dt_s, 1);
     rb_strbuf_printf(b, "\"samples\": %zu, ", fc->s.n);
-    rb_report_json_num(b, "peak_mps2", fc->peak_mps2, 1);
-    rb_report_json_num(b, "arias_mps", fc->arias_mps, 1);
-    rb_report_json_num(b, "arias_t5_s", fc->arias_t5_s, 1);
-    rb_report_json_num(b, "arias_t95_s", fc->arias_t95_s, 1);
-    if (fc->target) {
+    const rb_motion_summary *sm = &fc->sum;
+    rb_report_json_num(b, "pga_mps2", sm->pga_mps2, 1);
+    rb_report_json_num(b, "pgv_mps", sm->pgv_mps, 1);
+    rb_report_json_num(b, "pgd_m", sm->pgd_m, 1);
+    rb_report_json_num(b, "end_velocity_mps", sm->end_velocity_mps, 1);
+    rb_report_json_num(b, "end_displacement_m", sm->end_displacement_m, 1);
+    rb_report_json_num(b, "arias_mps", sm->arias_mps, 1);
+    rb_report_json_num(b, "arias_t5_s", sm->arias_t5_s, 1);
+    rb_report_json_num(b, "arias_t95_s", sm->arias_t95_s, 1);
+    if (sm->has_target) {
         rb_report_target_json(b, fc->target);
-        rb_strbuf_puts(b, "\"fit\": {");
-        rb_report_json_num(b, "min_ratio", fc->fit.min_ratio, 1);
-        rb_report_json_num(b, "min_at_hz", fc->fit.min_at_hz, 1);
-        rb_report_json_num(b, "max_ratio", fc->fit.max_ratio, 1);
-        rb_report_json_num(b, "max_at_hz", fc->fit.max_at_hz, 1);
-        rb_strbuf_printf(b, "\"points\": %zu, \"within\": %s}, ", fc->fit.n_checked,
-                         fc->fit.within ? "true" : "false");
+        json_accept(b, &sm->accept);
+        rb_strbuf_printf(b, "\"peak_ok\": %s, ", sm->peak_ok ? "true" : "false");
     }
     rb_strbuf_puts(b, "\"files\": {");
     static const char *const kinds[RB_FLOOR_FILE_KINDS] = {"at2", "csv"};

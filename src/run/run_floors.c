@@ -1,8 +1,8 @@
 /* The floor accelerations of a case's motions as the cabinet feels them,
  * sampled for a shake table (`rockbolt motion`): the samples the solver
  * is driven by, polarity and scale applied, from t = 0 to the end of the
- * run; a closed form sampled finely. What describes each component comes
- * from the functions the other commands use (peak, Arias, target fit). */
+ * run; a closed form sampled finely. What describes each component is
+ * rb_motion_summarise's (peaks, Arias, the laboratory's acceptance). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -11,9 +11,11 @@
 #define STANDARD_GRAVITY 9.80665
 
 /* The samples of a sampled motion inside [0, run_s], as the solver reads
- * them: a series whose first sample is not at 0 starts on its own step
- * (zeros before it, which rb_series_at gives there too), samples before 0
- * are never reached. */
+ * them, polarity and scale applied: the motion's own series (its building
+ * kept) cut at the end of the run. A series whose first sample is not at
+ * 0 starts on its own step (zeros before it, as rb_series_at gives 0
+ * there; its building, if any, is then not kept); samples before 0 are
+ * never reached. */
 static rb_status sampled(const rb_motion *m, double run_s, rb_series *out, const char **why)
 {
     const rb_series *s = m->series;
@@ -32,15 +34,22 @@ static rb_status sampled(const rb_motion *m, double run_s, rb_series *out, const
         *why = "it takes more than 10 million samples up to the end of its run";
         return RB_ERR_LIMIT;
     }
-    rb_status st = rb_series_alloc(out, (size_t)end + 1, s->dt_s);
-    if (st != RB_OK)
-        return st;
     double f = (double)m->polarity * m->scale;
-    for (size_t i = 0; i < out->n; i++) {
+    rb_status st;
+    if (first == 0) {
+        st = rb_series_copy(s, out);
+        if (st == RB_OK)
+            rb_series_scale(out, f);
+        if (st == RB_OK && end + 1 < (double)out->n)
+            st = rb_series_window(out, 0.0, end * s->dt_s);
+        return st;
+    }
+    st = rb_series_alloc(out, (size_t)end + 1, s->dt_s);
+    for (size_t i = 0; st == RB_OK && i < out->n; i++) {
         double k = (double)i - first;
         out->accel_mps2[i] = k >= 0 && k < (double)s->n ? f * s->accel_mps2[(size_t)k] : 0.0;
     }
-    return RB_OK;
+    return st;
 }
 
 /* A closed form sampled RB_FLOOR_CLOSED_FORM_RATE times per period or
@@ -74,29 +83,19 @@ static rb_status component(const rb_motion *m, double run_s, const rb_target *ta
     }
     if (m->kind == RB_MOTION_SAMPLED) {
         st = m->series ? sampled(m, run_s, &fc->s, why) : RB_ERR_INVALID;
-        fc->between = m->series && m->series->bld.omega_rps > 0 ? RB_BETWEEN_BUILDING
-                                                                : RB_BETWEEN_LINEAR;
+        fc->between = st == RB_OK && fc->s.bld.omega_rps > 0 ? RB_BETWEEN_BUILDING
+                                                             : RB_BETWEEN_LINEAR;
     } else {
         st = closed(m, run_s, &fc->s, why);
         fc->between = RB_BETWEEN_SAMPLED;
     }
     if (st != RB_OK)
         return st;
-    fc->peak_mps2 = rb_motion_peak(m);
-    rb_series_arias(&fc->s, &fc->arias_mps, &fc->arias_t5_s, &fc->arias_t95_s);
-    if (!target)
-        return RB_OK;
-    rb_spectrum check;
-    st = rb_target_check_grid(target, &check);
-    if (st == RB_OK)
-        st = rb_spectrum_of_motion(m, &check);
-    if (st == RB_OK)
-        st = rb_target_compare(target, &check, &fc->fit);
-    rb_spectrum_free(&check);
+    st = rb_motion_summarise(&fc->s, target, NULL, &fc->sum);
     if (st == RB_OK)
         fc->target = target;
     else
-        *why = "no response spectrum against its target";
+        *why = "no summary of it (its response spectrum against its target)";
     return st;
 }
 
