@@ -27,11 +27,14 @@
 #define ROCKBOLT_ACI17_H
 
 #include <stdbool.h>
+#include "rockbolt/interaction.h"
+#include "rockbolt/names.h"
 
 typedef enum {
     RB_ACI17_SI = 0,  /* ACI 318M-19 coefficients */
     RB_ACI17_INLB     /* ACI 318-19 (in-lb) coefficients, converted exactly */
 } rb_aci17_coef;
+extern const rb_enum_name rb_aci17_coef_names[];    /* rb_aci17_coef: si, in-lb */
 
 /* Exact unit conversions (m per in, N per lbf, Pa per psi). */
 #define RB_ACI17_IN_M 0.0254
@@ -235,38 +238,7 @@ double rb_aci17_phi(rb_aci17_mode mode, bool ductile_steel, bool condition_a);
  * Returns 0.75 for those modes in tension and 1 otherwise. */
 double rb_aci17_seismic_factor(rb_aci17_mode mode, bool seismic);
 
-/* ---- Interaction, 17.8 ---- */
-
-/* Utilization of an anchor or group under tension Nua and shear Vua
- * (both >= 0) against the design strengths phi Nn and phi Vn (the least
- * of the modes): 17.8.1, Vua <= 0.2 phi Vn: Nua / phi Nn; 17.8.2,
- * Nua <= 0.2 phi Nn: Vua / phi Vn; 17.8.3 otherwise: the largest of
- * Nua / phi Nn, Vua / phi Vn and (Nua / phi Nn + Vua / phi Vn) / 1.2.
- * <= 1 passes. *which: 1, 2 or 3 for the clause used (may be NULL). */
-double rb_aci17_interaction(double nua_n, double phi_nn_n, double vua_n,
-                            double phi_vn_n, int *which);
-
-/* The interaction rule a check applies: the trilinear rule of 17.8.1-17.8.3,
- * or the 5/3-power rule of R17.8, (N/phi Nn)^(5/3) + (V/phi Vn)^(5/3) <= 1
- * (Hilti PROFIS's default). */
-typedef enum {
-    RB_ACI17_TRILINEAR = 0,
-    RB_ACI17_POWER
-} rb_aci17_interaction_rule;
-
-/* Which value of rb_aci17_interaction_by's *which the power rule gives. */
-#define RB_ACI17_WHICH_POWER 4
-
-/* The utilization under rule: rb_aci17_interaction for the trilinear rule;
- * for the power rule ((N/phi Nn)^(5/3) + (V/phi Vn)^(5/3))^(3/5), which
- * scales with the loads as the trilinear one does and reaches 1 where the
- * sum of R17.8 does; *which = RB_ACI17_WHICH_POWER. */
-double rb_aci17_interaction_by(rb_aci17_interaction_rule rule, double nua_n,
-                               double phi_nn_n, double vua_n, double phi_vn_n, int *which);
-
-/* The clause a *which of rb_aci17_interaction_by names: "17.8.1",
- * "17.8.2", "17.8.3" or "R17.8"; never NULL. */
-const char *rb_aci17_interaction_clause(int which);
+/* ---- Interaction, 17.8: rockbolt/interaction.h ---- */
 
 /* ---- Seismic ductility, 17.10.5.3(a) ---- */
 

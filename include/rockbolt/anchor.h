@@ -22,9 +22,11 @@
 #include "rockbolt/aci17.h"
 #include "rockbolt/aci17_post.h"
 #include "rockbolt/anchor_hardware.h"
+#include "rockbolt/criteria.h"
 #include "rockbolt/model.h"
 #include "rockbolt/units.h"
 #include "rockbolt/status.h"
+#include "rockbolt/names.h"
 
 typedef enum {
     RB_ANCHOR_CAST_IN_HEADED = 0,  /* headed bolts or studs, or rods with a nut */
@@ -34,6 +36,7 @@ typedef enum {
     RB_ANCHOR_UNDERCUT,
     RB_ANCHOR_ADHESIVE             /* bonded (ACI 355.4) */
 } rb_anchor_type;
+extern const rb_enum_name rb_anchor_type_names[];   /* rb_anchor_type */
 
 /* A post-installed anchor's values from its evaluation report (ICC-ES
  * ESR under ACI 355.2 / 355.4), in SI. A value of 0 takes the code's
@@ -59,41 +62,8 @@ typedef struct {
 /* Whether an anchor type is post-installed, and its type in aci17_post.h */
 bool rb_anchor_post_installed(rb_anchor_type type);
 
-/* The conditions of 17.10.5.3(a) an anchorage can miss, as bits. */
-enum {
-    RB_NOT_DUCTILE_CONCRETE = 1u, /* concrete-governed strength below 1.2 steel */
-    RB_NOT_DUCTILE_STRETCH = 2u,  /* stretch length below 8 da */
-    RB_NOT_DUCTILE_THREADS = 4u   /* partial threads, not upset, f_uta / f_ya below 1.3 */
-};
-
-/* The route of 17.10.5.3 by which the anchorage meets the seismic
- * requirements where 17.10.5.2 asks for them (docs/code-check.md):
- *   AUTO        (a) where the run yields the bolts (they are the fuse),
- *               otherwise the run's own tension history stands for the
- *               amplified demand of (d);
- *   DUCTILE     (a): ductile steel governs (concrete over 1.2 steel,
- *               stretch length, threads);
- *   ATTACHMENT  (b)/(c): the concrete-governed design strengths at least
- *               the largest tension the bolts can pass on, 1.2 times the
- *               row's yield force;
- *   OMEGA       (d): the static check with Omega_0 (design.code). */
-typedef enum {
-    RB_ROUTE_AUTO = 0,
-    RB_ROUTE_DUCTILE,
-    RB_ROUTE_ATTACHMENT,
-    RB_ROUTE_OMEGA
-} rb_seismic_route;
-
-/* What a judge made of 17.10 for one run (rb_verdict.anchor_route): the
- * route it applied, or why none was needed. */
-typedef enum {
-    RB_ROUTE_APPLIED_NONE = 0,  /* no concrete check, or 17.10 off (seismic: false) */
-    RB_ROUTE_APPLIED_EXEMPT,    /* 17.10.5.2: the bolts carried no tension */
-    RB_ROUTE_APPLIED_DUCTILE,   /* (a) */
-    RB_ROUTE_APPLIED_ATTACHMENT,/* (b)/(c) */
-    RB_ROUTE_APPLIED_OMEGA,     /* (d), static with Omega_0 */
-    RB_ROUTE_APPLIED_DYNAMIC    /* auto, no yield: the run's tension for (d)'s demand */
-} rb_route_applied;
+/* The conditions of 17.10.5.3(a) (RB_NOT_DUCTILE_*) and its routes
+ * (rb_seismic_route, rb_route_applied) are the judge's: rockbolt/criteria.h. */
 
 /* Reinforcement between the anchors and the edge (17.7.2.5.1, psi_c,V in
  * cracked concrete): none (1.0), a No. 4 bar or larger (1.2), and that bar
@@ -103,6 +73,7 @@ typedef enum {
     RB_EDGE_REINF_BAR,
     RB_EDGE_REINF_BAR_STIRRUPS
 } rb_edge_reinforcement;
+extern const rb_enum_name rb_edge_reinforcement_names[]; /* rb_edge_reinforcement */
 
 /* How the anchor's threads run (17.10.5.3(a)): along part of its length
  * with the threads cut or rolled into the shank (a headed bolt or a rod
@@ -114,6 +85,7 @@ typedef enum {
     RB_THREADS_FULL_LENGTH,
     RB_THREADS_UPSET
 } rb_anchor_threads;
+extern const rb_enum_name rb_anchor_threads_names[]; /* rb_anchor_threads */
 
 typedef struct {
     /* the slab */
@@ -173,6 +145,7 @@ typedef enum {
     RB_ANCHOR_PRYOUT_V,     /* 17.7.3 */
     RB_ANCHOR_N_MODES
 } rb_anchor_mode;
+extern const rb_enum_name rb_anchor_mode_names[];   /* rb_anchor_mode */
 
 /* Whether a mode is one of tension (17.6) or of shear (17.7), and whether
  * the steel of the anchors, not the concrete, governs it. */

@@ -15,6 +15,9 @@
 #include "rockbolt/anchor.h"
 #include "rockbolt/spectrum.h"
 #include "rockbolt/synth.h"
+#include "rockbolt/names.h"
+#include "rockbolt/asce7.h"
+#include "rockbolt/design.h"  /* the design settings a case carries */
 
 /* One floor motion of a case, ready for rb_solve_run. For records the
  * samples are already filtered, windowed and scaled to target_peak_mps2 in
@@ -28,6 +31,7 @@ typedef enum {
     RB_CASE_MOTION_RECORD,
     RB_CASE_MOTION_SYNTHETIC
 } rb_case_motion_type;
+extern const rb_enum_name rb_case_motion_type_names[];
 
 /* A target spectrum a case names, shared by the motions made from it. */
 typedef struct {
@@ -53,66 +57,6 @@ typedef struct rb_case_motion {
      * none; motion.vertical points at its motion */
     struct rb_case_motion *vertical;
 } rb_case_motion;
-
-/* The default largest gap the recommendation searches: 1/4 in, above
- * which ASCE 7 13.6.4 doubles the design force on snubbed equipment. */
-#define RB_DESIGN_MAX_GAP_M 6.35e-3
-
-/* Options for `rockbolt design` (issue: design checks). */
-typedef struct {
-    double scan_start;   /* in A*, default 0.05 */
-    double scan_step;    /* in A*, default 0.05 */
-    double scan_end;     /* in A*, default 1.5 */
-    double resolution;   /* in A*, default 0.001 */
-    double gap_ratio_min, gap_ratio_max, gap_ratio_step; /* defaults 0, 0.03, 0.0025 */
-    /* the largest gap the recommendation searches, default 1/4 in =
-     * 6.35 mm: above it ASCE 7 13.6.4 doubles the force on snubbed
-     * equipment; <= 0: no bound but gap_ratio_max */
-    double max_gap_m;
-} rb_design_opts;
-
-/* Sweeps and the code-static comparison a case asks `rockbolt design`
- * for; the functions that use them are in design.h. */
-typedef enum {
-    RB_SWEEP_FREQUENCY = 0,  /* harmonic motion, x = excitation / fixed-base frequency */
-    RB_SWEEP_AMPLITUDE       /* the given motion's shape, x = peak level in A* */
-} rb_sweep_kind;
-
-typedef struct {
-    rb_sweep_kind kind;
-    double from, to;          /* range of x */
-    size_t n_points;          /* >= 1; equally spaced, from and to included */
-    /* frequency sweeps only */
-    double amplitude_astar;   /* peak floor acceleration in A* */
-    double duration_s;        /* run length; <= 0 -> 8 s */
-    double ramp_s;            /* linear ramp-up of the harmonic; 0 for none */
-} rb_sweep_opts;
-
-typedef enum {
-    RB_ASCE7_16 = 16,   /* ASCE/SEI 7-16, eq. 13.3-1 to 13.3-3 */
-    RB_ASCE7_22 = 22    /* ASCE/SEI 7-22, eq. 13.3-1 to 13.3-3 with Hf, Rmu */
-} rb_code_edition;
-
-typedef struct {
-    rb_code_edition edition;
-    double sds;               /* SDS, in g */
-    double ip;                /* component importance factor Ip (1.0 or 1.5) */
-    double z_over_h;          /* attachment height / roof height, 0..1 */
-    int at_or_below_grade;    /* 7-22: Hf = Rmu = 1 */
-    /* ASCE 7-16 */
-    double ap, rp;            /* component amplification, response modification */
-    /* ASCE 7-22 */
-    double car, rpo;          /* Table 13.5-1 / 13.6-1 */
-    double ta_s;              /* building approximate period; <= 0: unknown,
-                                 Hf = 1 + 2.5 z/h */
-    double r, ie, omega0;     /* building's R, Ie, Omega0 (for Rmu) */
-    /* anchorage */
-    int anchorage_in_concrete;/* 1: Fp x Omega0p for the anchors (13.4.2) */
-    double omega0p;           /* component overstrength Omega0p */
-    double futa_pa;           /* specified anchor tensile strength */
-    double ase_m2;            /* effective tensile area of one anchor;
-                                 <= 0: the model's bolt area */
-} rb_code_inputs;
 
 #define RB_CASE_MAX_SWEEPS 8
 

@@ -6,17 +6,59 @@
 #include <stddef.h>
 #include "rockbolt/solve.h"
 #include "rockbolt/units.h"
+#include "rockbolt/names.h"
+
+/* The conditions of 17.10.5.3(a) an anchorage can miss, as bits. */
+enum {
+    RB_NOT_DUCTILE_CONCRETE = 1u, /* concrete-governed strength below 1.2 steel */
+    RB_NOT_DUCTILE_STRETCH = 2u,  /* stretch length below 8 da */
+    RB_NOT_DUCTILE_THREADS = 4u   /* partial threads, not upset, f_uta / f_ya below 1.3 */
+};
+
+/* The route of 17.10.5.3 by which the anchorage meets the seismic
+ * requirements where 17.10.5.2 asks for them (docs/code-check.md):
+ *   AUTO        (a) where the run yields the bolts (they are the fuse),
+ *               otherwise the run's own tension history stands for the
+ *               amplified demand of (d);
+ *   DUCTILE     (a): ductile steel governs (concrete over 1.2 steel,
+ *               stretch length, threads);
+ *   ATTACHMENT  (b)/(c): the concrete-governed design strengths at least
+ *               the largest tension the bolts can pass on, 1.2 times the
+ *               row's yield force;
+ *   OMEGA       (d): the static check with Omega_0 (design.code). */
+typedef enum {
+    RB_ROUTE_AUTO = 0,
+    RB_ROUTE_DUCTILE,
+    RB_ROUTE_ATTACHMENT,
+    RB_ROUTE_OMEGA
+} rb_seismic_route;
+
+/* What a judge made of 17.10 for one run (rb_verdict.anchor_route): the
+ * route it applied, or why none was needed. */
+typedef enum {
+    RB_ROUTE_APPLIED_NONE = 0,  /* no concrete check, or 17.10 off (seismic: false) */
+    RB_ROUTE_APPLIED_EXEMPT,    /* 17.10.5.2: the bolts carried no tension */
+    RB_ROUTE_APPLIED_DUCTILE,   /* (a) */
+    RB_ROUTE_APPLIED_ATTACHMENT,/* (b)/(c) */
+    RB_ROUTE_APPLIED_OMEGA,     /* (d), static with Omega_0 */
+    RB_ROUTE_APPLIED_DYNAMIC    /* auto, no yield: the run's tension for (d)'s demand */
+} rb_route_applied;
+
+extern const rb_enum_name rb_seismic_route_names[]; /* rb_seismic_route */
+extern const rb_enum_name rb_route_applied_names[]; /* rb_route_applied */
 
 typedef enum {
     RB_CRIT_NO_YIELD = 0,   /* bolts stay elastic */
     RB_CRIT_NO_BREAK        /* bolts may yield; usage below usage_limit, no overturn */
 } rb_criterion_kind;
+extern const rb_enum_name rb_criterion_names[];     /* rb_criterion_kind */
 
 /* What a validity warning does to the verdict. */
 typedef enum {
     RB_VALIDITY_WARN = 0,   /* reported beside the verdict */
     RB_VALIDITY_FAIL        /* fails the run */
 } rb_validity_mode;
+extern const rb_enum_name rb_validity_mode_names[]; /* rb_validity_mode */
 
 /* When a passing verdict is confirmed by solving the motion again at
  * tighter tolerances (docs/report-format.md, "Confirmation"): near grazing the
@@ -27,6 +69,7 @@ typedef enum {
     RB_CONFIRM_ALWAYS,         /* every pass */
     RB_CONFIRM_OFF
 } rb_confirm_mode;
+extern const rb_enum_name rb_confirm_mode_names[];  /* rb_confirm_mode */
 
 /* The default band of a marginal pass: a governing number within this
  * fraction of its limit. A run that does not converge with the tolerance

@@ -15,11 +15,44 @@
 #define ROCKBOLT_DESIGN_H
 
 #include <stddef.h>
-#include "rockbolt/case.h" /* the design settings a case carries */
+#include "rockbolt/asce7.h"
 #include "rockbolt/criteria.h"
 #include "rockbolt/model.h"
 #include "rockbolt/motion.h"
 #include "rockbolt/solve.h"
+
+/* The default largest gap the recommendation searches: 1/4 in, above
+ * which ASCE 7 13.6.4 doubles the design force on snubbed equipment. */
+#define RB_DESIGN_MAX_GAP_M 6.35e-3
+
+/* Options for `rockbolt design` (issue: design checks). */
+typedef struct {
+    double scan_start;   /* in A*, default 0.05 */
+    double scan_step;    /* in A*, default 0.05 */
+    double scan_end;     /* in A*, default 1.5 */
+    double resolution;   /* in A*, default 0.001 */
+    double gap_ratio_min, gap_ratio_max, gap_ratio_step; /* defaults 0, 0.03, 0.0025 */
+    /* the largest gap the recommendation searches, default 1/4 in =
+     * 6.35 mm: above it ASCE 7 13.6.4 doubles the force on snubbed
+     * equipment; <= 0: no bound but gap_ratio_max */
+    double max_gap_m;
+} rb_design_opts;
+
+/* The sweeps a case asks `rockbolt design` for. */
+typedef enum {
+    RB_SWEEP_FREQUENCY = 0,  /* harmonic motion, x = excitation / fixed-base frequency */
+    RB_SWEEP_AMPLITUDE       /* the given motion's shape, x = peak level in A* */
+} rb_sweep_kind;
+
+typedef struct {
+    rb_sweep_kind kind;
+    double from, to;          /* range of x */
+    size_t n_points;          /* >= 1; equally spaced, from and to included */
+    /* frequency sweeps only */
+    double amplitude_astar;   /* peak floor acceleration in A* */
+    double duration_s;        /* run length; <= 0 -> 8 s */
+    double ramp_s;            /* linear ramp-up of the harmonic; 0 for none */
+} rb_sweep_opts;
 
 /* rb_design_opts (scan grid, resolution, gap grid) is declared in case.h
  * because case files carry it. Fills in the documented defaults: scan
@@ -231,46 +264,6 @@ rb_status rb_sweep_amplitude(const rb_model *model, const rb_motion *motion,
 /* Free what a sweep owns; accepts NULL. */
 void rb_sweep_free(rb_sweep *s);
 
-
-/* ---- Code-static comparison --------------------------------------------- */
-
-
-
-/* Edition 7-22, Ip = 1, Omega0p = 2, anchorage in concrete, Ta unknown;
- * every other field 0 (to be given). */
-void rb_code_inputs_init(rb_code_inputs *in);
-
-typedef struct {
-    double fp_formula_n;      /* Fp from eq. 13.3-1 before the bounds */
-    double fp_min_n, fp_max_n;/* 0.3 SDS Ip Wp, 1.6 SDS Ip Wp */
-    double fp_n;              /* design Fp after the bounds */
-    int bound;                /* -1 minimum governs, +1 maximum, 0 neither */
-    double hf, rmu;           /* 7-22 factors (7-16: 1 + 2 z/h and 1) */
-    double fp_anchor_n;       /* Fp x Omega0p when anchorage in concrete */
-    double fp_over_wp;        /* Fp / Wp, the equivalent static floor
-                                 acceleration in g */
-    double accel_mps2;        /* Fp / Wp x g */
-    double accel_astar;       /* accel_mps2 / A* */
-    double a_star_mps2;
-    double tension_n;         /* row tension T, >= 0 */
-    double tension_raw_n;     /* before clipping at 0 (negative: no uplift) */
-    double futa_used_pa;      /* min(futa, 1.9 fya, 861.8 MPa) */
-    double phi_nsa_n;         /* 0.75 n Ase futa of one row */
-    double ratio;             /* T / phi Nsa */
-    /* with the concrete check (rb_run_design): the 17.8 utilization of the
-     * row tension T with the anchor design force as shear, against the
-     * anchorage's design strengths, and the clause (1-3) */
-    int has_concrete;
-    double concrete_utilization;
-    int concrete_clause;
-} rb_code_result;
-
-/* Compare the model's anchorage with the code-static design. W, h, b, l,
- * the number of bolts per row, their area and yield stress come from the
- * model. RB_ERR_INVALID (diag->key names the field) for missing or out of
- * range inputs. */
-rb_status rb_code_static(const rb_model *model, const rb_code_inputs *in,
-                         rb_code_result *out, rb_diag *diag);
 
 /* ---- Everything a case asks for -------------------------------------------- */
 

@@ -8,6 +8,7 @@
 #include <stddef.h>
 #include "rockbolt/accept.h"
 #include "rockbolt/motion.h"
+#include "rockbolt/names.h"
 #include "rockbolt/spectrum.h"
 
 /* The components of a floor motion (rb_axis_names: h1, h2, v): H1 in the
@@ -19,6 +20,7 @@ typedef enum {
     RB_AXIS_V,
     RB_AXIS_COUNT
 } rb_axis;
+extern const rb_enum_name rb_axis_names[];          /* rb_axis: h1, h2, v */
 
 /* How the solver's floor runs between the samples written. */
 typedef enum {
@@ -29,6 +31,7 @@ typedef enum {
     RB_BETWEEN_SAMPLED     /* a closed form, sampled 200 times in its period
                               (a harmonic) or its duration (a pulse) */
 } rb_between;
+extern const rb_enum_name rb_between_names[];       /* rb_between: linear, building, sampled */
 
 /* Closed forms are sampled this many times per period or pulse. */
 #define RB_FLOOR_CLOSED_FORM_RATE 200.0

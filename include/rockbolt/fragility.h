@@ -13,6 +13,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "rockbolt/status.h"
+#include "rockbolt/names.h"
 
 typedef struct {
     double median;     /* intensity at P = 0.5 */
@@ -73,6 +74,7 @@ typedef enum {
                                  on. Only a case with concrete: has it */
     RB_N_LIMITS
 } rb_limit_state;
+extern const rb_enum_name rb_limit_state_names[];   /* rb_limit_state (fragility.h) */
 
 /* The limit state that governs a case's fragility: of the limit states in
  * the mask `judged` (bit 1 << k) that are fitted, the one of the lowest
@@ -100,6 +102,10 @@ typedef enum {
     RB_IM_SA        /* 5 % pseudo-spectral acceleration at the cabinet's
                        fixed-base frequency */
 } rb_fragility_intensity;
+extern const rb_enum_name rb_intensity_names[];        /* pfa, sa */
+/* the same, as the JSON reports spell it: peak_floor_acceleration,
+ * spectral_acceleration */
+extern const rb_enum_name rb_intensity_report_names[];
 
 typedef struct {
     rb_motion_fragility *motions;   /* owned, one per motion of the case */

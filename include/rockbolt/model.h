@@ -12,6 +12,7 @@
 
 #include "rockbolt/status.h"
 #include "rockbolt/units.h"
+#include "rockbolt/names.h"
 
 #define RB_LEFT 0
 #define RB_RIGHT 1
@@ -26,6 +27,7 @@ typedef enum {
     RB_BOLT_NONYIELDING,     /* rigid and never yields (ch. 5 runs) */
     RB_BOLT_ELASTIC_PLASTIC  /* stiff elastic spring, then yields (sec. 5.7) */
 } rb_bolt_model;
+extern const rb_enum_name rb_bolt_model_names[];    /* rb_bolt_model */
 
 typedef enum {
     RB_FORM_LARGE = 0,   /* large-angle eqs. 5.5, 5.6, 5.11, 5.13, 5.15 (+mirror) */
@@ -33,6 +35,7 @@ typedef enum {
     RB_FORM_CONSISTENT   /* large-angle with the U/b coupling terms kept in
                             both equations (Lagrangian of the same kinematics) */
 } rb_formulation;
+extern const rb_enum_name rb_formulation_names[];   /* rb_formulation */
 
 /* What a caller fills in. rb_model_derive() checks it and computes the
  * derived quantities in rb_derived. */

@@ -11,6 +11,7 @@
 
 #include <stddef.h>
 #include "rockbolt/status.h"
+#include "rockbolt/names.h"
 
 /* The building a floor series came through (eqs. 5.27-5.28): the ground
  * acceleration and the building's state at every sample. Between two
@@ -105,6 +106,7 @@ typedef enum {
     RB_PULSE_TRI_INC,   /* a t / t1: peak at the end (type 2) */
     RB_PULSE_HALF_SINE  /* a sin(pi t / t1) */
 } rb_pulse_shape;
+extern const rb_enum_name rb_pulse_shape_names[];   /* rb_pulse_shape */
 
 typedef struct rb_motion {
     rb_motion_kind kind;

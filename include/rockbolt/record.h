@@ -8,6 +8,7 @@
 #define ROCKBOLT_RECORD_H
 
 #include "rockbolt/motion.h"
+#include "rockbolt/names.h"
 
 typedef enum {
     RB_REC_AUTO = 0,    /* guess from the extension and the first lines */
@@ -16,6 +17,7 @@ typedef enum {
     RB_REC_TWO_COLUMN,
     RB_REC_ONE_COLUMN
 } rb_record_format;
+extern const rb_enum_name rb_record_format_names[]; /* rb_record_format */
 
 typedef struct {
     rb_record_format format;

@@ -13,6 +13,7 @@
 #include <stddef.h>
 #include "rockbolt/model.h"
 #include "rockbolt/motion.h"
+#include "rockbolt/names.h"
 
 typedef enum {
     RB_STAGE_FIXED = 1,   /* 1: fixed base, SDOF */
@@ -30,6 +31,7 @@ typedef enum {
                                 elsewhere */
     RB_INTEGRATOR_RK45       /* Dormand-Prince 5(4) throughout */
 } rb_integrator;
+extern const rb_enum_name rb_integrator_names[];    /* rb_integrator */
 
 typedef struct {
     rb_formulation formulation;

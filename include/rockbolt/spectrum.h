@@ -14,6 +14,7 @@
 #include <stddef.h>
 #include "rockbolt/motion.h"
 #include "rockbolt/status.h"
+#include "rockbolt/names.h"
 
 /* The analysis grid: f_min * 2^(k / per_octave) for k = 0, 1, ... up to
  * f_max (included when it falls on the grid to 1e-9). */
@@ -80,6 +81,7 @@ typedef enum {
     RB_TARGET_AC156 = 0,  /* ICC-ES AC156 required response spectrum */
     RB_TARGET_TABLE       /* frequency / acceleration pairs */
 } rb_target_kind;
+extern const rb_enum_name rb_target_type_names[];   /* rb_target_kind: ac156, table */
 
 /* Which AC156 form of the horizontal levels (docs/motion.md):
  * 2010: A_FLX-H = S_DS (1 + 2 z/h) <= 1.6 S_DS, A_RIG-H = 0.4 S_DS (1 + 2 z/h)
@@ -90,6 +92,7 @@ typedef enum {
     RB_AC156_2010 = 0,
     RB_AC156_2024
 } rb_ac156_edition;
+extern const rb_enum_name rb_ac156_edition_names[]; /* rb_ac156_edition */
 
 typedef struct {
     rb_target_kind kind;

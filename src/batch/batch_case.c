@@ -13,6 +13,7 @@
 #include "rockbolt/outplan.h"
 #include "rockbolt/report.h"
 #include "rockbolt/run.h"
+#include "rockbolt/outfile.h"
 
 /* The case name from a path: file name without directory and extension. */
 static char *stem_of(const char *path)

@@ -13,6 +13,10 @@
 #include "case_internal.h"
 #include "rockbolt/datadir.h"
 
+const rb_enum_name rb_case_motion_type_names[] = {
+    {"harmonic", RB_CASE_MOTION_HARMONIC}, {"pulse", RB_CASE_MOTION_PULSE},
+    {"record", RB_CASE_MOTION_RECORD}, {"synthetic", RB_CASE_MOTION_SYNTHETIC}, {NULL, 0}};
+
 static const char *const harmonic_keys[] = {
     "type", "name", "polarity", "amplitude", "frequency", "duration", "ramp",
     "vertical", NULL};

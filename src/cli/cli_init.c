@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "cli.h"
+#include "rockbolt/outfile.h"
 
 rb_exit rb_cli_init_run(const rb_cli_opts *o)
 {

@@ -6,6 +6,9 @@
 #include <math.h>
 #include "rockbolt/aci17.h"
 
+const rb_enum_name rb_aci17_coef_names[] = {
+    {"si", RB_ACI17_SI}, {"in-lb", RB_ACI17_INLB}, {NULL, 0}};
+
 /* 17.6.1.2 and 17.7.1.2: futa <= 125 ksi in the in-lb edition, 860 MPa in
  * ACI 318M-19 (not the conversion of 125 ksi, 861.8 MPa). */
 #define FUTA_CAP_INLB_PA (125000 * RB_ACI17_PSI_PA)
@@ -326,7 +329,7 @@ double rb_aci17_vcpg(rb_aci17_coef coef, double hef_m, double ncpg_n)
     return rb_aci17_kcp(coef, hef_m) * ncpg_n;
 }
 
-/* ---- phi, seismic factor, interaction, ductility ---- */
+/* ---- phi, seismic factor, ductility ---- */
 
 double rb_aci17_phi(rb_aci17_mode mode, bool ductile_steel, bool condition_a)
 {
@@ -351,46 +354,6 @@ double rb_aci17_seismic_factor(rb_aci17_mode mode, bool seismic)
     if (seismic && (mode == RB_ACI17_BREAKOUT_TENSION || mode == RB_ACI17_PULLOUT))
         return 0.75;
     return 1.0;
-}
-
-double rb_aci17_interaction(double nua_n, double phi_nn_n, double vua_n,
-                            double phi_vn_n, int *which)
-{
-    double rn = nua_n / phi_nn_n, rv = vua_n / phi_vn_n;
-    int w;
-    double u;
-    if (vua_n <= 0.2 * phi_vn_n) {          /* 17.8.1 */
-        w = 1;
-        u = rn;
-    } else if (nua_n <= 0.2 * phi_nn_n) {   /* 17.8.2 */
-        w = 2;
-        u = rv;
-    } else {                                /* 17.8.3, Eq. (17.8.3) */
-        w = 3;
-        u = fmax(fmax(rn, rv), (rn + rv) / 1.2);
-    }
-    if (which)
-        *which = w;
-    return u;
-}
-
-double rb_aci17_interaction_by(rb_aci17_interaction_rule rule, double nua_n,
-                               double phi_nn_n, double vua_n, double phi_vn_n, int *which)
-{
-    if (rule != RB_ACI17_POWER)
-        return rb_aci17_interaction(nua_n, phi_nn_n, vua_n, phi_vn_n, which);
-    /* R17.8, Eq. (R17.8): the sum of the 5/3 powers; its 3/5 power is the
-     * load factor that brings the sum to 1 */
-    double rn = nua_n / phi_nn_n, rv = vua_n / phi_vn_n;
-    if (which)
-        *which = RB_ACI17_WHICH_POWER;
-    return pow(pow(rn, 5.0 / 3.0) + pow(rv, 5.0 / 3.0), 0.6);
-}
-
-const char *rb_aci17_interaction_clause(int which)
-{
-    static const char *const names[] = {"17.8", "17.8.1", "17.8.2", "17.8.3", "R17.8"};
-    return which >= 0 && which <= RB_ACI17_WHICH_POWER ? names[which] : "17.8";
 }
 
 double rb_aci17_ductility_margin(double n_concrete_n, double n_steel_n)

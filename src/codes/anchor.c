@@ -6,6 +6,22 @@
 #include "rockbolt/anchor.h"
 #include "rockbolt/names.h"
 
+const rb_enum_name rb_anchor_type_names[] = {
+    {"cast-in-headed", RB_ANCHOR_CAST_IN_HEADED}, {"expansion", RB_ANCHOR_EXPANSION},
+    {"expansion-displacement", RB_ANCHOR_EXPANSION_DISPLACEMENT}, {"screw", RB_ANCHOR_SCREW},
+    {"undercut", RB_ANCHOR_UNDERCUT}, {"adhesive", RB_ANCHOR_ADHESIVE}, {NULL, 0}};
+const rb_enum_name rb_anchor_threads_names[] = {
+    {"partial", RB_THREADS_PARTIAL}, {"full-length", RB_THREADS_FULL_LENGTH},
+    {"upset", RB_THREADS_UPSET}, {NULL, 0}};
+const rb_enum_name rb_anchor_mode_names[] = {
+    {"steel-tension", RB_ANCHOR_STEEL_N}, {"breakout-tension", RB_ANCHOR_BREAKOUT_N},
+    {"pullout", RB_ANCHOR_PULLOUT_N}, {"side-face-blowout", RB_ANCHOR_SIDEFACE_N},
+    {"bond", RB_ANCHOR_BOND_N}, {"steel-shear", RB_ANCHOR_STEEL_V}, {"breakout-shear", RB_ANCHOR_BREAKOUT_V},
+    {"pryout", RB_ANCHOR_PRYOUT_V}, {NULL, 0}};
+const rb_enum_name rb_edge_reinforcement_names[] = {
+    {"none", RB_EDGE_REINF_NONE}, {"bar", RB_EDGE_REINF_BAR},
+    {"bar-and-stirrups", RB_EDGE_REINF_BAR_STIRRUPS}, {NULL, 0}};
+
 /* The shallowest and deepest embedment checked. Chapter 17 gives no least
  * h_ef for cast-in anchors; 1.5 in (38 mm) is the least of the anchors
  * qualified under ACI 355.2, on which the breakout equations rest. 25 in

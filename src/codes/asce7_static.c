@@ -5,7 +5,7 @@
  * row in tension. docs/design.md gives the clauses. */
 #include <math.h>
 #include <string.h>
-#include "design/design_internal.h"
+#include "rockbolt/asce7.h"
 
 /* ACI 318-19 17.6.1.2: futa is taken as at most 1.9 fya and 125 ksi. */
 #define RB_FUTA_CAP_PA 861.8e6
@@ -58,8 +58,8 @@ static rb_status check_inputs(const rb_model *m, const rb_code_inputs *in, rb_di
         key = "ase";
     if (!key)
         return RB_OK;
-    return rb_design_fail(diag, RB_ERR_INVALID, key,
-                          "missing or out of range for the code-static comparison");
+    return rb_diag_set(diag, RB_ERR_INVALID, NULL, 0, 0, key,
+                       "missing or out of range for the code-static comparison");
 }
 
 /* ASCE 7-22 sec. 13.3.1.1: height amplification Hf. */
@@ -113,7 +113,7 @@ rb_status rb_code_static(const rb_model *model, const rb_code_inputs *in,
     rb_status st;
     memset(out, 0, sizeof *out);
     if (!model || !in)
-        return rb_design_fail(diag, RB_ERR_INVALID, "", "missing model or code inputs");
+        return rb_diag_set(diag, RB_ERR_INVALID, NULL, 0, 0, "", "missing model or code inputs");
     if ((st = rb_model_derive(model, &d, diag)) != RB_OK
         || (st = check_inputs(model, in, diag)) != RB_OK)
         return st;

@@ -6,7 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "rockbolt/anchor.h"
+#include "rockbolt/interaction.h"
 #include "rockbolt/criteria.h"
 #include "rockbolt/names.h"
 

@@ -10,7 +10,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "rockbolt/aci17.h"
+#include "rockbolt/interaction.h"
 #include "bolt.h"
 #include "root.h"
 #include "solver.h"

@@ -16,6 +16,16 @@
 #include "rockbolt/names.h"
 #include "util/rng.h"
 
+const rb_enum_name rb_intensity_names[] = {
+    {"pfa", RB_IM_PFA}, {"sa", RB_IM_SA}, {NULL, 0}};
+const rb_enum_name rb_intensity_report_names[] = {
+    {"peak_floor_acceleration", RB_IM_PFA}, {"spectral_acceleration", RB_IM_SA},
+    {NULL, 0}};
+const rb_enum_name rb_limit_state_names[] = {
+    {"first-yield", RB_LIMIT_FIRST_YIELD}, {"usage", RB_LIMIT_USAGE},
+    {"overturn", RB_LIMIT_OVERTURN}, {"lift-off", RB_LIMIT_LIFT_OFF},
+    {"anchorage", RB_LIMIT_ANCHORAGE}, {NULL, 0}};
+
 #define EM_MAX_ITERATIONS 10000
 #define EM_TOLERANCE 1e-12
 

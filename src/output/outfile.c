@@ -16,7 +16,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
-#include "rockbolt/report.h"
+#include "rockbolt/outfile.h"
 
 static rb_status io_fail(rb_diag *diag, const char *path, const char *what, int err)
 {

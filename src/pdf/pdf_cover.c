@@ -2,7 +2,7 @@
  * cover block and the statement of what the tool does not check. */
 #include <stdio.h>
 #include "pdf_internal.h"
-#include "rockbolt/rockbolt.h"
+#include "rockbolt/version.h"
 
 /* A cover line, blank when not given, so that a reviewer can write it in. */
 static void field(rb_strbuf *b, const char *name, const char *value)

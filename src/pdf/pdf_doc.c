@@ -13,7 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "pdf_pen.h"
-#include "rockbolt/rockbolt.h"
+#include "rockbolt/version.h"
 
 
 static void text_block(rb_pdf_pen *p, const PangoFontDescription *f, const char *text,

@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "pdf_pen.h"
-#include "rockbolt/rockbolt.h"
+#include "rockbolt/version.h"
 
 /* The first error stands: its status, and msg and what after it. */
 void rb_pdf_fail(rb_pdf_pen *p, rb_status st, const char *msg, const char *what)

@@ -7,6 +7,10 @@
 #include "record_internal.h"
 #include "rockbolt/sandbox.h"
 
+const rb_enum_name rb_record_format_names[] = {
+    {"auto", RB_REC_AUTO}, {"at2", RB_REC_AT2}, {"cosmos", RB_REC_COSMOS_V2},
+    {"two-column", RB_REC_TWO_COLUMN}, {"one-column", RB_REC_ONE_COLUMN}, {NULL, 0}};
+
 /* How far to look for the first data row when guessing a column file. */
 #define RB_REC_SNIFF_LINES 64
 

@@ -14,7 +14,7 @@
 #include <string.h>
 #include <cjson/cJSON.h>
 #include "rockbolt/jsonprint.h"
-#include "rockbolt/rockbolt.h"
+#include "rockbolt/version.h"
 #include "rockbolt/names.h"
 #include "report_internal.h"
 #include "rockbolt/jsonnum.h"

@@ -5,7 +5,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <cjson/cJSON.h>
-#include "rockbolt/rockbolt.h"
+#include "rockbolt/version.h"
 #include "rockbolt/jsonnum.h"
 #include "report_json_build.h"
 

@@ -6,7 +6,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <cjson/cJSON.h>
-#include "rockbolt/rockbolt.h"
+#include "rockbolt/version.h"
 #include "rockbolt/names.h"
 #include "report_internal.h"
 #include "report_json_build.h"

@@ -3,7 +3,7 @@
  * the checks that warn, which the verdicts carry. */
 #include <math.h>
 #include <stdio.h>
-#include "rockbolt/rockbolt.h"
+#include "rockbolt/version.h"
 #include "rockbolt/names.h"
 #include "report_internal.h"
 #include "report_json_build.h"

@@ -13,7 +13,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "rockbolt/rockbolt.h"
+#include "rockbolt/version.h"
 #include "rockbolt/names.h"
 #include "report_internal.h"
 

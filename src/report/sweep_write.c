@@ -11,6 +11,7 @@
 #include "rockbolt/report.h"
 #include "rockbolt/textsafe.h"
 #include "rockbolt/design.h"
+#include "rockbolt/outfile.h"
 
 static const char *x_name(const rb_sweep *s)
 {

@@ -12,6 +12,7 @@
 #include "harness.h"
 #include "rockbolt/outplan.h"
 #include "rockbolt/report.h"
+#include "rockbolt/outfile.h"
 
 static char dir[] = "/tmp/rb-outfile-XXXXXX";
 

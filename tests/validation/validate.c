@@ -16,6 +16,7 @@
 #include <time.h>
 #include "rockbolt/rockbolt.h"
 #include "vd.h"
+#include "rockbolt/outfile.h"
 
 #define VD_COMMAND "cmake --build build && ./build/rb_validate --write docs/validation.md"
 

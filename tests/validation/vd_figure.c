@@ -7,6 +7,7 @@
 #include "rockbolt/rockbolt.h"
 #include "rockbolt/plot.h"
 #include "vd.h"
+#include "rockbolt/outfile.h"
 
 /* History interval: the plot reduces to its pixel columns anyway, and
  * 0.01 s is twenty points per period of the 5 Hz frame. */
