@@ -3,8 +3,11 @@
  * through the 5 Hz building at 0.4 A*), four limit states each: the wall
  * time of the searches and fits, the runs, and the time per motion, from
  * which a 7-motion suite's time follows. Usage: bench_fragility [CASE]
- * [THREADS] [REPEATS], from the source root. Target: a 7-motion,
- * 4-limit-state fragility in under 2 s on two cores. */
+ * [THREADS] [REPEATS], from the source root. It prints the solves (runs
+ * made, a run the searches share counted once) and the runs the searches
+ * read (each counted by every search that reads it, as the report says).
+ * Targets: the reference suite in at most 170 solves; a 7-motion
+ * fragility (bench/fragility-7.yaml) in under 0.5 s on two cores. */
 #include <stdio.h>
 #include <stdlib.h>
 #include "rockbolt/case.h"
@@ -26,7 +29,7 @@ int main(int argc, char **argv)
     }
     rb_diag_list_free(&dl);
     double best = 1e30;
-    long runs = 0;
+    long runs = 0, solves = 0;
     for (int r = 0; r < (reps > 0 ? reps : 1); r++) {
         rb_case_fragility f;
         rb_diag d;
@@ -40,15 +43,16 @@ int main(int argc, char **argv)
             return 1;
         }
         runs = f.runs;
+        solves = f.solves;
         best = t < best ? t : best;
         rb_case_fragility_free(&f);
     }
     double per_motion = best / (double)c.n_motions;
-    printf("fragility %s: %zu motions x %d limit states, %ld solver runs\n", path,
-           c.n_motions, RB_N_LIMITS, runs);
+    printf("fragility %s: %zu motions x %d limit states, %ld solves (%ld runs read by "
+           "the searches)\n", path, c.n_motions, RB_N_LIMITS, solves, runs);
     printf("fragility: best of %d: %.3f s wall on %s threads: %.3f s a motion; "
-           "7 motions: %.2f s (target 2 s: %s)\n", reps, best, nt > 0 ? argv[2] : "all",
-           per_motion, 7 * per_motion, 7 * per_motion < 2.0 ? "met" : "NOT met");
+           "7 motions: %.2f s (target 0.5 s: %s)\n", reps, best, nt > 0 ? argv[2] : "all",
+           per_motion, 7 * per_motion, 7 * per_motion < 0.5 ? "met" : "NOT met");
     rb_case_free(&c);
     return 0;
 }

@@ -138,6 +138,29 @@ rb_status rb_design_factor(const rb_model *model, const rb_motion *motion,
                            rb_design_memo *memo, rb_design_factor_result *out,
                            rb_diag *diag);
 
+/* The least peak floor acceleration of the motion's shape at which the
+ * base lifts off the floor (stage 1 -> 2), from one run of the model held
+ * down by rigid bolts at no gap (src/design/uplift_level.c), through memo
+ * (may be NULL). 0 when the motion has a vertical component (W b then
+ * moves with the level), the model has no bolts, or the base does not
+ * lift at the motion's own level. Errors: the held run's. */
+rb_status rb_design_uplift_level(const rb_model *model, const rb_motion *motion,
+                                 const rb_solve_opts *opts, rb_design_memo *memo,
+                                 double *level_mps2, rb_diag *diag);
+
+/* rb_design_factor where the caller knows a level near which the failing
+ * levels start (near_astar > 0, in A*): once the scan has its bracket,
+ * the levels near_astar - resolution / 2 and then 1, 2, 4, ...
+ * resolutions above that are run until one fails, and the bisection
+ * goes on from the bracket they leave. The result is the search's own
+ * (a failing level at most resolution above a pass); where the failing
+ * levels do start there, it is reached in two runs. 0: rb_design_factor. */
+rb_status rb_design_factor_near(const rb_model *model, const rb_motion *motion,
+                                const rb_solve_opts *opts, const rb_criteria *criteria,
+                                const rb_design_opts *design, int n_threads,
+                                rb_design_memo *memo, double near_astar,
+                                rb_design_factor_result *out, rb_diag *diag);
+
 /* One English sentence for reports, e.g. "design factor 4.13: meets the
  * criteria up to 0.2422 A* (27.81 m/s^2); fails at 0.2430 A* (first failing
  * scan level 0.25 A*); resolution 0.001 A*; 11 runs", or, when nothing

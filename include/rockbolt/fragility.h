@@ -130,7 +130,10 @@ typedef struct {
     double median_lo[RB_N_LIMITS], median_hi[RB_N_LIMITS]; /* 90 % bootstrap */
     double p_at_level[RB_N_LIMITS]; /* P of the limit state at level_mps2 */
     double im10[RB_N_LIMITS], im50[RB_N_LIMITS]; /* levels at P = 10 %, 50 % */
-    long runs;
+    long runs;                      /* the searches' runs, each counted by
+                                       every search that reads it */
+    long solves;                    /* solver runs made: a run the searches
+                                       share, or a confirming run, once */
 } rb_case_fragility;
 
 void rb_case_fragility_free(rb_case_fragility *f);

@@ -72,7 +72,19 @@ typedef struct {
      * 2): fewer are the tests' way to widen the intervals the guards must
      * see into */
     int min_checks;
+    /* RB_STOP_* bits (default 0: every run goes to the end). A search that
+     * decides one limit state (a fragility's first yield or lift-off) ends
+     * a run at its first crossing: the flags and least values that decide
+     * it only ever move towards failing, so the verdict on that state is
+     * the full run's, and nothing else of the result is. */
+    unsigned stop_at;
 } rb_solve_opts;
+
+/* rb_solve_opts.stop_at: end the run once a bolt row yields or its force
+ * reaches Fy (max_bolt_force_n >= fy_row_n), or once the least vertical
+ * floor reaction is at or below zero. */
+#define RB_STOP_FIRST_YIELD 1u
+#define RB_STOP_LIFT_OFF 2u
 
 /* Fraction of W the floor's vertical reaction must exceed for a friction
  * demand to be taken there. */

@@ -635,6 +635,20 @@ static rb_status advance(rb_solver *sv, rb_rk_step *st, double *g, rb_diag *diag
     return restart(sv, g, diag);
 }
 
+/* The limit state a run was asked to stop at has been reached
+ * (rb_solve_opts.stop_at). */
+static int stop_reached(const rb_solver *sv)
+{
+    const rb_result *r = sv->res;
+    unsigned stop = sv->opts.stop_at;
+    if ((stop & RB_STOP_FIRST_YIELD)
+        && (r->yielded[0] || r->yielded[1]
+            || (r->fy_row_n > 0 && fmax(r->max_bolt_force_n[0], r->max_bolt_force_n[1])
+                                   >= r->fy_row_n)))
+        return 1;
+    return (stop & RB_STOP_LIFT_OFF) && r->min_vertical_reaction_n <= 0;
+}
+
 static rb_status run(rb_solver *sv, rb_diag *diag)
 {
     rb_rk_step st;
@@ -643,7 +657,7 @@ static rb_status run(rb_solver *sv, rb_diag *diag)
     sv->hist_k = 1;
     if (s == RB_OK)
         s = restart(sv, g, diag);
-    while (s == RB_OK && !sv->done && sv->t < sv->t_end) {
+    while (s == RB_OK && !sv->done && sv->t < sv->t_end && !stop_reached(sv)) {
         if ((s = check_work(sv, diag)) != RB_OK)
             break;
         double brk = rb_motion_next_break(sv->sys.motion, sv->t);

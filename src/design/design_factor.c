@@ -189,6 +189,39 @@ static rb_status bisect(factor_search *s, double res, rb_diag *diag)
     return RB_OK;
 }
 
+/* Narrow the bracket to the resolution around a level the caller knows
+ * the failing levels start near (a fragility's lift-off: the uplift
+ * level), before bisecting: a pass half a resolution below it, then
+ * levels above it at 1, 2, 4, ... resolutions until one fails. Where the
+ * first failing level is that near, two runs replace the bisection's
+ * dozen; where it is not, what was run is a bracket the bisection goes
+ * on from. A level outside the bracket is ignored. */
+static rb_status narrow_near(factor_search *s, double near, double res, rb_diag *diag)
+{
+    rb_design_factor_result *out = s->out;
+    double below = near - 0.5 * res;
+    for (double step = 0; ; step = step > 0 ? 2 * step : res) {
+        double level = below + step;
+        if (!(level > s->lo && level < s->hi))
+            return RB_OK;
+        rb_motion m;
+        rb_design_run run;
+        rb_design_motion_at(s->ctx, level * s->ctx->a_star_mps2, &m);
+        rb_design_run_one(s->ctx, s->ctx->model, &m, &run);
+        out->bisect_runs++;
+        rb_status st = check_run(&run, level, diag);
+        if (st != RB_OK)
+            return st;
+        if (!run.meets) {
+            s->hi = level;
+            memcpy(out->fail_reason, run.reason, sizeof out->fail_reason);
+            return RB_OK;
+        }
+        if ((st = take_pass(s, level, &run)) != RB_OK)
+            return st;
+    }
+}
+
 /* Confirm the pass the search ended on; while it does not hold, make it
  * the failing end and bisect again from the pass before it (0 when there
  * is none, as when the scan fails at its first level). */
@@ -245,6 +278,16 @@ rb_status rb_design_factor(const rb_model *model, const rb_motion *motion,
                            rb_design_memo *memo, rb_design_factor_result *out,
                            rb_diag *diag)
 {
+    return rb_design_factor_near(model, motion, opts, criteria, design, n_threads, memo, 0,
+                                 out, diag);
+}
+
+rb_status rb_design_factor_near(const rb_model *model, const rb_motion *motion,
+                                const rb_solve_opts *opts, const rb_criteria *criteria,
+                                const rb_design_opts *design, int n_threads,
+                                rb_design_memo *memo, double near_astar,
+                                rb_design_factor_result *out, rb_diag *diag)
+{
     rb_design_ctx ctx;
     factor_search s;
     rb_status st;
@@ -271,6 +314,8 @@ rb_status rb_design_factor(const rb_model *model, const rb_motion *motion,
         st = RB_ERR_NOMEM;
     if (st == RB_OK)
         st = scan(&s, design, diag);
+    if (st == RB_OK && !out->no_failure && near_astar > 0)
+        st = narrow_near(&s, near_astar, design->resolution, diag);
     if (st == RB_OK && !out->no_failure)
         st = bisect(&s, design->resolution, diag);
     if (st == RB_OK)

@@ -3,7 +3,10 @@
  * the same levels; a run is the same bits whoever asks, so it is solved
  * once. An entry is found by the exact bytes of the model, the scaled
  * motion and the solver options: bytes that differ (padding included) only
- * cost a second solve, never a wrong hit. */
+ * cost a second solve, never a wrong hit. The one exception is asked for:
+ * a run to stop at a limit state's crossing (rb_solve_opts.stop_at) is
+ * served by the same run made to the end, which decides that state
+ * alike. */
 #include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
@@ -75,6 +78,13 @@ int rb_design_memo_get(rb_design_memo *m, const rb_model *model, const rb_motion
         return 0;
     pthread_mutex_lock(&m->lock);
     const memo_entry *e = find(m, model, motion, opts);
+    if (!e && opts->stop_at) {
+        /* a run that goes to the end decides whatever a run stopped at a
+         * crossing decides: the scan levels every limit state shares */
+        rb_solve_opts full = *opts;
+        full.stop_at = 0;
+        e = find(m, model, motion, &full);
+    }
     if (e) {
         *status = e->status;
         *r = e->r;

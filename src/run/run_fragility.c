@@ -29,6 +29,7 @@ static void limit_criteria(const rb_case *c, rb_limit_state k, rb_criteria *cr,
     switch (k) {
     case RB_LIMIT_FIRST_YIELD:
         cr->kind = RB_CRIT_NO_YIELD;
+        so->stop_at = RB_STOP_FIRST_YIELD;
         break;
     case RB_LIMIT_USAGE:
         cr->kind = RB_CRIT_NO_BREAK;
@@ -45,6 +46,7 @@ static void limit_criteria(const rb_case *c, rb_limit_state k, rb_criteria *cr,
         if (k == RB_LIMIT_LIFT_OFF) {
             cr->validity = RB_VALIDITY_FAIL;
             cr->validity_mask = 1u << RB_CHECK_LIFT_OFF;
+            so->stop_at = RB_STOP_LIFT_OFF;
         }
         break;
     case RB_LIMIT_ANCHORAGE:
@@ -65,6 +67,11 @@ static void limit_criteria(const rb_case *c, rb_limit_state k, rb_criteria *cr,
     case RB_N_LIMITS:
         break;
     }
+    /* A capacity is a point of a fitted curve, not a verdict: it is
+     * confirmed at tighter tolerances only for the limit states the case's
+     * own verdict fails on, among which the governing state is chosen. */
+    if (!((rb_run_fragility_judged(c) >> k) & 1u))
+        cr->confirm = RB_CONFIRM_OFF;
 }
 
 unsigned rb_run_fragility_present(const rb_case *c)
@@ -99,17 +106,29 @@ size_t rb_run_fragility_searches(const rb_case *c)
 }
 
 static rb_status search(const rb_case *c, size_t m, rb_limit_state k, int n_threads,
-                        rb_design_memo *memo, rb_motion_fragility *out, rb_diag *diag)
+                        double a_star_mps2, rb_design_memo *memo, rb_motion_fragility *out,
+                        rb_diag *diag)
 {
     rb_criteria cr;
     rb_solve_opts so;
     rb_design_factor_result f;
     rb_design_opts grid = c->design;
     limit_criteria(c, k, &cr, &so);
-    if (k == RB_LIMIT_LIFT_OFF && grid.resolution > RB_LIFT_OFF_RESOLUTION)
-        grid.resolution = RB_LIFT_OFF_RESOLUTION;
-    rb_status st = rb_design_factor(&c->model, &c->motions[m].motion, &so, &cr, &grid,
-                                    n_threads, memo, &f, diag);
+    double near_astar = 0;
+    rb_status st = RB_OK;
+    if (k == RB_LIMIT_LIFT_OFF) {
+        /* the base cannot leave the floor below the level at which it first
+         * lifts, and it does soon after: the bracket starts there */
+        double uplift_mps2 = 0;
+        if (grid.resolution > RB_LIFT_OFF_RESOLUTION)
+            grid.resolution = RB_LIFT_OFF_RESOLUTION;
+        st = rb_design_uplift_level(&c->model, &c->motions[m].motion, &so, memo,
+                                    &uplift_mps2, diag);
+        near_astar = uplift_mps2 / a_star_mps2;
+    }
+    if (st == RB_OK)
+        st = rb_design_factor_near(&c->model, &c->motions[m].motion, &so, &cr, &grid,
+                                   n_threads, memo, near_astar, &f, diag);
     if (st != RB_OK) {
         char key[sizeof diag->key];
         snprintf(key, sizeof key, "motion '%.60s': %s", c->motions[m].name ?
@@ -154,7 +173,8 @@ static rb_status job(void *arg, size_t i)
     int k = (int)jc->order[i / n];
     rb_motion_fragility one = {{0}, {0}, 0, 1.0};
     rb_diag_clear(&jc->diags[i]);
-    rb_status st = search(jc->c, m, (rb_limit_state)k, 1, jc->memo, &one, &jc->diags[i]);
+    rb_status st = search(jc->c, m, (rb_limit_state)k, 1, jc->out->a_star_mps2, jc->memo,
+                          &one, &jc->diags[i]);
     pthread_mutex_lock(&jc->lock);
     rb_motion_fragility *slot = &jc->out->motions[m];
     slot->capacity_mps2[k] = one.capacity_mps2[k];
@@ -260,6 +280,7 @@ rb_status rb_run_fragility(const rb_case *c, int n_threads, uint64_t seed, unsig
         }
     free(jc.diags);
     free(sts);
+    out->solves = (long)rb_design_memo_runs(jc.memo);
     rb_design_memo_free(jc.memo);
     pthread_mutex_destroy(&jc.lock);
     if (st != RB_OK)

@@ -13,3 +13,6 @@ rb_script_test(NAME fragility_p58 SCRIPT tests/fragility/p58.py LABEL fragility)
 # governing state, the P-58 row, batch and merge; none without concrete
 rb_script_test(NAME fragility_anchorage SCRIPT tests/fragility/anchorage.py LABEL fragility
                TIMEOUT 900)
+# the lift-off capacity over random cabinets: the first failing level to
+# the search's resolution, by a brute-force scan down to the floor
+rb_script_test(NAME fragility_lift_off SCRIPT tests/fragility/lift_off.py LABEL fragility)
