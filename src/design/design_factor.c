@@ -63,8 +63,8 @@ static rb_status take_pass(factor_search *s, double level, const rb_design_run *
 static rb_status batch_job(void *v, size_t i)
 {
     factor_batch *b = v;
-    rb_motion m;
-    rb_design_motion_at(b->ctx, b->levels_astar[i] * b->ctx->a_star_mps2, &m);
+    rb_motion m, vertical;
+    rb_design_motion_at(b->ctx, b->levels_astar[i] * b->ctx->a_star_mps2, &m, &vertical);
     rb_design_run_one(b->ctx, b->ctx->model, &m, &b->runs[i]);
     return b->runs[i].status;
 }
@@ -204,9 +204,9 @@ static rb_status narrow_near(factor_search *s, double near, double res, rb_diag 
         double level = below + step;
         if (!(level > s->lo && level < s->hi))
             return RB_OK;
-        rb_motion m;
+        rb_motion m, vertical;
         rb_design_run run;
-        rb_design_motion_at(s->ctx, level * s->ctx->a_star_mps2, &m);
+        rb_design_motion_at(s->ctx, level * s->ctx->a_star_mps2, &m, &vertical);
         rb_design_run_one(s->ctx, s->ctx->model, &m, &run);
         out->bisect_runs++;
         rb_status st = check_run(&run, level, diag);
@@ -231,9 +231,9 @@ static rb_status confirm_pass(factor_search *s, double res, rb_diag *diag)
     rb_design_ctx full = *s->ctx;
     full.defer_confirm = 0;
     while (s->lo > 0) {
-        rb_motion m;
+        rb_motion m, vertical;
         rb_design_run run;
-        rb_design_motion_at(&full, s->lo * full.a_star_mps2, &m);
+        rb_design_motion_at(&full, s->lo * full.a_star_mps2, &m, &vertical);
         rb_design_run_one(&full, full.model, &m, &run);
         rb_status st = check_run(&run, s->lo, diag);
         if (st != RB_OK)

@@ -17,6 +17,7 @@ typedef struct {
     rb_solve_opts opts;          /* history off */
     const rb_criteria *criteria; /* may be NULL: meets = -1 */
     double a_star_mps2;
+    double g_mps2;               /* the model's gravity */
     double shape_peak;           /* peak of the shape's samples (sampled) */
     rb_design_memo *memo;        /* may be NULL */
     /* judge by rb_judge alone, without confirming a marginal pass: a
@@ -31,8 +32,11 @@ rb_status rb_design_ctx_init(rb_design_ctx *ctx, const rb_model *model,
                              const rb_motion *motion, const rb_solve_opts *opts,
                              const rb_criteria *criteria, rb_diag *diag);
 
-/* A copy of the shape whose peak floor acceleration is level_mps2. */
-void rb_design_motion_at(const rb_design_ctx *ctx, double level_mps2, rb_motion *out);
+/* A copy of the shape whose peak floor acceleration is level_mps2. A
+ * vertical component is scaled by the same ratio to the shape's own level,
+ * into *vertical (the caller's, which must outlive out's runs). */
+void rb_design_motion_at(const rb_design_ctx *ctx, double level_mps2, rb_motion *out,
+                         rb_motion *vertical);
 
 /* A grid point (a scan level, a sweep's x) to 12 significant digits:
  * grids that name the same level by different arithmetic (a scan's

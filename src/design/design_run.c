@@ -41,6 +41,7 @@ rb_status rb_design_ctx_init(rb_design_ctx *ctx, const rb_model *model,
     ctx->model = model;
     ctx->motion = motion;
     ctx->criteria = criteria;
+    ctx->g_mps2 = d.g;
     /* without bolts A* = (Fy l + W b) / (M h) has Fy = 0: the uplift level */
     ctx->a_star_mps2 = model->bolt_model == RB_BOLT_NONE ? d.a_uplift_mps2 : d.a_star_mps2;
     if (opts)
@@ -70,18 +71,32 @@ double rb_design_grid_point(double x)
     return strtod(buf, NULL);
 }
 
-void rb_design_motion_at(const rb_design_ctx *ctx, double level_mps2, rb_motion *out)
+void rb_design_motion_at(const rb_design_ctx *ctx, double level_mps2, rb_motion *out,
+                         rb_motion *vertical)
 {
+    double own = rb_motion_peak(ctx->motion);
     *out = *ctx->motion;
     /* the motion's own level is the motion itself, not a rescaling that
      * could land an ulp away from it */
-    if (level_mps2 == rb_motion_peak(ctx->motion))
+    if (level_mps2 == own)
         return;
     /* the sign of the shape's factor is kept: it is part of the shape */
     if (out->kind == RB_MOTION_SAMPLED)
         out->scale = copysign(level_mps2 / ctx->shape_peak, ctx->motion->scale);
     else
         out->amplitude_mps2 = copysign(level_mps2, ctx->motion->amplitude_mps2);
+    /* a floor at another level shakes along every axis in proportion (the
+     * AC156 spectra, horizontal and vertical, are both proportional to
+     * S_DS): the vertical takes the horizontal's ratio to its own level */
+    if (ctx->motion->vertical && own > 0) {
+        double ratio = level_mps2 / own;
+        *vertical = *ctx->motion->vertical;
+        if (vertical->kind == RB_MOTION_SAMPLED)
+            vertical->scale *= ratio;
+        else
+            vertical->amplitude_mps2 *= ratio;
+        out->vertical = vertical;
+    }
 }
 
 /* A solve through the search's memo: the searches of one design share
@@ -105,8 +120,19 @@ void rb_design_run_one(const rb_design_ctx *ctx, const rb_model *model,
                        const rb_motion *motion, rb_design_run *out)
 {
     memset(out, 0, sizeof *out);
-    out->status = solve_memo((void *)ctx, model, motion, &ctx->opts, &out->r);
     out->meets = -1;
+    if (motion->vertical && rb_motion_vertical_check(motion, ctx->g_mps2, NULL) != RB_OK) {
+        /* the vertical, scaled with the level, throws the body off the
+         * floor: the model does not follow it, and no criterion can be met
+         * there (a lift-off, at least) */
+        out->meets = ctx->criteria ? 0 : -1;
+        out->status = ctx->criteria ? RB_OK : RB_ERR_INVALID;
+        snprintf(out->reason, sizeof out->reason, "the vertical floor acceleration at this "
+                 "level reaches -g: the base would leave the floor, which the model does "
+                 "not follow");
+        return;
+    }
+    out->status = solve_memo((void *)ctx, model, motion, &ctx->opts, &out->r);
     if (out->status == RB_OK && ctx->criteria)
     {
         rb_verdict v;
@@ -138,7 +164,8 @@ rb_status rb_design_run_at(const rb_model *model, const rb_motion *motion,
     rb_status st = rb_design_ctx_init(&ctx, model, motion, opts, criteria, diag);
     if (st != RB_OK)
         return st;
-    rb_design_motion_at(&ctx, level_mps2, &at);
+    rb_motion vertical;
+    rb_design_motion_at(&ctx, level_mps2, &at, &vertical);
     st = rb_solve_run(model, &at, &ctx.opts, out, diag);
     if (st == RB_OK)
         rb_judge_run(criteria, model, &at, &ctx.opts, out, NULL, NULL, verdict, runs, n_runs);

@@ -15,7 +15,10 @@
 
 typedef struct {
     rb_model model;
-    rb_motion motion;
+    rb_motion motion;          /* its vertical pointer cleared: */
+    rb_motion vertical;        /* the vertical's own bytes (zero for none),
+                                  since a search scales it into a copy of
+                                  its own wherever it runs a level */
     rb_solve_opts opts;
     rb_status status;
     rb_result r;
@@ -57,12 +60,26 @@ size_t rb_design_memo_runs(rb_design_memo *m)
     return n;
 }
 
-static const memo_entry *find(const rb_design_memo *m, const rb_model *model,
-                              const rb_motion *motion, const rb_solve_opts *opts)
+/* A motion as the memo keeps it: the vertical's bytes beside it. */
+static void key_of(const rb_motion *motion, rb_motion *flat, rb_motion *vertical)
 {
+    *flat = *motion;
+    flat->vertical = NULL;
+    memset(vertical, 0, sizeof *vertical);
+    if (motion->vertical)
+        *vertical = *motion->vertical;
+}
+
+static const memo_entry *find(const rb_design_memo *m, const rb_model *model,
+                              const rb_motion *motion_in, const rb_solve_opts *opts)
+{
+    rb_motion flat, vertical;
+    const rb_motion *motion = &flat;
+    key_of(motion_in, &flat, &vertical);
     for (size_t i = 0; i < m->n; i++) {
         const memo_entry *e = &m->e[i];
         if (!memcmp(&e->motion, motion, sizeof *motion)
+            && !memcmp(&e->vertical, &vertical, sizeof vertical)
             && !memcmp(&e->model, model, sizeof *model)
             && !memcmp(&e->opts, opts, sizeof *opts))
             return e;
@@ -113,7 +130,7 @@ void rb_design_memo_put(rb_design_memo *m, const rb_model *model, const rb_motio
         }
         memo_entry *e = &m->e[m->n++];
         e->model = *model;
-        e->motion = *motion;
+        key_of(motion, &e->motion, &e->vertical);
         e->opts = *opts;
         e->status = status;
         e->r = *r;

@@ -73,7 +73,7 @@ static rb_status sweep_job(void *v, size_t i)
     sweep_job_ctx *c = v;
     rb_sweep_point *p = &c->sw->points[i];
     rb_design_run run;
-    rb_motion m;
+    rb_motion m, vertical;
     p->x = x_at(c->o, i);
     if (c->o->kind == RB_SWEEP_FREQUENCY) {
         rb_motion_init(&m);
@@ -83,7 +83,7 @@ static rb_status sweep_job(void *v, size_t i)
         m.ramp_s = c->o->ramp_s;
         m.duration_s = c->o->duration_s > 0 ? c->o->duration_s : 8.0;
     } else {
-        rb_design_motion_at(c->ctx, p->x * c->ctx->a_star_mps2, &m);
+        rb_design_motion_at(c->ctx, p->x * c->ctx->a_star_mps2, &m, &vertical);
     }
     p->freq_hz = m.kind == RB_MOTION_HARMONIC ? m.freq_hz : 0;
     rb_design_run_one(c->ctx, c->ctx->model, &m, &run);
