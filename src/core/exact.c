@@ -13,6 +13,7 @@
 #include <string.h>
 #include "../motion/matexp.h"
 #include "exact.h"
+#include "minmax.h"
 #include "stepper.h"
 #include "taylor.h"
 
@@ -87,7 +88,7 @@ static void rows_init(const rb_solver *sv, double h, int m, rows *r)
     double a[ZN][ZN], s[ZN][ZN];
     const rb_exact_cache *c = &sv->exact;
     system_matrix(sv, a);
-    double w = fmax(fmax(sv->sys.d.omega, c->wb), 1 / h);
+    double w = rb_fmax(rb_fmax(sv->sys.d.omega, c->wb), 1 / h);
     const double d[ZN] = {1 / (w * w), 1 / w, 1 / (w * w), 1 / w, 1, w};
     memcpy(r->d, d, sizeof d);
     r->m = m;
@@ -145,7 +146,7 @@ static void build_table(const rb_solver *sv, double h, int n, rb_exact_table *t)
     /* panels of at most 1.5 rad of the fastest oscillation, whose squares
      * the 8 points integrate to rounding (a stiff building under a coarse
      * record turns several times in one step) */
-    int panels = (int)ceil(fmax(sv->sys.d.omega, c->wb) * h / 1.5);
+    int panels = (int)ceil(rb_fmax(sv->sys.d.omega, c->wb) * h / 1.5);
     if (panels < 1)
         panels = 1;
     rows_init(sv, h, panels, &r);
@@ -361,7 +362,7 @@ static int exact_step(rb_solver *sv, double target, double *g, rb_status *status
         double va = p[j - 1].y[RB_Y_UD], vb = p[j].y[RB_Y_UD];
         if ((va < 0) != (vb < 0) && va != 0 && vb != 0) {
             double ua = p[j - 1].y[RB_Y_U], ub = p[j].y[RB_Y_U];
-            double bound = fmax(fabs(ua), fabs(ub)) + dt_track * (fabs(va) + fabs(vb));
+            double bound = rb_fmax(fabs(ua), fabs(ub)) + dt_track * (fabs(va) + fabs(vb));
             if (bound > sv->res->max_u_m)
                 return 0;
         }

@@ -14,6 +14,7 @@
 #include <string.h>
 #include "bolt.h"
 #include "exact.h"
+#include "minmax.h"
 #include "root.h"
 #include "stepper.h"
 
@@ -137,7 +138,7 @@ static rb_status setup(rb_solver *sv, const rb_model *model, const rb_motion *mo
         return fail(sv, diag, RB_ERR_INVALID, "the run needs a finite duration > 0");
     rb_control_init(sv);
     double th0 = S->bolt->rows ? rb_dyn_contact_angle(S, model->gap_m) : HUGE_VAL;
-    sv->rest_theta = sv->opts.rest_fraction * fmin(S->d.alpha, th0 > 0 ? th0 : S->d.alpha);
+    sv->rest_theta = sv->opts.rest_fraction * rb_fmin(S->d.alpha, th0 > 0 ? th0 : S->d.alpha);
     if (sv->opts.theta_init_rad != 0) {
         double a0 = fabs(sv->opts.theta_init_rad);
         if (!(a0 < S->d.alpha && a0 < th0))
@@ -183,7 +184,7 @@ static double locate(rb_solver *sv, const rb_rk_step *st, int guard, double a, d
             a = x;
             if (gx != 0)
                 ga = gx;
-            x = fmin(b, x + 0.125 * tol * (1 << k));
+            x = rb_fmin(b, x + 0.125 * tol * (1 << k));
         }
         if (x >= b)
             return b;
@@ -643,7 +644,7 @@ static int stop_reached(const rb_solver *sv)
     unsigned stop = sv->opts.stop_at;
     if ((stop & RB_STOP_FIRST_YIELD)
         && (r->yielded[0] || r->yielded[1]
-            || (r->fy_row_n > 0 && fmax(r->max_bolt_force_n[0], r->max_bolt_force_n[1])
+            || (r->fy_row_n > 0 && rb_fmax(r->max_bolt_force_n[0], r->max_bolt_force_n[1])
                                    >= r->fy_row_n)))
         return 1;
     return (stop & RB_STOP_LIFT_OFF) && r->min_vertical_reaction_n <= 0;
@@ -661,7 +662,7 @@ static rb_status run(rb_solver *sv, rb_diag *diag)
         if ((s = check_work(sv, diag)) != RB_OK)
             break;
         double brk = rb_motion_next_break(sv->sys.motion, sv->t);
-        double target = fmin(brk, sv->t_end), h = rb_control_trial(sv, target);
+        double target = rb_fmin(brk, sv->t_end), h = rb_control_trial(sv, target);
         if (!(h > 1e-14 * (1 + sv->t)))
             return sv->nonfinite_trial ? nonfinite_ahead(sv, diag, h)
                    : fail(sv, diag, RB_ERR_STEP_TOO_SMALL, "step size underflow: the "

@@ -6,6 +6,7 @@
 #include <math.h>
 #include <string.h>
 #include "bolt.h"
+#include "minmax.h"
 #include "taylor.h"
 
 enum { NT = RB_TAYLOR_MAX + 2 };
@@ -420,15 +421,15 @@ double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double
         hk *= h;
         double e = scaled(&s, n, hk, tol, tol_x);
         if (K.vert) /* the vertical's own series, on the floor's scale */
-            e = fmax(e, fabs(s.Z[n]) * tol_x * hk + 0.0 * s.Z[n]);
+            e = rb_fmax(e, fabs(s.Z[n]) * tol_x * hk + 0.0 * s.Z[n]);
         if (!isfinite(e))
             return 0;
         /* two terms in a row, since a series can have a vanishing term */
         if (n >= 3 && e <= 1 && e_prev <= 1)
             break;
         if (n == RB_TAYLOR_MAX) {
-            double f = fmin(pow(0.5 / e, 1.0 / n), pow(0.5 / e_prev, 1.0 / (n - 1)));
-            h *= fmin(f, 1.0);
+            double f = rb_fmin(pow(0.5 / e, 1.0 / n), pow(0.5 / e_prev, 1.0 / (n - 1)));
+            h *= rb_fmin(f, 1.0);
             break;
         }
         e_prev = e;

@@ -12,14 +12,15 @@
 #include <string.h>
 #include "rockbolt/interaction.h"
 #include "bolt.h"
+#include "minmax.h"
 #include "root.h"
 #include "solver.h"
 
 static void note_displacements(rb_solver *sv, const double *y)
 {
     rb_result *r = sv->res;
-    r->max_u_m = fmax(r->max_u_m, fabs(y[RB_Y_U]));
-    r->max_theta_rad = fmax(r->max_theta_rad, fabs(y[RB_Y_TH]));
+    r->max_u_m = rb_fmax(r->max_u_m, fabs(y[RB_Y_U]));
+    r->max_theta_rad = rb_fmax(r->max_theta_rad, fabs(y[RB_Y_TH]));
 }
 
 /* The state and what the equations give besides it at t on the span's
@@ -78,7 +79,7 @@ void rb_track_span(rb_solver *sv, const rb_rk_step *st, double t0, double t1)
     /* a step within the pulse starts where the last one ended, to
      * rounding */
     if (span_state(sv, t0, y, &a)
-        && fabs(a.x - sv->track_x) > 1e-9 * fmax(fabs(a.x), fabs(sv->track_x))) {
+        && fabs(a.x - sv->track_x) > 1e-9 * rb_fmax(fabs(a.x), fabs(sv->track_x))) {
         rb_track_reset(sv);
         rb_track_aux(sv, t0, y, &a);
     }
@@ -106,7 +107,7 @@ double rb_exact_dense(const rb_solver *sv, double t0, const double *y0, double h
 {
     /* never past what double precision can meet, where the series would
      * run to its longest and stop short of the step */
-    double f = fmax(RB_DENSE_TOL_FACTOR, fmin(1, RB_RTOL_MIN / sv->opts.rtol)), atol[RB_NY];
+    double f = rb_fmax(RB_DENSE_TOL_FACTOR, rb_fmin(1, RB_RTOL_MIN / sv->opts.rtol)), atol[RB_NY];
     for (int i = 0; i < RB_NY; i++)
         atol[i] = f * sv->atol[i];
     return rb_taylor_step(&sv->sys, &sv->disc, t0, y0, h, atol, f * sv->atol_x,
@@ -214,7 +215,7 @@ static double refine_at(const void *ctx, double t)
  * have room for four points. */
 static double edge_peak(const refine_ctx *c, double *ts, double *vs, double *at)
 {
-    double tm = 0.5 * (ts[0] + ts[1]), vm = refine_at(c, tm), hi = fmax(vs[0], vs[1]);
+    double tm = 0.5 * (ts[0] + ts[1]), vm = refine_at(c, tm), hi = rb_fmax(vs[0], vs[1]);
     ts[2] = ts[1];
     vs[2] = vs[1];
     ts[1] = tm;
@@ -246,7 +247,7 @@ static double edge_peak(const refine_ctx *c, double *ts, double *vs, double *at)
     double fv = refine_at(c, tv);
     if (!(fv > hi)) {
         *at = fv > vm ? tv : tm;
-        return fmax(fv, vm);
+        return rb_fmax(fv, vm);
     }
     /* the vertex above both ends and the middle: it and its two
      * neighbours bracket the peak */
@@ -327,7 +328,7 @@ static double peak_push(rb_solver *sv, rb_peak_window *w, int q, double t, doubl
         /* two ends alike say nothing of a crest between them: the
          * window's other interval bounds the slope there */
         if (w->n == 3)
-            reach = fmax(reach, fabs(w->v[1] - w->v[0]));
+            reach = rb_fmax(reach, fabs(w->v[1] - w->v[0]));
         if (hi + 0.5 * reach > best && (vr = refine(sv, q, w->t + k, w->v + k, 2, &tr)) > v) {
             *at = tr;
             return vr;
@@ -339,10 +340,10 @@ static double peak_push(rb_solver *sv, rb_peak_window *w, int q, double t, doubl
         return w->v[1];
     if ((vr = refine(sv, q, w->t, w->v, 3, &tr)) > -HUGE_VAL) {
         *at = vr > v ? tr : t;
-        return fmax(v, vr);
+        return rb_fmax(v, vr);
     }
     double tv, vv;
-    return parabola_vertex(w->t, w->v, &tv, &vv) ? fmax(v, vv) : fmax(v, w->v[1]);
+    return parabola_vertex(w->t, w->v, &tv, &vv) ? rb_fmax(v, vv) : rb_fmax(v, w->v[1]);
 }
 
 /* Whether the span's dense output covers [t0, t]. */
@@ -479,7 +480,7 @@ static void note_friction_dip(rb_solver *sv, double at, double least)
     for (int i = 0; i < 2; i++) {
         sample c;
         if (span_sample(sv, tc[i], &c))
-            r->max_friction_demand = fmax(r->max_friction_demand, fabs(c.H) / floor);
+            r->max_friction_demand = rb_fmax(r->max_friction_demand, fabs(c.H) / floor);
     }
 }
 
@@ -510,7 +511,7 @@ static void note_friction(rb_solver *sv, double t, const sample *s)
             if (span_sample(sv, tc, &c))
                 h = fabs(c.H);
         }
-        r->max_friction_demand = fmax(r->max_friction_demand, h / floor);
+        r->max_friction_demand = rb_fmax(r->max_friction_demand, h / floor);
     }
     sv->fric_have = 1;
     sv->fric_t = t;
@@ -519,7 +520,7 @@ static void note_friction(rb_solver *sv, double t, const sample *s)
     double at;
     if (v > floor)
         r->max_friction_demand
-            = fmax(r->max_friction_demand,
+            = rb_fmax(r->max_friction_demand,
                    peak_push(sv, &sv->win_friction, Q_FRICTION, t, fabs(H) / v,
                              r->max_friction_demand, &at));
     else
@@ -571,16 +572,16 @@ void rb_track_aux(rb_solver *sv, double t, const double *y, const rb_aux *a)
     if (s.bolt > 0) {
         int row = rb_row_of_side(sv->disc.side);
         r->max_bolt_force_n[row]
-            = fmax(r->max_bolt_force_n[row], peak_push(sv, &sv->win_bolt, Q_BOLT, t, s.bolt,
+            = rb_fmax(r->max_bolt_force_n[row], peak_push(sv, &sv->win_bolt, Q_BOLT, t, s.bolt,
                                                        r->max_bolt_force_n[row], &at));
     }
     if (sv->opts.check_reactions) {
         double Hp, Vp;
         rb_dyn_reactions_points(S, &sv->disc, y, a, &Hp, &Vp);
-        r->reaction_mismatch_n = fmax(r->reaction_mismatch_n,
-                                      fmax(fabs(Hp - s.H), fabs(Vp - s.V)));
+        r->reaction_mismatch_n = rb_fmax(r->reaction_mismatch_n,
+                                      rb_fmax(fabs(Hp - s.H), fabs(Vp - s.V)));
     }
-    r->max_shear_total_n = fmax(r->max_shear_total_n,
+    r->max_shear_total_n = rb_fmax(r->max_shear_total_n,
                                 peak_push(sv, &sv->win_shear, Q_SHEAR, t, fabs(s.H),
                                           r->max_shear_total_n, &at));
     /* a least value is the peak of its negative; where the window's
@@ -594,7 +595,7 @@ void rb_track_aux(rb_solver *sv, double t, const double *y, const rb_aux *a)
     else if (least_v < 0 && s.floor_v > 0 && window_above(&sv->win_vertical, 0))
         gate = 0;
     double least = -peak_push(sv, &sv->win_vertical, Q_VERTICAL, t, -s.floor_v, gate, &at);
-    r->min_vertical_reaction_n = fmin(r->min_vertical_reaction_n, least);
+    r->min_vertical_reaction_n = rb_fmin(r->min_vertical_reaction_n, least);
     if (least <= 0 && at < t)
         note_dip(sv, at, least);
     if (least < floor && at < t)
@@ -668,7 +669,7 @@ void rb_track_interval(rb_solver *sv, const rb_rk_step *st, double ta, double tb
             /* the root only matters for a new peak: over a check interval
              * (an eighth of the fastest period) the rate is monotone about
              * its zero, so the displacement there stays within this bound */
-            double bound = fmax(fabs(prev[pc]), fabs(cur[pc]))
+            double bound = rb_fmax(fabs(prev[pc]), fabs(cur[pc]))
                            + (t1 - t0) * (fabs(prev[c]) + fabs(cur[c]));
             int turn = spring && c == RB_Y_THD;
             if (turn || bound > (c == RB_Y_UD ? sv->res->max_u_m : sv->res->max_theta_rad)) {
