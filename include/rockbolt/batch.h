@@ -65,7 +65,7 @@ void rb_batch_list_free(rb_batch_list *l);
 /* Parse an equipment list into l (called by rb_batch_list_add): UTF-8
  * (a byte-order mark allowed) unless l->encoding names another, comma- or
  * semicolon-separated as its header shows. */
-rb_status rb_batch_csv_read(rb_batch_list *l, const char *path, const char *default_base);
+rb_status rb_batch_list_read_csv(rb_batch_list *l, const char *path, const char *default_base);
 
 /* ---- Summary --------------------------------------------------------------- */
 

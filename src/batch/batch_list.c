@@ -10,59 +10,6 @@
 #include <string.h>
 #include <sys/stat.h>
 #include "batch_internal.h"
-#include "util/grow.h"
-
-rb_batch_item *rb_batch_list_push(rb_batch_list *l, const char *source)
-{
-    if (l->n == l->cap) {
-        rb_batch_item *p = rb_grow(l->items, &l->cap, sizeof *p, 16);
-        if (!p)
-            return NULL;
-        l->items = p;
-    }
-    rb_batch_item *it = &l->items[l->n];
-    memset(it, 0, sizeof *it);
-    if (!(it->source = rb_batch_strdup(source)))
-        return NULL;
-    l->n++;
-    return it;
-}
-
-void rb_batch_item_bad(rb_batch_item *it, int line, int col, const char *key,
-                       const char *msg)
-{
-    it->bad = 1;
-    if (!it->error && !(it->error = calloc(1, sizeof *it->error)))
-        return;     /* the case loader reports it without the details */
-    snprintf(it->error->file, sizeof it->error->file, "%s", it->source);
-    it->error->line = line;
-    it->error->col = col;
-    snprintf(it->error->key, sizeof it->error->key, "%s", key);
-    snprintf(it->error->msg, sizeof it->error->msg, "%s", msg);
-}
-
-static void item_free(rb_batch_item *it)
-{
-    free(it->source);
-    free(it->tag);
-    free(it->base);
-    for (size_t k = 0; k < it->n_ov; k++) {
-        free((char *)it->ov[k].key);
-        free((char *)it->ov[k].value);
-    }
-    free(it->ov);
-    free(it->error);
-}
-
-void rb_batch_list_free(rb_batch_list *l)
-{
-    if (!l)
-        return;
-    for (size_t i = 0; i < l->n; i++)
-        item_free(&l->items[i]);
-    free(l->items);
-    memset(l, 0, sizeof *l);
-}
 
 static int cmp_str(const void *a, const void *b)
 {
@@ -103,7 +50,7 @@ static rb_status add_file(rb_batch_list *l, const char *path, const char *defaul
                                  "refused without opening it, since reading it could "
                                  "wait for ever");
     if (csv)
-        return rb_batch_csv_read(l, path, default_base);
+        return rb_batch_list_read_csv(l, path, default_base);
     return rb_batch_list_push(l, path) ? RB_OK : RB_ERR_NOMEM;
 }
 

@@ -825,7 +825,7 @@ static char *transcode(char *buf, size_t *len, const char *enc, char *msg, size_
     return out;
 }
 
-rb_status rb_batch_csv_read(rb_batch_list *l, const char *path, const char *default_base)
+rb_status rb_batch_list_read_csv(rb_batch_list *l, const char *path, const char *default_base)
 {
     csv_ctx cx;
     char msg[700];

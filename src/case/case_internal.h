@@ -200,7 +200,7 @@ typedef struct {
 void rb_case_read_concrete(rb_cctx *c, rb_ynode *root, rb_ynode *an, rb_case *cs);
 void rb_case_resolve_concrete(rb_cctx *c, rb_case *cs);
 
-/* --- case.c: diagnostics ------------------------------------------------ */
+/* --- case_ctx.c: diagnostics and key paths ------------------------------ */
 /* Append an error at file:line:col under key (may be ""). */
 void rb_cctx_error_at(rb_cctx *c, rb_status st, const char *file, int line,
                       int col, const char *key, const char *fmt, ...)
@@ -219,6 +219,10 @@ void rb_cctx_error(rb_cctx *c, const rb_ynode *n, const char *key,
 const char *rb_cctx_file(rb_cctx *c, const char *name);
 /* dst = path.key (or key when path is empty), truncated to fit. */
 void rb_case_keypath(char *dst, const char *path, const char *key);
+/* At the end of a load: put its diagnostics (from index first on) in
+ * reading order, the case file before its bases, then by line and column;
+ * then say how many were dropped over RB_CASE_MAX_DIAGS. */
+void rb_cctx_finish(rb_cctx *c, size_t first);
 
 /* --- case_yaml.c: files to trees ---------------------------------------- */
 /* Read one YAML file into a tree whose root is a mapping. file is the
@@ -239,8 +243,8 @@ const char *rb_ynode_kind_str(const rb_ynode *n);
 /* 1 if n is a plain null scalar ("", "~", "null"). */
 int rb_ynode_is_null(const rb_ynode *n);
 
-/* --- case_schema.c ------------------------------------------------------- */
-/* 1 if key is one a case file may give at its top level. */
+/* --- case_top.c ---------------------------------------------------------- */
+/* 1 if key is one a case file may give at its top level (rb_case_top_keys). */
 int rb_case_top_key(const char *key);
 /* The keys each section of the schema reads, NULL-terminated, where the
  * readers keep them (case_schema.c, case_concrete.c, case_design.c,
@@ -284,13 +288,14 @@ double rb_case_suite_duration(const rb_cmotion *cm);
  * motion that could not be made. */
 int rb_case_build_suite(rb_cctx *c, const rb_cmotion *cm, const rb_case_target *ct,
                         rb_case_motion *out, size_t count);
+
+/* --- case_value.c: typed values ----------------------------------------- */
 /* A file a case names, relative to the directory of the file that named
  * it, or "shipped:NAME" in the data directory (rockbolt/datadir.h); NULL
  * when out of memory. */
 char *rb_case_input_path(const rb_ynode *v);
+/* A copy of s; NULL, with c->nomem set, when out of memory. */
 char *rb_case_strdup(rb_cctx *c, const char *s);
-
-/* --- case_value.c: typed values ----------------------------------------- */
 /* Look up key in map and mark it used. Missing and required: error at the
  * map naming path.key and what was expected. Returns the value or NULL. */
 rb_ynode *rb_cv_get(rb_cctx *c, rb_ynode *map, const char *path,

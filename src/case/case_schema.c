@@ -15,18 +15,6 @@
 
 #define RB_PI 3.14159265358979323846
 
-static const char *const top_keys[] = {
-    "name", "description", "extends", "equipment", "anchorage", "gap",
-    "gap_ratio", "motion", "motions", "criteria", "analysis", "design",
-    "output_units", "concrete", "fragility", "project", NULL};
-int rb_case_top_key(const char *key)
-{
-    for (size_t k = 0; top_keys[k]; k++)
-        if (strcmp(key, top_keys[k]) == 0)
-            return 1;
-    return 0;
-}
-
 static const char *const equipment_keys[] = {
     "mass", "height", "cm_height", "base_width", "frequency", "damping",
     "restitution", "inertia", "rigid", NULL};
@@ -45,7 +33,6 @@ static const char *const analysis_keys[] = {
     "formulation", "integrator", "tolerance", "output_interval", "history",
     "stretch_past_failure", NULL};
 /* for the keys a list column may name (case_keys.c) */
-const char *const *const rb_case_top_keys = top_keys;
 const char *const *const rb_case_equipment_keys = equipment_keys;
 const char *const *const rb_case_anchorage_keys = anchorage_keys;
 const char *const *const rb_case_criteria_keys = criteria_keys;
@@ -465,5 +452,5 @@ void rb_case_read_schema(rb_cctx *c, rb_ynode *root, rb_case *cs)
     if ((v = schema_section(c, root, "project", 0, "")))
         rb_case_read_project(c, v, cs);
     rb_case_read_motions(c, root);
-    rb_cv_unknown_keys(c, root, "", top_keys);
+    rb_cv_unknown_keys(c, root, "", rb_case_top_keys);
 }

@@ -104,39 +104,6 @@ static int resolve_accel(rb_cctx *c, const rb_cmotion *cm, const rb_ynode *v,
 
 /* The record's path: relative to the directory of the file that named it,
  * or "shipped:NAME" in the data directory (rockbolt/datadir.h). */
-char *rb_case_input_path(const rb_ynode *v)
-{
-    size_t sl = strlen(RB_SHIPPED_PREFIX);
-    if (strncmp(v->text, RB_SHIPPED_PREFIX, sl) == 0) {
-        char buf[4096];
-        const char *sp = rb_shipped_path(v->text + sl, buf, sizeof buf);
-        char *copy = sp ? malloc(strlen(sp) + 1) : NULL;
-        if (copy)
-            memcpy(copy, sp, strlen(sp) + 1);
-        return copy;
-    }
-    const char *slash = strrchr(v->file, '/');
-    size_t dlen = (v->text[0] == '/' || !slash) ? 0 : (size_t)(slash - v->file + 1);
-    size_t rlen = strlen(v->text);
-    char *p = malloc(dlen + rlen + 1);
-    if (p) {
-        memcpy(p, v->file, dlen);
-        memcpy(p + dlen, v->text, rlen + 1);
-    }
-    return p;
-}
-
-char *rb_case_strdup(rb_cctx *c, const char *s)
-{
-    size_t len = strlen(s) + 1;
-    char *p = malloc(len);
-    if (p)
-        memcpy(p, s, len);
-    else
-        c->nomem = 1;
-    return p;
-}
-
 /* Report an unreadable record at its `file:` value, with the reader's own
  * diagnostic (which names the line of the record when it has one). */
 static void record_fail(rb_cctx *c, const rb_cmotion *cm, const char *key,

@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "case_internal.h"
+#include "rockbolt/datadir.h"
 #include "util/nearest.h"
 
 rb_ynode *rb_cv_get(rb_cctx *c, rb_ynode *map, const char *path,
@@ -293,4 +294,37 @@ void rb_cv_note_field(rb_cctx *c, const char *field, const char *key,
     f->field = field;
     snprintf(f->key, sizeof f->key, "%s", key);
     f->node = node;
+}
+
+char *rb_case_input_path(const rb_ynode *v)
+{
+    size_t sl = strlen(RB_SHIPPED_PREFIX);
+    if (strncmp(v->text, RB_SHIPPED_PREFIX, sl) == 0) {
+        char buf[4096];
+        const char *sp = rb_shipped_path(v->text + sl, buf, sizeof buf);
+        char *copy = sp ? malloc(strlen(sp) + 1) : NULL;
+        if (copy)
+            memcpy(copy, sp, strlen(sp) + 1);
+        return copy;
+    }
+    const char *slash = strrchr(v->file, '/');
+    size_t dlen = (v->text[0] == '/' || !slash) ? 0 : (size_t)(slash - v->file + 1);
+    size_t rlen = strlen(v->text);
+    char *p = malloc(dlen + rlen + 1);
+    if (p) {
+        memcpy(p, v->file, dlen);
+        memcpy(p + dlen, v->text, rlen + 1);
+    }
+    return p;
+}
+
+char *rb_case_strdup(rb_cctx *c, const char *s)
+{
+    size_t len = strlen(s) + 1;
+    char *p = malloc(len);
+    if (p)
+        memcpy(p, s, len);
+    else
+        c->nomem = 1;
+    return p;
 }

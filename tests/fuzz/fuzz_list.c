@@ -1,4 +1,4 @@
-/* libFuzzer harness: equipment lists (rb_batch_csv_read), read as UTF-8,
+/* libFuzzer harness: equipment lists (rb_batch_list_read_csv), read as UTF-8,
  * and also as cp1252 (--encoding) when RB_FUZZ_LIST_CP1252 is set. Whatever the bytes, the read gives items or
  * runs out of memory; every item names the list; a bad item carries a
  * message and a place, a good one a base; tags and sources are valid
@@ -19,9 +19,9 @@ static void read_as(const char *path, const char *encoding)
     rb_batch_list l;
     memset(&l, 0, sizeof l);
     l.encoding = encoding;
-    rb_status st = rb_batch_csv_read(&l, path, NULL);
+    rb_status st = rb_batch_list_read_csv(&l, path, NULL);
     if (st != RB_OK && st != RB_ERR_NOMEM)
-        rb_fuzz_fail("rb_batch_csv_read returned an unexpected status", rb_status_str(st));
+        rb_fuzz_fail("rb_batch_list_read_csv returned an unexpected status", rb_status_str(st));
     for (size_t i = 0; i < l.n; i++) {
         const rb_batch_item *it = &l.items[i];
         if (!it->source || strcmp(it->source, path) != 0)
