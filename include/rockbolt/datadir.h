@@ -11,8 +11,7 @@
  *      templates), for a build that is not installed;
  *   4. the data directory of the install prefix the build was configured
  *      with.
- * The answer is computed once per process (call rb_data_reset() after
- * changing RB_DATA_DIR, as tests do). */
+ * The answer is computed once per process. */
 #ifndef ROCKBOLT_DATADIR_H
 #define ROCKBOLT_DATADIR_H
 
@@ -27,9 +26,6 @@ const char *rb_data_templates_dir(void);
 /* Where the data directory was found: "RB_DATA_DIR", "installed",
  * "source tree" or "install prefix". */
 const char *rb_data_origin(void);
-
-/* Forget the answer so the next call looks again. Not thread-safe. */
-void rb_data_reset(void);
 
 /* A record shipped with rockbolt, by the short name lists and cases use. */
 typedef struct {

@@ -24,7 +24,4 @@ void rb_batch_item_bad(rb_batch_item *it, int line, int col, const char *key,
 #include "util/strbuf.h"
 
 
-/* One case of the work list, loaded, solved, judged and reported. */
-typedef struct rb_batch_ctx rb_batch_ctx;
-
 #endif

@@ -2,8 +2,8 @@
  * API: a line reader that knows where it is in the file, number tokens,
  * a bounded growing buffer of values, and diagnostics that name the file,
  * line and column. */
-#ifndef RB_IO_RECORD_INTERNAL_H
-#define RB_IO_RECORD_INTERNAL_H
+#ifndef RB_RECORD_INTERNAL_H
+#define RB_RECORD_INTERNAL_H
 
 #include <stdio.h>
 #include "rockbolt/record.h"

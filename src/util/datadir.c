@@ -128,13 +128,6 @@ const char *rb_data_origin(void)
     return data_origin;
 }
 
-void rb_data_reset(void)
-{
-    pthread_mutex_lock(&data_lock);
-    data_origin = NULL;
-    pthread_mutex_unlock(&data_lock);
-}
-
 const rb_shipped_record *rb_shipped_find(const char *name)
 {
     for (size_t k = 0; k < sizeof shipped / sizeof shipped[0]; k++)
