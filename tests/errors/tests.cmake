@@ -10,6 +10,6 @@ foreach(case_file ${RB_ERROR_CASES})
            COMMAND sh ${PROJECT_SOURCE_DIR}/tests/errors/run_error_case.sh
                    $<TARGET_FILE:rockbolt> tests/errors/${name}.yaml
                    tests/errors/${name}.expect)
-  set_tests_properties(error_${name} PROPERTIES LABELS cli
+  set_tests_properties(error_${name} PROPERTIES LABELS errors
                        WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
 endforeach()
