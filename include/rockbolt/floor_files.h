@@ -17,9 +17,9 @@ typedef enum {
 } rb_floor_file_kind;
 
 /* Index of a component's file in a names array of n_motions x
- * RB_AXIS_COUNT x RB_FLOOR_FILE_KINDS entries (NULL where not written). */
+ * RB_FLOOR_AXES x RB_FLOOR_FILE_KINDS entries (NULL where not written). */
 #define RB_FLOOR_FILE_INDEX(m, axis, kind) \
-    (((m) * RB_AXIS_COUNT + (size_t)(axis)) * RB_FLOOR_FILE_KINDS + (size_t)(kind))
+    (((m) * RB_FLOOR_AXES + (size_t)(axis)) * RB_FLOOR_FILE_KINDS + (size_t)(kind))
 
 /* Component axis of motion m as a PEER AT2 record (the legacy header: line
  * 3 "UNITS OF G", line 4 "NPTS=, DT= SEC"; 5 values a line, each in 16
@@ -27,9 +27,9 @@ typedef enum {
  * time in s and acceleration in g, comma-separated: a two-column record).
  * RB_ERR_IO when fp fails. */
 rb_status rb_floors_write_at2(FILE *fp, const rb_case *c, const rb_case_floors *f, size_t m,
-                              rb_axis axis);
+                              rb_floor_axis axis);
 rb_status rb_floors_write_csv(FILE *fp, const rb_case *c, const rb_case_floors *f, size_t m,
-                              rb_axis axis);
+                              rb_floor_axis axis);
 
 /* The summary for the terminal and as JSON (SI), naming the files written
  * (files: NULL, or as above). New strings, NULL when memory runs out. */

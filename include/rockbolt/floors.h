@@ -11,16 +11,16 @@
 #include "rockbolt/names.h"
 #include "rockbolt/spectrum.h"
 
-/* The components of a floor motion (rb_axis_names: h1, h2, v): H1 in the
- * model's plane, H2 out of it (for the table only: the model is planar),
- * V the vertical, positive upward. */
+/* The components of a floor motion (rb_floor_axis_names: h1, h2, v): H1
+ * in the model's plane, H2 out of it (for the table only: the model is
+ * planar), V the vertical, positive upward. */
 typedef enum {
-    RB_AXIS_H1 = 0,
-    RB_AXIS_H2,
-    RB_AXIS_V,
-    RB_AXIS_COUNT
-} rb_axis;
-extern const rb_enum_name rb_axis_names[];          /* rb_axis: h1, h2, v */
+    RB_FLOOR_H1 = 0,
+    RB_FLOOR_H2,
+    RB_FLOOR_V,
+    RB_FLOOR_AXES
+} rb_floor_axis;
+extern const rb_enum_name rb_floor_axis_names[];    /* rb_floor_axis: h1, h2, v */
 
 /* How the solver's floor runs between the samples written. */
 typedef enum {
@@ -48,10 +48,14 @@ typedef struct {
     rb_between between;
     const rb_target *target;/* borrowed: the target it was matched to, or NULL */
     rb_motion_summary sum;  /* rb_motion_summarise of s against target */
+    rb_spectrum trs;        /* owned, with a target: the TRS the acceptance
+                               judged, on rb_accept_grid's grid at the
+                               target's damping (what the figure draws) */
+    rb_accept_rules rules;  /* with a target: rb_accept_rules_init's */
 } rb_floor_component;
 
 typedef struct {
-    rb_floor_component axis[RB_AXIS_COUNT];
+    rb_floor_component axis[RB_FLOOR_AXES];
     double run_s;           /* how long the solver runs on this motion */
 } rb_floor_motion;
 

@@ -124,4 +124,14 @@ rb_status rb_plot_fragility_sweep_svg(const rb_fragility_sweep *s, const char *t
 rb_status rb_plot_spectra_svg(const rb_case *c, const rb_case_spectra *s, const char *title,
                               char **out, rb_diag *diag);
 
+/* rockbolt motion's figure (rb_run_floors): for every component matched
+ * to a target, a panel of its TRS in g on the acceptance grid against the
+ * RRS, the lower line (0.9) and the guide (1.3) dashed between the
+ * cutoffs, titled with the acceptance's verdict. RB_ERR_INVALID when no
+ * component has a target, RB_ERR_NOMEM. */
+#include "rockbolt/floors.h"
+int rb_plot_floors_has_figure(const rb_case_floors *f);
+rb_status rb_plot_floors_svg(const rb_case *c, const rb_case_floors *f, const char *title,
+                             char **out, rb_diag *diag);
+
 #endif

@@ -1,6 +1,7 @@
 /* "rockbolt motion CASE.yaml": every motion's floor accelerations as the
  * cabinet feels them (rb_run_floors), each component as a PEER AT2 record
- * and a CSV under --dir, with a summary on stdout and as JSON. Every file
+ * and a CSV under --dir, with a summary on stdout and as JSON, and each
+ * TRS against its RRS as a figure (--svg, --html). Every file
  * is planned and checked against the case's inputs before anything is
  * written, and all are written or none. Exit 0 when they are written. */
 #include <stdio.h>
@@ -13,6 +14,7 @@
 #include "rockbolt/floor_files.h"
 #include "rockbolt/names.h"
 #include "rockbolt/outplan.h"
+#include "rockbolt/plot.h"
 #include "rockbolt/run.h"
 
 typedef struct {
@@ -35,14 +37,20 @@ static char *json_of(const void *ctx)
     return rb_floors_render_json(o->c, o->f, (const char *const *)o->files);
 }
 
+static rb_status figure(const void *ctx, const char *title, char **out, rb_diag *d)
+{
+    const outputs *o = ctx;
+    return rb_plot_floors_svg(o->c, o->f, title, out, d);
+}
+
 static rb_status dir_file(const void *ctx, size_t i, FILE *fp, rb_diag *d)
 {
     const outputs *o = ctx;
     for (size_t k = 0; k < o->n_files; k++) {
         if (o->plan_of[k] != i)
             continue;
-        size_t m = k / (RB_AXIS_COUNT * RB_FLOOR_FILE_KINDS);
-        rb_axis a = (rb_axis)(k / RB_FLOOR_FILE_KINDS % RB_AXIS_COUNT);
+        size_t m = k / (RB_FLOOR_AXES * RB_FLOOR_FILE_KINDS);
+        rb_floor_axis a = (rb_floor_axis)(k / RB_FLOOR_FILE_KINDS % RB_FLOOR_AXES);
         rb_status st = k % RB_FLOOR_FILE_KINDS == RB_FLOOR_FILE_AT2
                        ? rb_floors_write_at2(fp, o->c, o->f, m, a)
                        : rb_floors_write_csv(fp, o->c, o->f, m, a);
@@ -61,7 +69,7 @@ static rb_exit plan_files(const rb_cli_opts *op, rb_outplan *p, outputs *o)
 {
     const rb_case_floors *f = o->f;
     static const char *const ext[RB_FLOOR_FILE_KINDS] = {"at2", "csv"};
-    o->n_files = f->n_motions * RB_AXIS_COUNT * RB_FLOOR_FILE_KINDS;
+    o->n_files = f->n_motions * RB_FLOOR_AXES * RB_FLOOR_FILE_KINDS;
     o->files = calloc(o->n_files ? o->n_files : 1, sizeof *o->files);
     o->plan_of = malloc((o->n_files ? o->n_files : 1) * sizeof *o->plan_of);
     if (!o->files || !o->plan_of) {
@@ -69,8 +77,8 @@ static rb_exit plan_files(const rb_cli_opts *op, rb_outplan *p, outputs *o)
         return RB_EXIT_INTERNAL;
     }
     for (size_t k = 0; k < o->n_files; k++) {
-        size_t m = k / (RB_AXIS_COUNT * RB_FLOOR_FILE_KINDS);
-        int a = (int)(k / RB_FLOOR_FILE_KINDS % RB_AXIS_COUNT);
+        size_t m = k / (RB_FLOOR_AXES * RB_FLOOR_FILE_KINDS);
+        int a = (int)(k / RB_FLOOR_FILE_KINDS % RB_FLOOR_AXES);
         char stem[200];
         o->plan_of[k] = SIZE_MAX;
         if (!f->motions[m].axis[a].present)
@@ -83,7 +91,7 @@ static rb_exit plan_files(const rb_cli_opts *op, rb_outplan *p, outputs *o)
             return RB_EXIT_INTERNAL;
         }
         snprintf(o->files[k], len, "%s/%s-%s.%s", op->dir_path, stem,
-                 rb_enum_str(rb_axis_names, a), ext[k % RB_FLOOR_FILE_KINDS]);
+                 rb_enum_str(rb_floor_axis_names, a), ext[k % RB_FLOOR_FILE_KINDS]);
         rb_diag d;
         rb_diag_clear(&d);
         rb_status st = rb_outplan_add(p, "--dir", o->files[k], &d);
@@ -128,13 +136,19 @@ rb_exit rb_cli_motion_run(const rb_cli_opts *op)
     }
     out.c = &c;
     out.f = &f;
+    if (e == RB_EXIT_PASS && (op->svg_path || op->html_path) && !rb_plot_floors_has_figure(&f)) {
+        rb_cli_error(op->case_path, op->svg_path ? "--svg" : "--html", "no motion of the "
+                     "case has a target spectrum to draw its TRS against (the figure of "
+                     "--svg and --html)");
+        e = RB_EXIT_USAGE;
+    }
     if (e == RB_EXIT_PASS && op->dir_path)
         e = plan_files(op, &p, &out);
     if (e == RB_EXIT_PASS) {
         char title[256];
         snprintf(title, sizeof title, "Floor motions of %.200s",
                  c.name ? c.name : "the case");
-        rb_cli_renders r = {&out, title, "summary", text_of, json_of, NULL, NULL,
+        rb_cli_renders r = {&out, title, "summary", text_of, json_of, NULL, figure,
                             NULL, NULL, "--dir", dir_file};
         e = rb_cli_emit_case_outputs(op, &p, &r);
     }

@@ -12,8 +12,8 @@ const rb_enum_name rb_pulse_shape_names[] = {
     {"rectangular", RB_PULSE_RECT}, {"triangular-decreasing", RB_PULSE_TRI_DEC},
     {"triangular-increasing", RB_PULSE_TRI_INC}, {"half-sine", RB_PULSE_HALF_SINE},
     {NULL, 0}};
-const rb_enum_name rb_axis_names[] = {
-    {"h1", RB_AXIS_H1}, {"h2", RB_AXIS_H2}, {"v", RB_AXIS_V}, {NULL, 0}};
+const rb_enum_name rb_floor_axis_names[] = {
+    {"h1", RB_FLOOR_H1}, {"h2", RB_FLOOR_H2}, {"v", RB_FLOOR_V}, {NULL, 0}};
 const rb_enum_name rb_between_names[] = {
     {"linear", RB_BETWEEN_LINEAR}, {"building", RB_BETWEEN_BUILDING},
     {"sampled", RB_BETWEEN_SAMPLED}, {NULL, 0}};

@@ -34,17 +34,17 @@ static const char *between_text(rb_between b)
 
 /* "case C, motion M, component h1 (...)": names escaped to one line */
 static int describe(FILE *fp, const rb_case *c, const rb_floor_component *fc, size_t m,
-                    rb_axis axis)
+                    rb_floor_axis axis)
 {
     char cn[128], mn[128];
     return fprintf(fp, "case %s, motion %s, component %s (%s)\n",
                    rb_text_escape_buf(c->name ? c->name : "?", cn, sizeof cn),
                    rb_text_escape_buf(motion_name(c, m), mn, sizeof mn),
-                   rb_enum_str(rb_axis_names, (int)axis), between_text(fc->between));
+                   rb_enum_str(rb_floor_axis_names, (int)axis), between_text(fc->between));
 }
 
 rb_status rb_floors_write_at2(FILE *fp, const rb_case *c, const rb_case_floors *f, size_t m,
-                              rb_axis axis)
+                              rb_floor_axis axis)
 {
     const rb_floor_component *fc = &f->motions[m].axis[axis];
     const rb_series *s = &fc->s;
@@ -59,7 +59,7 @@ rb_status rb_floors_write_at2(FILE *fp, const rb_case *c, const rb_case_floors *
 }
 
 rb_status rb_floors_write_csv(FILE *fp, const rb_case *c, const rb_case_floors *f, size_t m,
-                              rb_axis axis)
+                              rb_floor_axis axis)
 {
     const rb_floor_component *fc = &f->motions[m].axis[axis];
     const rb_series *s = &fc->s;
@@ -92,7 +92,7 @@ static void text_component(rb_strbuf *b, const rb_case *c, const rb_floor_motion
     const rb_motion_summary *sm = &fc->sum;
     rb_unit_system u = c->output_units;
     rb_strbuf_printf(b, "%s %s: %zu samples at %g s, run %g s (%s)\n", name,
-                     rb_enum_str(rb_axis_names, a), fc->s.n, fc->s.dt_s, fm->run_s,
+                     rb_enum_str(rb_floor_axis_names, a), fc->s.n, fc->s.dt_s, fm->run_s,
                      rb_enum_str(rb_between_names, (int)fc->between));
     rb_strbuf_printf(b, "    PGA %s, PGV ", rb_qty_str(u, RB_Q_ACCEL, sm->pga_mps2, 4).s);
     put_velocity(b, u, sm->pgv_mps);
@@ -123,7 +123,7 @@ char *rb_floors_render_text(const rb_case *c, const rb_case_floors *f,
                      f->n_motions, f->n_motions == 1 ? "" : "s");
     for (size_t m = 0; m < f->n_motions; m++) {
         rb_text_escape_buf(motion_name(c, m), name, sizeof name);
-        for (int a = 0; a < RB_AXIS_COUNT; a++) {
+        for (int a = 0; a < RB_FLOOR_AXES; a++) {
             if (!f->motions[m].axis[a].present)
                 continue;
             text_component(&b, c, &f->motions[m], a, name);
@@ -167,7 +167,7 @@ static void json_component(rb_strbuf *b, const rb_floor_component *fc, int a,
                            const char *const *files, size_t m)
 {
     rb_strbuf_printf(b, "{\"axis\": \"%s\", \"between\": \"%s\", ",
-                     rb_enum_str(rb_axis_names, a),
+                     rb_enum_str(rb_floor_axis_names, a),
                      rb_enum_str(rb_between_names, (int)fc->between));
     rb_report_json_num(b, "dt_s", fc->s.dt_s, 1);
     rb_strbuf_printf(b, "\"samples\": %zu, ", fc->s.n);
@@ -218,7 +218,7 @@ char *rb_floors_render_json(const rb_case *c, const rb_case_floors *f,
         rb_report_json_num(&b, "run_s", fm->run_s, 1);
         rb_strbuf_puts(&b, "\"components\": [");
         int first = 1;
-        for (int a = 0; a < RB_AXIS_COUNT; a++) {
+        for (int a = 0; a < RB_FLOOR_AXES; a++) {
             if (!fm->axis[a].present)
                 continue;
             rb_strbuf_puts(&b, first ? "\n      " : ",\n      ");

@@ -92,6 +92,13 @@ static rb_status component(const rb_motion *m, double run_s, const rb_target *ta
     if (st != RB_OK)
         return st;
     st = rb_motion_summarise(&fc->s, target, NULL, &fc->sum);
+    if (st == RB_OK && target) {
+        /* the TRS again, for the figure: the summary keeps only its verdict */
+        rb_accept_rules_init(&fc->rules, target);
+        st = rb_accept_grid(&fc->rules, &fc->trs);
+        if (st == RB_OK)
+            st = rb_spectrum_of_series(&fc->s, 1.0, &fc->trs);
+    }
     if (st == RB_OK)
         fc->target = target;
     else
@@ -112,18 +119,18 @@ rb_status rb_run_floors(const rb_case *c, rb_case_floors *out, rb_diag *diag)
         const rb_case_motion *cm = &c->motions[i];
         rb_floor_motion *fm = &out->motions[i];
         const char *why = NULL;
-        rb_axis at = RB_AXIS_H1;
+        rb_floor_axis at = RB_FLOOR_H1;
         fm->run_s = cm->motion.duration_s;
-        st = component(&cm->motion, fm->run_s, cm->target, &fm->axis[RB_AXIS_H1], &why);
+        st = component(&cm->motion, fm->run_s, cm->target, &fm->axis[RB_FLOOR_H1], &why);
         if (st == RB_OK && cm->motion.vertical) {
-            at = RB_AXIS_V;
+            at = RB_FLOOR_V;
             st = component(cm->motion.vertical, fm->run_s,
                            cm->vertical ? cm->vertical->target : NULL,
-                           &fm->axis[RB_AXIS_V], &why);
+                           &fm->axis[RB_FLOOR_V], &why);
         }
         if (st != RB_OK && st != RB_ERR_NOMEM)
             rb_diag_set(diag, st, NULL, 0, 0, cm->name ? cm->name : "motion",
-                        "%s cannot be written: %s", at == RB_AXIS_V ? "its vertical"
+                        "%s cannot be written: %s", at == RB_FLOOR_V ? "its vertical"
                         : "the motion", why ? why : rb_status_str(st));
     }
     return st;
@@ -134,8 +141,10 @@ void rb_case_floors_free(rb_case_floors *f)
     if (!f)
         return;
     for (size_t i = 0; f->motions && i < f->n_motions; i++)
-        for (int a = 0; a < RB_AXIS_COUNT; a++)
+        for (int a = 0; a < RB_FLOOR_AXES; a++) {
             rb_series_free(&f->motions[i].axis[a].s);
+            rb_spectrum_free(&f->motions[i].axis[a].trs);
+        }
     free(f->motions);
     memset(f, 0, sizeof *f);
 }

@@ -11,7 +11,8 @@ case they came from.
    Taft as the vertical, scaled to 0.2 g. The AT2 and the CSV must hold
    these to the 9 significant digits they are written with, and the
    summary's PGV and PGD those of the samples integrated here from rest.
-2. `check` on each case and on the same cabinet driven by the written
+2. The figure: a TRS, its RRS and their lines for each motion with a target.
+3. `check` on each case and on the same cabinet driven by the written
    files (AT2, and CSV read as a two-column record), with the same run
    time. Two tolerances, from what lies between the samples:
    - a floor given directly (the synthetic motions, and Taft as a
@@ -39,6 +40,7 @@ import json
 import math
 import os
 import sys
+import xml.etree.ElementTree as ET
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 import e2e  # noqa: E402
@@ -312,6 +314,10 @@ def refusals():
     if r.returncode != 2 or "FIFO" not in r.stderr or len(os.listdir(fifo_dir)) != 1:
         e2e.fail(f"a FIFO under a file's name: exit {r.returncode}, {r.stderr!r}, "
                  f"{os.listdir(fifo_dir)}")
+    svg = os.path.join(os.path.dirname(case), "none.svg")
+    r = e2e.run("motion", BUILDING_PLAIN, "--svg", svg)
+    if r.returncode != 2 or "--svg" not in r.stderr or os.path.exists(svg):
+        e2e.fail(f"--svg without a target: exit {r.returncode}, {r.stderr!r}")
     new_dir = os.path.join(os.path.dirname(case), "made")
     r = e2e.run("motion", case + ".missing", "--dir", new_dir)
     if r.returncode != 2 or os.path.exists(new_dir):
@@ -319,9 +325,34 @@ def refusals():
                  f"{os.path.exists(new_dir)}")
 
 
+def figure():
+    """One panel a component with a target: its TRS, the RRS and the two
+    dashed lines, every coordinate a number."""
+    case = e2e.write("figure.yaml", SYNTHETIC)
+    svg = os.path.join(os.path.dirname(case), "figure.svg")
+    r = e2e.run("motion", case, "--svg", svg, "-q")
+    if r.returncode != 0:
+        e2e.fail(f"--svg: exit {r.returncode}, {r.stderr!r}")
+        return
+    root = ET.parse(svg).getroot()
+    series = [p.get("data-series") for p in root.iter("{http://www.w3.org/2000/svg}path")]
+    for name in ("TRS", "RRS", "lower line", "guide line"):
+        if series.count(name) != 2:
+            e2e.fail(f"figure: {series.count(name)} paths '{name}', want 2 (two motions)")
+    if "nan" in open(svg).read().lower():
+        e2e.fail("figure: a coordinate is not a number")
+
+
 def main():
     e2e.start()
+    global BUILDING_PLAIN
+    BUILDING_PLAIN = e2e.write("plain.yaml", f"""extends: {CABINET}
+motion:
+  type: record
+  file: {RECORDS}/elcentro_1940_ns.at2
+""")
     refusals()
+    figure()
     rows, _ = round_trip("synth", SYNTHETIC, ("at2", "csv"))
     for m, kind, worst, pk_o, pk_b in rows:
         print(f"synthetic motion {m} via {kind}: results within {worst:.2e} (tolerance "
