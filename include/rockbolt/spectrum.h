@@ -101,6 +101,8 @@ typedef struct {
     rb_ac156_edition edition;
     double sds_mps2;        /* S_DS as an acceleration */
     double z_over_h;        /* 0 (grade) to 1 (roof) */
+    int vertical;           /* the vertical RRS: A_FLX-V = 0.67 S_DS,
+                               A_RIG-V = 0.27 S_DS, no height term */
     /* table: owned, n points, frequencies ascending; log-log between */
     double *freq_hz;
     double *accel_mps2;
@@ -121,6 +123,11 @@ void rb_ac156_levels(rb_ac156_edition ed, double sds_mps2, double z_over_h,
 /* An AC156 target for S_DS and z/h with the criteria's check range, band
  * and resolution. */
 void rb_target_ac156(rb_target *t, rb_ac156_edition ed, double sds_mps2, double z_over_h);
+/* AC156's vertical target for S_DS (the same corners, band and least peak
+ * of 0.9 A_RIG-V). */
+void rb_target_ac156_vertical(rb_target *t, double sds_mps2);
+/* The flexible and rigid levels of an AC156 target, either component. */
+void rb_target_ac156_levels(const rb_target *t, double *a_flx, double *a_rig);
 /* A table target (takes ownership of freq and accel, n >= 2, frequencies
  * ascending and > 0, accelerations > 0) checked over its own frequency
  * range at 1/6 octave within [0.9, 1.3], as AC156 does. */

@@ -6,6 +6,7 @@
 #define ROCKBOLT_SYNTH_H
 
 #include <stdint.h>
+#include "rockbolt/accept.h"
 #include "rockbolt/motion.h"
 #include "rockbolt/spectrum.h"
 #include "rockbolt/status.h"
@@ -23,7 +24,19 @@ typedef struct {
     unsigned max_iterations;  /* matching passes in all, default 128; a
                                  start that has not converged after 16 is
                                  replaced by a new random one */
+    const rb_accept_rules *rules; /* borrowed; NULL: rb_accept_rules_init of
+                                     the target */
+    /* The table's envelope: the largest displacement and velocity a motion
+     * may ask of it (defaults 0.15 m and 1.0 m/s); 0: not limited. */
+    double table_displacement_m, table_velocity_mps;
 } rb_synth_opts;
+
+#define RB_SYNTH_TABLE_DISPLACEMENT_M 0.15
+#define RB_SYNTH_TABLE_VELOCITY_MPS 1.0
+/* The least peak a generated motion reaches, over the target's least
+ * (AC156: 0.95 A_RIG against the 0.9 A_RIG of 6.5.4.2.3), for the table's
+ * reproduction error. */
+#define RB_SYNTH_PEAK_MARGIN (0.95 / 0.9)
 
 void rb_synth_opts_init(rb_synth_opts *o, const rb_target *target);
 
@@ -51,17 +64,22 @@ typedef struct {
     double end_displacement_m;
     double peak_velocity_mps, peak_displacement_m;
     rb_target_fit fit;         /* against the target, at its check points */
+    rb_motion_summary summary; /* the laboratory's acceptance, and the
+                                  peaks the table must reach */
     unsigned iterations;       /* matching passes made, in all */
     unsigned attempts;         /* random starts made */
 } rb_synth_info;
 
 /* Generate one motion into out (free with rb_series_free): RB_OK when it
- * envelopes the target within the target's band at every check point
- * (fit.within); RB_ERR_INVALID for options out of range (a target, dt
+ * meets the laboratory's rules at every offset (summary.accept.pass), stays
+ * under the upper band within the cutoffs and within [0.9, 1.3] of the
+ * target above the high cutoff to the rules' tail, reaches
+ * RB_SYNTH_PEAK_MARGIN times the target's least peak, and stays within the
+ * table's envelope; RB_ERR_INVALID for options out of range (a target, dt
  * from 1 ms to 0.02 s with the check range's top below 0.4 / dt,
  * 2 s <= strong <= total <= 600 s); RB_ERR_LIMIT when the matching passes
  * run out first (out then holds the closest motion and info says how
- * close); RB_ERR_NOMEM. */
+ * close: fit, summary); RB_ERR_NOMEM. */
 rb_status rb_synth_generate(const rb_synth_opts *o, rb_series *out, rb_synth_info *info);
 
 /* Fill what info says of a motion that can be measured on it (all but

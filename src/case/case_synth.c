@@ -329,7 +329,7 @@ static int build_one(rb_cctx *c, const rb_cmotion *cm, const rb_case_target *ct,
         out->motion.duration_s = (double)(out->series.n - 1) * out->series.dt_s;
     if (t->kind == RB_TARGET_AC156) {
         double flx, rig;
-        rb_ac156_levels(t->edition, t->sds_mps2, t->z_over_h, &flx, &rig);
+        rb_target_ac156_levels(t, &flx, &rig);
         snprintf(desc, sizeof desc, "synthetic: AC156 (%s) S_DS %s, z/h %g, seed "
                  "%llu, motion %u", rb_enum_str(rb_ac156_edition_names, (int)t->edition),
                  rb_qty_str(c->units, RB_Q_ACCEL, t->sds_mps2, 6).s, t->z_over_h,

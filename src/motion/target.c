@@ -22,6 +22,8 @@
 #define AC156_BAND_UPPER 1.3
 #define AC156_PER_OCTAVE 6.0
 #define AC156_MIN_PEAK_OF_RIG 0.9
+#define AC156_FLX_V_OF_SDS 0.67
+#define AC156_RIG_V_OF_SDS 0.27
 
 void rb_ac156_levels(rb_ac156_edition ed, double sds_mps2, double z_over_h,
                      double *a_flx, double *a_rig)
@@ -62,6 +64,23 @@ void rb_target_ac156(rb_target *t, rb_ac156_edition ed, double sds_mps2, double 
     t->min_peak_mps2 = AC156_MIN_PEAK_OF_RIG * rig;
 }
 
+void rb_target_ac156_vertical(rb_target *t, double sds_mps2)
+{
+    rb_target_ac156(t, RB_AC156_2010, sds_mps2, 0.0);
+    t->vertical = 1;
+    t->min_peak_mps2 = AC156_MIN_PEAK_OF_RIG * AC156_RIG_V_OF_SDS * sds_mps2;
+}
+
+void rb_target_ac156_levels(const rb_target *t, double *a_flx, double *a_rig)
+{
+    if (t->vertical) {
+        *a_flx = AC156_FLX_V_OF_SDS * t->sds_mps2;
+        *a_rig = AC156_RIG_V_OF_SDS * t->sds_mps2;
+    } else {
+        rb_ac156_levels(t->edition, t->sds_mps2, t->z_over_h, a_flx, a_rig);
+    }
+}
+
 void rb_target_table(rb_target *t, double *freq_hz, double *accel_mps2, size_t n,
                      double damping)
 {
@@ -96,7 +115,7 @@ static double loglog(double f0, double a0, double f1, double a1, double f)
 static double ac156_at(const rb_target *t, double f)
 {
     double flx, rig;
-    rb_ac156_levels(t->edition, t->sds_mps2, t->z_over_h, &flx, &rig);
+    rb_target_ac156_levels(t, &flx, &rig);
     if (f < AC156_F_LOW_HZ)
         return loglog(AC156_F_TAIL_HZ, AC156_TAIL_FRACTION * flx, AC156_F_LOW_HZ, flx, f);
     if (f <= AC156_F_FLX_END_HZ)

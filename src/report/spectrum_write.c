@@ -218,7 +218,7 @@ void rb_report_target_json(rb_strbuf *b, const rb_target *t)
                      rb_enum_str(rb_target_type_names, (int)t->kind));
     if (t->kind == RB_TARGET_AC156) {
         double flx, rig;
-        rb_ac156_levels(t->edition, t->sds_mps2, t->z_over_h, &flx, &rig);
+        rb_target_ac156_levels(t, &flx, &rig);
         rb_strbuf_printf(b, "\"edition\": \"%s\", ",
                          rb_enum_str(rb_ac156_edition_names, (int)t->edition));
         rb_report_json_num(b, "sds_mps2", t->sds_mps2, 1);
