@@ -36,6 +36,7 @@ extern const rb_enum_name rb_case_motion_type_names[];
 /* A target spectrum a case names, shared by the motions made from it. */
 typedef struct {
     rb_target target;
+    rb_target vertical;   /* AC156's vertical, for a triaxial suite */
     char *file;           /* owned: a table's path as resolved, else NULL */
 } rb_case_target;
 
@@ -54,8 +55,16 @@ typedef struct rb_case_motion {
     unsigned long long synth_seed;
     rb_synth_info synth;
     /* `vertical:`: the floor's vertical acceleration, owned, NULL for
-     * none; motion.vertical points at its motion */
+     * none; motion.vertical points at its motion. A triaxial set's V is
+     * here too (type synthetic, its target the suite's vertical). */
     struct rb_case_motion *vertical;
+    /* a triaxial set's H2, out of the model's plane: kept for export, not
+     * solved (owned; n == 0 without); its description, and the set's
+     * independence: H1-H2, H1-V, H2-V */
+    rb_series h2;
+    rb_synth_info h2_synth;
+    int has_set;
+    rb_synth_pair independence[3];
 } rb_case_motion;
 
 #define RB_CASE_MAX_SWEEPS 8

@@ -8,6 +8,7 @@
 #include <stdint.h>
 #include "rockbolt/accept.h"
 #include "rockbolt/motion.h"
+#include "rockbolt/names.h"
 #include "rockbolt/spectrum.h"
 #include "rockbolt/status.h"
 
@@ -30,6 +31,21 @@ typedef struct {
      * may ask of it (defaults 0.15 m and 1.0 m/s); 0: not limited. */
     double table_displacement_m, table_velocity_mps;
 } rb_synth_opts;
+
+/* The components of a suite's set: H1 in the model's plane, H2 out of it,
+ * V vertical; each its own random stream (index + component x this). */
+typedef enum {
+    RB_SYNTH_H1 = 0,
+    RB_SYNTH_H2,
+    RB_SYNTH_V
+} rb_synth_component;
+#define RB_SYNTH_COMPONENT_STREAM 0x10000u
+/* What a suite's entry generates: the horizontal alone, or the set. */
+typedef enum {
+    RB_SYNTH_HORIZONTAL = 0,
+    RB_SYNTH_TRIAXIAL
+} rb_synth_components;
+extern const rb_enum_name rb_synth_components_names[]; /* horizontal, triaxial */
 
 #define RB_SYNTH_TABLE_DISPLACEMENT_M 0.15
 #define RB_SYNTH_TABLE_VELOCITY_MPS 1.0
@@ -86,5 +102,28 @@ rb_status rb_synth_generate(const rb_synth_opts *o, rb_series *out, rb_synth_inf
  * iterations and attempts), for a motion that was generated before: a
  * cached copy. RB_ERR_NOMEM, RB_ERR_INVALID. */
 rb_status rb_synth_describe(const rb_target *t, const rb_series *s, rb_synth_info *info);
+
+/* ---- statistical independence of a set's components -------------------
+ * AC156 5.2.2.7.3 asks the simultaneous motions of a test to be
+ * statistically independent; laboratories check it as (docs/motion.md):
+ * the largest |normalised cross-correlation| over all lags at most 0.3,
+ * and the largest magnitude-squared coherence (Welch, Hann windows of
+ * 1.25 s overlapping by half, the first and last 5 s left out) at the
+ * 1/72-octave frequencies from 1.3 to 33.3 Hz at most 0.5. */
+#define RB_SYNTH_MAX_CORRELATION 0.3
+#define RB_SYNTH_MAX_COHERENCE 0.5
+#define RB_SYNTH_COHERENCE_WINDOW_S 1.25
+#define RB_SYNTH_COHERENCE_TRIM_S 5.0
+
+typedef struct {
+    double correlation;   /* max over lags of |sum a b| / (n sd_a sd_b) */
+    double coherence;     /* max over the frequencies */
+    int independent;      /* both at or under their limits */
+} rb_synth_pair;
+
+/* The independence of two motions of one sample interval and length.
+ * RB_ERR_INVALID (different intervals or lengths, under two windows),
+ * RB_ERR_NOMEM. */
+rb_status rb_synth_independence(const rb_series *a, const rb_series *b, rb_synth_pair *out);
 
 #endif

@@ -24,6 +24,7 @@ typedef enum {
     RB_DIM_AREA,            /* m^2 */
     RB_DIM_INERTIA,         /* kg m^2 */
     RB_DIM_STIFFNESS,       /* N/m */
+    RB_DIM_VELOCITY,        /* m/s */
     RB_DIM_COUNT
 } rb_dim;
 

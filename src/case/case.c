@@ -37,6 +37,7 @@ void rb_case_free(rb_case *c)
         free(c->motions[i].name);
         free(c->motions[i].source);
         rb_series_free(&c->motions[i].series);
+        rb_series_free(&c->motions[i].h2);
         rb_case_motion *v = c->motions[i].vertical;
         if (v) {
             free(v->name);

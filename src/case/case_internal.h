@@ -141,6 +141,9 @@ typedef struct rb_cmotion {
     const rb_ynode *count_node;
     unsigned long long seed;
     double total_s, strong_s, synth_dt_s;
+    rb_synth_components components;  /* AC156: triaxial by default */
+    const rb_ynode *components_node;
+    double table_displacement_m, table_velocity_mps; /* `table:` */
     const rb_ynode *synth_dt_node;  /* NULL: the default */
     const rb_ynode *synth_total_node, *synth_strong_node; /* alike */
     /* `vertical:` (case_motion.c): the floor's vertical acceleration as
@@ -259,6 +262,7 @@ extern const char *const *const rb_case_top_keys, *const *const rb_case_equipmen
     *const *const rb_case_record_keys, *const *const rb_case_building_keys,
     *const *const rb_case_synthetic_keys, *const *const rb_case_ac156_keys,
     *const *const rb_case_table_keys, *const *const rb_case_project_keys,
+    *const *const rb_case_synth_table_keys,
     *const *const rb_case_vertical_harmonic_keys, *const *const rb_case_vertical_pulse_keys,
     *const *const rb_case_vertical_record_keys;
 

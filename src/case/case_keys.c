@@ -36,6 +36,7 @@ static const struct {
                 &rb_case_synthetic_keys}},
     {"motion.building", {&rb_case_building_keys}},
     {"motion.spectrum", {&rb_case_ac156_keys, &rb_case_table_keys}},
+    {"motion.table", {&rb_case_synth_table_keys}},
     {"motion.vertical", {&rb_case_vertical_harmonic_keys, &rb_case_vertical_pulse_keys,
                          &rb_case_vertical_record_keys}},
     {"project", {&rb_case_project_keys}},
@@ -52,6 +53,7 @@ static const struct {
     {"design.sweeps", K_SEQ}, {"motion.building", K_MAP}, {"motion.spectrum", K_MAP},
     {"motion.window", K_SEQ}, {"fragility.damage_state_weights", K_SEQ},
     {"motion.vertical", K_MAP}, {"motion.vertical.window", K_SEQ}, {"project", K_MAP},
+    {"motion.table", K_MAP},
 };
 
 static int section_of(const char *path)

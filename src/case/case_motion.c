@@ -347,11 +347,12 @@ static void read_motion(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
         return;
     }
     if (t == RB_CASE_MOTION_SYNTHETIC) {
-        /* the suites' triaxial sets will bring their vertical here */
+        /* an AC156 suite's sets bring their own vertical (components) */
         if ((v = rb_cv_get(c, map, cm->key, "vertical", 0, ""))) {
             rb_case_keypath(k, cm->key, "vertical");
-            rb_cctx_error(c, v, k, "a synthetic suite has no vertical yet: give the "
-                          "vertical with a harmonic, pulse or record motion");
+            rb_cctx_error(c, v, k, "a synthetic suite takes no vertical: an ac156 "
+                          "suite's sets are triaxial (components: triaxial, the "
+                          "default), each with its own generated vertical");
         }
         cm->ok = rb_case_read_synthetic(c, map, cm);
         return;

@@ -20,12 +20,61 @@
 
 static const char *const synthetic_keys[] = {
     "type", "name", "polarity", "spectrum", "count", "seed", "duration", "strong", "dt",
-    "run_time", NULL};
+    "run_time", "components", "table", NULL};
+static const char *const synth_table_keys[] = {"displacement", "velocity", NULL};
 static const char *const ac156_keys[] = {"type", "sds", "z_over_h", "edition", NULL};
 static const char *const table_keys[] = {"type", "file", "units", "damping", NULL};
 const char *const *const rb_case_synthetic_keys = synthetic_keys;
 const char *const *const rb_case_ac156_keys = ac156_keys;
 const char *const *const rb_case_table_keys = table_keys;
+const char *const *const rb_case_synth_table_keys = synth_table_keys;
+
+/* `table: {displacement, velocity}`: the table's envelope (0: no limit) */
+static int read_envelope(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
+{
+    char k[RB_CASE_KEY_MAX];
+    cm->table_displacement_m = RB_SYNTH_TABLE_DISPLACEMENT_M;
+    cm->table_velocity_mps = RB_SYNTH_TABLE_VELOCITY_MPS;
+    rb_ynode *v = rb_cv_get(c, map, cm->key, "table", 0, "");
+    if (!v)
+        return 1;
+    rb_case_keypath(k, cm->key, "table");
+    if (!rb_cv_map(c, v, k))
+        return 0;
+    int ok = 1;
+    if (rb_ymap_find(v, "displacement"))
+        ok &= rb_cv_number(c, v, k, "displacement", 0, RB_DIM_LENGTH, 0, 1, 100, 1,
+                           &cm->table_displacement_m) != NULL;
+    if (rb_ymap_find(v, "velocity"))
+        ok &= rb_cv_number(c, v, k, "velocity", 0, RB_DIM_VELOCITY, 0, 1, 100, 1,
+                           &cm->table_velocity_mps) != NULL;
+    rb_cv_unknown_keys(c, v, k, synth_table_keys);
+    return ok;
+}
+
+/* `components: horizontal | triaxial`: AC156 sets are triaxial by
+ * default; a table has no vertical spectrum */
+static int read_components(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
+{
+    char k[RB_CASE_KEY_MAX];
+    int i;
+    cm->components = cm->target_kind == RB_TARGET_AC156 ? RB_SYNTH_TRIAXIAL
+                                                         : RB_SYNTH_HORIZONTAL;
+    rb_ynode *v = rb_cv_get(c, map, cm->key, "components", 0, "");
+    if (!v)
+        return 1;
+    rb_case_keypath(k, cm->key, "components");
+    cm->components_node = v;
+    if (!rb_cv_enum_table(c, v, k, rb_synth_components_names, 0, &i))
+        return 0;
+    cm->components = (rb_synth_components)i;
+    if (cm->components == RB_SYNTH_TRIAXIAL && cm->target_kind != RB_TARGET_AC156) {
+        rb_cctx_error(c, v, k, "a table target has no vertical spectrum: triaxial sets "
+                      "are made for an ac156 spectrum; give 'horizontal'");
+        return 0;
+    }
+    return 1;
+}
 
 static int read_ac156(rb_cctx *c, rb_ynode *sp, const char *k, rb_cmotion *cm)
 {
@@ -126,6 +175,8 @@ int rb_case_read_synthetic(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
     rb_ynode *v = rb_cv_get(c, map, p, "spectrum", 1, "the target spectrum, e.g. "
                             "{type: ac156, sds: 1.0 g, z_over_h: 0.5}");
     ok &= v && read_spectrum(c, v, cm);
+    ok &= read_components(c, map, cm);
+    ok &= read_envelope(c, map, cm);
     cm->count = 1;
     if ((v = rb_cv_get(c, map, p, "count", 0, ""))) {
         rb_case_keypath(k, p, "count");
@@ -181,6 +232,7 @@ int rb_case_make_target(rb_cctx *c, const rb_cmotion *cm, rb_case_target *ct)
     memset(ct, 0, sizeof *ct);
     if (cm->target_kind == RB_TARGET_AC156) {
         rb_target_ac156(&ct->target, cm->edition, cm->sds.value, cm->z_over_h);
+        rb_target_ac156_vertical(&ct->vertical, cm->sds.value);
         return 1;
     }
     char k[RB_CASE_KEY_MAX];
@@ -219,15 +271,15 @@ int rb_case_make_target(rb_cctx *c, const rb_cmotion *cm, rb_case_target *ct)
 /* Everything a generated motion depends on, as the record cache's name for
  * it (no file has such a name: it starts with "synthetic:"); 0 when it
  * does not fit, and the motion is then not cached. */
-static int cache_key(const rb_cmotion *cm, const rb_case_target *ct, unsigned index,
-                      char *key, size_t n)
+static int cache_key(const rb_cmotion *cm, const rb_target *t, const char *file,
+                     unsigned index, char *key, size_t n)
 {
-    const rb_target *t = &ct->target;
-    int len = snprintf(key, n, "synthetic:%d:%d:%.17g:%.17g:%.17g:%s:%.17g:%.17g|%llu|%u|"
-                       "%.17g|%.17g|%.17g", (int)t->kind, (int)t->edition, t->sds_mps2,
-                       t->z_over_h, t->damping, ct->file ? ct->file : "",
+    int len = snprintf(key, n, "synthetic:%d:%d:%d:%.17g:%.17g:%.17g:%s:%.17g:%.17g|%llu|%u|"
+                       "%.17g|%.17g|%.17g|%.17g|%.17g", (int)t->kind, (int)t->edition,
+                       t->vertical, t->sds_mps2, t->z_over_h, t->damping, file ? file : "",
                        cm->table_units_to_mps2, t->band_upper, cm->seed, index,
-                       cm->total_s, cm->strong_s, cm->synth_dt_s);
+                       cm->total_s, cm->strong_s, cm->synth_dt_s, cm->table_displacement_m,
+                       cm->table_velocity_mps);
     return len > 0 && (size_t)len < n;
 }
 
@@ -243,16 +295,20 @@ typedef struct {
     int keyed;
 } suite_job;
 
+/* The job of the motion `index` of a suite, component `comp` (its own
+ * stream; H1 keeps the index a horizontal suite had). */
 static void job_init(const rb_cmotion *cm, const rb_case_target *ct, unsigned index,
-                     suite_job *j)
+                     rb_synth_component comp, suite_job *j)
 {
-    rb_synth_opts_init(&j->o, &ct->target);
+    rb_synth_opts_init(&j->o, comp == RB_SYNTH_V ? &ct->vertical : &ct->target);
     j->o.dt_s = cm->synth_dt_s;
     j->o.total_s = cm->total_s;
     j->o.strong_s = cm->strong_s;
     j->o.seed = cm->seed;
-    j->o.index = index;
-    j->keyed = cache_key(cm, ct, index, j->key, sizeof j->key);
+    j->o.index = index + (unsigned)comp * RB_SYNTH_COMPONENT_STREAM;
+    j->o.table_displacement_m = cm->table_displacement_m;
+    j->o.table_velocity_mps = cm->table_velocity_mps;
+    j->keyed = cache_key(cm, j->o.target, ct->file, j->o.index, j->key, sizeof j->key);
 }
 
 static int generate_on = 1;
@@ -277,42 +333,54 @@ static rb_status generate_job(void *ctx, size_t i)
     return RB_OK;
 }
 
-static int build_one(rb_cctx *c, const rb_cmotion *cm, const rb_case_target *ct,
-                     unsigned index, suite_job *job, rb_case_motion *out)
+static const char *const component_names[] = {"H1", "H2", "V"};
+
+/* Take the generated (or cached) series of a job into *series and *info,
+ * described; 0 after an error, which names the motion, the component and
+ * what it could not meet. */
+static int take_job(rb_cctx *c, const rb_cmotion *cm, unsigned index,
+                    rb_synth_component comp, int set, suite_job *job, rb_series *series,
+                    rb_synth_info *info)
 {
-    char k[RB_CASE_KEY_MAX], desc[200];
-    const rb_target *t = &ct->target;
+    char k[RB_CASE_KEY_MAX], what[16] = "";
+    const rb_target *t = job->o.target;
     const rb_ynode *at = cm->map;
     rb_case_keypath(k, cm->key, "spectrum");
-    out->type = RB_CASE_MOTION_SYNTHETIC;
-    out->motion = cm->motion;
-    out->target = t;
-    out->synth_index = index;
-    out->synth_seed = cm->seed;
+    if (set)
+        snprintf(what, sizeof what, " (%s)", component_names[comp]);
     /* a motion made here goes to the cache, for the rows of a batch after it */
     rb_record_opts none;
     rb_record_opts_init(&none);
     rb_status st;
     if (!job->cached && !job->generated)
         generate_job(job, 0);
-    out->series = job->series;
+    *series = job->series;
     memset(&job->series, 0, sizeof job->series);
     if (job->cached)
-        st = rb_synth_describe(t, &out->series, &out->synth);
+        st = rb_synth_describe(t, series, info);
     else {
         st = job->st;
-        out->synth = job->info;
+        *info = job->info;
         if (st == RB_OK && job->keyed && generate_on)
-            rb_record_cache_put(c->cache, job->key, &none, 0, 0, &out->series);
+            rb_record_cache_put(c->cache, job->key, &none, 0, 0, series);
     }
     if (st == RB_ERR_LIMIT) {
-        rb_cctx_error_at(c, RB_ERR_INVALID, at->file, at->line, at->col, k, "motion %u "
-                         "of seed %llu did not envelope the target within [1, %g] at "
-                         "every check frequency (and reach its least peak) in %u "
-                         "passes: the closest was %.3f to %.3f; try another seed",
-                         index + 1, cm->seed, t->band_upper, out->synth.iterations,
-                         out->synth.fit.min_ratio, out->synth.fit.max_ratio);
-        rb_series_free(&out->series);
+        const rb_motion_summary *m = &info->summary;
+        rb_cctx_error_at(c, RB_ERR_INVALID, at->file, at->line, at->col, k, "motion %u%s "
+                         "of seed %llu did not meet both the spectrum (the laboratory's "
+                         "rules at every offset within [%g, %g], the rigid end to 50 Hz, "
+                         "a peak of %.3g g) and the table's envelope (%s, %g m/s) in %u "
+                         "passes: the closest had a margin of %.3f, ratios %.3f to %.3f, "
+                         "a peak of %.3g g, PGD %.3g m and PGV %.3g m/s; try another seed "
+                         "or a larger table", index + 1, what, cm->seed, t->band_lower,
+                         t->band_upper, RB_SYNTH_PEAK_MARGIN * t->min_peak_mps2 / RB_G0,
+                         cm->table_displacement_m > 0
+                             ? rb_qty_str(c->units, RB_Q_SMALL_LENGTH,
+                                          cm->table_displacement_m, 4).s : "no limit",
+                         cm->table_velocity_mps, info->iterations, m->accept.margin,
+                         m->accept.min_ratio, m->accept.max_ratio, m->pga_mps2 / RB_G0,
+                         m->pgd_m, m->pgv_mps);
+        rb_series_free(series);
         return 0;
     }
     if (st != RB_OK) {
@@ -323,30 +391,127 @@ static int build_one(rb_cctx *c, const rb_cmotion *cm, const rb_case_target *ct,
                              "the motion (%s)", rb_status_str(st));
         return 0;
     }
-    out->motion.series = &out->series;
-    out->motion.scale = 1.0;
-    if (!cm->has_duration)
-        out->motion.duration_s = (double)(out->series.n - 1) * out->series.dt_s;
-    if (t->kind == RB_TARGET_AC156) {
-        double flx, rig;
-        rb_target_ac156_levels(t, &flx, &rig);
+    return 1;
+}
+
+/* An AC156 motion's source and name (comp: "" or " V") */
+static int describe_motion(rb_cctx *c, const rb_cmotion *cm, const rb_target *t,
+                           unsigned index, const char *comp, rb_case_motion *out)
+{
+    char desc[200];
+    if (t->vertical)
+        snprintf(desc, sizeof desc, "synthetic: AC156 vertical S_DS %s, seed %llu, "
+                 "motion %u", rb_qty_str(c->units, RB_Q_ACCEL, t->sds_mps2, 6).s,
+                 cm->seed, index + 1);
+    else
         snprintf(desc, sizeof desc, "synthetic: AC156 (%s) S_DS %s, z/h %g, seed "
                  "%llu, motion %u", rb_enum_str(rb_ac156_edition_names, (int)t->edition),
                  rb_qty_str(c->units, RB_Q_ACCEL, t->sds_mps2, 6).s, t->z_over_h,
                  cm->seed, index + 1);
-    } else {
-        snprintf(desc, sizeof desc, "synthetic: table %.120s, seed %llu, motion %u",
-                 ct->file, cm->seed, index + 1);
-    }
     out->source = rb_case_strdup(c, desc);
-    const char *base = cm->name ? cm->name
-                       : t->kind == RB_TARGET_AC156 ? "ac156" : "table";
+    const char *base = cm->name ? cm->name : "ac156";
     if (cm->count > 1)
-        snprintf(desc, sizeof desc, "%.150s-%u", base, index + 1);
+        snprintf(desc, sizeof desc, "%.150s-%u%s", base, index + 1, comp);
     else
-        snprintf(desc, sizeof desc, "%.150s", base);
+        snprintf(desc, sizeof desc, "%.150s%s", base, comp);
     out->name = rb_case_strdup(c, desc);
     return out->source && out->name;
+}
+
+/* Motion `index` of a suite from its jobs (one, or a set's three). */
+static int build_one(rb_cctx *c, const rb_cmotion *cm, const rb_case_target *ct,
+                     unsigned index, suite_job *jobs, rb_case_motion *out)
+{
+    const rb_target *t = &ct->target;
+    int set = cm->components == RB_SYNTH_TRIAXIAL;
+    out->type = RB_CASE_MOTION_SYNTHETIC;
+    out->motion = cm->motion;
+    out->target = t;
+    out->synth_index = index;
+    out->synth_seed = cm->seed;
+    if (!take_job(c, cm, index, RB_SYNTH_H1, set, &jobs[0], &out->series, &out->synth))
+        return 0;
+    out->motion.series = &out->series;
+    out->motion.scale = 1.0;
+    if (!cm->has_duration)
+        out->motion.duration_s = (double)(out->series.n - 1) * out->series.dt_s;
+    if (t->kind == RB_TARGET_TABLE) {
+        char desc[200];
+        snprintf(desc, sizeof desc, "synthetic: table %.120s, seed %llu, motion %u",
+                 ct->file, cm->seed, index + 1);
+        out->source = rb_case_strdup(c, desc);
+        const char *base = cm->name ? cm->name : "table";
+        if (cm->count > 1)
+            snprintf(desc, sizeof desc, "%.150s-%u", base, index + 1);
+        else
+            snprintf(desc, sizeof desc, "%.150s", base);
+        out->name = rb_case_strdup(c, desc);
+        if (!out->source || !out->name)
+            return 0;
+    } else if (!describe_motion(c, cm, t, index, "", out)) {
+        return 0;
+    }
+    if (!set)
+        return 1;
+    out->has_set = 1;
+    if (!take_job(c, cm, index, RB_SYNTH_H2, 1, &jobs[1], &out->h2, &out->h2_synth))
+        return 0;
+    rb_case_motion *v = calloc(1, sizeof *v);
+    if (!v) {
+        c->nomem = 1;
+        return 0;
+    }
+    out->vertical = v;
+    v->type = RB_CASE_MOTION_SYNTHETIC;
+    rb_motion_init(&v->motion);
+    v->motion.kind = RB_MOTION_SAMPLED;
+    v->target = &ct->vertical;
+    v->synth_index = index;
+    v->synth_seed = cm->seed;
+    if (!take_job(c, cm, index, RB_SYNTH_V, 1, &jobs[2], &v->series, &v->synth)
+        || !describe_motion(c, cm, &ct->vertical, index, " V", v))
+        return 0;
+    v->motion.series = &v->series;
+    v->motion.scale = 1.0;
+    v->motion.duration_s = 0; /* the motion it belongs to sets the run */
+    out->motion.vertical = &v->motion;
+    /* the set's independence (AC156 5.2.2.7.3), as laboratories check it */
+    const rb_series *comp[3] = {&out->series, &out->h2, &v->series};
+    static const int pairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
+    for (int p = 0; p < 3; p++) {
+        rb_status st = rb_synth_independence(comp[pairs[p][0]], comp[pairs[p][1]],
+                                             &out->independence[p]);
+        if (st == RB_ERR_NOMEM) {
+            c->nomem = 1;
+            return 0;
+        }
+        if (st != RB_OK || !out->independence[p].independent) {
+            char k[RB_CASE_KEY_MAX];
+            const rb_ynode *at = cm->map;
+            rb_case_keypath(k, cm->key, "components");
+            rb_cctx_error_at(c, RB_ERR_INVALID, at->file, at->line, at->col, k,
+                             "motion %u of seed %llu: %s and %s are not statistically "
+                             "independent (correlation %.3f, at most %g; coherence %.3f, "
+                             "at most %g); try another seed", index + 1, cm->seed,
+                             component_names[pairs[p][0]], component_names[pairs[p][1]],
+                             out->independence[p].correlation, RB_SYNTH_MAX_CORRELATION,
+                             out->independence[p].coherence, RB_SYNTH_MAX_COHERENCE);
+            return 0;
+        }
+    }
+    /* z'' must stay above -g, as for a given vertical (case_validate.c) */
+    double least = rb_motion_least(&v->motion, out->motion.duration_s);
+    if (!(least > -RB_G0)) {
+        char k[RB_CASE_KEY_MAX];
+        const rb_ynode *at = cm->map;
+        rb_case_keypath(k, cm->key, "components");
+        rb_cctx_error_at(c, RB_ERR_INVALID, at->file, at->line, at->col, k, "motion %u's "
+                         "vertical reaches %.3g g downward, at or beyond gravity: the "
+                         "cabinet would leave the floor in free flight, which the model "
+                         "does not follow; give 'horizontal'", index + 1, -least / RB_G0);
+        return 0;
+    }
+    return 1;
 }
 
 /* The node of the key the generator's option check blames. */
@@ -370,7 +535,7 @@ int rb_case_check_suite(rb_cctx *c, const rb_cmotion *cm, const rb_case_target *
     char k[RB_CASE_KEY_MAX], why[300];
     const char *key;
     suite_job job;
-    job_init(cm, ct, 0, &job);
+    job_init(cm, ct, 0, RB_SYNTH_H1, &job);
     if (!rb_synth_opts_check(&job.o, &key, why, sizeof why)) {
         const rb_ynode *at = option_node(cm, key);
         if (at == cm->table_node && at)
@@ -408,7 +573,8 @@ double rb_case_suite_duration(const rb_cmotion *cm)
 int rb_case_build_suite(rb_cctx *c, const rb_cmotion *cm, const rb_case_target *ct,
                         rb_case_motion *out, size_t count)
 {
-    suite_job *jobs = calloc(count, sizeof *jobs);
+    size_t per = cm->components == RB_SYNTH_TRIAXIAL ? 3 : 1, all = count * per;
+    suite_job *jobs = calloc(all, sizeof *jobs);
     if (!jobs) {
         c->nomem = 1;
         return 0;
@@ -417,20 +583,20 @@ int rb_case_build_suite(rb_cctx *c, const rb_cmotion *cm, const rb_case_target *
     rb_record_opts_init(&none);
     size_t i;
     /* the cases of a batch that share a suite generate it once */
-    for (i = 0; i < count; i++) {
-        job_init(cm, ct, (unsigned)i, &jobs[i]);
+    for (i = 0; i < all; i++) {
+        job_init(cm, ct, (unsigned)(i / per), (rb_synth_component)(i % per), &jobs[i]);
         jobs[i].cached = jobs[i].keyed
                          && rb_record_cache_get(c->cache, jobs[i].key, &none, 0, 0,
                                                 &jobs[i].series);
     }
-    /* a suite's motions take most of a check's time (0.24 s of 0.26 s for
-     * cases/ac156-roof.yaml's seven); each is its own random stream, so
-     * they do not depend on one another or on the order they are made in */
-    rb_pool_map(count, 0, generate_job, jobs, NULL);
+    /* a suite's motions take most of a check's time; each is its own
+     * random stream, so they do not depend on one another or on the order
+     * they are made in */
+    rb_pool_map(all, 0, generate_job, jobs, NULL);
     int ok = 1;
     for (i = 0; i < count && ok && !c->nomem; i++)
-        ok = build_one(c, cm, ct, (unsigned)i, &jobs[i], &out[i]);
-    for (i = 0; i < count; i++)
+        ok = build_one(c, cm, ct, (unsigned)i, &jobs[i * per], &out[i]);
+    for (i = 0; i < all; i++)
         rb_series_free(&jobs[i].series);
     free(jobs);
     return ok;

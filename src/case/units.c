@@ -32,7 +32,7 @@ static rb_unit_system unit_system_of(const char *name)
 {
     static const char *const us[] = {"in", "ft", "lb", "lbm", "lbs", "kip", "kips", "lbf",
         "psi", "ksi", "in-lb/in^3", "in-lbf/in^3", "in/s^2", "ft/s^2",
-        "in^2", "lb*in^2", "lb*ft^2", "lbf/in", "kip/in", NULL};
+        "in^2", "lb*in^2", "lb*ft^2", "lbf/in", "kip/in", "in/s", "ft/s", NULL};
     static const char *const neutral[] = {"%", "g", "A*", "Hz", "rad/s",
         "s", "ms", NULL};
     for (size_t i = 0; us[i]; i++)
@@ -85,6 +85,9 @@ static const rb_unit unit_table[] = {
     {"kN/mm", RB_DIM_STIFFNESS, 1e6},
     {"lbf/in", RB_DIM_STIFFNESS, RB_LBF / 0.0254},
     {"kip/in", RB_DIM_STIFFNESS, 1e3 * RB_LBF / 0.0254},
+    {"m/s", RB_DIM_VELOCITY, 1.0}, {"mm/s", RB_DIM_VELOCITY, 1e-3},
+    {"cm/s", RB_DIM_VELOCITY, 1e-2}, {"in/s", RB_DIM_VELOCITY, 0.0254},
+    {"ft/s", RB_DIM_VELOCITY, 0.3048},
 };
 #define RB_N_UNITS (sizeof unit_table / sizeof unit_table[0])
 
@@ -112,6 +115,7 @@ static const rb_dim_info dims[RB_DIM_COUNT] = {
         "kg*m^2, kg.m^2, lb*in^2, lb*ft^2", "150 kg*m^2", "moment of inertia"},
     [RB_DIM_STIFFNESS] = {"a stiffness",
         "N/m, kN/m, MN/m, N/mm, kN/mm, lbf/in, kip/in", "520 MN/m", "stiffness"},
+    [RB_DIM_VELOCITY] = {"a velocity", "m/s, mm/s, cm/s, in/s, ft/s", "1.0 m/s", "velocity"},
 };
 
 const char *rb_dim_str(rb_dim dim)
