@@ -137,8 +137,9 @@ char *rb_floors_render_text(const rb_case *c, const rb_case_floors *f,
     return rb_strbuf_take(&b);
 }
 
-/* The acceptance as JSON: the rules' outcome at every offset. */
-static void json_accept(rb_strbuf *b, const rb_accept_result *ac)
+/* The acceptance as JSON: the rules' outcome at every offset (the floor
+ * files' summary and the spectra's alike). */
+void rb_report_accept_json(rb_strbuf *b, const rb_accept_result *ac)
 {
     rb_strbuf_puts(b, "\"acceptance\": {");
     rb_strbuf_printf(b, "\"pass\": %s, \"worst_offset\": %u, ", ac->pass ? "true" : "false",
@@ -182,7 +183,7 @@ static void json_component(rb_strbuf *b, const rb_floor_component *fc, int a,
     rb_report_json_num(b, "arias_t95_s", sm->arias_t95_s, 1);
     if (sm->has_target) {
         rb_report_target_json(b, fc->target);
-        json_accept(b, &sm->accept);
+        rb_report_accept_json(b, &sm->accept);
         rb_strbuf_printf(b, "\"peak_ok\": %s, ", sm->peak_ok ? "true" : "false");
     }
     rb_strbuf_puts(b, "\"files\": {");

@@ -108,6 +108,9 @@ void rb_report_json_str(rb_strbuf *b, const char *s);
 /* "target": {type, its levels, damping, check range and band}, then ", "
  * (spectrum_write.c). */
 void rb_report_target_json(rb_strbuf *b, const rb_target *t);
+/* "acceptance": {...}, with ", " after it: a laboratory's acceptance of a
+ * motion (rockbolt/accept.h), every offset's outcome with it. */
+void rb_report_accept_json(rb_strbuf *b, const rb_accept_result *ac);
 /* Limit state k of f as one JSON object, on one line. */
 void rb_report_fragility_limit_json(rb_strbuf *b, const rb_case_fragility *f, int k);
 /* "judged_limit_states": [...], "governing_limit_state": name or null

@@ -133,6 +133,40 @@ static void array(rb_strbuf *b, const char *key, const double *v, size_t n)
     rb_strbuf_puts(b, "]");
 }
 
+/* A generated motion's summary: its peaks and the laboratory's
+ * acceptance at the least favourable of the 12 offsets (accept.h). */
+static void json_summary(rb_strbuf *b, const char *key, const rb_motion_summary *m)
+{
+    const rb_accept_result *a = &m->accept;
+    rb_strbuf_printf(b, "\"%s\": {", key);
+    rb_report_json_num(b, "pga_mps2", m->pga_mps2, 1);
+    rb_report_json_num(b, "pgv_mps", m->pgv_mps, 1);
+    rb_report_json_num(b, "pgd_m", m->pgd_m, 1);
+    rb_report_json_num(b, "arias_t5_s", m->arias_t5_s, 1);
+    rb_report_json_num(b, "arias_t95_s", m->arias_t95_s, 1);
+    rb_strbuf_printf(b, "\"peak_ok\": %s, ", m->peak_ok ? "true" : "false");
+    if (m->has_target)
+        rb_report_accept_json(b, &m->accept);
+    rb_report_json_num(b, "end_velocity_mps", m->end_velocity_mps, 0);
+    rb_strbuf_puts(b, "}, ");
+}
+
+/* A triaxial set's other components and their independence. */
+static void json_set(rb_strbuf *b, const rb_case_motion *cm)
+{
+    static const char *const pairs[3] = {"h1_h2", "h1_v", "h2_v"};
+    json_summary(b, "h2", &cm->h2_synth.summary);
+    json_summary(b, "vertical", &cm->vertical->synth.summary);
+    rb_strbuf_puts(b, "\"independence\": {");
+    for (int p = 0; p < 3; p++) {
+        rb_strbuf_printf(b, "\"%s\": {", pairs[p]);
+        rb_report_json_num(b, "correlation", cm->independence[p].correlation, 1);
+        rb_report_json_num(b, "coherence", cm->independence[p].coherence, 0);
+        rb_strbuf_printf(b, "}%s", p < 2 ? ", " : "");
+    }
+    rb_strbuf_puts(b, "}, ");
+}
+
 char *rb_spectra_render_json(const rb_case *c, const rb_case_spectra *s)
 {
     rb_strbuf b = {0};
@@ -164,6 +198,9 @@ char *rb_spectra_render_json(const rb_case *c, const rb_case_spectra *s)
             rb_report_json_num(&b, "end_displacement_m", cm->synth.end_displacement_m, 1);
             rb_report_json_num(&b, "peak_velocity_mps", cm->synth.peak_velocity_mps, 1);
             rb_report_json_num(&b, "peak_displacement_m", cm->synth.peak_displacement_m, 1);
+            json_summary(&b, "summary", &cm->synth.summary);
+            if (cm->has_set)
+                json_set(&b, cm);
         }
         if (ms->has_target) {
             rb_report_target_json(&b, cm->target);
