@@ -117,13 +117,14 @@ rb_status rb_synth_describe(const rb_target *t, const rb_series *s, rb_synth_inf
 
 typedef struct {
     double correlation;   /* max over lags of |sum a b| / (n sd_a sd_b) */
-    double coherence;     /* max over the frequencies */
+    double coherence;     /* max over the frequencies; NaN for a motion
+                             too short for two windows after the trim
+                             (not judged) */
     int independent;      /* both at or under their limits */
 } rb_synth_pair;
 
 /* The independence of two motions of one sample interval and length.
- * RB_ERR_INVALID (different intervals or lengths, under two windows),
- * RB_ERR_NOMEM. */
+ * RB_ERR_INVALID (different intervals or lengths), RB_ERR_NOMEM. */
 rb_status rb_synth_independence(const rb_series *a, const rb_series *b, rb_synth_pair *out);
 
 #endif

