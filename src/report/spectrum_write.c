@@ -137,7 +137,6 @@ static void array(rb_strbuf *b, const char *key, const double *v, size_t n)
  * acceptance at the least favourable of the 12 offsets (accept.h). */
 static void json_summary(rb_strbuf *b, const char *key, const rb_motion_summary *m)
 {
-    const rb_accept_result *a = &m->accept;
     rb_strbuf_printf(b, "\"%s\": {", key);
     rb_report_json_num(b, "pga_mps2", m->pga_mps2, 1);
     rb_report_json_num(b, "pgv_mps", m->pgv_mps, 1);
