@@ -133,6 +133,33 @@ static void array(rb_strbuf *b, const char *key, const double *v, size_t n)
     rb_strbuf_puts(b, "]");
 }
 
+/* The acceptance as JSON: the rules' outcome at every offset (the floor
+ * files' summary and the spectra's alike). */
+void rb_report_accept_json(rb_strbuf *b, const rb_accept_result *ac)
+{
+    rb_strbuf_puts(b, "\"acceptance\": {");
+    rb_strbuf_printf(b, "\"pass\": %s, \"worst_offset\": %u, ", ac->pass ? "true" : "false",
+                     ac->worst);
+    rb_report_json_num(b, "margin", ac->margin, 1);
+    rb_report_json_num(b, "min_ratio", ac->min_ratio, 1);
+    rb_report_json_num(b, "min_at_hz", ac->min_at_hz, 1);
+    rb_report_json_num(b, "max_ratio", ac->max_ratio, 1);
+    rb_report_json_num(b, "max_at_hz", ac->max_at_hz, 1);
+    rb_strbuf_printf(b, "\"above_guide\": %s, ", ac->above_guide ? "true" : "false");
+    rb_report_json_num(b, "tail_min_ratio", ac->tail_min_ratio, 1);
+    rb_report_json_num(b, "tail_max_ratio", ac->tail_max_ratio, 1);
+    rb_strbuf_puts(b, "\"offsets\": [");
+    for (int k = 0; k < RB_ACCEPT_OFFSETS; k++) {
+        const rb_accept_offset *o = &ac->offset[k];
+        rb_strbuf_printf(b, "%s{\"pass\": %s, ", k ? ", " : "", o->pass ? "true" : "false");
+        rb_report_json_num(b, "margin", o->margin, 1);
+        rb_report_json_num(b, "min_ratio", o->min_ratio, 1);
+        rb_report_json_num(b, "max_ratio", o->max_ratio, 0);
+        rb_strbuf_puts(b, "}");
+    }
+    rb_strbuf_puts(b, "]}, ");
+}
+
 /* A generated motion's summary: its peaks and the laboratory's
  * acceptance at the least favourable of the 12 offsets (accept.h). */
 static void json_summary(rb_strbuf *b, const char *key, const rb_motion_summary *m)
