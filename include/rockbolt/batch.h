@@ -237,8 +237,9 @@ typedef struct {
      * case is done. May be NULL. */
     void (*progress)(void *ctx, const rb_batch_progress *p);
     void *progress_ctx;
-    /* When set, each chunk of finished cases goes here, in list order,
-     * from the calling thread, and is then freed: the summary keeps only
+    /* When set, finished cases go here, in list order, one call at a
+     * time (from the worker thread that finished the first outstanding
+     * case), and are then freed: the summary keeps only
      * their counts (streamed), so that memory does not grow with them.
      * first is the position of cases[0] in the summary. A status other
      * than RB_OK stops the run with it. */
