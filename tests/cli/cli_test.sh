@@ -469,7 +469,8 @@ test_titles() {
 extends: $PWD/cases/base/reference-cabinet.yaml
 name: EP-R1
 motions:
-  - {type: synthetic, spectrum: {type: ac156, sds: 1.0 g, z_over_h: 0.5}, seed: 1, duration: 8 s}
+  - {type: synthetic, spectrum: {type: ac156, sds: 1.0 g, z_over_h: 0.5}, seed: 1, duration: 8 s,
+     components: horizontal}
   - {type: synthetic, spectrum: {type: table, file: spectra/flat.csv}, seed: 2, duration: 8 s}
 EOF
     run check "$D/syn.yaml" --svg "$D/syn.svg" --quiet
