@@ -105,16 +105,22 @@ default_model)
     [ "$(jget "$D/p.json" model.bolt_model)" = elastic-plastic ] || fail "default model"
     first_line | grep -q "^FAIL .*: motion 'ac156-1': the anchorage reaches its concrete design strength: 17\.8\.[123] utilization 1\.[0-9]* at" ||
         fail "panel verdict: $(first_line)"
-    # every motion drives a row to Fy = 2 x (pi / 4) (0.5 in)^2 x 36 ksi =
-    # 14.137 kip = 62 885 N or near it, past the design strength
+    # no motion loads a row past Fy = 2 x (pi / 4) (0.5 in)^2 x 36 ksi =
+    # 14.137 kip = 62 885 N (an elastic-plastic row carries at most Fy), and
+    # the motion the verdict names drives its row to Fy, past the design
+    # strength. (The motions of the table's envelope are milder than the
+    # suites before it: one of six now stays at 0.89 Fy, utilization 0.99.)
     i=0
     while [ $i -lt 6 ]; do
         tn=$(jget "$D/p.json" motions.$i.anchorage.tension_n)
-        u=$(jget "$D/p.json" motions.$i.anchorage.utilization)
-        awk -v t="$tn" -v u="$u" 'BEGIN { exit !(t > 0.94 * 62885.25 && t <= 62885.25 * (1 + 1e-6) && u >= 1) }' ||
-            fail "motion $i: tension $tn N, utilization $u"
+        awk -v t="$tn" 'BEGIN { exit !(t > 0 && t <= 62885.25 * (1 + 1e-6)) }' ||
+            fail "motion $i: tension $tn N above Fy"
         i=$((i + 1))
     done
+    tn=$(jget "$D/p.json" motions.0.anchorage.tension_n)
+    u=$(jget "$D/p.json" motions.0.anchorage.utilization)
+    awk -v t="$tn" -v u="$u" 'BEGIN { exit !(t > (1 - 1e-6) * 62885.25 && u >= 1) }' ||
+        fail "motion 0: tension $tn N, utilization $u"
     # the same panel on rigid stops passes, and says what they hid: the
     # largest elastic impact of its motions, over Fy, in its verdict line
     run check $C/panel-rigid.yaml --json "$D/r.json"
