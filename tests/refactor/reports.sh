@@ -1,7 +1,8 @@
 #!/bin/sh
-# The JSON report of every case in cases/ and tests/ against its recorded
-# digest, so that a change meant to move no number (a refactor) proves it
-# moved none.
+# The JSON report of every case in cases/ and tests/, and every other JSON
+# output (design, fragility, spectrum, motion, batch: the runs listed in
+# tests/refactor/outputs.txt), against its recorded digest, so that a change
+# meant to move no number (a refactor) proves it moved none.
 #
 #   sh tests/refactor/reports.sh ROCKBOLT SCRATCH           check
 #   sh tests/refactor/reports.sh ROCKBOLT SCRATCH --update  record anew
@@ -29,8 +30,24 @@ while read -r c; do
     fi
     printf '%s %s %s\n' "$rc" "$sum" "$c" >>"$D/now"
 done <"$D/cases"
+# the other commands' JSON: "COMMAND ARG..." a line, "@" the scratch directory
+grep -v '^#' tests/refactor/outputs.txt | grep . >"$D/runs"
+while read -r run; do
+    out="$D/out.json"
+    rm -rf "$out" "$D/floors"
+    # shellcheck disable=SC2086 # the line is split into its words on purpose
+    timeout 120 "$RB" $(printf '%s\n' "$run" | sed "s|@|$D|g") --json "$out" --quiet </dev/null \
+        >/dev/null 2>&1
+    rc=$?
+    if [ -f "$out" ]; then
+        sum=$(sed "s|$D|@|g" "$out" | sha256sum | cut -c1-64)
+    else
+        sum=-
+    fi
+    printf '%s %s %s\n' "$rc" "$sum" "$run" >>"$D/now"
+done <"$D/runs"
 if [ "${3:-}" = --update ]; then
-    cp "$D/now" "$LIST" && echo "recorded $(wc -l <"$LIST") cases in $LIST"
+    cp "$D/now" "$LIST" && echo "recorded $(wc -l <"$LIST") outputs in $LIST"
     exit 0
 fi
 if ! diff -u "$LIST" "$D/now" >"$D/diff"; then

@@ -1,5 +1,6 @@
 # Refactors move no number (label "refactor"): the JSON report of every
-# case in cases/ and tests/ against tests/refactor/reports.sha256.
+# case in cases/ and tests/, and the other commands' JSON on the runs of
+# tests/refactor/outputs.txt, against tests/refactor/reports.sha256.
 add_test(NAME refactor_reports
          COMMAND sh ${PROJECT_SOURCE_DIR}/tests/refactor/reports.sh $<TARGET_FILE:rockbolt>
                  ${CMAKE_CURRENT_BINARY_DIR}/refactor-scratch)
