@@ -122,6 +122,18 @@ rb_status rb_run_floors(const rb_case *c, rb_case_floors *out, rb_diag *diag)
         rb_floor_axis at = RB_FLOOR_H1;
         fm->run_s = cm->motion.duration_s;
         st = component(&cm->motion, fm->run_s, cm->target, &fm->axis[RB_FLOOR_H1], &why);
+        if (st == RB_OK && cm->has_set && cm->h2.n > 0) {
+            /* H2 is the set's other horizontal, matched to the same RRS;
+             * a reversed polarity turns the cabinet (or the set) half
+             * round about the vertical, which reverses both horizontals */
+            rb_motion h2;
+            rb_motion_init(&h2);
+            h2.kind = RB_MOTION_SAMPLED;
+            h2.series = &cm->h2;
+            h2.polarity = cm->motion.polarity;
+            at = RB_FLOOR_H2;
+            st = component(&h2, fm->run_s, cm->target, &fm->axis[RB_FLOOR_H2], &why);
+        }
         if (st == RB_OK && cm->motion.vertical) {
             at = RB_FLOOR_V;
             st = component(cm->motion.vertical, fm->run_s,
@@ -131,7 +143,7 @@ rb_status rb_run_floors(const rb_case *c, rb_case_floors *out, rb_diag *diag)
         if (st != RB_OK && st != RB_ERR_NOMEM)
             rb_diag_set(diag, st, NULL, 0, 0, cm->name ? cm->name : "motion",
                         "%s cannot be written: %s", at == RB_FLOOR_V ? "its vertical"
-                        : "the motion", why ? why : rb_status_str(st));
+                        : at == RB_FLOOR_H2 ? "its second horizontal" : "the motion", why ? why : rb_status_str(st));
     }
     return st;
 }

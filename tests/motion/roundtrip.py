@@ -11,8 +11,15 @@ case they came from.
    Taft as the vertical, scaled to 0.2 g. The AT2 and the CSV must hold
    these to the 9 significant digits they are written with, and the
    summary's PGV and PGD those of the samples integrated here from rest.
-2. The figure: a TRS, its RRS and their lines for each motion with a target.
-3. `check` on each case and on the same cabinet driven by the written
+2. A triaxial set's second horizontal (H2): its AT2 and CSV hold the same
+   samples, its summary's peaks are those of the samples integrated here,
+   its response spectrum (computed here by the exact recurrence at the
+   samples, which can only find peaks low) lies within [0.9, 1.3] of the
+   AC156 RRS written here at the 1/6-octave points from 1.3 to 33.3 Hz,
+   it is not H1 (correlation over every lag at most 0.3), and a reversed
+   polarity reverses it with H1.
+3. The figure: a TRS, its RRS and their lines for each motion with a target.
+4. `check` on each case and on the same cabinet driven by the written
    files (AT2, and CSV read as a two-column record), with the same run
    time. Two tolerances, from what lies between the samples:
    - a floor given directly (the synthetic motions, and Taft as a
@@ -36,6 +43,7 @@ case they came from.
 
     python3 tests/motion/roundtrip.py ROCKBOLT SCRATCH
 """
+import cmath
 import json
 import math
 import os
@@ -202,6 +210,136 @@ def check_samples(summary):
             e2e.fail(f"vertical samples differ from Taft scaled to 0.2 g by {err:.2e}")
 
 
+def rrs_ac156(f, sds_g, zh):
+    """AC156's horizontal RRS (2010 form), in g."""
+    flx = min(sds_g * (1 + 2 * zh), 1.6 * sds_g)
+    rig = 0.4 * sds_g * (1 + 2 * zh)
+    if f < 1.3:
+        return flx * (f / 1.3) ** (math.log(10) / math.log(13))
+    if f <= 8.3:
+        return flx
+    if f <= 33.3:
+        return flx * (f / 8.3) ** (math.log(rig / flx) / math.log(33.3 / 8.3))
+    return rig
+
+
+def sdof_peaks(acc, dt, f_hz, xi):
+    """The largest |absolute acceleration| of a 5 % oscillator at the
+    samples, stepped by the exact transition for a load linear between
+    them (the matrix exponential above)."""
+    w = 2 * math.pi * f_hz
+    step = expm([[0, dt, 0, 0], [-w * w * dt, -2 * xi * w * dt, -dt, 0],
+                 [0, 0, 0, dt], [0, 0, 0, 0]])
+    u = v = peak = 0.0
+    for i in range(len(acc) - 1):
+        x = (u, v, acc[i], (acc[i + 1] - acc[i]) / dt)
+        u = sum(step[0][c] * x[c] for c in range(4))
+        v = sum(step[1][c] * x[c] for c in range(4))
+        peak = max(peak, abs(2 * xi * w * v + w * w * u))
+    return peak
+
+
+def fft(x, inverse=False):
+    """An iterative radix-2 FFT of a list of complex numbers (length a
+    power of two)."""
+    n = len(x)
+    a = list(x)
+    j = 0
+    for i in range(1, n):
+        bit = n >> 1
+        while j & bit:
+            j ^= bit
+            bit >>= 1
+        j |= bit
+        if i < j:
+            a[i], a[j] = a[j], a[i]
+    size = 2
+    sign = 1 if inverse else -1
+    while size <= n:
+        w = cmath.exp(sign * 2j * math.pi / size)
+        half = size // 2
+        for start in range(0, n, size):
+            t = 1.0
+            for k in range(start, start + half):
+                u, v = a[k], a[k + half] * t
+                a[k], a[k + half] = u + v, u - v
+                t *= w
+        size *= 2
+    return [v / n for v in a] if inverse else a
+
+
+def correlation(a, b):
+    """The largest |normalised cross-correlation| over every lag, as
+    sum a(t + k) b(t) / (n sd_a sd_b), through zero-padded FFTs."""
+    n = len(a)
+    ma, mb = sum(a) / n, sum(b) / n
+    a = [x - ma for x in a]
+    b = [x - mb for x in b]
+    sa = math.sqrt(sum(x * x for x in a) / n)
+    sb = math.sqrt(sum(x * x for x in b) / n)
+    m = 1
+    while m < 2 * n:
+        m *= 2
+    fa = fft(a + [0.0] * (m - n))
+    fb = fft(b + [0.0] * (m - n))
+    c = fft([x * y.conjugate() for x, y in zip(fa, fb)], inverse=True)
+    return max(abs(v.real) for v in c) / (n * sa * sb)
+
+
+def check_h2(summary, sds_g, zh):
+    """Every triaxial set's H2 as written: the same samples in both files,
+    its summary's peaks, its spectrum against the RRS, not H1."""
+    for sm in summary["motions"]:
+        comp = {c["axis"]: c for c in sm["components"]}
+        if "h2" not in comp:
+            e2e.fail(f"{sm['name']}: no h2 component written for a triaxial set")
+            continue
+        dt, h2 = read_at2(comp["h2"]["files"]["at2"])
+        _, h1 = read_at2(comp["h1"]["files"]["at2"])
+        _, h2c = read_csv(comp["h2"]["files"]["csv"])
+        if len(h2c) != len(h2) or max(abs(x - y) for x, y in zip(h2, h2c)) > 1e-8:
+            e2e.fail(f"{sm['name']}: the h2 AT2 and CSV differ")
+        acc = [x * G for x in h2]
+        pgv, pgd = integrate(acc, dt)
+        pga = max(abs(x) for x in acc)
+        for key, here in (("pga_mps2", pga), ("pgv_mps", pgv), ("pgd_m", pgd)):
+            if not abs(comp["h2"][key] - here) <= 1e-6 * here:
+                e2e.fail(f"{sm['name']} h2 {key} {comp['h2'][key]}, here {here}")
+        worst = [math.inf, 0.0]
+        for k in range(0, 29, 2):
+            f = 1.3 * 2 ** (k / 6)
+            r = sdof_peaks(acc, dt, f, 0.05) / G / rrs_ac156(f, sds_g, zh)
+            worst = [min(worst[0], r), max(worst[1], r)]
+        rho = correlation(h1, h2)
+        print(f"{sm['name']} h2: {len(h2)} samples, PGA {pga / G:.3f} g, PGV {pgv:.3f} m/s, "
+              f"PGD {pgd:.3f} m, TRS / RRS {worst[0]:.3f} to {worst[1]:.3f} at 15 points, "
+              f"correlation with h1 {rho:.3f}")
+        if not (worst[0] >= 0.9 and worst[1] <= 1.3):
+            e2e.fail(f"{sm['name']} h2: TRS / RRS {worst}, outside [0.9, 1.3]")
+        if not rho <= 0.3:
+            e2e.fail(f"{sm['name']} h2: correlation with h1 {rho:.3f} > 0.3")
+
+
+def check_h2_polarity():
+    """polarity: -1 reverses both horizontals of a set, not its vertical."""
+    one = SYNTHETIC.replace("count: 2", "count: 1")
+    out = {}
+    for pol in (1, -1):
+        case = e2e.write(f"pol{pol}.yaml", one.replace("    seed: 5",
+                                                       f"    seed: 5\n    polarity: {pol}"))
+        d = os.path.join(os.path.dirname(case), f"pol{pol}")
+        r = e2e.run("motion", case, "--dir", d, "--json", "-", "-q")
+        if r.returncode != 0:
+            e2e.fail(f"motion with polarity {pol}: exit {r.returncode}: {r.stderr}")
+            return
+        comp = {c["axis"]: c for c in json.loads(r.stdout)["motions"][0]["components"]}
+        out[pol] = {a: read_at2(comp[a]["files"]["at2"])[1] for a in ("h1", "h2", "v")}
+    for a, sign in (("h1", -1), ("h2", -1), ("v", 1)):
+        d = max(abs(x - sign * y) for x, y in zip(out[1][a], out[-1][a]))
+        if d > 0 or len(out[1][a]) != len(out[-1][a]):
+            e2e.fail(f"polarity -1: {a} is not {sign} times that of polarity 1 ({d})")
+
+
 def record_case(name, motion, files, kind, run_s):
     fmt = "at2" if kind == "at2" else "two-column\n  units: g"
     text = f"""extends: {CABINET}
@@ -356,7 +494,10 @@ motion:
 """)
     refusals()
     figure()
-    rows, _ = round_trip("synth", SYNTHETIC, ("at2", "csv"))
+    rows, synth = round_trip("synth", SYNTHETIC, ("at2", "csv"))
+    if synth:
+        check_h2(synth, 0.5, 0.5)
+    check_h2_polarity()
     for m, kind, worst, pk_o, pk_b in rows:
         print(f"synthetic motion {m} via {kind}: results within {worst:.2e} (tolerance "
               f"{REL_EXACT}), peak floor {pk_o:.9g} / {pk_b:.9g} m/s^2")
