@@ -105,7 +105,8 @@ typedef struct {
     double top_hz;           /* the highest frequency aimed at */
     double peak_want;        /* the least peak aimed at; 0: none */
     rb_fft_real fft;
-    double *amp, *phase;     /* per bin */
+    double *amp;             /* per bin */
+    double *cos_phase, *sin_phase; /* per bin: of its random phase, drawn once */
     double *envelope;        /* per sample */
     rb_spectrum grid;        /* the correction frequencies */
     double *target;          /* the target at grid */
@@ -119,7 +120,8 @@ static void generator_free(generator *g)
 {
     rb_fft_real_free(&g->fft);
     free(g->amp);
-    free(g->phase);
+    free(g->cos_phase);
+    free(g->sin_phase);
     free(g->envelope);
     free(g->target);
     free(g->fine_target);
@@ -278,10 +280,11 @@ static rb_status generator_init(generator *g, const rb_synth_opts *o)
     size_t bins = g->fft.n / 2 + 1;
     size_t most = m > g->fine.n ? m : g->fine.n;
     g->amp = calloc(bins, sizeof *g->amp);
-    g->phase = calloc(bins, sizeof *g->phase);
+    g->cos_phase = calloc(bins, sizeof *g->cos_phase);
+    g->sin_phase = calloc(bins, sizeof *g->sin_phase);
     g->envelope = malloc(g->n * sizeof *g->envelope);
     g->log_ratio = malloc(most * sizeof *g->log_ratio);
-    if (!g->amp || !g->phase || !g->envelope || !g->log_ratio)
+    if (!g->amp || !g->cos_phase || !g->sin_phase || !g->envelope || !g->log_ratio)
         return RB_ERR_NOMEM;
     for (size_t i = 0; i < g->n; i++)
         g->envelope[i] = rb_synth_envelope((double)i * o->dt_s, g->rise_s, o->strong_s,
@@ -320,10 +323,12 @@ static void draw(generator *g, uint64_t stream)
     double f_lo = g->grid.freq_hz[0], f_hi = SYNTH_FADE * g->top_hz;
     if (f_hi > 0.4 / o->dt_s)
         f_hi = 0.4 / o->dt_s;
-    g->amp[0] = g->phase[0] = 0.0;
+    g->amp[0] = g->cos_phase[0] = g->sin_phase[0] = 0.0;
     for (size_t k = 1; k < bins; k++) {
         double fk = (double)k * df;
-        g->phase[k] = 2.0 * M_PI * rb_rng_uniform(&rng);
+        double phase = 2.0 * M_PI * rb_rng_uniform(&rng);
+        g->cos_phase[k] = cos(phase);
+        g->sin_phase[k] = sin(phase);
         g->amp[k] = fk >= f_lo && fk <= f_hi ? fade(g, fk) * rb_target_at(t, fk) / sqrt(fk)
                                              : 0.0;
     }
@@ -381,8 +386,8 @@ static void synthesise(generator *g, double *a)
 {
     size_t bins = g->fft.n / 2 + 1;
     for (size_t k = 0; k < bins; k++) {
-        g->fft.freq[k][0] = g->amp[k] * cos(g->phase[k]);
-        g->fft.freq[k][1] = g->amp[k] * sin(g->phase[k]);
+        g->fft.freq[k][0] = g->amp[k] * g->cos_phase[k];
+        g->fft.freq[k][1] = g->amp[k] * g->sin_phase[k];
     }
     rb_fft_real_inverse(&g->fft);
     for (size_t i = 0; i < g->n; i++)
