@@ -83,7 +83,11 @@ extern const rb_enum_name rb_confirm_mode_names[];  /* rb_confirm_mode */
 #define RB_CONFIRM_SPREAD 1e-3
 /* The confirming runs of a pass: the run's own integrator at a tenth and
  * a hundredth of its tolerance, but no tighter than RB_CONFIRM_RTOL_MIN
- * (what double precision can meet). */
+ * (what double precision can meet); the last one also at a hundredth of
+ * its rest_fraction (rb_solve_opts), which moves usage apart from the
+ * tolerance: whether a small residual rocking is declared at rest decides
+ * what the next strong pulse finds (docs/solver.md, "When rocking
+ * stops"). */
 #define RB_CONFIRM_RUNS 2
 #define RB_CONFIRM_RTOL_MIN 1e-13
 
@@ -242,6 +246,7 @@ int rb_verdict_wants_confirm(const rb_criteria *c, double band, const rb_result 
 typedef struct {
     int integrator;        /* rb_integrator */
     double rtol;
+    double rest_fraction;  /* rb_solve_opts.rest_fraction of the run */
     int solved;            /* 0: the solver stopped (status) */
     int status;            /* rb_status when not solved */
     rb_verdict verdict;    /* when solved */

@@ -53,6 +53,8 @@
 #define RB_CASE_MAX_BOLT_LENGTH_M 10.0
 #define RB_CASE_MIN_GAP_RATIO 1e-9       /* a gap is 0 or this much of l */
 #define RB_CASE_MIN_TOLERANCE 1e-13      /* what double precision can meet */
+#define RB_CASE_MIN_REST_FRACTION 1e-12  /* analysis.rest_fraction's range */
+#define RB_CASE_MAX_REST_FRACTION 1e-3
 #define RB_CASE_MIN_TIME_S 1e-3          /* durations, run times, ramps */
 #define RB_CASE_MIN_RECORD_PEAK 1e-6     /* m/s^2: a record scaled to `peak` */
 #define RB_CASE_MIN_MASS_KG 1.0          /* equipment.mass */

@@ -31,7 +31,7 @@ static const char *const criteria_keys[] = {
     "friction_coefficient", "validity", "concrete", "confirm", "confirm_band", NULL};
 static const char *const analysis_keys[] = {
     "formulation", "integrator", "tolerance", "output_interval", "history",
-    "stretch_past_failure", NULL};
+    "stretch_past_failure", "rest_fraction", NULL};
 /* for the keys a list column may name (case_keys.c) */
 const char *const *const rb_case_equipment_keys = equipment_keys;
 const char *const *const rb_case_anchorage_keys = anchorage_keys;
@@ -338,6 +338,13 @@ static void read_analysis(rb_cctx *c, rb_ynode *an, rb_case *cs)
         cs->solve.integrator = (rb_integrator)i;
     rb_cv_number(c, an, p, "tolerance", 0, RB_DIM_RATIO, RB_CASE_MIN_TOLERANCE, 1,
                  0.01, 1, &cs->solve.rtol);
+    /* above 1e-3 the shipped cases' usage moves by a tenth (at 1e-4
+     * already); below 1e-12 the last confirming run (a hundredth of it)
+     * would come within two decades of the rounding of an angle of the
+     * size of theta0, and each decade finer only adds floor impacts
+     * (docs/solver.md, "When rocking stops") */
+    rb_cv_number(c, an, p, "rest_fraction", 0, RB_DIM_RATIO, RB_CASE_MIN_REST_FRACTION, 1,
+                 RB_CASE_MAX_REST_FRACTION, 1, &cs->solve.rest_fraction);
     /* checked against the motions' run times in case_validate.c, whether or
      * not a history is recorded */
     c->history_dt_node = rb_cv_number(c, an, p, "output_interval", 0, RB_DIM_TIME,

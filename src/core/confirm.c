@@ -33,8 +33,11 @@ static void confirm_one(const rb_criteria *c, const rb_model *model, const rb_mo
     memset(out, 0, sizeof *out);
     so.history_dt_s = 0;
     so.rtol = fmax(decimal(opts->rtol / (k == 0 ? 10.0 : 100.0)), RB_CONFIRM_RTOL_MIN);
+    if (k == RB_CONFIRM_RUNS - 1)
+        so.rest_fraction = decimal(opts->rest_fraction / 100.0);
     out->integrator = (int)so.integrator;
     out->rtol = so.rtol;
+    out->rest_fraction = so.rest_fraction;
     rb_status st = solve(ctx, model, motion, &so, &r);
     out->status = (int)st;
     out->solved = st == RB_OK;

@@ -477,6 +477,18 @@ int rb_verdict_wants_confirm(const rb_criteria *c, double band, const rb_result 
            || (c->kind == RB_CRIT_NO_YIELD && rb_result_near_contact(r, band));
 }
 
+/* Where a run was solved, for a reason: its tolerance, and its rest
+ * fraction where it is not the first confirming run's (the run confirmed
+ * has that one); cr NULL is the run confirmed, at rtol. */
+static const char *run_where(char *buf, size_t n, const rb_confirm_run *runs,
+                             const rb_confirm_run *cr, double rtol)
+{
+    int len = snprintf(buf, n, "%.3g", cr ? cr->rtol : rtol);
+    if (cr && cr->rest_fraction != runs[0].rest_fraction && len > 0 && (size_t)len < n)
+        snprintf(buf + len, n - (size_t)len, " and rest fraction %.3g", cr->rest_fraction);
+    return buf;
+}
+
 void rb_verdict_confirm(rb_verdict *v, double margin, double band, double rtol,
                         const rb_confirm_run *runs, size_t n)
 {
@@ -493,12 +505,14 @@ void rb_verdict_confirm(rb_verdict *v, double margin, double band, double rtol,
             continue;
         /* the first run that fails says why; the others only warn */
         const char *how = rb_enum_str(rb_integrator_names, cr->integrator);
+        char at[40];
+        run_where(at, sizeof at, runs, cr, rtol);
         if (cr->solved)
-            snprintf(v->reason, sizeof v->reason, "not confirmed: at tolerance %.3g (%s), %.200s",
-                     cr->rtol, how, cr->verdict.reason);
+            snprintf(v->reason, sizeof v->reason, "not confirmed: at tolerance %s (%s), %.180s",
+                     at, how, cr->verdict.reason);
         else
             snprintf(v->reason, sizeof v->reason, "not confirmed: the run at tolerance "
-                     "%.3g (%s) stopped: %s", cr->rtol, how,
+                     "%s (%s) stopped: %s", at, how,
                      rb_status_str((rb_status)cr->status));
         v->pass = 0;
     }
@@ -512,24 +526,28 @@ void rb_verdict_confirm(rb_verdict *v, double margin, double band, double rtol,
      * more. A pass whose runs agree within RB_CONFIRM_SPREAD has
      * converged; one whose runs do not stands only where every run keeps
      * the band to spare, and more than the scatter seen. */
-    double lo = margin, hi = margin, rt_lo = rtol, rt_hi = rtol;
+    double lo = margin, hi = margin;
+    const rb_confirm_run *run_lo = NULL, *run_hi = NULL;   /* NULL: the run confirmed */
     for (size_t i = 0; i < n; i++) {
         if (runs[i].margin < lo) {
             lo = runs[i].margin;
-            rt_lo = runs[i].rtol;
+            run_lo = &runs[i];
         }
         if (runs[i].margin > hi) {
             hi = runs[i].margin;
-            rt_hi = runs[i].rtol;
+            run_hi = &runs[i];
         }
     }
     if (hi - lo <= RB_CONFIRM_SPREAD || (lo >= band && hi - lo < lo))
         return;
     v->check[RB_CHECK_CONVERGENCE] = RB_CHECK_WARNING;
     v->warnings |= 1u << RB_CHECK_CONVERGENCE;
+    char at_lo[40], at_hi[40];
     snprintf(v->reason, sizeof v->reason, "not confirmed: %.3g to spare of the nearest limit "
-             "at tolerance %.3g but %.3g at %.3g (%s); the run does not converge with the "
-             "tolerance, and a further one can take more than that", lo, rt_lo, hi, rt_hi,
+             "at tolerance %s but %.3g at %s (%s); the run does not converge, and a "
+             "further one can take more than that", lo,
+             run_where(at_lo, sizeof at_lo, runs, run_lo, rtol), hi,
+             run_where(at_hi, sizeof at_hi, runs, run_hi, rtol),
              rb_enum_str(rb_integrator_names, runs[0].integrator));
     v->pass = 0;
 }

@@ -75,6 +75,7 @@ void rb_report_json_convergence(rb_jctx *cx, cJSON *validity_o, const rb_report 
         cJSON *x = rb_j_item(cx, runs);
         rb_j_str(cx, x, "integrator", rb_enum_str(rb_integrator_names, cr->integrator));
         rb_j_num(cx, x, "tolerance", cr->rtol);
+        rb_j_num(cx, x, "rest_fraction", cr->rest_fraction);
         rb_j_bool(cx, x, "solved", cr->solved);
         if (!cr->solved) {
             rb_j_str(cx, x, "error", rb_status_str((rb_status)cr->status));

@@ -268,17 +268,24 @@ static void convergence_text(const rb_criteria *c, const rb_report_motion *rm, c
     for (size_t i = 0; i < rm->n_confirm && len < n; i++) {
         const rb_confirm_run *cr = &rm->confirm[i];
         const char *how = rb_enum_str(rb_integrator_names, cr->integrator);
+        char at[64];
+        /* the run that also tightens the rest fraction says so (the
+         * first keeps the case's) */
+        if (cr->rest_fraction != rm->confirm[0].rest_fraction)
+            snprintf(at, sizeof at, "%.3g, rest fraction %.3g", cr->rtol, cr->rest_fraction);
+        else
+            snprintf(at, sizeof at, "%.3g", cr->rtol);
         if (!cr->solved)
-            len += (size_t)snprintf(buf + len, n - len, "%s%s at %.3g: stopped (%s)",
-                                    i ? "; " : "", how, cr->rtol,
+            len += (size_t)snprintf(buf + len, n - len, "%s%s at %s: stopped (%s)",
+                                    i ? "; " : "", how, at,
                                     rb_status_str((rb_status)cr->status));
         else {
             char ff[32] = "n/a";   /* no bolts (rb_result_governing) */
             if (!isnan(cr->max_bolt_force_over_fy))
                 snprintf(ff, sizeof ff, "%.4f", cr->max_bolt_force_over_fy);
-            len += (size_t)snprintf(buf + len, n - len, "%s%s at %.3g: %s, usage %.4f, "
+            len += (size_t)snprintf(buf + len, n - len, "%s%s at %s: %s, usage %.4f, "
                                     "force %s Fy, rotation %.4f alpha, %.3f to spare",
-                                    i ? "; " : "", how, cr->rtol,
+                                    i ? "; " : "", how, at,
                                     cr->verdict.pass ? "pass" : "fail", cr->usage,
                                     ff, cr->max_theta_over_alpha, cr->margin);
         }

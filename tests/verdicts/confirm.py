@@ -24,15 +24,20 @@ one, and on shipped cases:
     (judge_probe --design), also where the search's last pass was not
     confirmed and it went on below it
     (tests/verdicts/cases/design-confirm.yaml);
-  - on tests/verdicts/cases/scatter-pass.yaml, whose three runs all
+  - on tests/verdicts/cases/scatter-pass.yaml, whose runs at the
+    default rest fraction pass and scatter, the finest confirming run
+    (a hundredth of the rest fraction too) breaks a row: check fails it
+    naming that run, and with confirm: off it passes;
+  - on tests/verdicts/cases/scatter-runs.yaml, whose three runs all
     pass but scatter by more than the least of their margins, the pass
     is not signed: check fails it with the convergence warning and a
     reason naming both margins, each run's margin is check's at its
-    tolerance, and with confirm: off it passes;
+    tolerance and rest fraction, and with confirm: off it passes;
   - on tests/verdicts/cases/converge-pass.yaml, whose three runs pass
     and lie closer together than it is from the limit but more than
     0.001 apart, the pass is not signed either, unless every run keeps
-    the band to spare (confirm: always with a band of 0.15);
+    the band to spare (confirm: always with a band of 0.12; its finest
+    run keeps 0.125);
   - tests/verdicts/cases/wide-band-pass.yaml, 0.31 from the limit, is
     confirmed within the default band of 0.5 and fails (its run at 1e-8
     breaks a row), where a band of 0.25 signed it unconfirmed;
@@ -72,6 +77,20 @@ def check(path):
 
 def conv(d, i=0):
     return d["motions"][i]["validity"]["convergence"]
+
+
+def at(r, runs):
+    """Where a run was solved, as a reason names it: the tolerance, and the
+    rest fraction where it is not the first confirming run's (the case's)."""
+    where = f"{r['tolerance']:.3g}"
+    if r["rest_fraction"] != runs[0]["rest_fraction"]:
+        where += f" and rest fraction {r['rest_fraction']:.3g}"
+    return where
+
+
+def solved_as(r):
+    """The analysis keys that solve a case as the confirming run r was."""
+    return f"tolerance: {r['tolerance']:g};rest_fraction: {r['rest_fraction']:g}"
 
 
 def unconverged(name, path):
@@ -116,11 +135,16 @@ if off and on:
     if [r["tolerance"] for r in c["runs"]] != [1e-8, 1e-9]:
         fail(f"confirming tolerances {[r['tolerance'] for r in c['runs']]}, "
              "expected a tenth and a hundredth of 1e-7")
+    # the case's rest fraction, then a hundredth of it in the last run
+    rest = on["solver"]["rest_fraction"]
+    if rest != 1e-6 or [r["rest_fraction"] for r in c["runs"]] != [1e-6, 1e-8]:
+        fail(f"confirming rest fractions {[r['rest_fraction'] for r in c['runs']]} "
+             f"(case {rest}), expected 1e-6 and a hundredth of it")
     failing = [r for r in c["runs"] if not r["pass"]]
     if not failing:
         fail("no confirming run fails")
     elif not on["motions"][0]["verdict"]["reason"].startswith(
-            f"not confirmed: at tolerance {failing[0]['tolerance']:g} (auto), "
+            f"not confirmed: at tolerance {at(failing[0], c['runs'])} (auto), "
             + failing[0]["reason"]):
         fail(f"reason '{on['motions'][0]['verdict']['reason']}' does not name the "
              f"failing run ({failing[0]})")
@@ -130,10 +154,9 @@ if off and on:
     if abs(c["margin"] - (1 - on["motions"][0]["result"]["bolts"]["usage"]["right"])) > 1e-15:
         fail(f"margin {c['margin']} is not 1 - the usage")
 
-    # 2. each confirming run is check at its tolerance
+    # 2. each confirming run is check at its tolerance and rest fraction
     for r in c["runs"]:
-        d, _ = check(variant(f"at-{r['tolerance']:g}", "confirm: off",
-                             f"tolerance: {r['tolerance']:g}"))
+        d, _ = check(variant(f"at-{r['tolerance']:g}", "confirm: off", solved_as(r)))
         if not d:
             continue
         res = d["motions"][0]["result"]
@@ -238,43 +261,86 @@ if p.returncode in (0, 1):
     if f"; {n} higher pass{'es' if n != 1 else ''} not confirmed" not in nb["summary"]:
         fail(f"the design's summary does not say so: {nb['summary']}")
 
-# 7. runs that all pass and scatter by more than the least margin: not signed
+# 7. a pass whose runs at the case's rest fraction pass and scatter, and
+#    whose finest run, at a hundredth of the rest fraction as well, breaks
+#    a row: a pass the confirmation at tighter tolerances alone signed
+#    wrongly before
 SCATTER = os.path.join(src, "tests/verdicts/cases/scatter-pass.yaml")
-sc, c, margins = unconverged("scatter-pass", SCATTER)
-if sc:
+sc, rc = check(SCATTER)
+off, rc_off = check(variant("scatter-off", "confirm: off", base=SCATTER))
+if sc and off:
+    c = conv(sc)
+    runs = c["runs"]
     reason = sc["motions"][0]["verdict"]["reason"]
+    print(f"scatter-pass: usages {[r.get('usage') for r in runs]}; {reason}")
+    if rc_off != 0 or off["verdict"]["result"] != "PASS":
+        fail(f"unconfirmed, the scatter case should pass: exit {rc_off}")
+    if len(runs) != 2 or not runs[0]["pass"] or runs[1]["pass"] \
+            or runs[1]["rest_fraction"] != 1e-8 or not runs[1]["usage"] >= 1:
+        fail(f"the scatter case's run at 1e-8 should pass and its run at a hundredth of "
+             f"the tolerance and of the rest fraction break a row: {runs}")
+    elif rc != 1 or c["status"] != "warning" or not reason.startswith(
+            f"not confirmed: at tolerance {at(runs[1], runs)} (auto), {runs[1]['reason']}"):
+        fail(f"the scatter case should fail naming its last run: exit {rc}, '{reason}'")
+    for r in runs:
+        d, _ = check(variant(f"scatter-at-{r['tolerance']:g}", "confirm: off", solved_as(r),
+                             base=SCATTER))
+        if d and conv(d)["margin"] != r["margin"]:
+            fail(f"the run at {r['tolerance']:g} has margin {r['margin']}, check at that "
+                 f"tolerance and rest fraction {conv(d)['margin']}")
+
+# 7b. runs that all pass and scatter by more than the least margin: not
+#     signed
+SCATTER_RUNS = os.path.join(src, "tests/verdicts/cases/scatter-runs.yaml")
+sr, c, margins = unconverged("scatter-runs", SCATTER_RUNS)
+if sr:
+    reason = sr["motions"][0]["verdict"]["reason"]
     if not max(margins) - min(margins) >= min(margins):
         fail(f"the margins {margins} do not scatter by their least")
-    lo = min(c["runs"], key=lambda r: r["margin"])
-    hi = max(c["runs"] + [{"margin": c["margin"], "tolerance": 1e-7}],
-             key=lambda r: r["margin"])
+    first = dict(c["runs"][0], margin=c["margin"], tolerance=sr["solver"]["rtol"])
+    lo = min([first] + c["runs"], key=lambda r: r["margin"])
+    hi = max([first] + c["runs"], key=lambda r: r["margin"])
     want = (f"not confirmed: {lo['margin']:.3g} to spare of the nearest limit at tolerance "
-            f"{lo['tolerance']:.3g} but {hi['margin']:.3g} at {hi['tolerance']:.3g} (auto); "
+            f"{at(lo, c['runs'])} but {hi['margin']:.3g} at {at(hi, c['runs'])} (auto); "
             "the run does not converge")
     if not reason.startswith(want):
         fail(f"reason '{reason}', expected it to start '{want}'")
     for r in c["runs"]:
-        d, _ = check(variant(f"scatter-at-{r['tolerance']:g}", "confirm: off",
-                             f"tolerance: {r['tolerance']:g}", base=SCATTER))
+        d, _ = check(variant(f"scatter-runs-at-{r['tolerance']:g}", "confirm: off",
+                             solved_as(r), base=SCATTER_RUNS))
         if d and conv(d)["margin"] != r["margin"]:
             fail(f"the run at {r['tolerance']:g} has margin {r['margin']}, check at that "
-                 f"tolerance {conv(d)['margin']}")
+                 f"tolerance and rest fraction {conv(d)['margin']}")
 
 # 8. runs that agree better than they are from the limit, but do not
-#    converge: not signed within the band
+#    converge: not signed within the band, and the reason names the least
+#    and the largest margin with where each was solved
 CONVERGE = os.path.join(src, "tests/verdicts/cases/converge-pass.yaml")
 cv, c, margins = unconverged("converge-pass", CONVERGE)
 if cv:
     if not 1e-3 < max(margins) - min(margins) < min(margins):
         fail(f"the margins {margins} should lie more than 0.001 apart, and less than "
              "the least of them")
-    if "does not converge" not in cv["motions"][0]["verdict"]["reason"]:
-        fail(f"the converge case's reason: {cv['motions'][0]['verdict']['reason']}")
-    kept, rc_kept = check(variant("converge-kept", "confirm: always;confirm_band: 0.15",
+    reason = cv["motions"][0]["verdict"]["reason"]
+    first = dict(c["runs"][0], margin=c["margin"], tolerance=cv["solver"]["rtol"])
+    lo = min([first] + c["runs"], key=lambda r: r["margin"])
+    hi = max([first] + c["runs"], key=lambda r: r["margin"])
+    want = (f"not confirmed: {lo['margin']:.3g} to spare of the nearest limit at tolerance "
+            f"{at(lo, c['runs'])} but {hi['margin']:.3g} at {at(hi, c['runs'])} (auto); "
+            "the run does not converge")
+    if not reason.startswith(want):
+        fail(f"reason '{reason}', expected it to start '{want}'")
+    # every run keeps a band of 0.12 to spare, and more than their spread
+    kept, rc_kept = check(variant("converge-kept", "confirm: always;confirm_band: 0.12",
                                   base=CONVERGE))
     if kept and (rc_kept != 0 or conv(kept)["status"] != "ok"):
-        fail(f"with 0.15 to spare in every run the converge case should pass: exit "
+        fail(f"with 0.12 to spare in every run the converge case should pass: exit "
              f"{rc_kept}, {conv(kept)}")
+    tight, rc_t = check(variant("converge-tight", "confirm: always;confirm_band: 0.13",
+                                base=CONVERGE))
+    if tight and rc_t != 1:
+        fail(f"with a band of 0.13, which its finest run does not keep, the converge case "
+             f"should fail: exit {rc_t}")
 WIDE = os.path.join(src, "tests/verdicts/cases/wide-band-pass.yaml")
 narrow, rc_narrow = check(variant("wide-narrow", "confirm_band: 0.25", base=WIDE))
 wide, rc = check(WIDE)
@@ -318,7 +384,54 @@ dp, rc_dp = check(variant("chaos-rk45", "confirm: off", "integrator: rk45", base
 if dp and (rc_dp != 1 or not dp["motions"][0]["result"]["bolts"]["broken"]["right"]):
     fail(f"Dormand-Prince at 1e-7 should break the chaos case's row: exit {rc_dp}")
 
-# 10. bad values
+# 10. a pass that only the rest criterion moves: its runs at the case's
+#     rest fraction agree at every tolerance, and the last confirming run,
+#     at a hundredth of the rest fraction, finds the usage a finer
+#     criterion converges to, past the limit
+REST = os.path.join(src, "tests/verdicts/cases/rest-pass.yaml")
+rp, rc = check(REST)
+rp_off, rc_off = check(variant("rest-off", "confirm: off", base=REST))
+# the usage as a rest criterion a decade finer than any confirming run
+# finds it, and another two decades finer: the limit the runs approach
+fine = [check(variant(f"rest-{rf}", "confirm: off", f"rest_fraction: {rf}", base=REST))[0]
+        for rf in ("1e-10", "1e-12")]
+if rp and rp_off and all(fine):
+    def top(d):
+        return max(d["motions"][0]["result"]["bolts"]["usage"].values())
+    c = conv(rp)
+    runs = c["runs"]
+    u0, u10, u12 = top(rp_off), top(fine[0]), top(fine[1])
+    limit = rp["criteria"]["usage_limit"]
+    print(f"rest-pass: usage {u0} at 1e-6, {[r['usage'] for r in runs]} in the confirming "
+          f"runs, {u10} at 1e-10, {u12} at 1e-12 (limit {limit})")
+    if not abs(u12 / u10 - 1) < 1e-3:
+        fail(f"the rest-pass case's usage does not settle as the rest fraction falls: "
+             f"{u10} at 1e-10, {u12} at 1e-12")
+    if not (u0 < limit < u10 and abs(u0 / u10 - 1) > 0.03):
+        fail(f"the rest-pass case should pass at the default ({u0}) and not at 1e-10 "
+             f"({u10}), more than 3 % apart, about its limit {limit}")
+    if rc_off != 0:
+        fail(f"unconfirmed, the rest-pass case should pass: exit {rc_off}")
+    if len(runs) != 2 or [r["rest_fraction"] for r in runs] != [1e-6, 1e-8] \
+            or not abs(runs[0]["usage"] / u0 - 1) < 1e-3:
+        fail(f"the rest-pass case's run at a tenth of the tolerance should agree with the "
+             f"default's to 1e-3, the tolerance alone not seeing it: {runs}")
+    elif not abs(runs[1]["usage"] / u10 - 1) < 0.01:
+        fail(f"the last confirming run's usage {runs[1]['usage']} should lie within 1 % of "
+             f"the run at rest fraction 1e-10 ({u10})")
+    if rc != 1 or rp["verdict"]["result"] != "FAIL" or c["status"] != "warning" \
+            or not rp["motions"][0]["verdict"]["reason"].startswith(
+                "not confirmed: at tolerance 1e-09 and rest fraction 1e-08 (auto), "):
+        fail(f"confirmed, the rest-pass case should fail by its last run: exit {rc}, "
+             f"'{rp['motions'][0]['verdict']['reason']}'")
+    # a rest fraction of the case's own: a hundredth of it in the last run,
+    # in decimal steps as the tolerances
+    own, _ = check(variant("rest-own", "confirm: always", "rest_fraction: 3e-7", base=REST))
+    if own and [r["rest_fraction"] for r in conv(own)["runs"]] != [3e-7, 3e-9]:
+        fail(f"rest fractions of the runs of a case at 3e-7: "
+             f"{[r['rest_fraction'] for r in conv(own)['runs']]}")
+
+# 11. bad values
 for key, value, expected in (("confirm", "maybe", "one of marginal, always, off"),
                              ("confirm_band", "0", "> 0 and <= 1"),
                              ("confirm_band", "1.5", "> 0 and <= 1")):
