@@ -26,12 +26,16 @@ run() {
 for t in "$build"/test_*; do
     [ -x "$t" ] && run "$(basename "$t")" "$t"
 done
-for c in cases/*.yaml; do
+# cases/ac156-roof.yaml (seven triaxial 30 s sets at tolerance 1e-9) took
+# over 5 minutes under memcheck for check and again for spectrum: its code
+# is run here by a 4 s, two-set, horizontal case made for this pass
+for c in cases/*.yaml tests/valgrind/ac156-short.yaml; do
+    [ "$c" = cases/ac156-roof.yaml ] && continue
     run "check $c" "$build/rockbolt" check "$c" --json "$out/r.json" --text "$out/r.txt"
 done
 run "bad input" "$build/rockbolt" check tests/errors/03-unknown-key.yaml
 run "pdf" "$build/rockbolt" check cases/reference-harmonic.yaml --pdf "$out/r.pdf"
-run "spectrum" "$build/rockbolt" spectrum cases/ac156-roof.yaml --json "$out/s.json" \
+run "spectrum" "$build/rockbolt" spectrum tests/valgrind/ac156-short.yaml --json "$out/s.json" \
     --csv "$out/s.csv" --svg "$out/s.svg"
 # list rows loaded from memory over a base with several motions, and batch's
 # outputs
