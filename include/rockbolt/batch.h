@@ -76,26 +76,28 @@ typedef enum {
     RB_BATCH_ERROR        /* a solver run or a report failed (internal) */
 } rb_batch_verdict;
 
+/* The numbers of a run that every summary shows, at most this many
+ * (src/batch/batch_columns.c holds the table of them). */
+#define RB_BATCH_MAX_COLUMNS 16
+
 /* One motion of a case, solved and judged. */
 typedef struct {
     char *motion;         /* owned: the motion's name */
     int pass;
     unsigned warnings;    /* validity warnings (rb_verdict.warnings) */
-    double usage;         /* larger toughness usage of the two bolt rows */
-    double shear_over_w;  /* elastic frame shear / W (the criteria's) */
-    double force_over_fy; /* larger bolt row force / Fy */
-    double theta_over_alpha;
+    /* one number per column of the batch's table, in its order: the larger
+     * toughness usage of the two rows, elastic frame shear / W, the larger
+     * row force / Fy, theta / alpha and, with design, the design factor
+     * (A* / largest passing level) and the recommended gap ratio; NaN
+     * where the run has none (no bolts, no design, no factor found) */
+    double value[RB_BATCH_MAX_COLUMNS];
+    unsigned bounds;      /* bit k: value[k] is a bound (the design factor:
+                             no failing level up to the scan's end) */
     /* the judge's one "governs" rule (rb_verdict_governing): the run's
      * margin (0 for a failing run) and the limit of it (rb_governs_limit) */
     double margin;
     int limit;
     char *reason;         /* owned: the run's verdict reason, one line */
-    /* design (when asked for); has_* 0 when not run or not defined */
-    int has_factor;
-    double design_factor; /* A* / largest passing level */
-    int factor_bound;     /* 1: no failing level up to the scan's end */
-    int has_gap;
-    double gap_ratio;     /* recommended */
     /* the concrete check (a case with concrete:): the largest 17.8
      * utilization and the mode that governs it (rb_anchor_mode: the
      * governing tension mode when tension's share is the larger, else the

@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "batch_engine.h"
+#include "batch_summary.h"
 #include "rockbolt/outplan.h"
 #include "rockbolt/report.h"
 #include "rockbolt/run.h"
@@ -110,11 +111,6 @@ void rb_batch_case_load(rb_batch_slot *s, const rb_batch_item *it, rb_batch_case
     s->remaining = n;
 }
 
-static double ratio(double a, double b)
-{
-    return b > 0 ? a / b : 0.0;
-}
-
 void rb_batch_case_solve(rb_batch_slot *s, rb_batch_case *bc, size_t m, int design)
 {
     const rb_case_motion *cm = &s->c.motions[m];
@@ -137,10 +133,9 @@ void rb_batch_case_solve(rb_batch_slot *s, rb_batch_case *bc, size_t m, int desi
     run->reason = rb_batch_strdup(rm->verdict.reason);
     if (!run->reason)
         s->run_status[m] = RB_ERR_NOMEM;
-    run->usage = fmax(r->usage[0], r->usage[1]);
-    run->shear_over_w = ratio(r->max_shear_elastic_n, r->weight_n);
-    run->force_over_fy = rb_result_governing(r).force_over_fy;
-    run->theta_over_alpha = r->max_theta_over_alpha;
+    rb_batch_source src = {r, NULL, NULL};
+    rb_batch_columns_fill(run, &src, 0);
+    rb_batch_columns_fill(run, NULL, 1);
     if (s->c.has_concrete && r->anchor_checked) {
         const rb_anchor_strength *a = &s->c.anchor;
         run->has_anchor = 1;
@@ -155,15 +150,10 @@ void rb_batch_case_solve(rb_batch_slot *s, rb_batch_case *bc, size_t m, int desi
     rb_run_design_criteria(&s->c, &cd);
     rb_motion_design md;
     rb_status st = rb_run_motion_design(&s->c, m, RB_RUN_DESIGN_BRIEF, 1, &cd, &md, d);
-    const rb_design_factor_result *f = rb_run_own_factor(&s->c, &md);
-    if (st == RB_OK && f->level_mps2 > 0 && isfinite(f->factor)) {
-        run->has_factor = 1;
-        run->design_factor = f->factor;
-        run->factor_bound = f->no_failure;
-    }
-    if (st == RB_OK && md.has_gap && md.gap.found) {
-        run->has_gap = 1;
-        run->gap_ratio = md.gap.gap_ratio;
+    if (st == RB_OK) {
+        src.factor = rb_run_own_factor(&s->c, &md);
+        src.design = &md;
+        rb_batch_columns_fill(run, &src, 1);
     }
     rb_motion_design_free(&md);
     if (st != RB_OK)

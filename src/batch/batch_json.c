@@ -48,22 +48,33 @@ static int add_num(cJSON *o, const char *k, double v)
     return cJSON_AddRawToObject(o, k, buf) != NULL;
 }
 
+/* The columns of one group (the run's own, or the design's) of a run or
+ * of a case's mean and maximum; none is null. key_max: the aggregates'
+ * names (in "max"); bounds NULL: no bound columns (a mean or maximum). */
+static int add_columns(cJSON *o, const double *value, const unsigned *bounds, int design,
+                       int key_max)
+{
+    int ok = 1;
+    for (size_t k = 0; ok && k < rb_batch_n_columns; k++) {
+        const rb_batch_column *col = &rb_batch_columns[k];
+        if (col->design != design)
+            continue;
+        ok = add_num(o, key_max ? col->agg_name : col->name, value[k]);
+        if (ok && bounds && col->bound_of) {
+            char key[64];
+            snprintf(key, sizeof key, "%s_bound", col->name);
+            ok = cJSON_AddBoolToObject(o, key, (*bounds >> k) & 1u) != NULL;
+        }
+    }
+    return ok;
+}
+
 static int add_stat(cJSON *parent, const char *name, const rb_batch_stat *st,
                     int design, int is_max)
 {
     cJSON *o = cJSON_AddObjectToObject(parent, name);
-    int ok = o && add_num(o, "usage", st->usage)
-        && add_num(o, "shear_over_w", st->shear_over_w)
-        && add_num(o, "force_over_fy", st->force_over_fy)
-        && add_num(o, "theta_over_alpha", st->theta_over_alpha);
-    if (ok && design) {
-        const char *fk = is_max ? "min_design_factor" : "design_factor";
-        ok = (st->has_factor ? add_num(o, fk, st->design_factor)
-                             : cJSON_AddNullToObject(o, fk) != NULL)
-            && (st->has_gap ? add_num(o, "gap_ratio", st->gap_ratio)
-                            : cJSON_AddNullToObject(o, "gap_ratio") != NULL);
-    }
-    return ok;
+    return o && add_columns(o, st->value, NULL, 0, is_max)
+        && (!design || add_columns(o, st->value, NULL, 1, is_max));
 }
 
 /* The names of the validity checks that warned, as in the reports. */
@@ -87,10 +98,7 @@ static int add_run(cJSON *arr, const rb_batch_result *r, int design)
         return cJSON_Delete(o), 0;
     int ok = add_text(o, "motion", r->motion) != NULL
         && cJSON_AddStringToObject(o, "verdict", r->pass ? "pass" : "fail") != NULL
-        && add_num(o, "usage", r->usage)
-        && add_num(o, "shear_over_w", r->shear_over_w)
-        && add_num(o, "force_over_fy", r->force_over_fy)
-        && add_num(o, "theta_over_alpha", r->theta_over_alpha)
+        && add_columns(o, r->value, &r->bounds, 0, 0)
         && add_num(o, "margin", r->margin)
         && cJSON_AddStringToObject(o, "governs",
                                    rb_governs_name((rb_governs_limit)r->limit)) != NULL
@@ -101,14 +109,7 @@ static int add_run(cJSON *arr, const rb_batch_result *r, int design)
         ok = cJSON_AddStringToObject(o, "anchor_mode",
                                      rb_enum_str(rb_anchor_mode_names, r->anchor_mode)) != NULL
              && add_num(o, "anchor_utilization", r->anchor_utilization);
-    if (ok && design) {
-        ok = (r->has_factor ? add_num(o, "design_factor", r->design_factor)
-                            : cJSON_AddNullToObject(o, "design_factor") != NULL)
-            && cJSON_AddBoolToObject(o, "design_factor_bound", r->factor_bound) != NULL
-            && (r->has_gap ? add_num(o, "gap_ratio", r->gap_ratio)
-                           : cJSON_AddNullToObject(o, "gap_ratio") != NULL);
-    }
-    return ok;
+    return ok && (!design || add_columns(o, r->value, &r->bounds, 1, 0));
 }
 
 static int add_error(cJSON *o, const rb_batch_case *c)
@@ -396,6 +397,33 @@ static void rd_warnings(rd_ctx *r, const cJSON *o, unsigned *warnings)
     }
 }
 
+/* A number, or NaN for the null that a non-finite one was written as. */
+static double rd_num_or_nan(rd_ctx *r, const cJSON *o, const char *k)
+{
+    int has;
+    double v = rd_opt(r, o, k, &has);
+    return has ? v : (double)NAN;
+}
+
+/* The columns of one group of a run, as add_columns writes them: a number,
+ * or null for none. A group the summary does not have is none. */
+static void rd_columns(rd_ctx *r, const cJSON *o, rb_batch_result *run, int design)
+{
+    for (size_t k = 0; k < rb_batch_n_columns; k++) {
+        const rb_batch_column *col = &rb_batch_columns[k];
+        if (col->design != design)
+            continue;
+        run->value[k] = rd_num_or_nan(r, o, col->name);
+        if (col->bound_of) {
+            char key[64];
+            snprintf(key, sizeof key, "%s_bound", col->name);
+            const cJSON *bound = cJSON_GetObjectItemCaseSensitive(o, key);
+            if (cJSON_IsTrue(bound) && isfinite(run->value[k]))
+                run->bounds |= 1u << k;
+        }
+    }
+}
+
 static void rd_run(rd_ctx *r, const cJSON *o, rb_batch_result *run, int design)
 {
     char *v;
@@ -405,12 +433,7 @@ static void rd_run(rd_ctx *r, const cJSON *o, rb_batch_result *run, int design)
     if (v && !run->pass && strcmp(v, "fail") != 0)
         rd_fail(r, "verdict", "expected pass or fail");
     free(v);
-    run->usage = rd_num(r, o, "usage");
-    run->shear_over_w = rd_num(r, o, "shear_over_w");
-    int has_ratio;   /* null for a case without bolts */
-    double ratio = rd_opt(r, o, "force_over_fy", &has_ratio);
-    run->force_over_fy = has_ratio ? ratio : (double)NAN;
-    run->theta_over_alpha = rd_num(r, o, "theta_over_alpha");
+    rd_columns(r, o, run, 0);
     run->margin = rd_num(r, o, "margin");
     const cJSON *gv = cJSON_GetObjectItemCaseSensitive(o, "governs");
     int lim = -1;
@@ -430,12 +453,10 @@ static void rd_run(rd_ctx *r, const cJSON *o, rb_batch_result *run, int design)
             rd_fail(r, "anchor_mode", "expected a mode of the concrete check");
         run->anchor_utilization = rd_num(r, o, "anchor_utilization");
     }
-    if (!design)
-        return;
-    run->design_factor = rd_opt(r, o, "design_factor", &run->has_factor);
-    run->factor_bound = cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(o,
-                                                 "design_factor_bound"));
-    run->gap_ratio = rd_opt(r, o, "gap_ratio", &run->has_gap);
+    if (design)
+        rd_columns(r, o, run, 1);
+    else
+        rb_batch_columns_fill(run, NULL, 1);
 }
 
 /* A case's digest must be that of the case as this writer prints it (its
@@ -466,14 +487,6 @@ static void rd_digest(rd_ctx *r, const cJSON *dg, const rb_batch_case *c,
     }
     free(text);
     cJSON_Delete(arr);
-}
-
-/* A number, or NaN for the null that a non-finite one was written as. */
-static double rd_num_or_nan(rd_ctx *r, const cJSON *o, const char *k)
-{
-    int has;
-    double v = rd_opt(r, o, k, &has);
-    return has ? v : (double)NAN;
 }
 
 #define LIMITS_EXPECTED "expected first-yield, usage, overturn, lift-off and, with " \

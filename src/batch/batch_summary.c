@@ -115,45 +115,27 @@ int rb_batch_verdict_parse(const char *s, rb_batch_verdict *v)
     return 0;
 }
 
+/* A column's mean and its governing value over the runs; a run without
+ * one (NaN) leaves the case without one: the design values are there only
+ * when every run has one. */
 void rb_batch_stats(const rb_batch_case *c, rb_batch_stat *mean, rb_batch_stat *max)
 {
     memset(mean, 0, sizeof *mean);
     memset(max, 0, sizeof *max);
-    size_t n_factor = 0, n_gap = 0;
     if (!has_results(c))
         return;
-    for (size_t m = 0; m < c->n_runs; m++) {
-        const rb_batch_result *r = &c->runs[m];
-        mean->usage += r->usage;
-        mean->shear_over_w += r->shear_over_w;
-        mean->force_over_fy += r->force_over_fy;
-        mean->theta_over_alpha += r->theta_over_alpha;
-        max->usage = fmax(max->usage, r->usage);
-        max->shear_over_w = fmax(max->shear_over_w, r->shear_over_w);
-        /* NaN, no rows, stays NaN in the mean and the maximum alike */
-        max->force_over_fy = m ? fmax(max->force_over_fy, r->force_over_fy) : r->force_over_fy;
-        max->theta_over_alpha = fmax(max->theta_over_alpha, r->theta_over_alpha);
-        if (r->has_factor) {
-            mean->design_factor += r->design_factor;
-            max->design_factor = n_factor ? fmin(max->design_factor, r->design_factor)
-                                          : r->design_factor;
-            n_factor++;
+    for (size_t k = 0; k < rb_batch_n_columns; k++) {
+        int least = rb_batch_columns[k].agg == RB_BATCH_AGG_MIN;
+        double sum = 0, top = c->runs[0].value[k];
+        for (size_t m = 0; m < c->n_runs; m++) {
+            double v = c->runs[m].value[k];
+            sum += v;
+            if (isnan(v) || isnan(top))
+                top = (double)NAN;
+            else if (m > 0)
+                top = least ? fmin(top, v) : fmax(top, v);
         }
-        if (r->has_gap) {
-            mean->gap_ratio += r->gap_ratio;
-            max->gap_ratio = n_gap ? fmax(max->gap_ratio, r->gap_ratio) : r->gap_ratio;
-            n_gap++;
-        }
+        mean->value[k] = sum / (double)c->n_runs;
+        max->value[k] = top;
     }
-    double n = (double)c->n_runs;
-    mean->usage /= n;
-    mean->shear_over_w /= n;
-    mean->force_over_fy /= n;
-    mean->theta_over_alpha /= n;
-    mean->has_factor = max->has_factor = n_factor == c->n_runs;
-    mean->has_gap = max->has_gap = n_gap == c->n_runs;
-    if (n_factor)
-        mean->design_factor /= (double)n_factor;
-    if (n_gap)
-        mean->gap_ratio /= (double)n_gap;
 }

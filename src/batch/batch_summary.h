@@ -4,17 +4,62 @@
 
 #include <cjson/cJSON.h>
 #include "batch_internal.h"
+#include "rockbolt/design.h"
+#include "rockbolt/solve.h"
 
 const char *rb_batch_verdict_str(rb_batch_verdict v);
 int rb_batch_verdict_parse(const char *s, rb_batch_verdict *v);
 
-/* Mean or maximum of each result over a case's runs; for the design
- * factor, whose smallest value governs, the "maximum" holds the minimum.
- * The design values are there (has_*) only when every run has one. */
+/* ---- The columns (batch_columns.c) ------------------------------------------
+ *
+ * One table of the numbers a run shows, in the order every output shows
+ * them: the text table, the CSV, the JSON (written and read back), the
+ * mean and the maximum of a case and JUnit's failure lines all loop over
+ * it. A new number is one line of the table (and its accessor). */
+
+/* What a column's number is taken from when a run is solved. */
 typedef struct {
-    double usage, shear_over_w, force_over_fy, theta_over_alpha;
-    int has_factor, has_gap;
-    double design_factor, gap_ratio;
+    const rb_result *result;
+    const rb_design_factor_result *factor; /* the case's own design factor;
+                                              NULL without design */
+    const rb_motion_design *design;        /* NULL without design */
+} rb_batch_source;
+
+typedef enum {
+    RB_BATCH_AGG_MAX,     /* the largest value governs */
+    RB_BATCH_AGG_MIN      /* the smallest does (a design factor) */
+} rb_batch_agg;
+
+typedef struct {
+    const char *name;     /* JSON key and CSV column */
+    const char *label;    /* the text table's column head */
+    const char *junit;    /* in JUnit's failure lines; NULL: not there */
+    int design;           /* 1: only in summaries with design */
+    int width, precision; /* in the text table */
+    const char *none_text, *none_csv; /* where the run has none (NaN) */
+    rb_batch_agg agg;
+    const char *agg_name; /* the key of the aggregate in "max" */
+    /* the run's value (NaN: none); design columns are asked only when the
+     * run's design search succeeded */
+    double (*of)(const rb_batch_source *src);
+    /* NULL, or 1 when the value is a bound: text marks it ">", the CSV
+     * and the JSON add a NAME_bound column */
+    int (*bound_of)(const rb_batch_source *src);
+} rb_batch_column;
+
+extern const rb_batch_column rb_batch_columns[];
+extern const size_t rb_batch_n_columns;
+
+/* Whether column k is in a summary whose design flag is design. */
+int rb_batch_column_shown(size_t k, int design);
+
+/* Fill the columns of run from src: design 0 the run's own, 1 the design's. */
+void rb_batch_columns_fill(rb_batch_result *run, const rb_batch_source *src, int design);
+
+/* Mean or maximum (the minimum for a column whose smallest value governs)
+ * of each column over a case's runs; NaN where a run has none. */
+typedef struct {
+    double value[RB_BATCH_MAX_COLUMNS];
 } rb_batch_stat;
 
 /* Zero when the case has no results (unreadable, error). */

@@ -21,22 +21,21 @@ static const char *upper_verdict(rb_batch_verdict v)
     return "ERROR";
 }
 
-static void text_nums(rb_strbuf *b, double usage, double vw, double ff, double ta,
-                      int design, int has_f, double f, int bound, int has_g, double g)
+/* The columns' numbers of a row of the table: a run's, or a case's mean
+ * or maximum (bounds 0). */
+static void text_nums(rb_strbuf *b, const double *value, unsigned bounds, int design)
 {
-    if (isnan(ff))   /* no bolts (rb_result_governing) */
-        rb_strbuf_printf(b, " %7.3f %7.3f %7s %7.3f", usage, vw, "n/a", ta);
-    else
-        rb_strbuf_printf(b, " %7.3f %7.3f %7.3f %7.3f", usage, vw, ff, ta);
-    if (design) {
-        if (has_f)
-            rb_strbuf_printf(b, " %s%7.3f", bound ? ">" : " ", f);
+    for (size_t k = 0; k < rb_batch_n_columns; k++) {
+        const rb_batch_column *col = &rb_batch_columns[k];
+        if (!rb_batch_column_shown(k, design))
+            continue;
+        if (isnan(value[k]))
+            rb_strbuf_printf(b, " %*s", col->width, col->none_text);
+        else if (col->bound_of)
+            rb_strbuf_printf(b, " %s%*.*f", (bounds >> k) & 1u ? ">" : " ", col->width - 1,
+                             col->precision, value[k]);
         else
-            rb_strbuf_puts(b, "      n/a");
-        if (has_g)
-            rb_strbuf_printf(b, " %8.4f", g);
-        else
-            rb_strbuf_puts(b, "     none");
+            rb_strbuf_printf(b, " %*.*f", col->width, col->precision, value[k]);
     }
     rb_strbuf_puts(b, "\n");
 }
@@ -114,9 +113,7 @@ static void text_case(rb_strbuf *b, const rb_batch_case *c, int design)
         rb_strbuf_printf(b, "%-24.24s %-18s %-10s",
                        m == 0 ? rb_text_escape_buf(c->tag, tag, sizeof tag) : "", motion,
                        r->pass ? "pass" : "FAIL");
-        text_nums(b, r->usage, r->shear_over_w, r->force_over_fy, r->theta_over_alpha,
-                  design, r->has_factor, r->design_factor, r->factor_bound,
-                  r->has_gap, r->gap_ratio);
+        text_nums(b, r->value, r->bounds, design);
         if (!r->pass) {
             /* why it fails, as the run's verdict line says it */
             char why[512];
@@ -128,14 +125,10 @@ static void text_case(rb_strbuf *b, const rb_batch_case *c, int design)
         rb_batch_stat mean, max;
         rb_batch_stats(c, &mean, &max);
         rb_strbuf_printf(b, "%-24s %-18s %-10s", "", "(mean)", "");
-        text_nums(b, mean.usage, mean.shear_over_w, mean.force_over_fy,
-                  mean.theta_over_alpha, design, mean.has_factor, mean.design_factor,
-                  0, mean.has_gap, mean.gap_ratio);
+        text_nums(b, mean.value, 0, design);
         rb_strbuf_printf(b, "%-24s %-18s %-10s", "", "(max)",
                        c->verdict == RB_BATCH_PASS ? "PASS" : "FAIL");
-        text_nums(b, max.usage, max.shear_over_w, max.force_over_fy,
-                  max.theta_over_alpha, design, max.has_factor, max.design_factor,
-                  0, max.has_gap, max.gap_ratio);
+        text_nums(b, max.value, 0, design);
     }
     if (c->has_code)
         text_code(b, c);
@@ -146,10 +139,10 @@ static void text_case(rb_strbuf *b, const rb_batch_case *c, int design)
 void rb_batch_text_head(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_counts *n)
 {
     (void)n;
-    rb_strbuf_printf(b, "%-24s %-18s %-10s %7s %7s %7s %7s", "tag", "motion", "verdict",
-                   "usage", "V/W", "F/Fy", "th/alp");
-    if (s->design)
-        rb_strbuf_printf(b, " %8s %8s", "factor", "gap");
+    rb_strbuf_printf(b, "%-24s %-18s %-10s", "tag", "motion", "verdict");
+    for (size_t k = 0; k < rb_batch_n_columns; k++)
+        if (rb_batch_column_shown(k, s->design))
+            rb_strbuf_printf(b, " %*s", rb_batch_columns[k].width, rb_batch_columns[k].label);
     rb_strbuf_puts(b, "\n");
 }
 
@@ -210,6 +203,25 @@ static void csv_num(rb_strbuf *b, double v)
         rb_strbuf_puts(b, ",");
 }
 
+/* The run's numbers, one field per column (and its bound's). */
+static void csv_columns(rb_strbuf *b, const rb_batch_result *r, int design)
+{
+    for (size_t k = 0; k < rb_batch_n_columns; k++) {
+        const rb_batch_column *col = &rb_batch_columns[k];
+        double v = r->value[k];
+        if (!rb_batch_column_shown(k, design))
+            continue;
+        if (isnan(v))
+            rb_strbuf_printf(b, ",%s", col->none_csv);
+        else
+            rb_strbuf_printf(b, ",%.6g", v);
+        if (col->bound_of && isnan(v))
+            rb_strbuf_puts(b, ",");
+        else if (col->bound_of)
+            rb_strbuf_printf(b, ",%u", (r->bounds >> k) & 1u);
+    }
+}
+
 /* The case's fragility, the same on each of its rows: its intensity
  * (with the frequency of a spectral acceleration), level, six columns per
  * limit state, or why it has none. */
@@ -263,10 +275,15 @@ static void csv_fragility(rb_strbuf *b, const rb_batch_fragility *f,
 void rb_batch_csv_head(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_counts *n)
 {
     (void)n;
-    rb_strbuf_puts(b, "index,source,line,tag,motion,governing,verdict,case_verdict,"
-                    "usage,shear_over_w,force_over_fy,theta_over_alpha");
-    if (s->design)
-        rb_strbuf_puts(b, ",design_factor,design_factor_bound,gap_ratio");
+    rb_strbuf_puts(b, "index,source,line,tag,motion,governing,verdict,case_verdict");
+    for (size_t k = 0; k < rb_batch_n_columns; k++) {
+        const rb_batch_column *col = &rb_batch_columns[k];
+        if (!rb_batch_column_shown(k, s->design))
+            continue;
+        rb_strbuf_printf(b, ",%s", col->name);
+        if (col->bound_of)
+            rb_strbuf_printf(b, ",%s_bound", col->name);
+    }
     if (s->fragility) {
         rb_strbuf_puts(b, ",fragility_intensity,fragility_intensity_freq_hz,"
                         "fragility_level_g");
@@ -298,7 +315,11 @@ void rb_batch_csv_case(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_c
         char err[1400];
         const rb_diag *e = rb_batch_case_error(c);
         csv_head(b, c, "", 0, rb_batch_verdict_str(c->verdict));
-        rb_strbuf_puts(b, s->design ? ",,,,,,,,,,,,,,,,,," : ",,,,,,,,,,,,,,,");
+        for (size_t k = 0; k < rb_batch_n_columns; k++)
+            if (rb_batch_column_shown(k, s->design))
+                rb_strbuf_puts(b, rb_batch_columns[k].bound_of ? ",," : ",");
+        /* validity_warnings to reason; the error follows */
+        rb_strbuf_puts(b, ",,,,,,,,,,,");
         for (int k = 0; s->fragility && k < FRAGILITY_COLUMNS; k++)
             rb_strbuf_puts(b, ",");
         if (e->line > 0)
@@ -314,22 +335,7 @@ void rb_batch_csv_case(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_c
     for (size_t m = 0; m < c->n_runs; m++) {
         const rb_batch_result *r = &c->runs[m];
         csv_head(b, c, r->motion, m == g, r->pass ? "pass" : "fail");
-        if (isnan(r->force_over_fy))   /* no bolts (rb_result_governing) */
-            rb_strbuf_printf(b, ",%.6g,%.6g,n/a,%.6g", r->usage, r->shear_over_w,
-                             r->theta_over_alpha);
-        else
-            rb_strbuf_printf(b, ",%.6g,%.6g,%.6g,%.6g", r->usage, r->shear_over_w,
-                             r->force_over_fy, r->theta_over_alpha);
-        if (s->design) {
-            if (r->has_factor)
-                rb_strbuf_printf(b, ",%.6g,%d", r->design_factor, r->factor_bound);
-            else
-                rb_strbuf_puts(b, ",,");
-            if (r->has_gap)
-                rb_strbuf_printf(b, ",%.6g", r->gap_ratio);
-            else
-                rb_strbuf_puts(b, ",");
-        }
+        csv_columns(b, r, s->design);
         if (s->fragility && c->fragility)
             csv_fragility(b, c->fragility, s->intensity);
         else
