@@ -96,7 +96,8 @@ static int whole_case(const char *case_path, int nt, double target_s)
         printf("rockbolt design %s: load %.3f s, searches %.3f s, total %.3f s "
                "(target %g s: %s); factors %.2f / %.2f\n", case_path, t_load, t_design,
                t_load + t_design, target_s, t_load + t_design < target_s ? "met" : "NOT met",
-               cd.motions[0].no_yield.factor, cd.motions[0].no_break.factor);
+               cd.motions[0].factor[RB_CRIT_NO_YIELD].factor,
+               cd.motions[0].factor[RB_CRIT_NO_BREAK].factor);
     else
         fprintf(stderr, "design: %s: %s: %s\n", rb_status_str(st), diag.key, diag.msg);
     rb_case_design_free(&cd);

@@ -49,9 +49,13 @@ extern const rb_enum_name rb_route_applied_names[]; /* rb_route_applied */
 
 typedef enum {
     RB_CRIT_NO_YIELD = 0,   /* bolts stay elastic */
-    RB_CRIT_NO_BREAK        /* bolts may yield; usage below usage_limit, no overturn */
+    RB_CRIT_NO_BREAK,       /* bolts may yield; usage below usage_limit, no overturn */
+    RB_N_CRITERIA           /* the design finds a factor for each kind above */
 } rb_criterion_kind;
 extern const rb_enum_name rb_criterion_names[];     /* rb_criterion_kind */
+/* What each kind asks of the bolts, for people (the HTML summary's heads),
+ * indexed by kind. */
+extern const char *const rb_criterion_titles[RB_N_CRITERIA];
 
 /* What a validity warning does to the verdict. */
 typedef enum {

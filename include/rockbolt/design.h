@@ -292,10 +292,11 @@ void rb_sweep_free(rb_sweep *s);
 
 /* The design of one motion of a case. */
 typedef struct {
-    rb_design_factor_result no_yield;  /* bolts stay elastic */
-    rb_design_factor_result no_break;  /* bolts may yield, usage below the
-                                          case's limit (1.0 unless the case
-                                          sets one for no-break) */
+    /* one per criterion kind (rb_criterion_kind), under the case's
+     * design.factor_criteria of that kind: no yield, bolts stay elastic;
+     * no break, bolts may yield, usage below the case's limit (1.0
+     * unless the case sets one for no-break) */
+    rb_design_factor_result factor[RB_N_CRITERIA];
     int has_gap;                       /* 0 for a model without bolts */
     rb_gap_result gap;                 /* against the case's own criteria */
     rb_sweep *sweeps;                  /* owned: the case's amplitude sweeps
@@ -304,7 +305,8 @@ typedef struct {
 } rb_motion_design;
 
 typedef struct {
-    rb_criteria no_yield, no_break, gap_criteria; /* as judged */
+    rb_criteria factor_criteria[RB_N_CRITERIA]; /* as judged, by kind */
+    rb_criteria gap_criteria;          /* as judged */
     rb_motion_design *motions;         /* owned, one per motion of the case */
     size_t n_motions;
     rb_sweep *sweeps;                  /* owned: the frequency sweeps */

@@ -14,6 +14,8 @@ const rb_enum_name rb_integrator_names[] = {
     {"auto", RB_INTEGRATOR_AUTO}, {"rk45", RB_INTEGRATOR_RK45}, {NULL, 0}};
 const rb_enum_name rb_criterion_names[] = {
     {"no-yield", RB_CRIT_NO_YIELD}, {"no-break", RB_CRIT_NO_BREAK}, {NULL, 0}};
+const char *const rb_criterion_titles[RB_N_CRITERIA] = {
+    [RB_CRIT_NO_YIELD] = "bolts elastic", [RB_CRIT_NO_BREAK] = "bolts not breaking"};
 const rb_enum_name rb_validity_mode_names[] = {
     {"warn", RB_VALIDITY_WARN}, {"fail", RB_VALIDITY_FAIL}, {NULL, 0}};
 const rb_enum_name rb_confirm_mode_names[] = {

@@ -213,16 +213,21 @@ static void design(rb_strbuf *b, const rb_report *rep, const rb_out_units *u)
     char name[32], text[640];
     rb_strbuf_puts(b, "<div class=\"scroll\"><table class=\"design\">\n<caption>Design "
                       "factor of each motion: A* over the largest floor peak the design "
-                      "withstands</caption>\n<tr><th>motion</th><th>bolts elastic</th>"
-                      "<th>bolts not breaking</th><th>recommended gap</th></tr>\n");
+                      "withstands</caption>\n<tr><th>motion</th>");
+    for (int k = 0; k < RB_N_CRITERIA; k++) {
+        rb_strbuf_puts(b, "<th>");
+        rb_plot_escape(b, rb_criterion_titles[k]);
+        rb_strbuf_puts(b, "</th>");
+    }
+    rb_strbuf_puts(b, "<th>recommended gap</th></tr>\n");
     for (size_t i = 0; i < rep->n_motions && i < d->n_motions; i++) {
         const rb_motion_design *md = &d->motions[i];
         rb_strbuf_puts(b, "<tr>");
         cell_text(b, "td", NULL, motion_name(&rep->motions[i], i, name, sizeof name));
-        rb_design_factor_describe(&md->no_yield, u, rep->derived.g, text, sizeof text);
-        cell_text(b, "td", NULL, text);
-        rb_design_factor_describe(&md->no_break, u, rep->derived.g, text, sizeof text);
-        cell_text(b, "td", NULL, text);
+        for (int k = 0; k < RB_N_CRITERIA; k++) {
+            rb_design_factor_describe(&md->factor[k], u, rep->derived.g, text, sizeof text);
+            cell_text(b, "td", NULL, text);
+        }
         if (md->has_gap)
             rb_gap_describe(&md->gap, u, text, sizeof text);
         cell_text(b, "td", NULL, md->has_gap ? text : "no bolts");
@@ -232,7 +237,7 @@ static void design(rb_strbuf *b, const rb_report *rep, const rb_out_units *u)
     rb_strbuf_puts(b, "<p class=\"criterion\">The recommended gap is bounded by the ");
     rb_plot_escape(b, rb_enum_str(rb_criterion_names, (int)d->gap_criteria.kind));
     rb_strbuf_printf(b, " criterion; the design factor without breaking by usage limit "
-                        "%.2f.</p>\n", d->no_break.usage_limit);
+                        "%.2f.</p>\n", d->factor_criteria[RB_CRIT_NO_BREAK].usage_limit);
     if (!d->has_code)
         return;
     const rb_code_result *k = &d->code;

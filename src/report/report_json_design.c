@@ -125,8 +125,14 @@ void rb_report_json_motion_design(rb_jctx *cx, cJSON *motion_o, const rb_report 
     md = &d->motions[i];
     o = rb_j_obj(cx, motion_o, "design");
     f = rb_j_obj(cx, o, "design_factor");
-    add_factor(cx, f, "no_yield", &md->no_yield, &d->no_yield);
-    add_factor(cx, f, "no_break", &md->no_break, &d->no_break);
+    for (int k = 0; k < RB_N_CRITERIA; k++) {
+        char key[32];   /* "no_yield": the kind's name as a key */
+        snprintf(key, sizeof key, "%s", rb_enum_str(rb_criterion_names, k));
+        for (char *p = key; *p; p++)
+            if (*p == '-')
+                *p = '_';
+        add_factor(cx, f, key, &md->factor[k], &d->factor_criteria[k]);
+    }
     add_gap(cx, o, md, &d->gap_criteria);
     add_sweeps(cx, o, "amplitude_sweeps", md->sweeps, md->n_sweeps);
 }

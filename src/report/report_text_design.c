@@ -237,6 +237,18 @@ static void factor_vars(const rb_report *r, rb_tvars *t, const char *num, const 
     rb_tv_str(t, text, buf);
 }
 
+#define FACTOR_NAME_MAX 40
+
+/* A kind's variables: factor_no_yield and factor_no_yield_text. */
+static void factor_names(int kind, char *num, char *num_text)
+{
+    snprintf(num, FACTOR_NAME_MAX, "factor_%s", rb_enum_str(rb_criterion_names, kind));
+    for (char *p = num; *p; p++)
+        if (*p == '-')
+            *p = '_';
+    snprintf(num_text, FACTOR_NAME_MAX, "%s_text", num);
+}
+
 rb_status rb_report_text_motion_design(const rb_report *r, size_t i, rb_txt_arena *a,
                                        rb_tlist *out)
 {
@@ -245,7 +257,7 @@ rb_status rb_report_text_motion_design(const rb_report *r, size_t i, rb_txt_aren
     const rb_gap_result *g;
     rb_tscope *sc;
     rb_tvars t;
-    char *text;
+    char *text, *names;
     out->name = "motion_design";
     out->items = NULL;
     out->n = 0;
@@ -253,16 +265,21 @@ rb_status rb_report_text_motion_design(const rb_report *r, size_t i, rb_txt_aren
         return RB_OK;
     md = &d->motions[i];
     g = &md->gap;
-    if (!(sc = new_scope(a, &t, 1)) || !(text = arena_alloc(a, 3, 640)))
+    /* a sentence per kind and the gap's, and each kind's two names */
+    if (!(sc = new_scope(a, &t, 1)) || !(text = arena_alloc(a, RB_N_CRITERIA + 1, 640))
+        || !(names = arena_alloc(a, RB_N_CRITERIA, 2 * FACTOR_NAME_MAX)))
         return RB_ERR_NOMEM;
-    factor_vars(r, &t, "factor_no_yield", "factor_no_yield_text", &md->no_yield, text, 640);
-    factor_vars(r, &t, "factor_no_break", "factor_no_break_text", &md->no_break,
-                text + 640, 640);
-    rb_tv_num(&t, "no_break_usage_limit", d->no_break.usage_limit);
+    for (int k = 0; k < RB_N_CRITERIA; k++) {
+        char *num = names + 2 * FACTOR_NAME_MAX * k, *num_text = num + FACTOR_NAME_MAX;
+        factor_names(k, num, num_text);
+        factor_vars(r, &t, num, num_text, &md->factor[k], text + 640 * k, 640);
+    }
+    rb_tv_num(&t, "no_break_usage_limit", d->factor_criteria[RB_CRIT_NO_BREAK].usage_limit);
     rb_tv_str(&t, "gap_criterion", rb_enum_str(rb_criterion_names, (int)d->gap_criteria.kind));
     if (md->has_gap)
-        rb_gap_describe(g, rb_out_units_of(r->kase->output_units), text + 1280, 640);
-    rb_tv_str(&t, "gap_text", md->has_gap ? text + 1280 : NULL);
+        rb_gap_describe(g, rb_out_units_of(r->kase->output_units),
+                        text + 640 * RB_N_CRITERIA, 640);
+    rb_tv_str(&t, "gap_text", md->has_gap ? text + 640 * RB_N_CRITERIA : NULL);
     rb_tv_int(&t, "has_yield_run", md->has_gap && g->yield_run);
     rb_tv_num(&t, "yield_initial_gap_ratio", g->yield_initial_gap_ratio);
     rb_tv_num(&t, "yield_final_gap_left", g->yield_final_gap_ratio[RB_LEFT]);

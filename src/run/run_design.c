@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "rockbolt/aci17.h"
+#include "rockbolt/names.h"
 #include "rockbolt/run.h"
 #include "util/pool.h"
 
@@ -65,24 +66,26 @@ typedef struct {
 
 enum { JOB_FACTORS, JOB_GAP, JOB_SWEEPS, N_JOBS };
 
+/* The factor of each criterion kind (the case's own only, for the brief
+ * design of a batch), each under its kind's criteria. */
 static rb_status factors(searches *s, rb_diag *diag)
 {
     const rb_case *c = s->c;
-    const rb_motion *mo = &s->cm->motion;
-    rb_status st;
-    if (s->full || c->criteria.kind == RB_CRIT_NO_YIELD) {
-        step(s->pg, s->cm->name, "design factor (no yield)");
-        st = rb_design_factor(&c->model, mo, &c->solve, &s->cd->no_yield, &c->design,
-                              s->n_threads, s->memo, &s->md->no_yield, diag);
+    for (int k = 0; k < RB_N_CRITERIA; k++) {
+        char what[64];
+        if (!s->full && (int)c->criteria.kind != k)
+            continue;
+        /* "design factor (no yield)": the kind's name in words */
+        snprintf(what, sizeof what, "design factor (%s)", rb_enum_str(rb_criterion_names, k));
+        for (char *p = what; *p; p++)
+            if (*p == '-')
+                *p = ' ';
+        step(s->pg, s->cm->name, what);
+        rb_status st = rb_design_factor(&c->model, &s->cm->motion, &c->solve,
+                                        &s->cd->factor_criteria[k], &c->design, s->n_threads,
+                                        s->memo, &s->md->factor[k], diag);
         if (st != RB_OK)
-            return fail_at(diag, s->cm->name, "design factor (no yield)", st);
-    }
-    if (s->full || c->criteria.kind == RB_CRIT_NO_BREAK) {
-        step(s->pg, s->cm->name, "design factor (no break)");
-        st = rb_design_factor(&c->model, mo, &c->solve, &s->cd->no_break, &c->design,
-                              s->n_threads, s->memo, &s->md->no_break, diag);
-        if (st != RB_OK)
-            return fail_at(diag, s->cm->name, "design factor (no break)", st);
+            return fail_at(diag, s->cm->name, what, st);
     }
     return RB_OK;
 }
@@ -204,16 +207,16 @@ static rb_status design_sweeps(const rb_case *c, int n_threads, rb_case_design *
 
 void rb_run_design_criteria(const rb_case *c, rb_case_design *out)
 {
-    out->no_yield = c->criteria;
-    out->no_yield.kind = RB_CRIT_NO_YIELD;
-    out->no_break = c->criteria;
-    out->no_break.kind = RB_CRIT_NO_BREAK;
+    for (int k = 0; k < RB_N_CRITERIA; k++) {
+        out->factor_criteria[k] = c->criteria;
+        out->factor_criteria[k].kind = (rb_criterion_kind)k;
+    }
     /* a case judged on "no yield" still has a no-break factor: at the
      * default usage limit, not whatever the no-yield case left there */
     if (c->criteria.kind != RB_CRIT_NO_BREAK) {
         rb_criteria def;
         rb_criteria_init(&def);
-        out->no_break.usage_limit = def.usage_limit;
+        out->factor_criteria[RB_CRIT_NO_BREAK].usage_limit = def.usage_limit;
     }
     out->gap_criteria = c->criteria;
 }
@@ -230,7 +233,7 @@ rb_status rb_run_motion_design(const rb_case *c, size_t m, rb_run_design_scope s
 const rb_design_factor_result *rb_run_own_factor(const rb_case *c,
                                                  const rb_motion_design *md)
 {
-    return c->criteria.kind == RB_CRIT_NO_YIELD ? &md->no_yield : &md->no_break;
+    return &md->factor[c->criteria.kind];
 }
 
 rb_status rb_run_design(const rb_case *c, int n_threads, rb_case_design *out,
@@ -243,7 +246,7 @@ rb_status rb_run_design(const rb_case *c, int n_threads, rb_case_design *out,
         n_amp += c->sweeps[i].kind == RB_SWEEP_AMPLITUDE;
         n_freq += c->sweeps[i].kind == RB_SWEEP_FREQUENCY;
     }
-    pg.total = c->n_motions * (2 + (c->model.bolt_model != RB_BOLT_NONE) + n_amp)
+    pg.total = c->n_motions * (RB_N_CRITERIA + (c->model.bolt_model != RB_BOLT_NONE) + n_amp)
         + n_freq + (c->has_code != 0);
     memset(out, 0, sizeof *out);
     rb_run_design_criteria(c, out);

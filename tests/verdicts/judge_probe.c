@@ -128,19 +128,19 @@ static int probe_design(const char *path)
     memset(&cd, 0, sizeof cd);
     rb_run_design_criteria(&c, &cd);
     for (size_t i = 0; i < c.n_motions; i++) {
-        const rb_criteria *crit[2] = {&cd.no_yield, &cd.no_break};
-        for (int k = 0; k < 2; k++) {
+        const rb_criteria *crit = cd.factor_criteria;
+        for (int k = 0; k < RB_N_CRITERIA; k++) {
             rb_design_factor_result f;
             size_t n_pass = 0, n_fail = 0;
-            if (rb_design_factor(&c.model, &c.motions[i].motion, &c.solve, crit[k],
+            if (rb_design_factor(&c.model, &c.motions[i].motion, &c.solve, &crit[k],
                                  &c.design, 2, NULL, &f, NULL) != RB_OK) {
                 printf("%s: motion %zu: the search fails\n", path, i + 1);
                 bad = 1;
                 continue;
             }
             int at_pass = f.level_mps2 > 0
-                          ? verdict_at(&c, i, crit[k], f.level_mps2, &n_pass) : 1;
-            int at_fail = f.no_failure ? 0 : verdict_at(&c, i, crit[k], f.fail_mps2, &n_fail);
+                          ? verdict_at(&c, i, &crit[k], f.level_mps2, &n_pass) : 1;
+            int at_fail = f.no_failure ? 0 : verdict_at(&c, i, &crit[k], f.fail_mps2, &n_fail);
             printf("%s: motion %zu %s: level %.9g A*, fails at %.9g A*, confirm_fails %ld, "
                    "confirming runs at the level %zu and at the failing one %zu\n", path,
                    i + 1, k ? "no-break" : "no-yield", f.level_astar, f.fail_astar,
