@@ -19,6 +19,7 @@
 #include "report_internal.h"
 #include "rockbolt/jsonnum.h"
 #include "report_json_build.h"
+#include "report_peaks.h"
 
 static void add_model(rb_jctx *cx, cJSON *root, const rb_model *m)
 {
@@ -169,22 +170,7 @@ static void add_peaks(rb_jctx *cx, cJSON *res_o, const rb_result *r,
     rb_j_num(cx, o, "weight_n", r->weight_n);
     rb_j_num(cx, o, "v0_n", n->v0_n);
     rb_j_num(cx, o, "delta", r->delta);
-    o = rb_j_obj(cx, res_o, "peaks");
-    rb_j_num(cx, o, "max_theta_rad", r->max_theta_rad);
-    rb_j_num(cx, o, "max_theta_over_alpha", r->max_theta_over_alpha);
-    rb_j_num(cx, o, "max_u_m", r->max_u_m);
-    rb_j_num(cx, o, "max_u_over_ustatic", r->max_u_over_ustatic);
-    rb_j_num(cx, o, "max_shear_elastic_n", r->max_shear_elastic_n);
-    rb_j_norm(cx, o, "max_shear_elastic_over_w", n->shear_elastic_over_w);
-    rb_j_norm(cx, o, "max_shear_elastic_over_v0", n->shear_elastic_over_v0);
-    rb_j_num(cx, o, "max_shear_total_n", r->max_shear_total_n);
-    rb_j_norm(cx, o, "max_shear_total_over_w", n->shear_total_over_w);
-    rb_j_norm(cx, o, "max_shear_total_over_v0", n->shear_total_over_v0);
-    rb_j_num(cx, o, "max_friction_demand", r->max_friction_demand);
-    rb_j_num(cx, o, "min_vertical_reaction_n", r->min_vertical_reaction_n);
-    rb_j_norm(cx, o, "min_vertical_reaction_over_w", n->min_vertical_over_w);
-    rb_j_pair(cx, o, "max_bolt_force_n", r->max_bolt_force_n);
-    rb_j_pair_norm(cx, o, "max_bolt_force_over_fy", n->force_over_fy);
+    rb_report_json_peaks(cx, rb_j_obj(cx, res_o, "peaks"), r, n);
 }
 
 static void add_rows_outcome(rb_jctx *cx, cJSON *res_o, const rb_result *r,

@@ -16,6 +16,7 @@
 #include "rockbolt/version.h"
 #include "rockbolt/names.h"
 #include "report_internal.h"
+#include "report_peaks.h"
 
 /* The report's output units (rb_case.output_units). */
 static const rb_out_units *out_units(const rb_report *r)
@@ -167,18 +168,10 @@ static void motion_head_vars(rb_tvars *t, const rb_report *r, size_t i,
     rb_tv_num(t, "t_end_s", res->t_end_s);
     rb_tv_num(t, "max_u_mm", res->max_u_m * 1e3);
     rb_tv_num(t, "u_static_mm", res->u_static_m * 1e3);
-    rb_tv_num(t, "max_u_over_ustatic", res->max_u_over_ustatic);
-    rb_tv_num(t, "max_theta_rad", res->max_theta_rad);
-    rb_tv_num(t, "max_theta_over_alpha", res->max_theta_over_alpha);
     rb_tv_num(t, "shear_elastic_kn", res->max_shear_elastic_n * 1e-3);
-    rb_tv_num(t, "shear_elastic_over_w", n->shear_elastic_over_w);
-    rb_tv_num(t, "shear_elastic_over_v0", n->shear_elastic_over_v0);
     rb_tv_num(t, "shear_total_kn", res->max_shear_total_n * 1e-3);
-    rb_tv_num(t, "shear_total_over_w", n->shear_total_over_w);
-    rb_tv_num(t, "shear_total_over_v0", n->shear_total_over_v0);
     rb_tv_num(t, "v0_kn", n->v0_n * 1e-3);
-    rb_tv_num(t, "friction_demand", res->max_friction_demand);
-    rb_tv_num(t, "min_vertical_over_w", n->min_vertical_over_w);
+    rb_report_text_peaks(t, res, n);
     const rb_out_units *u = out_units(r);
     rb_tv_num(t, "max_u", res->max_u_m / u->small_length_f);
     rb_tv_num(t, "u_static", res->u_static_m / u->small_length_f);
