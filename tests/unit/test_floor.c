@@ -13,7 +13,6 @@
 #include <stdlib.h>
 #include "harness.h"
 #include "rockbolt/motion.h"
-#include "../../src/motion/sdof.h"
 
 #define PI 3.14159265358979323846
 

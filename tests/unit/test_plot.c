@@ -9,15 +9,12 @@
 #include <stdlib.h>
 #include <string.h>
 #include "harness.h"
+#include "report_fixture.h"
+#include "../../src/plot/plot_internal.h"
 #include "rockbolt/rockbolt.h"
 #include "rockbolt/plot.h"
-#include "../../src/plot/plot_internal.h"
 
-static rb_case kase;
-static rb_case_motion cm;
-static rb_result res;
-static rb_report_motion rm;
-static rb_report rep;
+static report_fixture fx;
 
 static size_t count(const char *s, const char *needle)
 {
@@ -67,40 +64,22 @@ static rb_status solve(double a_over_astar, double duration, double dt)
 {
     rb_derived d;
     rb_solve_opts o;
-    rb_result_free(&res);
-    rb_model_derive(&kase.model, &d, NULL);
-    cm.motion.amplitude_mps2 = a_over_astar * d.a_star_mps2;
-    cm.motion.duration_s = duration;
+    rb_result_free(&fx.res);
+    rb_model_derive(&fx.kase.model, &d, NULL);
+    fx.cm.motion.amplitude_mps2 = a_over_astar * d.a_star_mps2;
+    fx.cm.motion.duration_s = duration;
     rb_solve_opts_init(&o);
     o.history_dt_s = dt;
-    rb_status st = rb_solve_run(&kase.model, &cm.motion, &o, &res, NULL);
-    rb_judge(&kase.criteria, &res, &rm.verdict);
-    rb_report_conclude(&rep);
+    rb_status st = rb_solve_run(&fx.kase.model, &fx.cm.motion, &o, &fx.res, NULL);
+    rb_judge(&fx.kase.criteria, &fx.res, &fx.rm.verdict);
+    rb_report_conclude(&fx.rep);
     return st;
 }
 
 static void setup(void)
 {
-    memset(&kase, 0, sizeof kase);
-    rb_model_reference(&kase.model);
-    rb_solve_opts_init(&kase.solve);
-    rb_criteria_init(&kase.criteria);
-    kase.path = "cases/x.yaml";
-    kase.name = "pump & <motor> \"A\"";
-    cm.name = "harmonic <4 Hz> & 'more'";
-    cm.source = "harmonic";
-    rb_motion_init(&cm.motion);
-    cm.motion.kind = RB_MOTION_HARMONIC;
-    cm.motion.freq_hz = 4;
-    kase.motions = &cm;
-    kase.n_motions = 1;
-    rm.motion = &cm;
-    rm.result = &res;
-    rep.kase = &kase;
-    CHECK(rb_model_derive(&kase.model, &rep.derived, NULL) == RB_OK);
-    rep.motions = &rm;
-    rep.n_motions = 1;
-    rb_report_conclude(&rep);
+    report_fixture_init(&fx, "pump & <motor> \"A\"", "harmonic <4 Hz> & 'more'", "harmonic");
+    rb_report_conclude(&fx.rep);
 }
 
 static void test_history_figure(void)
@@ -114,12 +93,12 @@ static void test_history_figure(void)
     size_t i, sub, n_rows;
     rb_diag_clear(&d);
     CHECK(solve(0.6, 8.0, 0.005) == RB_OK);
-    CHECK(res.history && res.history->n > 100);
-    CHECK(res.overturned && (res.broken[0] || res.broken[1]));
-    if (!res.history)
+    CHECK(fx.res.history && fx.res.history->n > 100);
+    CHECK(fx.res.overturned && (fx.res.broken[0] || fx.res.broken[1]));
+    if (!fx.res.history)
         return;
-    n_rows = res.history->n;
-    CHECK(rb_plot_history_svg(&rep, 0, &svg, &d) == RB_OK);
+    n_rows = fx.res.history->n;
+    CHECK(rb_plot_history_svg(&fx.rep, 0, &svg, &d) == RB_OK);
     CHECK(svg != NULL);
     if (!svg)
         return;
@@ -132,8 +111,8 @@ static void test_history_figure(void)
         CHECK(count(svg, key) == 1);
     }
     /* markers: every event the result has, and no other */
-    CHECK(count(svg, "class=\"marker yield\"") == (size_t)(res.yielded[0] + res.yielded[1]));
-    CHECK(count(svg, "class=\"marker break\"") == (size_t)(res.broken[0] + res.broken[1]));
+    CHECK(count(svg, "class=\"marker yield\"") == (size_t)(fx.res.yielded[0] + fx.res.yielded[1]));
+    CHECK(count(svg, "class=\"marker break\"") == (size_t)(fx.res.broken[0] + fx.res.broken[1]));
     CHECK(count(svg, "class=\"marker overturn\"") == 1);
     CHECK(strstr(svg, ">overturn ") != NULL);
     /* the stages it went through are shaded, and all five named */
@@ -157,9 +136,9 @@ static void test_history_figure(void)
     free(svg);
 
     /* a NaN sample breaks the line instead of reaching the file */
-    res.history->theta[n_rows / 2] = NAN;
-    res.history->u[n_rows / 3] = HUGE_VAL;
-    CHECK(rb_plot_history_svg(&rep, 0, &svg, &d) == RB_OK);
+    fx.res.history->theta[n_rows / 2] = NAN;
+    fx.res.history->u[n_rows / 3] = HUGE_VAL;
+    CHECK(rb_plot_history_svg(&fx.rep, 0, &svg, &d) == RB_OK);
     CHECK(svg && !has_nonfinite(svg));
     CHECK(svg && path_points(svg, "theta", &sub) == n_rows - 1 && sub == 2);
     CHECK(svg && path_points(svg, "u", &sub) == n_rows - 1 && sub == 2);
@@ -167,21 +146,21 @@ static void test_history_figure(void)
     free(svg);
 
     /* no bolts to divide by: engineering units instead */
-    res.fy_row_n = 0;
-    res.capacity_j = 0;
-    CHECK(rb_plot_history_svg(&rep, 0, &svg, &d) == RB_OK);
+    fx.res.fy_row_n = 0;
+    fx.res.capacity_j = 0;
+    CHECK(rb_plot_history_svg(&fx.rep, 0, &svg, &d) == RB_OK);
     CHECK(svg && strstr(svg, "bolt force (kN)") != NULL);
     CHECK(svg && strstr(svg, "absorbed energy (J)") != NULL);
     CHECK(svg && !has_nonfinite(svg));
     free(svg);
     /* in the case's output units */
-    kase.output_units = RB_UNITS_US;
-    CHECK(rb_plot_history_svg(&rep, 0, &svg, &d) == RB_OK);
+    fx.kase.output_units = RB_UNITS_US;
+    CHECK(rb_plot_history_svg(&fx.rep, 0, &svg, &d) == RB_OK);
     CHECK(svg && strstr(svg, "bolt force (kip)") != NULL);
     CHECK(svg && strstr(svg, "absorbed energy (ft-lbf)") != NULL);
     CHECK(svg && strstr(svg, "base shear / W (-)") != NULL);
     free(svg);
-    kase.output_units = RB_UNITS_SI;
+    fx.kase.output_units = RB_UNITS_SI;
 }
 
 /* Hysteresis: force against elongation per row, moment against rotation,
@@ -192,7 +171,7 @@ static void test_hysteresis(void)
     rb_diag d;
     rb_diag_clear(&d);
     CHECK(solve(0.6, 2.0, 0.005) == RB_OK);
-    CHECK(rb_plot_hysteresis_svg(&rep, 0, &svg, &d) == RB_OK);
+    CHECK(rb_plot_hysteresis_svg(&fx.rep, 0, &svg, &d) == RB_OK);
     CHECK(svg && count(svg, "<path") == 3);
     CHECK(svg && count(svg, "data-series=\"force_left\"") == 1);
     CHECK(svg && count(svg, "data-series=\"force_right\"") == 1);
@@ -203,15 +182,15 @@ static void test_hysteresis(void)
     CHECK(svg && strstr(svg, "pump &amp; &lt;motor&gt;") != NULL);
     CHECK(svg && !has_nonfinite(svg));
     free(svg);
-    kase.output_units = RB_UNITS_US;
-    CHECK(rb_plot_hysteresis_svg(&rep, 0, &svg, &d) == RB_OK);
+    fx.kase.output_units = RB_UNITS_US;
+    CHECK(rb_plot_hysteresis_svg(&fx.rep, 0, &svg, &d) == RB_OK);
     CHECK(svg && strstr(svg, "bolt row force (kip)") != NULL);
     CHECK(svg && strstr(svg, "elongation (in)") != NULL);
     CHECK(svg && strstr(svg, "(kip-in)") != NULL);
     free(svg);
-    kase.output_units = RB_UNITS_SI;
+    fx.kase.output_units = RB_UNITS_SI;
     svg = (char *)1;
-    CHECK(rb_plot_hysteresis_svg(&rep, 1, &svg, &d) == RB_ERR_INVALID);
+    CHECK(rb_plot_hysteresis_svg(&fx.rep, 1, &svg, &d) == RB_ERR_INVALID);
     CHECK(svg == NULL);
 }
 
@@ -224,21 +203,21 @@ static void test_history_scaling(void)
     size_t i;
     rb_diag_clear(&d);
     CHECK(solve(0.6, 2.0, 0.005) == RB_OK);
-    if (!res.history)
+    if (!fx.res.history)
         return;
-    CHECK(rb_plot_history_svg(&rep, 0, &svg, &d) == RB_OK);
+    CHECK(rb_plot_history_svg(&fx.rep, 0, &svg, &d) == RB_OK);
     CHECK(svg && strstr(svg, "off this scale") == NULL);
     CHECK(svg && strstr(svg, ">-1.5<") != NULL);   /* the +-1.1 yield range */
     /* the title names the case and the motion, and what the motion is */
     CHECK(svg && strstr(svg, "(harmonic, 4 Hz)</text>") != NULL);
     free(svg);
-    for (i = 0; i < res.history->n; i++) {
-        res.history->bolt_force_left[i] *= 0.25;
-        res.history->bolt_force_right[i] *= 0.25;
-        res.history->energy_left[i] *= 0.1;
-        res.history->energy_right[i] *= 0.1;
+    for (i = 0; i < fx.res.history->n; i++) {
+        fx.res.history->bolt_force_left[i] *= 0.25;
+        fx.res.history->bolt_force_right[i] *= 0.25;
+        fx.res.history->energy_left[i] *= 0.1;
+        fx.res.history->energy_right[i] *= 0.1;
     }
-    CHECK(rb_plot_history_svg(&rep, 0, &svg, &d) == RB_OK);
+    CHECK(rb_plot_history_svg(&fx.rep, 0, &svg, &d) == RB_OK);
     CHECK(svg && strstr(svg, "yield at \xc2\xb1" "1 Fy: off this scale") != NULL);
     CHECK(svg && strstr(svg, "break at 1: off this scale") != NULL);
     CHECK(svg && strstr(svg, ">-1.5<") == NULL);
@@ -255,20 +234,20 @@ static void test_decimation(void)
     size_t sub, pts;
     rb_diag_clear(&d);
     CHECK(solve(0.2, 30.0, 0.001) == RB_OK);
-    CHECK(res.history && res.history->n > 20000);
-    CHECK(rb_plot_history_svg(&rep, 0, &svg, &d) == RB_OK);
+    CHECK(fx.res.history && fx.res.history->n > 20000);
+    CHECK(rb_plot_history_svg(&fx.rep, 0, &svg, &d) == RB_OK);
     if (!svg)
         return;
     /* two extremes per pixel column of the 868-unit wide panels */
     pts = path_points(svg, "accel", &sub);
-    printf("decimation: %zu rows -> %zu points, %zu bytes\n", res.history->n, pts,
+    printf("decimation: %zu rows -> %zu points, %zu bytes\n", fx.res.history->n, pts,
            strlen(svg));
     CHECK(pts > 868 && pts <= 2 * 868 + 2);
     CHECK(strlen(svg) < 400000);
     /* the extremes survive: the samples of the largest and smallest floor
      * acceleration are drawn (panels start at x = 100, 868 wide) */
     {
-        const rb_history *h = res.history;
+        const rb_history *h = fx.res.history;
         size_t i, imax = 0, imin = 0;
         char at[32];
         const char *path = strstr(svg, "data-series=\"accel\"");
@@ -294,19 +273,19 @@ static void test_history_errors(void)
 {
     char *svg = (char *)1;
     rb_diag d;
-    rb_history *h = res.history;
+    rb_history *h = fx.res.history;
     rb_diag_clear(&d);
-    CHECK(rb_plot_history_svg(&rep, 1, &svg, &d) == RB_ERR_INVALID);
+    CHECK(rb_plot_history_svg(&fx.rep, 1, &svg, &d) == RB_ERR_INVALID);
     CHECK(svg == NULL && strstr(d.msg, "no such motion") != NULL);
-    res.history = NULL;
+    fx.res.history = NULL;
     svg = (char *)1;
-    CHECK(rb_plot_history_svg(&rep, 0, &svg, &d) == RB_ERR_INVALID);
+    CHECK(rb_plot_history_svg(&fx.rep, 0, &svg, &d) == RB_ERR_INVALID);
     CHECK(svg == NULL && strstr(d.msg, "no time history") != NULL);
     /* the report page skips it: text only */
-    CHECK(rb_plot_report_html(&rep, "report", &svg, &d) == RB_OK);
+    CHECK(rb_plot_report_html(&fx.rep, "report", &svg, &d) == RB_OK);
     CHECK(svg && count(svg, "<svg") == 0 && strstr(svg, "<pre class=\"report\">report</pre>"));
     free(svg);
-    res.history = h;
+    fx.res.history = h;
 }
 
 static void test_sweep(void)
@@ -402,13 +381,13 @@ static void test_html(void)
     CHECK(html == NULL && strstr(d.msg, "figure 1") != NULL);
 
     /* the whole check: one figure per motion with a history */
-    CHECK(rb_plot_report_html(&rep, "FAIL: text & <report>", &html, &d) == RB_OK);
+    CHECK(rb_plot_report_html(&fx.rep, "FAIL: text & <report>", &html, &d) == RB_OK);
     CHECK(html && count(html, "<svg") == 1);
     CHECK(html && count(html, "<path") == RB_PLOT_HISTORY_SERIES);
     CHECK(html && strstr(html, "FAIL: text &amp; &lt;report&gt;") != NULL);
     /* the page's title is the report's headline and the case */
     char title[160];
-    snprintf(title, sizeof title, "<title>%s: pump &amp; &lt;motor&gt;", rep.headline);
+    snprintf(title, sizeof title, "<title>%s: pump &amp; &lt;motor&gt;", fx.rep.headline);
     CHECK(html && strstr(html, title) != NULL);
     CHECK(html && !has_nonfinite(html));
     free(html);
@@ -570,6 +549,6 @@ int main(void)
     test_history_errors();
     test_decimation();
     test_sweep();
-    rb_result_free(&res);
+    rb_result_free(&fx.res);
     TEST_MAIN_END();
 }

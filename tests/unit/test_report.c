@@ -7,58 +7,36 @@
 #include <string.h>
 #include <cjson/cJSON.h>
 #include "harness.h"
+#include "report_fixture.h"
 #include "rockbolt/rockbolt.h"
 
-static rb_case kase;
-static rb_case_motion cm;
-static rb_result res;
-static rb_report_motion rm;
-static rb_report rep;
+static report_fixture fx;
 
 static void setup(void)
 {
-    memset(&kase, 0, sizeof kase);
-    rb_model_reference(&kase.model);
-    rb_solve_opts_init(&kase.solve);
-    rb_criteria_init(&kase.criteria);
-    kase.path = "cases/x.yaml";
-    kase.name = "x";
-    cm.name = "harmonic";
-    cm.source = "harmonic 10 m/s^2";
-    rb_motion_init(&cm.motion);
-    cm.motion.kind = RB_MOTION_HARMONIC;
-    cm.motion.amplitude_mps2 = 10;
-    cm.motion.freq_hz = 4;
-    cm.motion.duration_s = 2;
-    kase.motions = &cm;
-    kase.n_motions = 1;
-    memset(&res, 0, sizeof res);
-    res.peak_floor_mps2 = 10;
-    res.weight_n = 454 * RB_G0;
-    res.a_star_mps2 = 114.77;
-    res.fy_row_n = 62831.7;
-    res.max_shear_elastic_n = 2 * res.weight_n;
-    res.max_bolt_force_n[RB_RIGHT] = 31415.85;
-    res.final_gap_m[0] = res.final_gap_m[1] = 0.0078;
-    res.usage[RB_RIGHT] = 0.25;
-    res.yielded[RB_RIGHT] = 1;
-    res.first_yield_s[RB_RIGHT] = 0.5;
-    res.first_yield_s[RB_LEFT] = NAN; /* not yielded: must not be looked at */
-    res.break_s[0] = res.break_s[1] = INFINITY;
-    res.overturn_s = NAN;
-    res.t_end_s = 2;
-    res.stage_time_s[1] = 1.5;
-    res.stage_time_s[2] = 0.5;
-    rm.motion = &cm;
-    rm.result = &res;
-    rm.verdict.pass = 1;
-    snprintf(rm.verdict.reason, sizeof rm.verdict.reason, "fine");
-    memset(&rep, 0, sizeof rep);
-    rep.kase = &kase;
-    CHECK(rb_model_derive(&kase.model, &rep.derived, NULL) == RB_OK);
-    rep.motions = &rm;
-    rep.n_motions = 1;
-    rb_report_conclude(&rep);
+    report_fixture_init(&fx, "x", "harmonic", "harmonic 10 m/s^2");
+    fx.cm.motion.amplitude_mps2 = 10;
+    fx.cm.motion.duration_s = 2;
+    rb_result *res = &fx.res;
+    res->peak_floor_mps2 = 10;
+    res->weight_n = 454 * RB_G0;
+    res->a_star_mps2 = 114.77;
+    res->fy_row_n = 62831.7;
+    res->max_shear_elastic_n = 2 * res->weight_n;
+    res->max_bolt_force_n[RB_RIGHT] = 31415.85;
+    res->final_gap_m[0] = res->final_gap_m[1] = 0.0078;
+    res->usage[RB_RIGHT] = 0.25;
+    res->yielded[RB_RIGHT] = 1;
+    res->first_yield_s[RB_RIGHT] = 0.5;
+    res->first_yield_s[RB_LEFT] = NAN; /* not yielded: must not be looked at */
+    res->break_s[0] = res->break_s[1] = INFINITY;
+    res->overturn_s = NAN;
+    res->t_end_s = 2;
+    res->stage_time_s[1] = 1.5;
+    res->stage_time_s[2] = 0.5;
+    fx.rm.verdict.pass = 1;
+    snprintf(fx.rm.verdict.reason, sizeof fx.rm.verdict.reason, "fine");
+    rb_report_conclude(&fx.rep);
 }
 
 static const cJSON *at(const cJSON *o, const char *a, const char *b, const char *c)
@@ -78,7 +56,7 @@ static void test_json(void)
     cJSON *root;
     const cJSON *m0, *v;
     rb_diag_clear(&d);
-    CHECK(rb_report_json_render(&rep, &out, &d) == RB_OK);
+    CHECK(rb_report_json_render(&fx.rep, &out, &d) == RB_OK);
     CHECK(out && out[strlen(out) - 1] == '\n');
     root = cJSON_Parse(out);
     CHECK(root != NULL);
@@ -106,22 +84,22 @@ static void test_json(void)
     cJSON_Delete(root);
 
     /* no motion: ratios to V0 have no denominator and become null */
-    res.peak_floor_mps2 = 0;
-    CHECK(rb_report_json_render(&rep, &out, &d) == RB_OK);
+    fx.res.peak_floor_mps2 = 0;
+    CHECK(rb_report_json_render(&fx.rep, &out, &d) == RB_OK);
     root = cJSON_Parse(out);
     free(out);
     m0 = cJSON_GetArrayItem(cJSON_GetObjectItemCaseSensitive(root, "motions"), 0);
     CHECK(cJSON_IsNull(at(m0, "result", "peaks", "max_shear_elastic_over_v0")));
     cJSON_Delete(root);
-    res.peak_floor_mps2 = 10;
+    fx.res.peak_floor_mps2 = 10;
 
     /* a NaN from upstream: no report, the field named */
-    res.max_u_m = NAN;
+    fx.res.max_u_m = NAN;
     out = (char *)1;
-    CHECK(rb_report_json_render(&rep, &out, &d) == RB_ERR_NONFINITE);
+    CHECK(rb_report_json_render(&fx.rep, &out, &d) == RB_ERR_NONFINITE);
     CHECK(out == NULL);
     CHECK(strstr(d.key, "max_u_m") != NULL);
-    res.max_u_m = 0;
+    fx.res.max_u_m = 0;
 }
 
 static void test_text(void)
@@ -129,7 +107,7 @@ static void test_text(void)
     char *out = NULL;
     rb_diag d;
     rb_diag_clear(&d);
-    CHECK(rb_report_text_render(&rep, rb_template_builtin("report.txt"), &out, &d) == RB_OK);
+    CHECK(rb_report_text_render(&fx.rep, rb_template_builtin("report.txt"), &out, &d) == RB_OK);
     if (d.msg[0])
         fprintf(stderr, "template: %d:%d %s: %s\n", d.line, d.col, d.key, d.msg);
     {
@@ -139,11 +117,11 @@ static void test_text(void)
     CHECK(out && strstr(out, "= 2.000 W") != NULL);
     CHECK(out && strstr(out, "first yield (s)               n/a      0.500") != NULL);
     free(out);
-    rm.verdict.pass = 0;
-    rb_report_conclude(&rep);
-    CHECK(!rep.pass && strcmp(rep.reason, "motion 'harmonic': fine") == 0);
-    rm.verdict.pass = 1;
-    rb_report_conclude(&rep);
+    fx.rm.verdict.pass = 0;
+    rb_report_conclude(&fx.rep);
+    CHECK(!fx.rep.pass && strcmp(fx.rep.reason, "motion 'harmonic': fine") == 0);
+    fx.rm.verdict.pass = 1;
+    rb_report_conclude(&fx.rep);
 }
 
 static void test_history(void)
@@ -157,8 +135,8 @@ static void test_history(void)
     FILE *fp = tmpfile();
     char buf[1024] = {0};
     rb_diag d;
-    res.history = &h;
-    CHECK(fp && rb_history_write_csv(fp, &rep, &d) == RB_OK);
+    fx.res.history = &h;
+    CHECK(fp && rb_history_write_csv(fp, &fx.rep, &d) == RB_OK);
     rewind(fp);
     CHECK(fread(buf, 1, sizeof buf - 1, fp) > 0);
     CHECK(strncmp(buf, "motion,t_s,accel_mps2,", 22) == 0);
@@ -166,9 +144,9 @@ static void test_history(void)
     fclose(fp);
     z[1] = NAN;
     fp = tmpfile();
-    CHECK(fp && rb_history_write_csv(fp, &rep, &d) == RB_ERR_NONFINITE);
+    CHECK(fp && rb_history_write_csv(fp, &fx.rep, &d) == RB_ERR_NONFINITE);
     fclose(fp);
-    res.history = NULL;
+    fx.res.history = NULL;
 }
 
 int main(void)
