@@ -1,8 +1,9 @@
 # The verdict of a run (label "verdicts"): one judge for every command, the
 # model's validity checks, and list rows that keep what they do not name.
-rb_shell_tests(PREFIX verdict SCRIPT tests/verdicts/verdict_test.sh SCRATCH verdict
-               LABEL verdicts TIMEOUT 300 TOOLS $<TARGET_FILE:jsonget>
-               TESTS no_yield validity default_model gap)
+foreach(t no_yield validity default_model gap)
+  rb_script_test(NAME verdict_${t} SCRIPT tests/verdicts/verdicts.py LABEL verdicts
+                 AFTER ${t} TIMEOUT 300)
+endforeach()
 add_executable(judge_probe ${PROJECT_SOURCE_DIR}/tests/verdicts/judge_probe.c)
 rb_target_defaults(judge_probe)
 target_link_libraries(judge_probe PRIVATE rb_all PkgConfig::CJSON)
