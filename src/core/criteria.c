@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "rockbolt/interaction.h"
+#include "rockbolt/jsonnum.h"
 #include "rockbolt/criteria.h"
 #include "rockbolt/names.h"
 
@@ -151,6 +152,17 @@ static const char *beside(double v, double limit, char *buf, size_t n)
     return buf;
 }
 
+/* A limit as the user wrote it: the shortest decimal that reads back to
+ * the same double, so that 1.65 is not printed 1.6499999999999999. */
+typedef struct { char s[RB_JSONNUM_MAX]; } limit_text;
+
+static limit_text limit_str(double v)
+{
+    limit_text t;
+    rb_json_number(v, t.s);
+    return t;
+}
+
 /* A macro so that each message is a literal the compiler checks. */
 #define SAY(v, pass_, ...) \
     ((void)snprintf((v)->reason, sizeof (v)->reason, __VA_ARGS__), (v)->criteria_pass = (pass_))
@@ -272,20 +284,20 @@ static void criteria(const rb_criteria *c, const rb_result *r, rb_verdict *v)
         SAY(v, 0, "a bolt row force reaches Fy (max force / Fy = %s; criterion: no yield)",
             beside(force, 1.0, num, sizeof num));
     else if (c->kind == RB_CRIT_NO_BREAK && usage >= c->usage_limit)
-        SAY(v, 0, "bolt toughness usage %s reaches the limit %.17g",
-            beside(usage, c->usage_limit, num, sizeof num), c->usage_limit);
+        SAY(v, 0, "bolt toughness usage %s reaches the limit %s",
+            beside(usage, c->usage_limit, num, sizeof num), limit_str(c->usage_limit).s);
     else if (c->max_shear_over_w > 0 && shear > c->max_shear_over_w)
-        SAY(v, 0, "base shear / W = %s exceeds its limit %.17g",
-            beside(shear, c->max_shear_over_w, num, sizeof num), c->max_shear_over_w);
+        SAY(v, 0, "base shear / W = %s exceeds its limit %s",
+            beside(shear, c->max_shear_over_w, num, sizeof num), limit_str(c->max_shear_over_w).s);
     else if (c->max_theta_over_alpha > 0 && r->max_theta_over_alpha > c->max_theta_over_alpha)
-        SAY(v, 0, "rotation / alpha = %s exceeds its limit %.17g",
+        SAY(v, 0, "rotation / alpha = %s exceeds its limit %s",
             beside(r->max_theta_over_alpha, c->max_theta_over_alpha, num, sizeof num),
-            c->max_theta_over_alpha);
+            limit_str(c->max_theta_over_alpha).s);
     else if (slides(c, r))
         SAY(v, 0, "the base slides: friction demand %s exceeds the friction coefficient "
-            "%.17g (free-standing: the model assumes the base does not slide)",
+            "%s (free-standing: the model assumes the base does not slide)",
             beside(r->max_friction_demand, c->friction_coefficient, num, sizeof num),
-            c->friction_coefficient);
+            limit_str(c->friction_coefficient).s);
     else if (route_fails(c, route))
         route_reason(c, r, route, v);
     else if (c->concrete && r->anchor_checked && r->anchor_max_ratio >= 1.0)
@@ -301,8 +313,8 @@ static void criteria(const rb_criteria *c, const rb_result *r, rb_verdict *v)
     else if (c->kind == RB_CRIT_NO_YIELD)
         SAY(v, 1, "bolts stay elastic (max force / Fy = %s)", beside(force, 1.0, num, sizeof num));
     else
-        SAY(v, 1, "bolt toughness usage %s is below the limit %.17g",
-            beside(usage, c->usage_limit, num, sizeof num), c->usage_limit);
+        SAY(v, 1, "bolt toughness usage %s is below the limit %s",
+            beside(usage, c->usage_limit, num, sizeof num), limit_str(c->usage_limit).s);
 }
 
 double rb_bolt_impact_over_fy(const rb_result *r)

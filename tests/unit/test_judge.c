@@ -71,6 +71,31 @@ static void usage_beside_its_limit(void)
     CHECK(!v.pass && strstr(v.reason, "overturns") != NULL);
 }
 
+/* A limit reads as the user wrote it (1.65, not 1.6499999999999999), on
+ * both sides of it and for every limit a reason names. */
+static void limits_as_written(void)
+{
+    rb_criteria c;
+    rb_result r;
+    rb_verdict v;
+    rb_criteria_init(&c);
+    base_result(&r);
+    c.usage_limit = 1.65;
+    r.usage[0] = 1.2;
+    rb_judge(&c, &r, &v);
+    CHECK(v.pass && strstr(v.reason, "limit 1.65") != NULL);
+    CHECK(strstr(v.reason, "99999") == NULL);
+    r.usage[0] = 1.7;
+    rb_judge(&c, &r, &v);
+    CHECK(!v.pass && strstr(v.reason, "limit 1.65") != NULL);
+    r.usage[0] = 0.1;
+    c.max_shear_over_w = 0.3;
+    r.max_shear_elastic_n = 0.7 * r.weight_n;
+    rb_judge(&c, &r, &v);
+    CHECK(!v.pass && strstr(v.reason, "limit 0.3") != NULL);
+    CHECK(strstr(v.reason, "0.29999") == NULL);
+}
+
 static void validity(void)
 {
     rb_criteria c;
@@ -484,6 +509,7 @@ int main(void)
     seismic_routes();
     no_yield_whatever_the_model();
     usage_beside_its_limit();
+    limits_as_written();
     validity();
     margin();
     near_contact();
