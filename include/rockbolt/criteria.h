@@ -272,6 +272,13 @@ typedef rb_status (*rb_solve_fn)(void *ctx, const rb_model *model, const rb_moti
 void rb_judge_run(const rb_criteria *c, const rb_model *model, const rb_motion *motion,
                   const rb_solve_opts *opts, const rb_result *r, rb_solve_fn solve,
                   void *ctx, rb_verdict *v, rb_confirm_run *runs, size_t *n_runs);
+/* rb_judge_run's pass and reason alone, for a search that keeps no
+ * confirming run: a confirming run that fails decides the fail, and the
+ * runs after it are not made (the warnings of the verdict may then name
+ * fewer runs than rb_judge_run's). */
+void rb_judge_decide(const rb_criteria *c, const rb_model *model, const rb_motion *motion,
+                     const rb_solve_opts *opts, const rb_result *r, rb_solve_fn solve,
+                     void *ctx, rb_verdict *v);
 
 /* Fold the confirming runs into v (a pass of rb_judge of a run whose
  * rb_verdict_margin is margin, solved at tolerance rtol, judged with the

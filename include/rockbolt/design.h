@@ -148,13 +148,15 @@ rb_status rb_design_uplift_level(const rb_model *model, const rb_motion *motion,
                                  const rb_solve_opts *opts, rb_design_memo *memo,
                                  double *level_mps2, rb_diag *diag);
 
-/* rb_design_factor where the caller knows a level near which the failing
- * levels start (near_astar > 0, in A*): once the scan has its bracket,
- * the levels near_astar - resolution / 2 and then 1, 2, 4, ...
- * resolutions above that are run until one fails, and the bisection
- * goes on from the bracket they leave. The result is the search's own
- * (a failing level at most resolution above a pass); where the failing
- * levels do start there, it is reached in two runs. 0: rb_design_factor. */
+/* rb_design_factor where the caller has shown that no level below
+ * near_astar (> 0, in A*) fails, and expects the failing levels to start
+ * near it: once the scan has its bracket, near_astar - resolution / 2 is
+ * taken as a pass without a run, the levels 1, 2, 4, ... resolutions above
+ * that are run until one fails, and the bisection goes on from the
+ * bracket they leave. The result is the search's own (a failing level at
+ * most resolution above a pass) provided the caller's bound holds; where
+ * the failing levels do start there, it is reached in one or two runs.
+ * 0: rb_design_factor. */
 rb_status rb_design_factor_near(const rb_model *model, const rb_motion *motion,
                                 const rb_solve_opts *opts, const rb_criteria *criteria,
                                 const rb_design_opts *design, int n_threads,

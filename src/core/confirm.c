@@ -52,17 +52,40 @@ static void confirm_one(const rb_criteria *c, const rb_model *model, const rb_mo
     rb_result_free(&r);
 }
 
-void rb_judge_run(const rb_criteria *c, const rb_model *model, const rb_motion *motion,
-                  const rb_solve_opts *opts, const rb_result *r, rb_solve_fn solve,
-                  void *ctx, rb_verdict *v, rb_confirm_run *runs, size_t *n_runs)
+/* The confirming runs in order; with decide_only, none after the first
+ * that fails: the verdict is then a fail whatever the next says, and the
+ * first failing run is the one whose reason it gives. */
+static void judge_run(const rb_criteria *c, const rb_model *model, const rb_motion *motion,
+                      const rb_solve_opts *opts, const rb_result *r, rb_solve_fn solve,
+                      void *ctx, int decide_only, rb_verdict *v, rb_confirm_run *runs,
+                      size_t *n_runs)
 {
     double band = rb_confirm_band(c, motion);
     *n_runs = 0;
     rb_judge(c, r, v);
     if (!rb_verdict_wants_confirm(c, band, r, v))
         return;
-    for (int k = 0; k < RB_CONFIRM_RUNS; k++)
+    for (int k = 0; k < RB_CONFIRM_RUNS; k++) {
         confirm_one(c, model, motion, opts, k, solve ? solve : solve_plain, ctx, &runs[k]);
-    *n_runs = RB_CONFIRM_RUNS;
+        ++*n_runs;
+        if (decide_only && !(runs[k].solved && runs[k].verdict.pass))
+            break;
+    }
     rb_verdict_confirm(v, rb_verdict_margin(c, r), band, opts->rtol, runs, *n_runs);
+}
+
+void rb_judge_run(const rb_criteria *c, const rb_model *model, const rb_motion *motion,
+                  const rb_solve_opts *opts, const rb_result *r, rb_solve_fn solve,
+                  void *ctx, rb_verdict *v, rb_confirm_run *runs, size_t *n_runs)
+{
+    judge_run(c, model, motion, opts, r, solve, ctx, 0, v, runs, n_runs);
+}
+
+void rb_judge_decide(const rb_criteria *c, const rb_model *model, const rb_motion *motion,
+                     const rb_solve_opts *opts, const rb_result *r, rb_solve_fn solve,
+                     void *ctx, rb_verdict *v)
+{
+    rb_confirm_run runs[RB_CONFIRM_RUNS];
+    size_t n_runs;
+    judge_run(c, model, motion, opts, r, solve, ctx, 1, v, runs, &n_runs);
 }

@@ -189,13 +189,14 @@ static rb_status bisect(factor_search *s, double res, rb_diag *diag)
     return RB_OK;
 }
 
-/* Narrow the bracket to the resolution around a level the caller knows
- * the failing levels start near (a fragility's lift-off: the uplift
- * level), before bisecting: a pass half a resolution below it, then
- * levels above it at 1, 2, 4, ... resolutions until one fails. Where the
- * first failing level is that near, two runs replace the bisection's
- * dozen; where it is not, what was run is a bracket the bisection goes
- * on from. A level outside the bracket is ignored. */
+/* Narrow the bracket to the resolution above a level below which the
+ * caller has shown that no level fails (a fragility's lift-off: the uplift
+ * level, below which the base never leaves the floor), before bisecting:
+ * half a resolution below it is a pass without a run, then levels above
+ * it at 1, 2, 4, ... resolutions are run until one fails. Where the first
+ * failing level is that near, one or two runs replace the bisection's
+ * dozen; where it is not, what was run is a bracket the bisection goes on
+ * from. A level outside the bracket is ignored. */
 static rb_status narrow_near(factor_search *s, double near, double res, rb_diag *diag)
 {
     rb_design_factor_result *out = s->out;
@@ -206,10 +207,20 @@ static rb_status narrow_near(factor_search *s, double near, double res, rb_diag 
             return RB_OK;
         rb_motion m, vertical;
         rb_design_run run;
+        rb_status st;
+        if (step == 0) {
+            memset(&run, 0, sizeof run);
+            run.meets = 1;
+            snprintf(run.reason, sizeof run.reason, "below %.6g A*, where no level fails",
+                     near);
+            if ((st = take_pass(s, level, &run)) != RB_OK)
+                return st;
+            continue;
+        }
         rb_design_motion_at(s->ctx, level * s->ctx->a_star_mps2, &m, &vertical);
         rb_design_run_one(s->ctx, s->ctx->model, &m, &run);
         out->bisect_runs++;
-        rb_status st = check_run(&run, level, diag);
+        st = check_run(&run, level, diag);
         if (st != RB_OK)
             return st;
         if (!run.meets) {

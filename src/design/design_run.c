@@ -136,13 +136,11 @@ void rb_design_run_one(const rb_design_ctx *ctx, const rb_model *model,
     if (out->status == RB_OK && ctx->criteria)
     {
         rb_verdict v;
-        rb_confirm_run runs[RB_CONFIRM_RUNS];
-        size_t n_runs;
         if (ctx->defer_confirm)
             rb_judge(ctx->criteria, &out->r, &v);
         else
-            rb_judge_run(ctx->criteria, model, motion, &ctx->opts, &out->r, solve_memo,
-                         (void *)ctx, &v, runs, &n_runs);
+            rb_judge_decide(ctx->criteria, model, motion, &ctx->opts, &out->r, solve_memo,
+                            (void *)ctx, &v);
         out->meets = v.pass;
         _Static_assert(sizeof out->reason == sizeof v.reason, "one reason, one size");
         memcpy(out->reason, v.reason, sizeof out->reason);
