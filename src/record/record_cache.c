@@ -1,6 +1,10 @@
 /* The record cache: a short list of (key, series) behind one mutex. A
  * batch has a handful of distinct motions, so a linear search is the
- * right structure; the lock is held only to look up and to copy. */
+ * right structure. The lock is held only to look up: an entry's samples
+ * are written once, before it is listed, and freed only with the cache,
+ * so a reader copies them after letting the lock go (the list itself may
+ * move when it grows, which is why the entry's series header is taken
+ * under the lock). */
 #include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
@@ -70,12 +74,19 @@ int rb_record_cache_get(rb_record_cache *c, const char *path, const rb_record_op
 {
     size_t i;
     int found = 0;
+    rb_series shared;
     if (!c)
         return 0;
     pthread_mutex_lock(&c->lock);
     for (i = 0; i < c->n && !found; i++)
-        if (same_key(&c->items[i], path, opts, f_hz, xi))
-            found = copy_series(&c->items[i].series, out);
+        if (same_key(&c->items[i], path, opts, f_hz, xi)) {
+            shared = c->items[i].series;
+            found = 1;
+        }
+    pthread_mutex_unlock(&c->lock);
+    if (found)
+        found = copy_series(&shared, out);
+    pthread_mutex_lock(&c->lock);
     if (found)
         c->hits++;
     else
