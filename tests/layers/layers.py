@@ -87,16 +87,24 @@ def include_violations(src, rank):
     return bad, n
 
 
-def symbols(obj):
-    out = subprocess.run(["nm", obj], capture_output=True, text=True, check=True).stdout
-    defined, undefined = set(), set()
+def symbols(objs):
+    """Defined and undefined symbols of each object, from one nm for all of
+    them (one process per object made the test slow on a loaded machine)."""
+    table = {o: (set(), set()) for o in objs}
+    if not objs:
+        return table
+    out = subprocess.run(["nm", "-A", *objs], capture_output=True, text=True,
+                         check=True).stdout
     for line in out.splitlines():
-        f = line.split()
+        obj, _, rest = line.partition(":")
+        if obj not in table:
+            continue
+        f = rest.split()
         if len(f) == 2 and f[0] == "U":
-            undefined.add(f[1])
+            table[obj][1].add(f[1])
         elif len(f) == 3 and f[1] in "TDBRCVW":
-            defined.add(f[2])
-    return defined, undefined
+            table[obj][0].add(f[2])
+    return table
 
 
 def link_violations(src, build, order, rank):
@@ -108,9 +116,10 @@ def link_violations(src, build, order, rank):
             bad.append(f"{d}: not built")
             continue
         # objects of the folder's sources (a moved file leaves its old one)
-        objs[folder] = {o[:-len(".c.o")]: symbols(os.path.join(d, o))
-                        for o in sorted(os.listdir(d)) if o.endswith(".c.o")
-                        and os.path.exists(os.path.join(src, "src", folder, o[:-2]))}
+        names = [o for o in sorted(os.listdir(d)) if o.endswith(".c.o")
+                 and os.path.exists(os.path.join(src, "src", folder, o[:-2]))]
+        table = symbols([os.path.join(d, o) for o in names])
+        objs[folder] = {o[:-len(".c.o")]: table[os.path.join(d, o)] for o in names}
     where = {}
     for folder, fs in objs.items():
         for f, (dfn, _) in fs.items():
