@@ -10,6 +10,7 @@
  * The transition to tau is E(tau) = exp(A tau). */
 #include <float.h>
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 #include "../motion/matexp.h"
 #include "exact.h"
@@ -18,6 +19,8 @@
 #include "taylor.h"
 
 enum { ZU, ZV, ZUB, ZVB, ZG, ZS, ZN = RB_EXACT_DIM };
+/* the quantities bounded over a step ("Bounds over a step") */
+enum { Q_U, Q_SHEAR, Q_UP_POS, Q_UP_NEG };
 
 /* Gauss-Legendre, 8 points on [-1, 1]: exact for polynomials of degree
  * 15; the integrands (products of the frame's and the building's
@@ -137,7 +140,9 @@ static void rows_at(const rows *r, double F, double out[NROW][ZN])
     }
 }
 
-static void build_table(const rb_solver *sv, double h, int n, rb_exact_table *t)
+static void table_bounds(rb_solver *sv, const rows *r, double h, rb_exact_table *t);
+
+static void build_table(rb_solver *sv, double h, int n, rb_exact_table *t)
 {
     const rb_exact_cache *c = &sv->exact;
     double e[NROW][ZN], x[ZN];
@@ -170,6 +175,7 @@ static void build_table(const rb_solver *sv, double h, int n, rb_exact_table *t)
                 t->gxv[i][j] += wq * rx[i] * e[1][j];
             }
     }
+    table_bounds(sv, &r, h, t);
 }
 
 /* Step lengths repeat (a sample interval, or its share of steps capped at
@@ -271,6 +277,20 @@ static void aux_of(const rb_solver *sv, const point *p, rb_aux *a)
     rb_aux_of_values(&sv->sys, &sv->disc, 0, 0, v, a);
 }
 
+static void quantities_at(const rb_solver *sv, const double *z, double *q)
+{
+    point p;
+    rb_aux a;
+    double g[G_COUNT], V;
+    point_at(sv, z, &p);
+    aux_of(sv, &p, &a);
+    rb_guard_eval_x(sv, sv->t, p.y, p.x, sv->sys.d.g, g);
+    q[Q_U] = p.y[RB_Y_U];
+    rb_dyn_reactions(&sv->sys, &sv->disc, p.y, &a, &q[Q_SHEAR], &V);
+    q[Q_UP_POS] = g[G_UP_POS];
+    q[Q_UP_NEG] = g[G_UP_NEG];
+}
+
 static double quad(const double q[ZN][ZN], const double *z)
 {
     double s = 0;
@@ -289,6 +309,139 @@ static int point_finite(const point *p)
            && isfinite(p->udd) && isfinite(p->rate);
 }
 
+/* Bounds over a step.
+ *
+ * On the floor every quantity a step must watch is an affine function of
+ * the state z at its instant, q(z) = l . z + l0: U, the total shear
+ * (-M x + N* U'', x and U'' being linear in z), and the two uplift guards
+ * (the moment M h x - F* U'' less W b, and its mirror). Over a step,
+ * z(tau) = E(tau) z0, so q = r(tau) . z0 + l0 with the row
+ * r(tau) = l^T E(tau), and
+ *     |q(tau) - l0| <= sum_j B[j] |z0_j|,   B[j] = max over [0, h] of |r_j|.
+ * A step whose bounds keep every guard below its boundary and every
+ * tracked quantity below its running peak has nothing to find between its
+ * ends: no uplift, no new peak. It then costs the bounds, the works and
+ * the advance (exact_quiet), where a step with check points reads the
+ * state, the guards and the tracked quantities at each of them.
+ *
+ * Why B is a bound (a missed uplift would be a wrong PASS). The row is
+ * sampled at tau_k = k h / K, k = 0..K, to S[j] = max_k |r_j(tau_k)|.
+ * Every tau lies within d = h / (2K) of a sample, and r' = r A (A the
+ * system matrix, E' = E A), so with M[j] the true maximum of |r_j|
+ *     M[j] <= S[j] + d sum_l |A_lj| M[l],   i.e.  M <= S + d |A|^T M.
+ * Let B > 0 satisfy S + d |A|^T B <= B (checked after it is computed; S
+ * is taken slightly above the samples' rounding and positive). Then the
+ * nonnegative matrix P = d |A|^T has P B <= B - S < B, so its spectral
+ * radius is below one (Collatz-Wielandt), and D = M - B satisfies
+ * D <= P D, hence max(D, 0) <= P^k max(D, 0) -> 0: M <= B. The rows
+ * themselves are the scaled exponential's series, exact to rounding
+ * (build_table). test_exact_bounds holds B against dense sampling of the
+ * quantities over random cabinets, buildings, states and step lengths. */
+/* Sample intervals per panel of the table (a panel being at most 1.5 rad
+ * of the fastest oscillation): d |A| is then about 0.02, which is what B
+ * exceeds the samples by. */
+enum { BOUND_SAMPLES = 32 };
+
+/* The quantities' affine forms, read off the functions that evaluate them
+ * at a check point (point_at, aux_of, rb_dyn_reactions,
+ * rb_guard_eval_x), so that the bounds are of the same quantities. */
+static void linear_forms(rb_solver *sv)
+{
+    rb_exact_cache *c = &sv->exact;
+    double z[ZN] = {0}, q0[RB_EXACT_NQ], q[RB_EXACT_NQ];
+    quantities_at(sv, z, q0);
+    for (int j = 0; j < ZN; j++) {
+        z[j] = 1;
+        quantities_at(sv, z, q);
+        z[j] = 0;
+        for (int k = 0; k < RB_EXACT_NQ; k++)
+            c->lin[k][j] = q[k] - q0[k];
+    }
+    memcpy(c->lin0, q0, sizeof q0);
+    c->lin_ready = 1;
+    c->lin_side = sv->disc.side;
+}
+
+/* B from S: (I - d |A|^T) B = S by elimination, then checked to satisfy
+ * S + d |A|^T B <= B; 0 where it does not (no bound is used then). */
+static int supersolution(double pa[ZN][ZN], const double *S, double *B)
+{
+    double m[ZN][ZN + 1];
+    for (int i = 0; i < ZN; i++) {
+        for (int j = 0; j < ZN; j++)
+            m[i][j] = (i == j) - pa[j][i];
+        m[i][ZN] = S[i];
+    }
+    for (int k = 0; k < ZN; k++) {
+        int p = k;
+        for (int i = k + 1; i < ZN; i++)
+            if (fabs(m[i][k]) > fabs(m[p][k]))
+                p = i;
+        if (!(fabs(m[p][k]) > 0))
+            return 0;
+        for (int j = 0; j <= ZN; j++) {
+            double tmp = m[k][j];
+            m[k][j] = m[p][j];
+            m[p][j] = tmp;
+        }
+        for (int i = k + 1; i < ZN; i++) {
+            double f = m[i][k] / m[k][k];
+            for (int j = k; j <= ZN; j++)
+                m[i][j] -= f * m[k][j];
+        }
+    }
+    for (int i = ZN - 1; i >= 0; i--) {
+        double v = m[i][ZN];
+        for (int j = i + 1; j < ZN; j++)
+            v -= m[i][j] * B[j];
+        B[i] = v / m[i][i];
+    }
+    for (int i = 0; i < ZN; i++)
+        B[i] *= 1 + 1e-9;
+    for (int i = 0; i < ZN; i++) {
+        double v = S[i];
+        for (int l = 0; l < ZN; l++)
+            v += pa[l][i] * B[l];
+        if (!(B[i] > 0) || !isfinite(B[i]) || !(v <= B[i]))
+            return 0;
+    }
+    return 1;
+}
+
+static void table_bounds(rb_solver *sv, const rows *r, double h, rb_exact_table *t)
+{
+    rb_exact_cache *c = &sv->exact;
+    double a[ZN][ZN], pa[ZN][ZN], S[RB_EXACT_NQ][ZN] = {{0}}, e[NROW][ZN];
+    if (!c->lin_ready)
+        linear_forms(sv);
+    int K = BOUND_SAMPLES * r->m;
+    system_matrix(sv, a);
+    for (int i = 0; i < ZN; i++)
+        for (int j = 0; j < ZN; j++)
+            pa[i][j] = h / (2.0 * K) * fabs(a[i][j]);
+    for (int k = 0; k <= K; k++) {
+        rows_at(r, (double)k / K, e);
+        for (int q = 0; q < RB_EXACT_NQ; q++)
+            for (int j = 0; j < ZN; j++) {
+                /* the line's slope s is constant: its row of E is e_s */
+                double v = j == ZS ? c->lin[q][ZS] : 0;
+                for (int i = 0; i < NROW; i++)
+                    v += c->lin[q][row_of[i]] * e[i][j];
+                S[q][j] = rb_fmax(S[q][j], fabs(v));
+            }
+    }
+    t->bounded = 1;
+    for (int q = 0; q < RB_EXACT_NQ && t->bounded; q++) {
+        double smax = 0;
+        for (int j = 0; j < ZN; j++)
+            smax = rb_fmax(smax, S[q][j]);
+        /* above the rows' rounding, and positive (the proof's B > 0) */
+        for (int j = 0; j < ZN; j++)
+            S[q][j] = S[q][j] * (1 + 1e-12) + 1e-15 * smax + DBL_MIN;
+        t->bounded = supersolution(pa, S[q], t->bound[q]);
+    }
+}
+
 /* A time history reads the state between check points: the step's
  * Taylor series serves it there, so that asking for a history does not
  * change how the run is integrated. */
@@ -304,6 +457,114 @@ static rb_status history(rb_solver *sv, double t0, const double *y0, double h, d
     if (!(rb_exact_dense(sv, t0, y0, h, &st.ts) > 0))
         return RB_ERR_NONFINITE;
     return rb_history_sample(sv, &st, t0, t1);
+}
+
+/* Peaks a step's bounds must stay under to be quiet: a hundredth of a
+ * per mille below, more than what the dense output a step with check
+ * points locates its peaks on can add to them (a tenth of the tolerance,
+ * not below 1e-13 relative), so that such a step would not have moved
+ * them either. */
+#define QUIET_MARGIN (1 + 1e-6)
+
+/* Whether the step from z0 over table tab can be taken with no check
+ * points: its bounds keep both uplift guards below zero and U and the
+ * total shear (hence the friction demand, the floor's reaction being W)
+ * and the anchors' demand at or below their running peaks, so that no
+ * point or located peak inside it could move a result. */
+static int step_quiet(const rb_solver *sv, const rb_exact_table *tab, const double *z0)
+{
+    const rb_exact_cache *c = &sv->exact;
+    const rb_result *r = sv->res;
+    if (!tab->bounded || c->lin_side != sv->disc.side || sv->opts.check_reactions)
+        return 0;
+    double az[ZN], b[RB_EXACT_NQ];
+    for (int j = 0; j < ZN; j++)
+        az[j] = fabs(z0[j]);
+    for (int q = 0; q < RB_EXACT_NQ; q++) {
+        double v = 0;
+        for (int j = 0; j < ZN; j++)
+            v += tab->bound[q][j] * az[j];
+        b[q] = v * QUIET_MARGIN;
+    }
+    /* the guards are lin0 (-W b) plus their bounded part */
+    if (!(b[Q_UP_POS] < -c->lin0[Q_UP_POS] && b[Q_UP_NEG] < -c->lin0[Q_UP_NEG]))
+        return 0;
+    if (!(b[Q_U] <= r->max_u_m && b[Q_SHEAR] <= r->max_shear_total_n))
+        return 0;
+    return rb_track_quiet_bound(sv, b[Q_SHEAR]);
+}
+
+/* The state at check point j (1..n) of the step from z0. */
+static void check_state(const rb_exact_table *tab, const rb_floor_line *fl, const double *z0,
+                        int j, double *z)
+{
+    for (int i = 0; i < 4; i++) {
+        double r = 0;
+        for (int k = 0; k < ZN; k++)
+            r += tab->row[j - 1][i][k] * z0[k];
+        z[i] = r;
+    }
+    z[ZG] = fl->g0 + fl->slope * tab->h * j / tab->n;
+    z[ZS] = fl->slope;
+}
+
+/* Advance the run over a step taken: the works from their Gramians, the
+ * state, its rates and the guards at the end point p (tracked there by
+ * the caller). */
+static void finish_step(rb_solver *sv, const rb_exact_table *tab, const double *z0,
+                        double t1, const point *p, const double *g_end, double *g, rb_aux *a)
+{
+    sv->res->steps++;
+    sv->res->exact_steps++;
+    sv->res->stage_steps[sv->disc.stage]++;
+    sv->res->stage_time_s[sv->disc.stage] += t1 - sv->t;
+    double wd = sv->y[RB_Y_WDAMP] + sv->sys.d.Cstar * quad(tab->gvv, z0);
+    double wi = sv->y[RB_Y_WIN] + sv->sys.d.Nstar * quad(tab->gxv, z0);
+    sv->t = t1;
+    sv->y[RB_Y_U] = p->y[RB_Y_U];
+    sv->y[RB_Y_UD] = p->y[RB_Y_UD];
+    sv->y[RB_Y_WDAMP] = wd;
+    sv->y[RB_Y_WIN] = wi;
+    aux_of(sv, p, a);
+    sv->f[RB_Y_U] = p->y[RB_Y_UD];
+    sv->f[RB_Y_UD] = p->udd;
+    sv->f[RB_Y_TH] = sv->f[RB_Y_THD] = 0;
+    sv->f[RB_Y_WDAMP] = sv->sys.d.Cstar * p->y[RB_Y_UD] * p->y[RB_Y_UD];
+    sv->f[RB_Y_WIN] = a->p_input;
+    sv->f[RB_Y_WCPL] = a->p_coupling;
+    memcpy(g, g_end, G_COUNT * sizeof *g);
+}
+
+/* A quiet step (step_quiet): nothing read inside it but its last two
+ * points, which the peaks' windows keep for the next step, with windows
+ * that start at them as after a transition: the next step's windows then
+ * hold the points a step with check points would have left in them. */
+static int exact_quiet(rb_solver *sv, const rb_exact_table *tab, const rb_floor_line *fl,
+                       const double *z0, double t1, double *g, rb_status *status)
+{
+    const rb_exact_cache *c = &sv->exact;
+    int n = tab->n;
+    double z[ZN], gs[G_COUNT], t0 = sv->t, u[2], H[2];
+    point p[2];
+    for (int k = 0; k < 2; k++) {
+        check_state(tab, fl, z0, n - 1 + k, z);
+        point_at(sv, z, &p[k]);
+        if (!point_finite(&p[k]))
+            return 0;
+        /* the shear's form is the reactions' own (linear_forms) */
+        u[k] = p[k].y[RB_Y_U];
+        H[k] = c->lin0[Q_SHEAR];
+        for (int j = 0; j < ZN; j++)
+            H[k] += c->lin[Q_SHEAR][j] * z[j];
+    }
+    if ((*status = history(sv, t0, sv->y, tab->h, t1)) != RB_OK)
+        return 1;
+    rb_guard_eval_x(sv, t1, p[1].y, p[1].x, sv->sys.d.g, gs);
+    rb_aux a;
+    double tt[2] = {t0 + (t1 - t0) / n * (n - 1), t1};
+    finish_step(sv, tab, z0, t1, &p[1], gs, g, &a);
+    rb_track_quiet_points(sv, tt, u, H, p[1].x);
+    return 1;
 }
 
 /* An exact step of stage 1 towards target (the next break or the end):
@@ -330,20 +591,16 @@ static int exact_step(rb_solver *sv, double target, double *g, rb_status *status
     unsigned mask = rb_guard_mask(sv);
     double dt_guard = h / n, dt_track = (t1 - t0) / n;
 
+    if (step_quiet(sv, tab, z0))
+        return exact_quiet(sv, tab, &fl, z0, t1, g, status);
+
     /* the start as the step before left it */
     point_at(sv, z0, &p[0]);
     memcpy(gs[0], g, sizeof gs[0]);
     rb_guard_nudge(gs[0]);
     for (int j = 1; j <= n; j++) {
         double z[ZN];
-        for (int i = 0; i < 4; i++) {
-            double r = 0;
-            for (int k = 0; k < ZN; k++)
-                r += tab->row[j - 1][i][k] * z0[k];
-            z[i] = r;
-        }
-        z[ZG] = fl.g0 + fl.slope * tab->h * j / n;
-        z[ZS] = fl.slope;
+        check_state(tab, &fl, z0, j, z);
         point_at(sv, z, &p[j]);
         if (!point_finite(&p[j]))
             return 0;
@@ -378,25 +635,7 @@ static int exact_step(rb_solver *sv, double target, double *g, rb_status *status
     }
     if ((*status = history(sv, t0, sv->y, h, t1)) != RB_OK)
         return 1;
-    sv->res->steps++;
-    sv->res->exact_steps++;
-    sv->res->stage_steps[sv->disc.stage]++;
-    sv->res->stage_time_s[sv->disc.stage] += t1 - t0;
-    double wd = sv->y[RB_Y_WDAMP] + sv->sys.d.Cstar * quad(tab->gvv, z0);
-    double wi = sv->y[RB_Y_WIN] + sv->sys.d.Nstar * quad(tab->gxv, z0);
-    sv->t = t1;
-    sv->y[RB_Y_U] = p[n].y[RB_Y_U];
-    sv->y[RB_Y_UD] = p[n].y[RB_Y_UD];
-    sv->y[RB_Y_WDAMP] = wd;
-    sv->y[RB_Y_WIN] = wi;
-    aux_of(sv, &p[n], &a);
-    sv->f[RB_Y_U] = p[n].y[RB_Y_UD];
-    sv->f[RB_Y_UD] = p[n].udd;
-    sv->f[RB_Y_TH] = sv->f[RB_Y_THD] = 0;
-    sv->f[RB_Y_WDAMP] = sv->sys.d.Cstar * p[n].y[RB_Y_UD] * p[n].y[RB_Y_UD];
-    sv->f[RB_Y_WIN] = a.p_input;
-    sv->f[RB_Y_WCPL] = a.p_coupling;
-    memcpy(g, gs[n], sizeof gs[n]);
+    finish_step(sv, tab, z0, t1, &p[n], gs[n], g, &a);
     rb_track_aux(sv, t1, sv->y, &a);
     rb_track_span_none(sv);
     return 1;
@@ -411,3 +650,43 @@ static rb_step_outcome exact_apply(rb_solver *sv, double target, double h, rb_rk
 }
 
 const rb_stepper rb_stepper_exact = {"exact", exact_apply, NULL};
+
+int rb_exact_probe(const rb_model *model, const rb_motion *motion, const rb_solve_opts *opts,
+                   double h, const double *z0, int K, double *bound,
+                   double (*z_at)[RB_EXACT_DIM])
+{
+    rb_solver *sv = malloc(sizeof *sv);
+    rb_result res = {0};
+    int ok = sv && rb_solver_setup(sv, model, motion, opts, &res, NULL) == RB_OK
+             && sv->exact.on;
+    if (ok) {
+        rb_exact_table *t = &sv->exact.tab[0];
+        build_table(sv, h, rb_step_checks(sv, h), t);
+        ok = t->bounded;
+    }
+    if (ok) {
+        double a[ZN][ZN], at[ZN][ZN], e[ZN][ZN];
+        for (int q = 0; q < RB_EXACT_NQ; q++) {
+            double v = 0;
+            for (int j = 0; j < ZN; j++)
+                v += sv->exact.tab[0].bound[q][j] * fabs(z0[j]);
+            bound[q] = v;
+        }
+        system_matrix(sv, a);
+        for (int k = 0; k <= K; k++) {
+            for (int i = 0; i < ZN; i++)
+                for (int j = 0; j < ZN; j++)
+                    at[i][j] = a[i][j] * h * k / K;
+            rb_matexp(ZN, &at[0][0], &e[0][0]);
+            for (int i = 0; i < ZN; i++) {
+                z_at[k][i] = 0;
+                for (int j = 0; j < ZN; j++)
+                    z_at[k][i] += e[i][j] * z0[j];
+            }
+        }
+    }
+    if (sv)
+        rb_history_free(res.history);
+    free(sv);
+    return ok;
+}

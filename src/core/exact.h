@@ -29,4 +29,15 @@ void rb_exact_setup(rb_solver *sv);
  * declines a step it cannot take (a root inside, a length it keeps no
  * table for), for the Taylor step to take. */
 
+/* For tests (test_exact_bounds): the bounds a run's exact step forms for
+ * a step of length h from z0 = (U, U', u_b, v_b, g, s), for U, the total
+ * shear and the two uplift guards less their value at z = 0, into
+ * bound[4]; and the state at tau = k h / K, k = 0..K, from the system's
+ * exponential at each instant (rb_matexp, not the table's rows), into
+ * z_at[K + 1]. 0 where the run takes no exact steps or no bound was
+ * proved (bound and z_at untouched). */
+int rb_exact_probe(const rb_model *model, const rb_motion *motion, const rb_solve_opts *opts,
+                   double h, const double *z0, int K, double *bound,
+                   double (*z_at)[RB_EXACT_DIM]);
+
 #endif

@@ -94,8 +94,8 @@ static void fill_constants(rb_solver *sv, const rb_motion *motion)
     r->delta = S->d.delta;
 }
 
-static rb_status setup(rb_solver *sv, const rb_model *model, const rb_motion *motion,
-                       const rb_solve_opts *opts, rb_result *out, rb_diag *diag)
+rb_status rb_solver_setup(rb_solver *sv, const rb_model *model, const rb_motion *motion,
+                          const rb_solve_opts *opts, rb_result *out, rb_diag *diag)
 {
     rb_sys *S = &sv->sys;
     memset(sv, 0, sizeof *sv);
@@ -714,7 +714,7 @@ rb_status rb_solve_run(const rb_model *model, const rb_motion *motion,
                        const rb_solve_opts *opts, rb_result *out, rb_diag *diag)
 {
     rb_solver sv;
-    rb_status s = setup(&sv, model, motion, opts, out, diag);
+    rb_status s = rb_solver_setup(&sv, model, motion, opts, out, diag);
     if (s == RB_OK)
         s = run(&sv, diag);
     if (s == RB_OK && sv.res->history && sv.res->history->n

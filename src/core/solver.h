@@ -70,17 +70,28 @@ typedef struct {
  * Gramians of U'^2 and of the floor times U' over the whole step. */
 #define RB_EXACT_DIM 6
 #define RB_EXACT_TABLES 4
+/* the quantities bounded over a step: U, the total shear and the two
+ * uplift guards (exact.c) */
+#define RB_EXACT_NQ 4
 typedef struct {
     double h;
     int n;
     double row[RB_SUB_MAX][4][RB_EXACT_DIM];
     double gvv[RB_EXACT_DIM][RB_EXACT_DIM], gxv[RB_EXACT_DIM][RB_EXACT_DIM];
+    /* bound[q][j]: the largest |row j| over the step of quantity q's row
+     * (exact.c, "Bounds over a step"); bounded 0 where none was proved */
+    int bounded;
+    double bound[RB_EXACT_NQ][RB_EXACT_DIM];
 } rb_exact_table;
 
 typedef struct {
     int on;
     double wb, xib;                       /* the building; 0 without one */
     double inv_ms, in_th;                 /* 1 / M*, the floor's lever M h */
+    /* each bounded quantity as lin[q] . z + lin0[q], taken from the
+     * functions that evaluate it (exact.c, linear_forms) */
+    int lin_ready, lin_side;
+    double lin[RB_EXACT_NQ][RB_EXACT_DIM], lin0[RB_EXACT_NQ];
     rb_exact_table tab[RB_EXACT_TABLES];
     int n_tab;
     double seen[RB_EXACT_TABLES];         /* step lengths met once */
@@ -198,12 +209,29 @@ int rb_control_rk_accept(rb_solver *sv, double h, double err);
 int rb_force_turn_stays(unsigned mask, double dt, double rate_a, double rate_b,
                         const double *ga, const double *gb);
 
+/* A run's solver at its start (solve.c): the model's constants, the
+ * options checked, the motion's, the first stage; out gets the run's
+ * constants. */
+rb_status rb_solver_setup(rb_solver *sv, const rb_model *model, const rb_motion *motion,
+                          const rb_solve_opts *opts, rb_result *out, rb_diag *diag);
+
 /* track.c, history.c */
 void rb_track_point(rb_solver *sv, double t, const double *y);
 /* The same with the evaluation at (t, y) already done. */
 void rb_track_aux(rb_solver *sv, double t, const double *y, const rb_aux *a);
 /* A transition: the sampled quantities start afresh. */
 void rb_track_reset(rb_solver *sv);
+/* Whether a stretch on the floor with no vertical motion, whose total
+ * shear stays within shear_bound, can move none of the quantities
+ * tracked from the shear and the reactions (the floor's reaction is then
+ * the weight, the bolts are slack). */
+int rb_track_quiet_bound(const rb_solver *sv, double shear_bound);
+/* Such a stretch's last two points (times t, top displacements u, total
+ * shears H, the floor x at the second) tracked as rb_track_reset and
+ * rb_track_aux at each would, with no dense output: the peaks' windows
+ * hold the two points and nothing else moves but what they pass. */
+void rb_track_quiet_points(rb_solver *sv, const double *t, const double *u, const double *H,
+                           double x_last);
 /* The points tracked next lie on st's dense output between t0 and t1, or
  * on the Taylor series from (t0, y0) over h (an exact step); none: on no
  * step (a transition's point). */

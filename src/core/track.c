@@ -558,6 +558,74 @@ static void note_anchor(rb_solver *sv, double t, const sample *s)
     }
 }
 
+int rb_track_quiet_bound(const rb_solver *sv, double shear_bound)
+{
+    const rb_result *r = sv->res;
+    double W = sv->sys.d.W;
+    /* the friction demand is |H| / W there, the least reaction W */
+    if (!(W > sv->friction_floor) || !(r->min_vertical_reaction_n <= W)
+        || !(shear_bound <= r->max_shear_total_n) || !(shear_bound / W <= r->max_friction_demand))
+        return 0;
+    if (sv->opts.anchor_phi_nn_n > 0 && sv->opts.anchor_phi_vn_n > 0) {
+        /* the interaction rises with the shear at a given tension (none) */
+        sample s = {shear_bound, W, W, 0, 0};
+        if (!(anchor_ratio(sv, &s, &(int){0}) <= r->anchor_max_ratio))
+            return 0;
+    }
+    return 1;
+}
+
+static void window_of_two(rb_peak_window *w, const double *t, double v0, double v1)
+{
+    w->n = 2;
+    w->t[0] = t[0];
+    w->t[1] = t[1];
+    w->v[0] = v0;
+    w->v[1] = v1;
+}
+
+/* What rb_track_aux does at two points after rb_track_reset where the
+ * floor's reaction is W, the bolts slack and no span is set: a window of
+ * one point returns it, and one of two refines nothing without a dense
+ * output; the lift-off and friction crossings need a reaction on both
+ * sides of a level, which W is not. */
+void rb_track_quiet_points(rb_solver *sv, const double *t, const double *u, const double *H,
+                           double x_last)
+{
+    rb_result *r = sv->res;
+    double W = sv->sys.d.W, hs[2] = {fabs(H[0]), fabs(H[1])};
+    rb_track_reset(sv);
+    sv->track_have = 1;
+    sv->track_t = t[1];
+    sv->track_x = x_last;
+    r->max_u_m = rb_fmax(r->max_u_m, rb_fmax(fabs(u[0]), fabs(u[1])));
+    r->max_shear_total_n = rb_fmax(r->max_shear_total_n, rb_fmax(hs[0], hs[1]));
+    window_of_two(&sv->win_shear, t, hs[0], hs[1]);
+    window_of_two(&sv->win_vertical, t, -W, -W);
+    r->min_vertical_reaction_n = rb_fmin(r->min_vertical_reaction_n, W);
+    sv->lift_have = 1;
+    sv->lift_t = t[1];
+    sv->lift_v = W;
+    sv->fric_have = 1;
+    sv->fric_t = t[1];
+    sv->fric_h = H[1];
+    sv->fric_v = W;
+    window_of_two(&sv->win_friction, t, hs[0] / W, hs[1] / W);
+    r->max_friction_demand = rb_fmax(r->max_friction_demand, rb_fmax(hs[0], hs[1]) / W);
+    if (sv->opts.anchor_phi_nn_n > 0 && sv->opts.anchor_phi_vn_n > 0) {
+        double uu[2];
+        r->anchor_checked = 1;
+        for (int k = 0; k < 2; k++) {
+            sample s = {H[k], W, W, 0, 0};
+            int which;
+            uu[k] = anchor_ratio(sv, &s, &which);
+            if (uu[k] > r->anchor_max_ratio)
+                anchor_record(r, t[k], uu[k], which, &s);
+        }
+        window_of_two(&sv->win_anchor, t, uu[0], uu[1]);
+    }
+}
+
 void rb_track_aux(rb_solver *sv, double t, const double *y, const rb_aux *a)
 {
     const rb_sys *S = &sv->sys;

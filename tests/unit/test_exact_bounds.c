@@ -1,0 +1,145 @@
+/* The bounds over a step that let an exact step on the floor skip its
+ * check points (docs/solver.md, "Bounds over a step"). A bound that is
+ * short of the quantity it bounds would let an uplift pass unseen inside
+ * a step, and a case would pass that should not: each bound must hold at
+ * every instant of the step.
+ *
+ * Over random cabinets (both formulations that step exactly), buildings
+ * (none, or 0.5-60 Hz at 0-50 % damping), step lengths (0.5-40 ms) and
+ * start states, the bounds of U, of the total shear and of both uplift
+ * guards are held against the quantities at 4001 instants of the step,
+ * computed here from the physics of the floor stage (5.3c and the
+ * moment equation at theta = 0; the total shear -M x'' + N* U'') over
+ * states from the system's exponential at each instant, not from the
+ * rows the step reads. The bounds are also held to be of use: within a
+ * few times the largest value the instants show, on median. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include "harness.h"
+#include "rockbolt/record.h"
+#include "rockbolt/solve.h"
+#include "../../src/core/exact.h"
+
+static unsigned long long rng_state = 20261127;
+static double uniform(double lo, double hi)
+{
+    rng_state = rng_state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return lo + (hi - lo) * (double)(rng_state >> 11) / 9007199254740992.0;
+}
+
+enum { K = 4000, CASES = 400 };
+
+static int cmp(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+int main(void)
+{
+    rb_record_opts ro;
+    rb_diag diag;
+    rb_series raw = {0};
+    rb_record_opts_init(&ro);
+    if (rb_record_read("cases/records/elcentro_1940_ns.at2", &ro, &raw, &diag) != RB_OK) {
+        CHECK(0);
+        TEST_MAIN_END();
+    }
+    static double z_at[K + 1][RB_EXACT_DIM];
+    double ratio[CASES][4];
+    int n_ratio = 0, probed = 0;
+    double worst = 0;
+    for (int c = 0; c < CASES; c++) {
+        rb_series s = {0};
+        rb_model m;
+        rb_derived d;
+        rb_motion mo;
+        rb_solve_opts o;
+        double wb = 0, xib = 0;
+        if (rb_series_alloc(&s, raw.n, raw.dt_s) != RB_OK) {
+            CHECK(0);
+            break;
+        }
+        for (size_t i = 0; i < raw.n; i++)
+            s.accel_mps2[i] = raw.accel_mps2[i];
+        if (c % 4) {
+            double f = exp(uniform(log(0.5), log(60)));
+            xib = c % 8 == 1 ? 0 : uniform(0, 0.5);
+            wb = 2 * M_PI * f;
+            CHECK(rb_series_building_filter(&s, f, xib) == RB_OK);
+        }
+        rb_model_reference(&m);
+        m.mass_kg = uniform(50, 5000);
+        m.freq_hz = exp(uniform(log(0.5), log(50)));
+        m.damping = uniform(0, 0.5);
+        CHECK(rb_model_derive(&m, &d, NULL) == RB_OK);
+        rb_motion_init(&mo);
+        mo.kind = RB_MOTION_SAMPLED;
+        mo.series = &s;
+        mo.scale = 1;
+        mo.duration_s = 10;
+        rb_solve_opts_init(&o);
+        o.formulation = c % 3 == 2 ? RB_FORM_SMALL : RB_FORM_LARGE;
+        double h = exp(uniform(log(5e-4), log(0.04)));
+        /* each component of the start state over a wide range, some of
+         * them zero (a building at rest, a line with no slope) */
+        double z0[RB_EXACT_DIM] = {
+            uniform(-1, 1) * 1e-3, uniform(-1, 1) * 5e-2, uniform(-1, 1) * 5e-2,
+            uniform(-1, 1), uniform(-1, 1) * 8, uniform(-1, 1) * 400};
+        for (int j = 0; j < RB_EXACT_DIM; j++)
+            if (uniform(0, 1) < 0.15)
+                z0[j] = 0;
+        double bound[4];
+        if (!rb_exact_probe(&m, &mo, &o, h, z0, K, bound, z_at)) {
+            rb_series_free(&s);
+            continue;
+        }
+        probed++;
+        int small = o.formulation == RB_FORM_SMALL;
+        /* the uplift moment's floor lever at theta = 0 (the weight's
+         * moment, W b or W R alpha, is the part the bound leaves out) */
+        double lever = small ? m.mass_kg * d.R : m.mass_kg * m.cm_height_m;
+        double most[4] = {0};
+        for (int k = 0; k <= K; k++) {
+            const double *z = z_at[k];
+            double x = wb > 0 ? -(2 * xib * wb * z[3] + wb * wb * z[2]) : z[4];
+            double udd = (d.Nstar * x - d.Kstar * z[0] - d.Cstar * z[1]) / d.Mstar;
+            double q[4] = {z[0], -m.mass_kg * x + d.Nstar * udd,
+                           lever * x - d.Fstar * udd, -lever * x + d.Fstar * udd};
+            for (int i = 0; i < 4; i++) {
+                most[i] = fmax(most[i], fabs(q[i]));
+                /* relative to the bound, beyond the state's rounding */
+                double scale = fabs(q[i]) + 1e-12 * bound[i] + 1e-300;
+                double over = (fabs(q[i]) - bound[i]) / scale;
+                if (over > 1e-9) {
+                    if (rb_test_failures < 5)
+                        printf("case %d quantity %d at tau %.6g of %.6g: %.17g over the bound "
+                               "%.17g\n", c, i, h * k / K, h, fabs(q[i]), bound[i]);
+                    CHECK(0);
+                }
+                worst = fmax(worst, fabs(q[i]) / (bound[i] + 1e-300));
+                (void)over;
+            }
+        }
+        for (int i = 0; i < 4; i++)
+            ratio[n_ratio][i] = most[i] > 0 ? bound[i] / most[i] : 1;
+        n_ratio++;
+        rb_series_free(&s);
+    }
+    rb_series_free(&raw);
+    printf("%d of %d random steps bounded; the largest ratio of a quantity to its bound: "
+           "%.9f (at most 1 + 1e-9 allowed)\n", probed, CASES, worst);
+    CHECK(probed >= CASES * 9 / 10);
+    static const char *names[4] = {"U", "total shear", "uplift guard +", "uplift guard -"};
+    for (int i = 0; i < 4 && n_ratio; i++) {
+        double r[CASES];
+        for (int k = 0; k < n_ratio; k++)
+            r[k] = ratio[k][i];
+        qsort(r, (size_t)n_ratio, sizeof *r, cmp);
+        printf("  %-15s bound over the largest value sampled: median %.3f, 90th percentile %.3f\n",
+               names[i], r[n_ratio / 2], r[n_ratio * 9 / 10]);
+        CHECK(r[n_ratio / 2] >= 1 && r[n_ratio / 2] < 3);
+    }
+    TEST_MAIN_END();
+}
