@@ -10,7 +10,6 @@
  * The transition to tau is E(tau) = exp(A tau). */
 #include <float.h>
 #include <math.h>
-#include <stdlib.h>
 #include <string.h>
 #include "../motion/matexp.h"
 #include "exact.h"
@@ -651,42 +650,12 @@ static rb_step_outcome exact_apply(rb_solver *sv, double target, double h, rb_rk
 
 const rb_stepper rb_stepper_exact = {"exact", exact_apply, NULL};
 
-int rb_exact_probe(const rb_model *model, const rb_motion *motion, const rb_solve_opts *opts,
-                   double h, const double *z0, int K, double *bound,
-                   double (*z_at)[RB_EXACT_DIM])
+void rb_exact_table_build(rb_solver *sv, double h, int n, rb_exact_table *t)
 {
-    rb_solver *sv = malloc(sizeof *sv);
-    rb_result res = {0};
-    int ok = sv && rb_solver_setup(sv, model, motion, opts, &res, NULL) == RB_OK
-             && sv->exact.on;
-    if (ok) {
-        rb_exact_table *t = &sv->exact.tab[0];
-        build_table(sv, h, rb_step_checks(sv, h), t);
-        ok = t->bounded;
-    }
-    if (ok) {
-        double a[ZN][ZN], at[ZN][ZN], e[ZN][ZN];
-        for (int q = 0; q < RB_EXACT_NQ; q++) {
-            double v = 0;
-            for (int j = 0; j < ZN; j++)
-                v += sv->exact.tab[0].bound[q][j] * fabs(z0[j]);
-            bound[q] = v;
-        }
-        system_matrix(sv, a);
-        for (int k = 0; k <= K; k++) {
-            for (int i = 0; i < ZN; i++)
-                for (int j = 0; j < ZN; j++)
-                    at[i][j] = a[i][j] * h * k / K;
-            rb_matexp(ZN, &at[0][0], &e[0][0]);
-            for (int i = 0; i < ZN; i++) {
-                z_at[k][i] = 0;
-                for (int j = 0; j < ZN; j++)
-                    z_at[k][i] += e[i][j] * z0[j];
-            }
-        }
-    }
-    if (sv)
-        rb_history_free(res.history);
-    free(sv);
-    return ok;
+    build_table(sv, h, n, t);
+}
+
+void rb_exact_system(const rb_solver *sv, double a[RB_EXACT_DIM][RB_EXACT_DIM])
+{
+    system_matrix(sv, a);
 }

@@ -29,7 +29,13 @@ void rb_exact_setup(rb_solver *sv);
  * declines a step it cannot take (a root inside, a length it keeps no
  * table for), for the Taylor step to take. */
 
-/* For tests (test_exact_bounds): the bounds a run's exact step forms for
+/* A table for steps of length h with n check points, with its bounds
+ * (t->bounded says whether they were proved); the system matrix A of
+ * dz/dt = A z. */
+void rb_exact_table_build(rb_solver *sv, double h, int n, rb_exact_table *t);
+void rb_exact_system(const rb_solver *sv, double a[RB_EXACT_DIM][RB_EXACT_DIM]);
+
+/* For tests (test_exact_bounds, exact_probe.c): the bounds a run's exact step forms for
  * a step of length h from z0 = (U, U', u_b, v_b, g, s), for U, the total
  * shear and the two uplift guards less their value at z = 0, into
  * bound[4]; and the state at tau = k h / K, k = 0..K, from the system's

@@ -1,0 +1,49 @@
+/* For tests: the bounds of an exact step (exact.h, rb_exact_probe),
+ * apart from exact.c so that the run's setup it calls (solve.c) and the
+ * steps it probes form no circle of calls. */
+#include <math.h>
+#include <stdlib.h>
+#include "../motion/matexp.h"
+#include "exact.h"
+
+enum { ZN = RB_EXACT_DIM };
+
+int rb_exact_probe(const rb_model *model, const rb_motion *motion, const rb_solve_opts *opts,
+                   double h, const double *z0, int K, double *bound,
+                   double (*z_at)[RB_EXACT_DIM])
+{
+    rb_solver *sv = malloc(sizeof *sv);
+    rb_result res = {0};
+    int ok = sv && rb_solver_setup(sv, model, motion, opts, &res, NULL) == RB_OK
+             && sv->exact.on;
+    if (ok) {
+        rb_exact_table *t = &sv->exact.tab[0];
+        rb_exact_table_build(sv, h, rb_step_checks(sv, h), t);
+        ok = t->bounded;
+    }
+    if (ok) {
+        double a[ZN][ZN], at[ZN][ZN], e[ZN][ZN];
+        for (int q = 0; q < RB_EXACT_NQ; q++) {
+            double v = 0;
+            for (int j = 0; j < ZN; j++)
+                v += sv->exact.tab[0].bound[q][j] * fabs(z0[j]);
+            bound[q] = v;
+        }
+        rb_exact_system(sv, a);
+        for (int k = 0; k <= K; k++) {
+            for (int i = 0; i < ZN; i++)
+                for (int j = 0; j < ZN; j++)
+                    at[i][j] = a[i][j] * h * k / K;
+            rb_matexp(ZN, &at[0][0], &e[0][0]);
+            for (int i = 0; i < ZN; i++) {
+                z_at[k][i] = 0;
+                for (int j = 0; j < ZN; j++)
+                    z_at[k][i] += e[i][j] * z0[j];
+            }
+        }
+    }
+    if (sv)
+        rb_history_free(res.history);
+    free(sv);
+    return ok;
+}
