@@ -6,6 +6,7 @@
 #ifndef ROCKBOLT_STATUS_H
 #define ROCKBOLT_STATUS_H
 
+#include <stdarg.h>
 #include <stddef.h>
 
 typedef enum {
@@ -33,6 +34,12 @@ typedef struct {
     char msg[512];
 } rb_diag;
 
+#if defined(__GNUC__)
+#define RB_DIAG_FORMAT(f, a) __attribute__((format(printf, f, a)))
+#else
+#define RB_DIAG_FORMAT(f, a)
+#endif
+
 /* Clear a diag to "no error". Accepts NULL. */
 void rb_diag_clear(rb_diag *diag);
 
@@ -40,18 +47,18 @@ void rb_diag_clear(rb_diag *diag);
  * with the place (file and key may be NULL, line and col 0) and the
  * formatted reason, and return st. */
 rb_status rb_diag_set(rb_diag *diag, rb_status st, const char *file, int line, int col,
-                      const char *key, const char *fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 7, 8)))
-#endif
-    ;
+                      const char *key, const char *fmt, ...) RB_DIAG_FORMAT(7, 8);
 /* The same with a va_list, for callers that take a format themselves. */
-#include <stdarg.h>
 rb_status rb_diag_vset(rb_diag *diag, rb_status st, const char *file, int line, int col,
-                       const char *key, const char *fmt, va_list ap)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 7, 0)))
-#endif
-    ;
+                       const char *key, const char *fmt, va_list ap) RB_DIAG_FORMAT(7, 0);
+
+/* One field of a diag changed, for a caller that adds where or why to a
+ * diag filled below it: the text is formatted first, so it may quote the
+ * diag's own fields. With rb_diag_set these are the only writers of an
+ * rb_diag's text (tests/layers/diag_writes.sh). diag may be NULL. */
+void rb_diag_set_file(rb_diag *diag, const char *fmt, ...) RB_DIAG_FORMAT(2, 3);
+void rb_diag_set_key(rb_diag *diag, const char *fmt, ...) RB_DIAG_FORMAT(2, 3);
+void rb_diag_set_msg(rb_diag *diag, const char *fmt, ...) RB_DIAG_FORMAT(2, 3);
+void rb_diag_vset_msg(rb_diag *diag, const char *fmt, va_list ap) RB_DIAG_FORMAT(2, 0);
 
 #endif

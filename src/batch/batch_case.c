@@ -31,7 +31,7 @@ static char *stem_of(const char *path)
 static void set_error(rb_batch_case *bc, const rb_diag *d, const char *source)
 {
     if (rb_batch_case_set_error(bc, d) && !bc->error->file[0])
-        snprintf(bc->error->file, sizeof bc->error->file, "%s", source);
+        rb_diag_set_file(bc->error, "%s", source);
 }
 
 /* The code-static numbers beside the dynamic result, worked out as
@@ -76,9 +76,9 @@ void rb_batch_case_load(rb_batch_slot *s, const rb_batch_item *it, rb_batch_case
         if (diags.n)
             d = diags.items[0];
         else
-            snprintf(d.msg, sizeof d.msg, "cannot load the case: %s", rb_status_str(st));
+            rb_diag_set_msg(&d, "cannot load the case: %s", rb_status_str(st));
         if (!d.key[0])
-            snprintf(d.key, sizeof d.key, "case");
+            rb_diag_set_key(&d, "case");
         bc->verdict = st == RB_ERR_NOMEM ? RB_BATCH_ERROR : RB_BATCH_UNREADABLE;
         set_error(bc, &d, it->source);
         bc->n_errors = diags.n ? diags.n : 1;
@@ -100,8 +100,8 @@ void rb_batch_case_load(rb_batch_slot *s, const rb_batch_item *it, rb_batch_case
     if (!bc->tag || !s->results || !s->rms || !s->run_status || !s->run_diag || !bc->runs) {
         rb_diag d;
         rb_diag_clear(&d);
-        snprintf(d.key, sizeof d.key, "case");
-        snprintf(d.msg, sizeof d.msg, "out of memory");
+        rb_diag_set_key(&d, "case");
+        rb_diag_set_msg(&d, "out of memory");
         set_error(bc, &d, it->source);
         bc->verdict = RB_BATCH_ERROR;
         return;
@@ -222,12 +222,12 @@ void rb_batch_case_finish(rb_batch_slot *s, rb_batch_case *bc, const rb_batch_op
             continue;
         rb_diag d;
         rb_diag_clear(&d);
-        snprintf(d.file, sizeof d.file, "%s", bc->source);
+        rb_diag_set_file(&d, "%s", bc->source);
         d.line = bc->line;   /* the row of a list; 0 for a case file */
-        snprintf(d.key, sizeof d.key, "motion '%.100s'",
-                 s->c.motions[m].name ? s->c.motions[m].name : "?");
-        snprintf(d.msg, sizeof d.msg, "%s%s%.400s", rb_status_str(s->run_status[m]),
-                 s->run_diag[m].msg[0] ? ": " : "", s->run_diag[m].msg);
+        rb_diag_set_key(&d, "motion '%.100s'",
+                        s->c.motions[m].name ? s->c.motions[m].name : "?");
+        rb_diag_set_msg(&d, "%s%s%.400s", rb_status_str(s->run_status[m]),
+                        s->run_diag[m].msg[0] ? ": " : "", s->run_diag[m].msg);
         bc->verdict = RB_BATCH_ERROR;
         rb_batch_case_set_error(bc, &d);
         bc->n_errors = 1;
@@ -236,12 +236,12 @@ void rb_batch_case_finish(rb_batch_slot *s, rb_batch_case *bc, const rb_batch_op
     if (s->frag_status != RB_OK) {
         rb_diag d;
         rb_diag_clear(&d);
-        snprintf(d.file, sizeof d.file, "%s", bc->source);
+        rb_diag_set_file(&d, "%s", bc->source);
         d.line = bc->line;
-        snprintf(d.key, sizeof d.key, "fragility%s%.100s", s->frag_diag.key[0] ? ": " : "",
-                 s->frag_diag.key);
-        snprintf(d.msg, sizeof d.msg, "%s%s%.400s", rb_status_str(s->frag_status),
-                 s->frag_diag.msg[0] ? ": " : "", s->frag_diag.msg);
+        rb_diag_set_key(&d, "fragility%s%.100s", s->frag_diag.key[0] ? ": " : "",
+                        s->frag_diag.key);
+        rb_diag_set_msg(&d, "%s%s%.400s", rb_status_str(s->frag_status),
+                        s->frag_diag.msg[0] ? ": " : "", s->frag_diag.msg);
         bc->verdict = RB_BATCH_ERROR;
         rb_batch_case_set_error(bc, &d);
         bc->n_errors = 1;
@@ -256,7 +256,7 @@ void rb_batch_case_finish(rb_batch_slot *s, rb_batch_case *bc, const rb_batch_op
     if (o->reports_dir) {
         if (write_reports(s, bc, o, total, &rep, &d) != RB_OK) {
             if (!d.key[0])
-                snprintf(d.key, sizeof d.key, "--reports");
+                rb_diag_set_key(&d, "--reports");
             bc->verdict = RB_BATCH_ERROR;
             rb_batch_case_set_error(bc, &d);
             bc->n_errors = 1;

@@ -19,8 +19,8 @@ static rb_status fail(rb_diag *d, const char *fmt, ...)
     if (d) {
         va_list ap;
         va_start(ap, fmt);
-        snprintf(d->key, sizeof d->key, "merge");
-        vsnprintf(d->msg, sizeof d->msg, fmt, ap);
+        rb_diag_set_key(d, "merge");
+        rb_diag_vset_msg(d, fmt, ap);
         va_end(ap);
     }
     return RB_ERR_INVALID;

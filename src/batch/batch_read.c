@@ -77,7 +77,7 @@ static rb_status fail_at(rb_batch_reader *r, rb_diag *d, rb_status st, int line,
  * the value read last. */
 static rb_status place(rb_batch_reader *r, rb_diag *d, rb_status st)
 {
-    snprintf(d->file, sizeof d->file, "%s", r->name);
+    rb_diag_set_file(d, "%s", r->name);
     d->line = r->vline;
     d->col = r->vcol;
     return st;

@@ -193,7 +193,7 @@ static rb_status check_opts(const rb_batch_opts *o, rb_diag *diag)
     if (!bad)
         return RB_OK;
     if (diag)
-        snprintf(diag->msg, sizeof diag->msg, "%s", bad);
+        rb_diag_set_msg(diag, "%s", bad);
     return RB_ERR_INVALID;
 }
 

@@ -157,11 +157,9 @@ void rb_cctx_finish(rb_cctx *c, size_t first)
         rb_diag *d = cctx_push(c);
         if (d) {
             *d = c->dropped;
-            char msg[sizeof d->msg];
-            snprintf(msg, sizeof msg, "too many errors: %zu more not shown (at "
-                     "most %d are listed); the first of them: %.400s", c->n_dropped,
-                     RB_CASE_MAX_DIAGS, c->dropped.msg);
-            memcpy(d->msg, msg, sizeof msg);
+            rb_diag_set_msg(d, "too many errors: %zu more not shown (at most %d are "
+                            "listed); the first of them: %.400s", c->n_dropped,
+                            RB_CASE_MAX_DIAGS, c->dropped.msg);
         }
     }
 }

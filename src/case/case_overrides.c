@@ -219,11 +219,11 @@ static rb_status push_diag(rb_diag_list *l, const char *file, int line, int col,
     rb_diag *d = rb_diag_list_add(l);
     if (!d)
         return RB_ERR_NOMEM;
-    snprintf(d->file, sizeof d->file, "%s", file);
+    rb_diag_set_file(d, "%s", file);
     d->line = line;
     d->col = col;
-    snprintf(d->key, sizeof d->key, "%s", key);
-    snprintf(d->msg, sizeof d->msg, "%s", msg);
+    rb_diag_set_key(d, "%s", key);
+    rb_diag_set_msg(d, "%s", msg);
     return RB_ERR_INVALID;
 }
 
@@ -264,12 +264,12 @@ static void map_diags(rb_diag_list *l, size_t first, const char *tmp,
         rb_diag *d = &l->items[i];
         if (strcmp(d->file, tmp) == 0) {
             int k = d->line >= 1 && d->line <= g->line ? g->line_ov[d->line] : -1;
-            snprintf(d->file, sizeof d->file, "%s", origin);
+            rb_diag_set_file(d, "%s", origin);
             d->line = k >= 0 ? g->ov[k].line : row_line;
             d->col = k >= 0 ? g->ov[k].col : row_col;
             /* the generated `extends:` is the row's base: say so */
             if (k < 0 && strcmp(d->key, "extends") == 0)
-                snprintf(d->key, sizeof d->key, "base");
+                rb_diag_set_key(d, "base");
         } else {
             char at[sizeof d->file + 40];
             int k = override_of(g, d->key);
@@ -280,8 +280,8 @@ static void map_diags(rb_diag_list *l, size_t first, const char *tmp,
             else
                 snprintf(at, sizeof at, " (in %s)", d->file);
             if (d->file[0] && strlen(d->msg) + strlen(at) < sizeof d->msg)
-                strcat(d->msg, at);
-            snprintf(d->file, sizeof d->file, "%s", origin);
+                rb_diag_set_msg(d, "%s%s", d->msg, at);
+            rb_diag_set_file(d, "%s", origin);
             d->line = k >= 0 ? g->ov[k].line : row_line;
             d->col = k >= 0 ? g->ov[k].col : row_col;
         }

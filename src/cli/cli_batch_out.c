@@ -101,7 +101,7 @@ static rb_status fill(void *ctx, size_t i, FILE *fp, rb_diag *d)
                                "cannot read back the summary's temporary file: %.200s",
                                strerror(o->spool_errno));
         if (st != RB_OK && !d->msg[0])
-            snprintf(d->msg, sizeof d->msg, "%s", rb_status_str(st));
+            rb_diag_set_msg(d, "%s", rb_status_str(st));
         return st;
     }
     rb_batch_format f = strcmp(opt, "--json") == 0 ? RB_BATCH_JSON
@@ -115,8 +115,8 @@ static rb_status fill(void *ctx, size_t i, FILE *fp, rb_diag *d)
                            "cannot read back the summary's temporary file: %.200s",
                            strerror(o->spool_errno));
     if (st != RB_OK)
-        snprintf(d->msg, sizeof d->msg, "%s", st == RB_ERR_NOMEM ? "out of memory"
-                                                                  : "cannot write");
+        rb_diag_set_msg(d, "%s", st == RB_ERR_NOMEM ? "out of memory"
+                        : "cannot write");
     return st;
 }
 

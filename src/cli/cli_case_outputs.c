@@ -113,13 +113,13 @@ static rb_status fill(void *ctx, size_t i, FILE *fp, rb_diag *d)
     if (r->other_opt && strcmp(opt, r->other_opt) == 0) {
         st = r->other(r->ctx, i, fp, d);
         if (st != RB_OK && !d->msg[0])
-            snprintf(d->msg, sizeof d->msg, "%s", rb_status_str(st));
+            rb_diag_set_msg(d, "%s", rb_status_str(st));
         return st;
     }
     if (strcmp(opt, "--pdf") == 0) {
         st = pdf(r, fp, d);
         if (st != RB_OK && !d->msg[0])
-            snprintf(d->msg, sizeof d->msg, "%s", rb_status_str(st));
+            rb_diag_set_msg(d, "%s", rb_status_str(st));
         return st;
     }
     if (strcmp(opt, "--json") == 0)
@@ -137,7 +137,7 @@ static rb_status fill(void *ctx, size_t i, FILE *fp, rb_diag *d)
     if (st == RB_OK && fputs(text, fp) == EOF)
         st = RB_ERR_IO;
     if (st != RB_OK && !d->msg[0])
-        snprintf(d->msg, sizeof d->msg, "%s", rb_status_str(st));
+        rb_diag_set_msg(d, "%s", rb_status_str(st));
     free(text);
     return st;
 }

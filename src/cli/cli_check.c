@@ -81,8 +81,8 @@ static rb_exit load_case(const rb_cli_opts *o, check_run *r)
     size_t i;
     for (i = 0; i < diags.n; i++) {
         if (!diags.items[i].file[0])
-            snprintf(diags.items[i].file, sizeof diags.items[i].file, "%s",
-                     o->case_path);
+            rb_diag_set_file(&diags.items[i], "%s",
+                             o->case_path);
         rb_cli_diag_print(&diags.items[i]);
     }
     if (st != RB_OK && diags.n == 0)
@@ -100,7 +100,7 @@ static rb_exit prepare(const rb_cli_opts *o, check_run *r)
     rb_status st;
     rb_diag_clear(&d);
     if (rb_model_derive(&r->c.model, &r->rep.derived, &d) != RB_OK) {
-        snprintf(d.file, sizeof d.file, "%s", o->case_path);
+        rb_diag_set_file(&d, "%s", o->case_path);
         rb_cli_diag_print(&d);
         return RB_EXIT_USAGE;
     }
@@ -182,7 +182,7 @@ static rb_exit render_reports(const rb_cli_opts *o, check_run *r)
     if (o->json_path)
         st = rb_report_json_render(&r->rep, &r->json, &d);
     if (st != RB_OK) {
-        snprintf(d.file, sizeof d.file, "%s", o->json_path);
+        rb_diag_set_file(&d, "%s", o->json_path);
         rb_cli_diag_print(&d);
         return RB_EXIT_INTERNAL;
     }
@@ -190,8 +190,8 @@ static rb_exit render_reports(const rb_cli_opts *o, check_run *r)
         st = rb_report_text_render(&r->rep, r->tmpl, &r->text, &d);
     if (st != RB_OK) {
         int user = strcmp(r->tmpl_origin, "RB_TEMPLATE_DIR") == 0;
-        snprintf(d.file, sizeof d.file, "%s/report.txt",
-                 user ? getenv("RB_TEMPLATE_DIR") : "templates");
+        rb_diag_set_file(&d, "%s/report.txt",
+                         user ? getenv("RB_TEMPLATE_DIR") : "templates");
         rb_cli_diag_print(&d);
         return user && st == RB_ERR_PARSE ? RB_EXIT_USAGE : RB_EXIT_INTERNAL;
     }
@@ -268,8 +268,8 @@ static rb_exit render_figures(const rb_cli_opts *o, check_run *r)
         if (st == RB_ERR_PARSE) {
             /* an error of the template, at its line and column */
             int user = strcmp(r->calc_origin, "RB_TEMPLATE_DIR") == 0;
-            snprintf(d.file, sizeof d.file, "%s/calc.txt",
-                     user ? getenv("RB_TEMPLATE_DIR") : "templates");
+            rb_diag_set_file(&d, "%s/calc.txt",
+                             user ? getenv("RB_TEMPLATE_DIR") : "templates");
             rb_cli_diag_print(&d);
             return user ? RB_EXIT_USAGE : RB_EXIT_INTERNAL;
         }
@@ -430,18 +430,18 @@ static rb_status fill_output(void *ctx, size_t i, FILE *fp, rb_diag *d)
         if (!r->pdf)
             break;
         if (fwrite(r->pdf, 1, r->pdf_len, fp) != r->pdf_len) {
-            snprintf(d->msg, sizeof d->msg, "cannot write");
+            rb_diag_set_msg(d, "cannot write");
             return RB_ERR_IO;
         }
         return RB_OK;
     }
     if (!s) {
         /* the plan counted more sweeps or figures than were made */
-        snprintf(d->msg, sizeof d->msg, "nothing to write here (a bug)");
+        rb_diag_set_msg(d, "nothing to write here (a bug)");
         return RB_ERR_INVALID;
     }
     if (fwrite(s, 1, strlen(s), fp) != strlen(s)) {
-        snprintf(d->msg, sizeof d->msg, "cannot write");
+        rb_diag_set_msg(d, "cannot write");
         return RB_ERR_IO;
     }
     return RB_OK;

@@ -55,10 +55,10 @@ static rb_status dir_file(const void *ctx, size_t i, FILE *fp, rb_diag *d)
                        ? rb_floors_write_at2(fp, o->c, o->f, m, a)
                        : rb_floors_write_csv(fp, o->c, o->f, m, a);
         if (st != RB_OK)
-            snprintf(d->msg, sizeof d->msg, "cannot write %s", o->files[k]);
+            rb_diag_set_msg(d, "cannot write %s", o->files[k]);
         return st;
     }
-    snprintf(d->msg, sizeof d->msg, "no file planned at %zu (a bug)", i);
+    rb_diag_set_msg(d, "no file planned at %zu (a bug)", i);
     return RB_ERR_INVALID;
 }
 

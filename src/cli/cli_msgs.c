@@ -33,12 +33,8 @@ void rb_cli_error(const char *file, const char *key, const char *fmt, ...)
 {
     rb_diag d;
     va_list ap;
-    rb_diag_clear(&d);
-    snprintf(d.file, sizeof d.file, "%s", file ? file : "rockbolt");
-    if (key)
-        snprintf(d.key, sizeof d.key, "%s", key);
     va_start(ap, fmt);
-    vsnprintf(d.msg, sizeof d.msg, fmt, ap);
+    rb_diag_vset(&d, RB_ERR_INVALID, file ? file : "rockbolt", 0, 0, key, fmt, ap);
     va_end(ap);
     rb_cli_diag_print(&d);
 }

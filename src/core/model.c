@@ -38,8 +38,8 @@ void rb_model_reference(rb_model *m)
 
 /* A macro so that each message is a literal the compiler checks. */
 #define REQUIRE(cond, k, fmt, v) do { if (!(cond)) { if (diag) { \
-        snprintf(diag->key, sizeof diag->key, "%s", k); \
-        snprintf(diag->msg, sizeof diag->msg, fmt, v); } \
+        rb_diag_set_key(diag, "%s", k); \
+        rb_diag_set_msg(diag, fmt, v); } \
         return RB_ERR_INVALID; } } while (0)
 
 static rb_status check_equipment(const rb_model *m, rb_diag *diag)

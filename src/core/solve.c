@@ -46,8 +46,8 @@ static rb_status fail(rb_solver *sv, rb_diag *diag, rb_status st, const char *wh
 }
 
 #define OPT_REQUIRE(cond, k, fmt, v) do { if (!(cond)) { if (diag) { \
-        snprintf(diag->key, sizeof diag->key, "%s", k); \
-        snprintf(diag->msg, sizeof diag->msg, fmt, v); } \
+        rb_diag_set_key(diag, "%s", k); \
+        rb_diag_set_msg(diag, fmt, v); } \
         return RB_ERR_INVALID; } } while (0)
 
 /* Options that would make a run unbounded or its tolerance unattainable

@@ -843,7 +843,7 @@ static rb_status fill_one(rb_outplan *p, size_t i, FILE *fp, rb_outplan_fill_fn 
     if (st != RB_OK && !err) {
         fclose(fp);
         if (!d->file[0])
-            snprintf(d->file, sizeof d->file, "%s", o->path);
+            rb_diag_set_file(d, "%s", o->path);
         return st;
     }
     return close_out(fp, o->how == RB_OUT_FILE, o->path, o->opt, err, d);

@@ -16,7 +16,7 @@ void rb_pdf_fail(rb_pdf_pen *p, rb_status st, const char *msg, const char *what)
         return;
     p->st = st;
     if (p->diag)
-        snprintf(p->diag->msg, sizeof p->diag->msg, "%s%s", msg, what ? what : "");
+        rb_diag_set_msg(p->diag, "%s%s", msg, what ? what : "");
 }
 
 /* Set text in font over width (no wrap when width <= 0). */

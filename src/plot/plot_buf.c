@@ -45,7 +45,7 @@ rb_status rb_plot_finish(rb_strbuf *b, char **out, rb_diag *diag)
         rb_strbuf_free(b);
         *out = NULL;
         if (diag)
-            snprintf(diag->msg, sizeof diag->msg, "out of memory while drawing");
+            rb_diag_set_msg(diag, "out of memory while drawing");
         return RB_ERR_NOMEM;
     }
     *out = b->p;

@@ -68,8 +68,8 @@ rb_status rb_plot_floors_svg(const rb_case *c, const rb_case_floors *f, const ch
     *out = NULL;
     if (!rb_plot_floors_has_figure(f)) {
         if (diag)
-            snprintf(diag->msg, sizeof diag->msg, "no motion of the case has a target "
-                     "spectrum to draw its TRS against");
+            rb_diag_set_msg(diag, "no motion of the case has a target "
+                            "spectrum to draw its TRS against");
         return RB_ERR_INVALID;
     }
     for (size_t m = 0; m < f->n_motions; m++)

@@ -85,7 +85,7 @@ rb_status rb_plot_fragility_svg(const rb_case_fragility *f, const char *title,
     if (!cap || f->n_motions == 0) {
         free(cap);
         if (diag)
-            snprintf(diag->msg, sizeof diag->msg, "no motions to draw");
+            rb_diag_set_msg(diag, "no motions to draw");
         return cap ? RB_ERR_INVALID : RB_ERR_NOMEM;
     }
     double lo, hi;

@@ -44,7 +44,7 @@ rb_status rb_plot_fragility_sweep_svg(const rb_fragility_sweep *s, const char *t
     *out = NULL;
     if (!s || s->n_points == 0) {
         if (diag)
-            snprintf(diag->msg, sizeof diag->msg, "the sweep has no points to draw");
+            rb_diag_set_msg(diag, "the sweep has no points to draw");
         return RB_ERR_INVALID;
     }
     size_t n = s->n_points;

@@ -438,7 +438,7 @@ static rb_status check_motion(const rb_report *rep, size_t k, rb_diag *diag)
     if (!why)
         return RB_OK;
     if (diag)
-        snprintf(diag->msg, sizeof diag->msg, "motion %zu: %s", k + 1, why);
+        rb_diag_set_msg(diag, "motion %zu: %s", k + 1, why);
     return RB_ERR_INVALID;
 }
 

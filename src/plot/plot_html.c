@@ -57,8 +57,7 @@ rb_status rb_plot_html_page(const rb_report *rep, const char *title,
     for (i = 0; i < n_svgs; i++) {
         if (!svgs || !svgs[i] || !svg_start(svgs[i])) {
             if (diag)
-                snprintf(diag->msg, sizeof diag->msg,
-                         "figure %zu is not an <svg> element", i + 1);
+                rb_diag_set_msg(diag, "figure %zu is not an <svg> element", i + 1);
             return RB_ERR_INVALID;
         }
     }
@@ -103,13 +102,13 @@ rb_status rb_plot_report_html(const rb_report *rep, const char *text_report,
     *out = NULL;
     if (!rep) {
         if (diag)
-            snprintf(diag->msg, sizeof diag->msg, "no report to draw");
+            rb_diag_set_msg(diag, "no report to draw");
         return RB_ERR_INVALID;
     }
     svgs = calloc(rep->n_motions ? rep->n_motions : 1, sizeof *svgs);
     if (!svgs) {
         if (diag)
-            snprintf(diag->msg, sizeof diag->msg, "out of memory while drawing");
+            rb_diag_set_msg(diag, "out of memory while drawing");
         return RB_ERR_NOMEM;
     }
     for (i = 0; i < rep->n_motions && st == RB_OK; i++) {

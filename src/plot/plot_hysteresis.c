@@ -95,8 +95,8 @@ rb_status rb_plot_hysteresis_svg(const rb_report *rep, size_t motion_index,
         || !rep->motions[motion_index].result
         || !(h = rep->motions[motion_index].result->history) || h->n < 2) {
         if (diag)
-            snprintf(diag->msg, sizeof diag->msg, "motion %zu: no time history of two "
-                     "rows or more to draw", motion_index + 1);
+            rb_diag_set_msg(diag, "motion %zu: no time history of two "
+                            "rows or more to draw", motion_index + 1);
         return RB_ERR_INVALID;
     }
     rm = &rep->motions[motion_index];

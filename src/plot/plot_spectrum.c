@@ -70,7 +70,7 @@ rb_status rb_plot_spectra_svg(const rb_case *c, const rb_case_spectra *s, const 
     *out = NULL;
     if (s->n_motions == 0 || s->motions[0].sp.n < 2) {
         if (diag)
-            snprintf(diag->msg, sizeof diag->msg, "no spectra to draw");
+            rb_diag_set_msg(diag, "no spectra to draw");
         return RB_ERR_INVALID;
     }
     const rb_spectrum *sp0 = &s->motions[0].sp;

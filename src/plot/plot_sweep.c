@@ -127,7 +127,7 @@ rb_status rb_plot_sweep_svg(const rb_sweep *s, const char *title, char **out,
     *out = NULL;
     if (!s || s->n_points == 0 || !s->points) {
         if (diag)
-            snprintf(diag->msg, sizeof diag->msg, "the sweep has no points to draw");
+            rb_diag_set_msg(diag, "the sweep has no points to draw");
         return RB_ERR_INVALID;
     }
     x = malloc(s->n_points * sizeof *x);

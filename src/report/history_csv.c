@@ -30,9 +30,8 @@ static rb_status write_rows(FILE *fp, size_t motion, const rb_history *h,
         for (c = 0; c < HIST_NUM_COLS; c++) {
             if (!isfinite(v[c])) {
                 if (diag) {
-                    snprintf(diag->msg, sizeof diag->msg,
-                             "non-finite value in the history of motion %zu "
-                             "at row %zu (a bug: please report it)", motion, i + 1);
+                    rb_diag_set_msg(diag, "non-finite value in the history of motion %zu "
+                                    "at row %zu (a bug: please report it)", motion, i + 1);
                 }
                 return RB_ERR_NONFINITE;
             }
@@ -55,7 +54,7 @@ rb_status rb_history_write_csv(FILE *fp, const rb_report *r, rb_diag *diag)
     }
     if (st == RB_OK && ferror(fp)) {
         if (diag)
-            snprintf(diag->msg, sizeof diag->msg, "cannot write the history");
+            rb_diag_set_msg(diag, "cannot write the history");
         st = RB_ERR_IO;
     }
     return st;

@@ -397,9 +397,8 @@ rb_status rb_report_json_render(const rb_report *r, char **out, rb_diag *diag)
         cx.st = RB_ERR_NOMEM;
     cJSON_Delete(root);
     if (cx.st == RB_ERR_NONFINITE && diag) {
-        snprintf(diag->key, sizeof diag->key, "%s", cx.bad_key);
-        snprintf(diag->msg, sizeof diag->msg,
-                 "non-finite number in the report (a bug: please report it)");
+        rb_diag_set_key(diag, "%s", cx.bad_key);
+        rb_diag_set_msg(diag, "non-finite number in the report (a bug: please report it)");
     }
     return cx.st;
 }

@@ -57,9 +57,9 @@ fail:
     err = errno;
     free(buf);
     if (diag) {
-        snprintf(diag->file, sizeof diag->file, "%.500s", path);
-        snprintf(diag->msg, sizeof diag->msg, "cannot read template: %s",
-                 err ? strerror(err) : "too large");
+        rb_diag_set_file(diag, "%.500s", path);
+        rb_diag_set_msg(diag, "cannot read template: %s",
+                        err ? strerror(err) : "too large");
     }
     return RB_ERR_IO;
 }
@@ -89,7 +89,7 @@ rb_status rb_template_load(const char *name, char **text, const char **origin,
     *text = NULL;
     if (!builtin) {
         if (diag)
-            snprintf(diag->msg, sizeof diag->msg, "no template called '%s'", name);
+            rb_diag_set_msg(diag, "no template called '%s'", name);
         return RB_ERR_INVALID;
     }
     if (env && env[0]) {

@@ -198,7 +198,7 @@ static rb_status design_sweeps(const rb_case *c, int n_threads, rb_case_design *
         st = rb_sweep_frequency(&c->model, &c->solve, &c->criteria, &c->sweeps[i],
                                 n_threads, &out->sweeps[out->n_sweeps++], diag);
         if (st != RB_OK) {
-            snprintf(diag->key, sizeof diag->key, "design.sweeps[%zu]", i + 1);
+            rb_diag_set_key(diag, "design.sweeps[%zu]", i + 1);
             return st;
         }
     }
@@ -268,11 +268,8 @@ rb_status rb_run_design(const rb_case *c, int n_threads, rb_case_design *out,
             k->concrete_utilization = c->anchor_static_utilization;
             k->concrete_clause = c->anchor_static_clause;
         }
-        if (st != RB_OK) {
-            char key[sizeof diag->key];
-            snprintf(key, sizeof key, "design.code.%.100s", diag->key);
-            snprintf(diag->key, sizeof diag->key, "%s", key);
-        }
+        if (st != RB_OK)
+            rb_diag_set_key(diag, "design.code.%.100s", diag->key);
         out->has_code = st == RB_OK;
     }
     if (st == RB_OK && fn)

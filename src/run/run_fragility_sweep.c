@@ -80,12 +80,8 @@ rb_status rb_run_fragility_gap_sweep(const rb_case *c, const double *gap_ratios,
         st = rb_run_fragility(&at, n_threads, seed, n_boot, &out->points[i], diag,
                               progress ? progress_one : NULL, &sp);
         sp.before += per_point;
-        if (st != RB_OK && diag) {
-            char msg[sizeof diag->msg];
-            snprintf(msg, sizeof msg, "%s", diag->msg);
-            snprintf(diag->msg, sizeof diag->msg, "at gap ratio %g: %.400s", gap_ratios[i],
-                     msg);
-        }
+        if (st != RB_OK && diag)
+            rb_diag_set_msg(diag, "at gap ratio %g: %.400s", gap_ratios[i], diag->msg);
     }
     return st;
 }

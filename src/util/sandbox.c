@@ -27,10 +27,10 @@ rb_status rb_sandbox_set(const char *dir, rb_diag *diag)
         || !S_ISDIR(sb.st_mode)) {
         if (diag) {
             rb_diag_clear(diag);
-            snprintf(diag->file, sizeof diag->file, "%s", dir);
-            snprintf(diag->key, sizeof diag->key, "--sandbox");
-            snprintf(diag->msg, sizeof diag->msg, "expected an existing directory%s%s",
-                     errno ? ": " : "", errno ? strerror(errno) : "");
+            rb_diag_set_file(diag, "%s", dir);
+            rb_diag_set_key(diag, "--sandbox");
+            rb_diag_set_msg(diag, "expected an existing directory%s%s",
+                            errno ? ": " : "", errno ? strerror(errno) : "");
         }
         return RB_ERR_IO;
     }

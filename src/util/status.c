@@ -52,3 +52,45 @@ rb_status rb_diag_vset(rb_diag *diag, rb_status st, const char *file, int line, 
     memcpy(diag->msg, msg, sizeof msg);
     return st;
 }
+
+/* fmt into field (of size n), through a copy: the text may quote field */
+static void set_field(char *field, size_t n, const char *fmt, va_list ap)
+{
+    char text[sizeof ((rb_diag *)0)->msg];
+    vsnprintf(text, sizeof text, fmt, ap);
+    snprintf(field, n, "%s", text);
+}
+
+void rb_diag_set_file(rb_diag *diag, const char *fmt, ...)
+{
+    va_list ap;
+    if (!diag)
+        return;
+    va_start(ap, fmt);
+    set_field(diag->file, sizeof diag->file, fmt, ap);
+    va_end(ap);
+}
+
+void rb_diag_set_key(rb_diag *diag, const char *fmt, ...)
+{
+    va_list ap;
+    if (!diag)
+        return;
+    va_start(ap, fmt);
+    set_field(diag->key, sizeof diag->key, fmt, ap);
+    va_end(ap);
+}
+
+void rb_diag_set_msg(rb_diag *diag, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    rb_diag_vset_msg(diag, fmt, ap);
+    va_end(ap);
+}
+
+void rb_diag_vset_msg(rb_diag *diag, const char *fmt, va_list ap)
+{
+    if (diag)
+        set_field(diag->msg, sizeof diag->msg, fmt, ap);
+}
