@@ -12,4 +12,9 @@
 #define RB_JSONNUM_MAX 32
 void rb_json_number(double v, char *buf);
 
+/* The same, or "null" when v is not finite: JSON has no infinity, and where
+ * an output meets one (a ratio with nothing to divide by) it means none.
+ * The one number format of every JSON output. */
+void rb_json_number_or_null(double v, char *buf);
+
 #endif

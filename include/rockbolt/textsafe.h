@@ -40,6 +40,10 @@ char *rb_text_escape(const char *s);
  * preformatted text in HTML and SVG (rb_plot_escape adds XML's own). */
 char *rb_text_escape_lines(const char *s);
 
+/* The characters a terminal shows for escaped text s (code points; a byte
+ * that is not UTF-8 counts as one), for padding it in a column. */
+size_t rb_text_width(const char *s);
+
 /* Whether s needs escaping at all (has a byte that would change). */
 int rb_text_needs_escape(const char *s);
 

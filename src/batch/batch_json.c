@@ -18,7 +18,7 @@
 #include "batch_summary.h"
 #include "rockbolt/criteria.h"
 #include "rockbolt/names.h"
-#include "rockbolt/jsonnum.h"
+#include "rockbolt/jsonbuild.h"
 #include "rockbolt/jsonprint.h"
 #include "util/strbuf.h"
 #include "rockbolt/report.h"
@@ -39,15 +39,6 @@ static cJSON *add_text(cJSON *o, const char *k, const char *v)
     return r;
 }
 
-static int add_num(cJSON *o, const char *k, double v)
-{
-    char buf[RB_JSONNUM_MAX];
-    if (!isfinite(v))
-        return cJSON_AddNullToObject(o, k) != NULL;
-    rb_json_number(v, buf);
-    return cJSON_AddRawToObject(o, k, buf) != NULL;
-}
-
 /* The columns of one group (the run's own, or the design's) of a run or
  * of a case's mean and maximum; none is null. key_max: the aggregates'
  * names (in "max"); bounds NULL: no bound columns (a mean or maximum). */
@@ -59,7 +50,7 @@ static int add_columns(cJSON *o, const double *value, const unsigned *bounds, in
         const rb_batch_column *col = &rb_batch_columns[k];
         if (col->design != design)
             continue;
-        ok = add_num(o, key_max ? col->agg_name : col->name, value[k]);
+        ok = rb_j_add_num(o, key_max ? col->agg_name : col->name, value[k]);
         if (ok && bounds && col->bound_of) {
             char key[64];
             snprintf(key, sizeof key, "%s_bound", col->name);
@@ -99,7 +90,7 @@ static int add_run(cJSON *arr, const rb_batch_result *r, int design)
     int ok = add_text(o, "motion", r->motion) != NULL
         && cJSON_AddStringToObject(o, "verdict", r->pass ? "pass" : "fail") != NULL
         && add_columns(o, r->value, &r->bounds, 0, 0)
-        && add_num(o, "margin", r->margin)
+        && rb_j_add_num(o, "margin", r->margin)
         && cJSON_AddStringToObject(o, "governs",
                                    rb_governs_name((rb_governs_limit)r->limit)) != NULL
         && add_text(o, "reason", r->reason) != NULL
@@ -108,7 +99,7 @@ static int add_run(cJSON *arr, const rb_batch_result *r, int design)
     if (ok && r->has_anchor)
         ok = cJSON_AddStringToObject(o, "anchor_mode",
                                      rb_enum_str(rb_anchor_mode_names, r->anchor_mode)) != NULL
-             && add_num(o, "anchor_utilization", r->anchor_utilization);
+             && rb_j_add_num(o, "anchor_utilization", r->anchor_utilization);
     return ok && (!design || add_columns(o, r->value, &r->bounds, 1, 0));
 }
 
@@ -119,10 +110,10 @@ static int add_error(cJSON *o, const rb_batch_case *c)
     cJSON *e = cJSON_AddObjectToObject(o, "error");
     const rb_diag *d = rb_batch_case_error(c);
     return e && add_text(e, "file", d->file)
-        && add_num(e, "line", d->line) && add_num(e, "col", d->col)
+        && rb_j_add_num(e, "line", d->line) && rb_j_add_num(e, "col", d->col)
         && add_text(e, "key", d->key)
         && add_text(e, "message", d->msg)
-        && add_num(e, "count", (double)c->n_errors);
+        && rb_j_add_num(e, "count", (double)c->n_errors);
 }
 
 /* A case's fragility in SI, under the names `rockbolt fragility --json`
@@ -134,8 +125,8 @@ static int add_fragility(cJSON *o, const rb_batch_fragility *f)
         return 0;
     if (f->error)
         return add_text(fo, "error", f->error) != NULL;
-    int ok = (!(f->im_freq_hz > 0) || add_num(fo, "intensity_freq_hz", f->im_freq_hz))
-        && add_num(fo, "g_mps2", f->g_mps2) && add_num(fo, "level_mps2", f->level_mps2)
+    int ok = (!(f->im_freq_hz > 0) || rb_j_add_num(fo, "intensity_freq_hz", f->im_freq_hz))
+        && rb_j_add_num(fo, "g_mps2", f->g_mps2) && rb_j_add_num(fo, "level_mps2", f->level_mps2)
         && (f->governing >= 0
             ? cJSON_AddStringToObject(fo, "governing_limit_state",
                                       rb_enum_str(rb_limit_state_names, f->governing))
@@ -152,11 +143,11 @@ static int add_fragility(cJSON *o, const rb_batch_fragility *f)
                                      rb_enum_str(rb_limit_state_names, k)) != NULL
             && cJSON_AddBoolToObject(e, "fitted", l->fitted) != NULL;
         if (ok && l->fitted)
-            ok = add_num(e, "median_mps2", l->median_mps2) && add_num(e, "beta", l->beta)
-                && add_num(e, "median_lo_mps2", l->median_lo_mps2)
-                && add_num(e, "median_hi_mps2", l->median_hi_mps2)
-                && add_num(e, "p_at_level", l->p_at_level);
-        ok = ok && add_num(e, "reached", (double)l->reached);
+            ok = rb_j_add_num(e, "median_mps2", l->median_mps2) && rb_j_add_num(e, "beta", l->beta)
+                && rb_j_add_num(e, "median_lo_mps2", l->median_lo_mps2)
+                && rb_j_add_num(e, "median_hi_mps2", l->median_hi_mps2)
+                && rb_j_add_num(e, "p_at_level", l->p_at_level);
+        ok = ok && rb_j_add_num(e, "reached", (double)l->reached);
     }
     return ok;
 }
@@ -168,11 +159,11 @@ static int add_code(cJSON *o, const rb_batch_case *c)
     if (!c->has_code)
         return cJSON_AddNullToObject(o, "code_static") != NULL;
     cJSON *k = cJSON_AddObjectToObject(o, "code_static");
-    return k && add_num(k, "fp_n", c->code_fp_n)
-        && add_num(k, "fp_over_wp", c->code_fp_over_wp)
-        && add_num(k, "tension_n", c->code_tension_n)
-        && add_num(k, "steel_ratio", c->code_steel_ratio)
-        && add_num(k, "anchor_utilization", c->code_anchor_utilization);
+    return k && rb_j_add_num(k, "fp_n", c->code_fp_n)
+        && rb_j_add_num(k, "fp_over_wp", c->code_fp_over_wp)
+        && rb_j_add_num(k, "tension_n", c->code_tension_n)
+        && rb_j_add_num(k, "steel_ratio", c->code_steel_ratio)
+        && rb_j_add_num(k, "anchor_utilization", c->code_anchor_utilization);
 }
 
 static int add_case(cJSON *arr, const rb_batch_case *c, const rb_batch_summary *s)
@@ -182,9 +173,9 @@ static int add_case(cJSON *arr, const rb_batch_case *c, const rb_batch_summary *
     if (!o || !cJSON_AddItemToArray(arr, o))
         return cJSON_Delete(o), 0;
     int solved = c->verdict == RB_BATCH_PASS || c->verdict == RB_BATCH_FAIL;
-    int ok = add_num(o, "index", (double)c->index)
+    int ok = rb_j_add_num(o, "index", (double)c->index)
         && add_text(o, "source", c->source)
-        && add_num(o, "line", c->line)
+        && rb_j_add_num(o, "line", c->line)
         && add_text(o, "tag", c->tag)
         && cJSON_AddStringToObject(o, "verdict", rb_batch_verdict_str(c->verdict))
         && add_text(o, "reason", c->reason)
@@ -228,9 +219,9 @@ void rb_batch_json_head(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_
     char shard[64];
     cJSON *root = cJSON_CreateObject(), *counts;
     int ok = root && cJSON_AddStringToObject(root, "format", "rockbolt-batch")
-        && add_num(root, "format_version", RB_BATCH_FORMAT_VERSION)
+        && rb_j_add_num(root, "format_version", RB_BATCH_FORMAT_VERSION)
         && cJSON_AddBoolToObject(root, "design", s->design)
-        && add_num(root, "total", (double)s->total)
+        && rb_j_add_num(root, "total", (double)s->total)
         && (!s->inputs_digest[0]
             || cJSON_AddStringToObject(root, "inputs_digest", s->inputs_digest));
     if (ok && s->n_shards > 0) {
@@ -246,16 +237,16 @@ void rb_batch_json_head(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_
             && cJSON_AddStringToObject(fr, "intensity",
                                        rb_enum_str(rb_intensity_report_names,
                                                    (int)s->intensity))
-            && add_num(fr, "resamples", RB_FRAGILITY_RESAMPLES)
-            && add_num(fr, "interval", RB_FRAGILITY_INTERVAL);
+            && rb_j_add_num(fr, "resamples", RB_FRAGILITY_RESAMPLES)
+            && rb_j_add_num(fr, "interval", RB_FRAGILITY_INTERVAL);
     }
     ok = ok && (counts = cJSON_AddObjectToObject(root, "counts")) != NULL
-        && add_num(counts, "cases", (double)n->cases)
-        && add_num(counts, "passed", (double)n->passed)
-        && add_num(counts, "failed", (double)n->failed)
-        && add_num(counts, "unreadable", (double)n->unreadable)
-        && add_num(counts, "errors", (double)n->errors)
-        && add_num(counts, "runs", (double)n->runs)
+        && rb_j_add_num(counts, "cases", (double)n->cases)
+        && rb_j_add_num(counts, "passed", (double)n->passed)
+        && rb_j_add_num(counts, "failed", (double)n->failed)
+        && rb_j_add_num(counts, "unreadable", (double)n->unreadable)
+        && rb_j_add_num(counts, "errors", (double)n->errors)
+        && rb_j_add_num(counts, "runs", (double)n->runs)
         && cJSON_AddArrayToObject(root, "cases") != NULL;
     char *head = ok ? rb_json_print(root, 1) : NULL;
     cJSON_Delete(root);
@@ -312,8 +303,8 @@ static void rd_fail(rd_ctx *r, const char *key, const char *msg)
     if (r->bad++)
         return;
     if (r->diag) {
-        rb_diag_set_key(r->diag, "%s", key);
-        rb_diag_set_msg(r->diag, "%s", msg);
+        snprintf(r->diag->key, sizeof r->diag->key, "%s", key);
+        snprintf(r->diag->msg, sizeof r->diag->msg, "%s", msg);
     }
 }
 

@@ -97,10 +97,7 @@ char *rb_fragility_render_text(const rb_case *c, const rb_case_fragility *f)
 void rb_report_json_num(rb_strbuf *b, const char *key, double v, int comma)
 {
     char buf[RB_JSONNUM_MAX];
-    if (isfinite(v))
-        rb_json_number(v, buf);
-    else
-        snprintf(buf, sizeof buf, "null");
+    rb_json_number_or_null(v, buf);
     rb_strbuf_printf(b, "\"%s\": %s%s", key, buf, comma ? ", " : "");
 }
 

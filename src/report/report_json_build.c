@@ -59,6 +59,19 @@ void rb_j_num(rb_jctx *cx, cJSON *o, const char *key, double v)
     rb_j_oom(cx, cJSON_AddRawToObject(o, key, buf));
 }
 
+int rb_j_add_num(cJSON *o, const char *key, double v)
+{
+    char buf[RB_JSONNUM_MAX];
+    rb_json_number_or_null(v, buf);
+    return cJSON_AddRawToObject(o, key, buf) != NULL;
+}
+
+void rb_j_num_or_null(rb_jctx *cx, cJSON *o, const char *key, double v)
+{
+    if (cx->st == RB_OK && !rb_j_add_num(o, key, v))
+        cx->st = RB_ERR_NOMEM;
+}
+
 void rb_j_null(rb_jctx *cx, cJSON *o, const char *key)
 {
     if (cx->st == RB_OK)
@@ -108,6 +121,13 @@ void rb_j_pair(rb_jctx *cx, cJSON *o, const char *key, const double v[2])
     cJSON *p = rb_j_obj(cx, o, key);
     rb_j_num(cx, p, "left", v[RB_LEFT]);
     rb_j_num(cx, p, "right", v[RB_RIGHT]);
+}
+
+void rb_j_pair_or_null(rb_jctx *cx, cJSON *o, const char *key, const double v[2])
+{
+    cJSON *p = rb_j_obj(cx, o, key);
+    rb_j_num_or_null(cx, p, "left", v[RB_LEFT]);
+    rb_j_num_or_null(cx, p, "right", v[RB_RIGHT]);
 }
 
 void rb_j_pair_norm(rb_jctx *cx, cJSON *o, const char *key, const double v[2])

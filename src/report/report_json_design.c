@@ -111,7 +111,7 @@ static void add_sweeps(rb_jctx *cx, cJSON *parent, const char *key, const rb_swe
 {
     cJSON *arr = rb_j_arr(cx, parent, key);
     for (size_t i = 0; i < n && cx->st == RB_OK; i++)
-        rb_j_append(cx, arr, rb_sweep_to_json(&s[i]));
+        rb_report_json_sweep(cx, arr, &s[i]);
 }
 
 void rb_report_json_motion_design(rb_jctx *cx, cJSON *motion_o, const rb_report *r,

@@ -15,21 +15,11 @@ static const char *motion_name(const rb_case *c, size_t m)
     return c->motions[m].name ? c->motions[m].name : "?";
 }
 
-/* Characters a terminal shows for s: UTF-8 lead bytes (the escaped names
- * are valid UTF-8). */
-static size_t shown_width(const char *s)
-{
-    size_t n = 0;
-    for (; *s; s++)
-        n += ((unsigned char)*s & 0xC0) != 0x80;
-    return n;
-}
-
 /* s in a column of width w, padded on the left (right-aligned) or right:
  * never cut, so that a name is read whole however long it is. */
 static void put_padded(rb_strbuf *b, const char *s, size_t w, int right)
 {
-    size_t n = shown_width(s), pad = n < w ? w - n : 0;
+    size_t n = rb_text_width(s), pad = n < w ? w - n : 0;
     if (!right)
         rb_strbuf_puts(b, s);
     for (size_t i = 0; i < pad; i++)
@@ -44,7 +34,7 @@ static size_t name_width(const rb_case *c, size_t n, size_t least)
     char name[128];
     size_t w = least;
     for (size_t m = 0; m < n; m++) {
-        size_t k = shown_width(rb_text_escape_buf(motion_name(c, m), name, sizeof name));
+        size_t k = rb_text_width(rb_text_escape_buf(motion_name(c, m), name, sizeof name));
         if (k > w)
             w = k;
     }
@@ -96,14 +86,14 @@ char *rb_spectra_render_text(const rb_case *c, const rb_case_spectra *s)
     for (size_t m = 0; m < s->n_motions; m++) {
         const char *nm = rb_text_escape_buf(motion_name(c, m), name, sizeof name);
         rb_strbuf_puts(&b, " ");
-        put_padded(&b, nm, shown_width(nm) > 12 ? shown_width(nm) : 12, 1);
+        put_padded(&b, nm, rb_text_width(nm) > 12 ? rb_text_width(nm) : 12, 1);
     }
     rb_strbuf_puts(&b, "\n");
     size_t n = s->n_motions ? s->motions[0].sp.n : 0;
     for (size_t i = 0; i < n; i++) {
         rb_strbuf_printf(&b, "%9.3f", s->motions[0].sp.freq_hz[i]);
         for (size_t m = 0; m < s->n_motions; m++) {
-            size_t w = shown_width(rb_text_escape_buf(motion_name(c, m), name, sizeof name));
+            size_t w = rb_text_width(rb_text_escape_buf(motion_name(c, m), name, sizeof name));
             rb_strbuf_printf(&b, " %*.4f", w > 12 ? (int)w : 12,
                              s->motions[m].sp.sa_mps2[i] / g);
         }
@@ -112,23 +102,13 @@ char *rb_spectra_render_text(const rb_case *c, const rb_case_spectra *s)
     return rb_strbuf_take(&b);
 }
 
-static void num(rb_strbuf *b, double v)
-{
-    char buf[RB_JSONNUM_MAX];
-    if (isfinite(v))
-        rb_json_number(v, buf);
-    else
-        snprintf(buf, sizeof buf, "null");
-    rb_strbuf_puts(b, buf);
-}
-
 static void array(rb_strbuf *b, const char *key, const double *v, size_t n)
 {
+    char buf[RB_JSONNUM_MAX];
     rb_strbuf_printf(b, "\"%s\": [", key);
     for (size_t i = 0; i < n; i++) {
-        if (i)
-            rb_strbuf_puts(b, ", ");
-        num(b, v[i]);
+        rb_json_number_or_null(v[i], buf);
+        rb_strbuf_printf(b, "%s%s", i ? ", " : "", buf);
     }
     rb_strbuf_puts(b, "]");
 }

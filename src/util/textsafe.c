@@ -243,6 +243,19 @@ int rb_csv_field_write(FILE *fp, const char *s, int always_quote)
     return bad ? -1 : 0;
 }
 
+size_t rb_text_width(const char *s)
+{
+    const unsigned char *p = (const unsigned char *)s;
+    size_t w = 0;
+    unsigned cp;
+    while (*p) {
+        size_t n = utf8_len(p, &cp);
+        p += n ? n : 1;
+        w++;
+    }
+    return w;
+}
+
 size_t rb_utf8_invalid_at(const char *s, size_t len)
 {
     const unsigned char *p = (const unsigned char *)s;
