@@ -38,14 +38,14 @@ rb_status rb_pdf_render(const rb_pdf_cover *cv, const char *body,
 /* check and design: the body is tmpl (calc.txt, rb_template_load) filled
  * with r's variables; command is "check" or "design". Template errors are
  * RB_ERR_PARSE with the template's line and column in diag. */
-rb_status rb_pdf_report_render(const rb_report *r, const char *command, const char *tmpl,
+rb_status rb_report_render_pdf(const rb_report *r, const char *command, const char *tmpl,
                                const char *const *svgs, size_t n_svgs,
                                char **out, size_t *len, rb_diag *diag);
 
 /* A command's table printed as it is on the terminal (fragility, the
  * batch summary), under a heading, then its figures. */
-rb_status rb_pdf_text_render(const rb_pdf_cover *cv, const char *heading, const char *text,
-                             const char *const *svgs, size_t n_svgs,
-                             char **out, size_t *len, rb_diag *diag);
+rb_status rb_table_render_pdf(const rb_pdf_cover *cv, const char *heading, const char *text,
+                              const char *const *svgs, size_t n_svgs,
+                              char **out, size_t *len, rb_diag *diag);
 
 #endif

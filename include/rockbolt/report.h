@@ -1,12 +1,13 @@
-/* Reports of a case check: JSON, text (through a template), history CSV,
- * and the atomic file writer they all go through (library rb_report).
+/* The renderers of a case's results (library rb_report): the check report
+ * as JSON and text (through a template, rockbolt/template.h), the history
+ * and sweep CSV, fragility, P-58 rows.
  *
  * The CLI solves every motion of a case, judges each result, and fills an
  * rb_report that only borrows what it points at. The renderers turn it into
- * a string the caller owns; nothing here prints. Output files are written
- * to a temporary file in the target directory and renamed into place, so a
- * reader never sees a half-written report. The JSON layout is documented in
- * docs/report-format.md and versioned by RB_REPORT_FORMAT_VERSION. */
+ * a string the caller owns; nothing here prints or opens a file: the output
+ * plan (rockbolt/outplan.h) writes them, whole or not at all. The JSON
+ * layout is documented in docs/report-format.md and versioned by
+ * RB_REPORT_FORMAT_VERSION. */
 #ifndef ROCKBOLT_REPORT_H
 #define ROCKBOLT_REPORT_H
 
@@ -68,12 +69,12 @@ void rb_report_headline(int pass, unsigned warnings, char *buf, size_t n);
  * with free(). Returns RB_ERR_NONFINITE (diag->key names the field) if any
  * number to be written is NaN or infinite, RB_ERR_NOMEM on allocation
  * failure; *out is NULL on error. */
-rb_status rb_report_json_render(const rb_report *r, char **out, rb_diag *diag);
+rb_status rb_report_render_json(const rb_report *r, char **out, rb_diag *diag);
 
 /* Render the text report through template text tmpl (see rb_template_*).
  * *out is owned by the caller (free()). Errors in the template come back as
  * RB_ERR_PARSE with the template line and column in diag. */
-rb_status rb_report_text_render(const rb_report *r, const char *tmpl,
+rb_status rb_report_render_text(const rb_report *r, const char *tmpl,
                                 char **out, rb_diag *diag);
 
 /* Write the time histories of the motions as CSV to fp: one header line,
@@ -85,87 +86,9 @@ rb_status rb_history_write_csv(FILE *fp, const rb_report *r, rb_diag *diag);
 /* ---- Sweeps --------------------------------------------------------------
  * A design sweep (rockbolt/design.h) written out: the searches keep no I/O. */
 
-/* Writers: one row (CSV, with a header line) or one object (JSON, under
- * "points") per point. The FILE* forms write to an open stream; the path
- * forms write atomically (temporary file, then rename) and report errors in
- * diag. RB_ERR_IO on a write error, RB_ERR_NOMEM. */
+/* One row per point, with a header line, to an open stream (the JSON
+ * report has the sweeps as objects). RB_ERR_IO on a write error. */
 rb_status rb_sweep_write_csv(const rb_sweep *s, FILE *fp);
-rb_status rb_sweep_write_json(const rb_sweep *s, FILE *fp);
-rb_status rb_sweep_save_csv(const rb_sweep *s, const char *path, rb_diag *diag);
-rb_status rb_sweep_save_json(const rb_sweep *s, const char *path, rb_diag *diag);
-
-/* The sweep as a cJSON object (caller owns it: cJSON_Delete), for reports
- * that embed it. NULL on allocation failure. */
-struct cJSON;
-struct cJSON *rb_sweep_to_json(const rb_sweep *s);
-
-/* ---- Templates ----------------------------------------------------------
- *
- * A template is text with placeholders:
- *   {{name}}              the value of a variable, in its default format
- *   {{name:%8.3f}}        with a printf-style format: optional flags '-' and
- *                         '+', width, precision and one of f e g d s
- *   {{#list}}..{{/list}}  the enclosed text once per item of a list, with
- *                         the item's variables in scope (outer ones still
- *                         visible)
- *   {{! comment }}        nothing
- * A section or comment tag alone on its line removes the whole line. A
- * missing value (RB_TVAL_NONE) or a non-finite number renders as "n/a" in
- * the field width. Unknown names are errors, so a typo in a template cannot
- * silently drop a number. */
-
-typedef enum {
-    RB_TVAL_NONE = 0,  /* no value: rendered "n/a" */
-    RB_TVAL_NUM,       /* double; default format %g */
-    RB_TVAL_INT,       /* long; default format %d */
-    RB_TVAL_STR        /* string; default format %s */
-} rb_tval_kind;
-
-typedef struct {
-    const char *name;  /* borrowed */
-    rb_tval_kind kind;
-    double num;
-    long integer;
-    const char *str;   /* borrowed */
-} rb_tvar;
-
-typedef struct rb_tscope rb_tscope;
-
-/* A named list: items[i] is the scope of the i-th repetition. */
-typedef struct {
-    const char *name;        /* borrowed */
-    const rb_tscope *items;  /* borrowed array of n */
-    size_t n;
-} rb_tlist;
-
-/* Variables and lists visible at one level; lookups fall back to parent. */
-struct rb_tscope {
-    const rb_tvar *vars;
-    size_t n_vars;
-    const rb_tlist *lists;
-    size_t n_lists;
-    const rb_tscope *parent; /* set by the renderer for list items */
-};
-
-/* Render tmpl with the variables of scope. *out is owned by the caller
- * (free()). Returns RB_ERR_PARSE for a malformed template or an unknown
- * name (diag->line/col point into the template, diag->key names the tag),
- * RB_ERR_NOMEM. *out is NULL on error. */
-rb_status rb_template_render(const char *tmpl, const rb_tscope *scope,
-                             char **out, rb_diag *diag);
-
-/* The compiled-in copy of a shipped template ("report.txt",
- * "starter.yaml"), or NULL if there is none by that name. Static storage. */
-const char *rb_template_builtin(const char *name);
-
-/* Load the template called name: from $RB_TEMPLATE_DIR/name if the variable
- * is set and the file exists, else from the source tree's templates/ when
- * present, else the built-in copy. *text is owned by the caller (free());
- * *origin (may be NULL) gets a static description of where it came from:
- * "RB_TEMPLATE_DIR", "source tree" or "built-in". Returns RB_ERR_IO when
- * a file exists but cannot be read, RB_ERR_INVALID for an unknown name. */
-rb_status rb_template_load(const char *name, char **text, const char **origin,
-                           rb_diag *diag);
 
 /* ---- Fragility (rb_run_fragility, rockbolt/run.h) ---------------------- */
 

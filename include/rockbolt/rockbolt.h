@@ -18,6 +18,7 @@
 #include "rockbolt/units.h"
 #include "rockbolt/case.h"
 #include "rockbolt/report.h"
+#include "rockbolt/template.h"
 #include "rockbolt/design.h"
 
 #endif

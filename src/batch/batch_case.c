@@ -194,9 +194,9 @@ static rb_status write_reports(const rb_batch_slot *s, const rb_batch_case *bc,
 {
     char stem[200];
     char *json = NULL, *text = NULL;
-    rb_status st = rb_report_json_render(rep, &json, d);
+    rb_status st = rb_report_render_json(rep, &json, d);
     if (st == RB_OK)
-        st = rb_report_text_render(rep, o->report_template, &text, d);
+        st = rb_report_render_text(rep, o->report_template, &text, d);
     rb_batch_report_stem(bc->index, bc->tag, total, stem, sizeof stem);
     if (st == RB_OK)
         st = write_one(o, stem, "json", json, d);

@@ -13,6 +13,7 @@
 #include <unistd.h>
 #include "cli_batch.h"
 #include "rockbolt/record_cache.h"
+#include "rockbolt/template.h"
 
 /* --base must be a regular file it can open: a FIFO would block the open
  * (and every row's load) for ever, so it is opened without waiting and

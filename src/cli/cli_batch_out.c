@@ -77,7 +77,7 @@ static rb_status pdf(rb_batch_cli *o, const rb_batch_summary *s, FILE *fp, rb_di
         rb_pdf_cover cv = {"Seismic anchorage batch summary",
                            have_base && base.project.given ? &base.project : NULL, NULL,
                            NULL, NULL, have_base ? base.output_units : RB_UNITS_SI};
-        st = rb_pdf_text_render(&cv, "Summary", text, NULL, 0, &doc, &len, d);
+        st = rb_table_render_pdf(&cv, "Summary", text, NULL, 0, &doc, &len, d);
     }
     if (have_base)
         rb_case_free(&base);

@@ -92,7 +92,7 @@ static rb_status pdf(const rb_cli_renders *r, FILE *fp, rb_diag *d)
         const char *svgs[1] = {svg};
         rb_pdf_cover cv = {r->title, &r->kase->project, r->kase->name, r->kase->path, NULL,
                            r->kase->output_units};
-        st = rb_pdf_text_render(&cv, r->title, text, svgs, 1, &doc, &len, d);
+        st = rb_table_render_pdf(&cv, r->title, text, svgs, 1, &doc, &len, d);
     }
     if (st == RB_OK && fwrite(doc, 1, len, fp) != len)
         st = RB_ERR_IO;

@@ -17,6 +17,7 @@
 #include "rockbolt/pdf.h"
 #include "rockbolt/plot.h"
 #include "rockbolt/run.h"
+#include "rockbolt/template.h"
 #include "rockbolt/textsafe.h"
 
 
@@ -180,14 +181,14 @@ static rb_exit render_reports(const rb_cli_opts *o, check_run *r)
     rb_status st = RB_OK;
     rb_diag_clear(&d);
     if (o->json_path)
-        st = rb_report_json_render(&r->rep, &r->json, &d);
+        st = rb_report_render_json(&r->rep, &r->json, &d);
     if (st != RB_OK) {
         rb_diag_set_file(&d, "%s", o->json_path);
         rb_cli_diag_print(&d);
         return RB_EXIT_INTERNAL;
     }
     if (r->tmpl)
-        st = rb_report_text_render(&r->rep, r->tmpl, &r->text, &d);
+        st = rb_report_render_text(&r->rep, r->tmpl, &r->text, &d);
     if (st != RB_OK) {
         int user = strcmp(r->tmpl_origin, "RB_TEMPLATE_DIR") == 0;
         rb_diag_set_file(&d, "%s/report.txt",
@@ -262,7 +263,7 @@ static rb_exit render_figures(const rb_cli_opts *o, check_run *r)
                                r->n_svgs, &r->html, &d);
     }
     if (st == RB_OK && o->pdf_path) {
-        st = rb_pdf_report_render(&r->rep, o->command == RB_CMD_DESIGN ? "design" : "check",
+        st = rb_report_render_pdf(&r->rep, o->command == RB_CMD_DESIGN ? "design" : "check",
                                   r->calc_tmpl, (const char *const *)r->svgs, r->n_svgs,
                                   &r->pdf, &r->pdf_len, &d);
         if (st == RB_ERR_PARSE) {

@@ -8,6 +8,7 @@
 #include <string.h>
 #include "cli.h"
 #include "rockbolt/outfile.h"
+#include "rockbolt/template.h"
 
 rb_exit rb_cli_init_run(const rb_cli_opts *o)
 {

@@ -7,7 +7,7 @@
 #include <string.h>
 #include "pdf_internal.h"
 
-rb_status rb_pdf_report_render(const rb_report *r, const char *command, const char *tmpl,
+rb_status rb_report_render_pdf(const rb_report *r, const char *command, const char *tmpl,
                                const char *const *svgs, size_t n_svgs,
                                char **out, size_t *len, rb_diag *diag)
 {
@@ -15,7 +15,7 @@ rb_status rb_pdf_report_render(const rb_report *r, const char *command, const ch
     rb_strbuf b = {0};
     *out = NULL;
     *len = 0;
-    rb_status st = rb_report_text_render(r, tmpl, &body, diag);
+    rb_status st = rb_report_render_text(r, tmpl, &body, diag);
     if (st != RB_OK)
         return st;
     if (n_svgs) {
@@ -35,9 +35,9 @@ rb_status rb_pdf_report_render(const rb_report *r, const char *command, const ch
     return st;
 }
 
-rb_status rb_pdf_text_render(const rb_pdf_cover *cv, const char *heading, const char *text,
-                             const char *const *svgs, size_t n_svgs,
-                             char **out, size_t *len, rb_diag *diag)
+rb_status rb_table_render_pdf(const rb_pdf_cover *cv, const char *heading, const char *text,
+                              const char *const *svgs, size_t n_svgs,
+                              char **out, size_t *len, rb_diag *diag)
 {
     rb_strbuf b = {0};
     *out = NULL;

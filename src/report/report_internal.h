@@ -5,6 +5,7 @@
 #define RB_REPORT_INTERNAL_H
 
 #include "rockbolt/report.h"
+#include "rockbolt/template.h"
 
 /* Normalised forms of one result. A ratio whose denominator is zero or not
  * positive (no motion, no bolts) is NAN here and "no value" in a report. */

@@ -374,7 +374,7 @@ static char *print_with_newline(cJSON *root)
     return q;
 }
 
-rb_status rb_report_json_render(const rb_report *r, char **out, rb_diag *diag)
+rb_status rb_report_render_json(const rb_report *r, char **out, rb_diag *diag)
 {
     rb_jctx cx = { RB_OK, "report", "", "" };
     cJSON *root = cJSON_CreateObject(), *arr = NULL;

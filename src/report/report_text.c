@@ -325,7 +325,7 @@ static rb_status motion_validity_vars(rb_tvars *t, const rb_report *r,
     return RB_OK;
 }
 
-rb_status rb_report_text_render(const rb_report *r, const char *tmpl,
+rb_status rb_report_render_text(const rb_report *r, const char *tmpl,
                                 char **out, rb_diag *diag)
 {
     size_t n = r->n_motions, i;

@@ -15,6 +15,7 @@
 #include <string.h>
 #include "util/strbuf.h"
 #include "rockbolt/report.h"
+#include "rockbolt/template.h"
 #include "rockbolt/textsafe.h"
 #include "util/grow.h"
 

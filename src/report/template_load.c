@@ -12,6 +12,7 @@
 #include <string.h>
 #include "rockbolt/datadir.h"
 #include "rockbolt/report.h"
+#include "rockbolt/template.h"
 
 #define TMPL_MAX_BYTES (1024L * 1024L) /* a template is a few kilobytes */
 

@@ -124,7 +124,7 @@ int main(int argc, char **argv)
     if (rb_model_derive(&c.model, &rep.derived, &d) != RB_OK)
         goto out;
     rb_report_conclude(&rep);
-    st = rb_report_text_render(&rep, rb_template_builtin("report.txt"), &text, &d);
+    st = rb_report_render_text(&rep, rb_template_builtin("report.txt"), &text, &d);
     if (st != RB_OK) {
         fail("text report", st, &d);
         goto out;

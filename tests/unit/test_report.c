@@ -56,7 +56,7 @@ static void test_json(void)
     cJSON *root;
     const cJSON *m0, *v;
     rb_diag_clear(&d);
-    CHECK(rb_report_json_render(&fx.rep, &out, &d) == RB_OK);
+    CHECK(rb_report_render_json(&fx.rep, &out, &d) == RB_OK);
     CHECK(out && out[strlen(out) - 1] == '\n');
     root = cJSON_Parse(out);
     CHECK(root != NULL);
@@ -85,7 +85,7 @@ static void test_json(void)
 
     /* no motion: ratios to V0 have no denominator and become null */
     fx.res.peak_floor_mps2 = 0;
-    CHECK(rb_report_json_render(&fx.rep, &out, &d) == RB_OK);
+    CHECK(rb_report_render_json(&fx.rep, &out, &d) == RB_OK);
     root = cJSON_Parse(out);
     free(out);
     m0 = cJSON_GetArrayItem(cJSON_GetObjectItemCaseSensitive(root, "motions"), 0);
@@ -96,7 +96,7 @@ static void test_json(void)
     /* a NaN from upstream: no report, the field named */
     fx.res.max_u_m = NAN;
     out = (char *)1;
-    CHECK(rb_report_json_render(&fx.rep, &out, &d) == RB_ERR_NONFINITE);
+    CHECK(rb_report_render_json(&fx.rep, &out, &d) == RB_ERR_NONFINITE);
     CHECK(out == NULL);
     CHECK(strstr(d.key, "max_u_m") != NULL);
     fx.res.max_u_m = 0;
@@ -107,7 +107,7 @@ static void test_text(void)
     char *out = NULL;
     rb_diag d;
     rb_diag_clear(&d);
-    CHECK(rb_report_text_render(&fx.rep, rb_template_builtin("report.txt"), &out, &d) == RB_OK);
+    CHECK(rb_report_render_text(&fx.rep, rb_template_builtin("report.txt"), &out, &d) == RB_OK);
     if (d.msg[0])
         fprintf(stderr, "template: %d:%d %s: %s\n", d.line, d.col, d.key, d.msg);
     {

@@ -34,7 +34,7 @@ static char *run_parts(const rb_case *c, const rb_report_motion *rm)
     rep.n_motions = 1;
     rb_model_derive(&c->model, &rep.derived, NULL);
     rb_report_conclude(&rep);
-    if (rb_report_json_render(&rep, &json, NULL) != RB_OK)
+    if (rb_report_render_json(&rep, &json, NULL) != RB_OK)
         return NULL;
     cJSON *root = cJSON_Parse(json), *m = cJSON_GetArrayItem(
         cJSON_GetObjectItem(root, "motions"), 0), *parts = cJSON_CreateObject();
