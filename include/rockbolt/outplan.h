@@ -1,5 +1,5 @@
 /* Output plans: every file a command writes, known and checked before any
- * work, then written all together or not at all (library rb_report).
+ * work, then written all together or not at all (library rb_output).
  *
  * A command adds each output it will write (with the option that asked for
  * it) and each file it reads. Every output is resolved to the file it
@@ -24,68 +24,18 @@
 #ifndef ROCKBOLT_OUTPLAN_H
 #define ROCKBOLT_OUTPLAN_H
 
-#include <pthread.h>
 #include <stdio.h>
-#include <sys/types.h>
 #include "rockbolt/status.h"
 
-typedef enum {
-    RB_OUT_FILE = 0,  /* regular file, new or replaced: staged and renamed */
-    RB_OUT_FD,        /* an open descriptor: "-", /dev/stdout, /dev/fd/N */
-    RB_OUT_DEVICE     /* a character device or a FIFO, opened by name */
-} rb_out_how;
-
-struct rb_out_temp;   /* a registered temporary file (outplan.c) */
-
-typedef struct {
-    char *opt;        /* owned: the option that asked for it ("--json") */
-    char *path;       /* owned: as given */
-    rb_out_how how;
-    int fd_no;        /* RB_OUT_FD: the descriptor */
-    char *target;     /* owned: FILE: the path renamed over, links
-                         followed; DEVICE: the path opened */
-    int exists;       /* dev, ino valid */
-    dev_t dev;
-    ino_t ino;
-    char *canon;      /* owned: FILE not existing yet: canonical dir/name */
-    struct rb_out_temp *tmp; /* FILE while staged */
-    int reserved;     /* rb_outplan_reserve: checked, never filled */
-    int dir_fd;       /* FILE: its directory, held open from planning to
-                         the rename (the plan's, not owned) */
-} rb_out;
-
-/* A directory that outputs go to, opened when the first of them is
- * planned: temporary files are made and renamed in it through the
- * descriptor, so a directory renamed or replaced by a link while the
- * command runs does not send the outputs elsewhere. */
-typedef struct {
-    char *path;       /* owned: as planned */
-    dev_t dev;
-    ino_t ino;
-    int fd;
-    int probed;       /* took a new file when tried */
-} rb_out_dir;
-
-typedef struct {
-    char *path;       /* owned */
-    dev_t dev;
-    ino_t ino;
-} rb_out_input;
-
+/* The plan: its outputs, inputs, the directories it holds open and its
+ * temporary files, behind one pointer (outplan.c), so that callers keep it
+ * where they like and see none of it. */
 typedef struct rb_outplan {
-    rb_out *outs;
-    size_t n, cap;
-    rb_out_input *ins;
-    size_t n_in, cap_in;
-    struct rb_out_temp **extra;  /* rb_outplan_stage_data's files */
-    size_t n_extra, cap_extra;
-    pthread_mutex_t lock;
-    struct rb_out_slot { char *key; long val; } *idx; /* identities */
-    size_t idx_n, idx_cap;
-    rb_out_dir *dirs;            /* under lock */
-    size_t n_dirs, cap_dirs;
+    struct rb_outplan_state *st;   /* owned; NULL when init ran out of memory */
 } rb_outplan;
 
+/* An empty plan; every later call fails with RB_ERR_NOMEM when it could not
+ * be made. Free it with rb_outplan_free. */
 void rb_outplan_init(rb_outplan *p);
 
 /* Remove every temporary file not yet renamed and free the plan. */
@@ -114,6 +64,15 @@ rb_status rb_outplan_add_input(rb_outplan *p, const char *path, rb_diag *diag);
 
 /* Is an output standard output (then nothing else may be printed there)? */
 int rb_outplan_uses_stdout(const rb_outplan *p);
+
+/* The outputs added (rb_outplan_add and rb_outplan_reserve, in that order),
+ * output i's option, and whether it is a regular file (staged in a
+ * temporary file and renamed into place) rather than a stream or device. */
+size_t rb_outplan_count(const rb_outplan *p);
+const char *rb_outplan_opt(const rb_outplan *p, size_t i);
+int rb_outplan_is_file(const rb_outplan *p, size_t i);
+/* The inputs added (rb_outplan_add_input), each file once. */
+size_t rb_outplan_inputs(const rb_outplan *p);
 
 /* Write output i to fp; RB_OK or an error with diag set. */
 typedef rb_status (*rb_outplan_fill_fn)(void *ctx, size_t i, FILE *fp, rb_diag *diag);

@@ -93,7 +93,7 @@ static rb_status fill(void *ctx, size_t i, FILE *fp, rb_diag *d)
     const void *const *cx = ctx;
     rb_batch_cli *o = (rb_batch_cli *)cx[0];
     const rb_batch_summary *s = cx[1];
-    const char *opt = o->plan.outs[i].opt;
+    const char *opt = rb_outplan_opt(&o->plan, i);
     if (strcmp(opt, "--pdf") == 0) {
         rb_status st = pdf(o, s, fp, d);
         if (st != RB_OK && o->spool_failed)

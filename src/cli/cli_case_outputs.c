@@ -107,7 +107,7 @@ static rb_status fill(void *ctx, size_t i, FILE *fp, rb_diag *d)
     const void *const *cx = ctx;
     const rb_outplan *plan = cx[0];
     const rb_cli_renders *r = cx[1];
-    const char *opt = plan->outs[i].opt;
+    const char *opt = rb_outplan_opt(plan, i);
     char *text = NULL;
     rb_status st = RB_OK;
     if (r->other_opt && strcmp(opt, r->other_opt) == 0) {

@@ -49,7 +49,7 @@ typedef struct {
     char *pdf;               /* owned: pdf_len bytes */
     size_t pdf_len;
     rb_outplan plan;         /* every output, in the order of outs */
-    struct out_file *outs;   /* owned, plan.n of them */
+    struct out_file *outs;   /* owned, rb_outplan_count of them */
 } check_run;
 
 static void run_free(check_run *r)
@@ -289,7 +289,7 @@ static rb_exit plan_add(check_run *r, const char *opt, const char *path, out_kin
 {
     rb_diag d;
     rb_status st;
-    out_file *n = realloc(r->outs, (r->plan.n + 1) * sizeof *n);
+    out_file *n = realloc(r->outs, (rb_outplan_count(&r->plan) + 1) * sizeof *n);
     if (!n) {
         rb_cli_error(NULL, NULL, "out of memory");
         return RB_EXIT_INTERNAL;
@@ -304,8 +304,8 @@ static rb_exit plan_add(check_run *r, const char *opt, const char *path, out_kin
             rb_cli_diag_print(&d);
         return st == RB_ERR_NOMEM ? RB_EXIT_INTERNAL : RB_EXIT_USAGE;
     }
-    r->outs[r->plan.n - 1].kind = kind;
-    r->outs[r->plan.n - 1].k = k;
+    r->outs[rb_outplan_count(&r->plan) - 1].kind = kind;
+    r->outs[rb_outplan_count(&r->plan) - 1].k = k;
     return RB_EXIT_PASS;
 }
 
@@ -455,7 +455,7 @@ static rb_exit write_outputs(const rb_cli_opts *o, check_run *r)
     rb_diag d;
     rb_status st;
     size_t k, n_sw = 0, n_fig = 0;
-    for (k = 0; k < r->plan.n; k++) {
+    for (k = 0; k < rb_outplan_count(&r->plan); k++) {
         n_sw += r->outs[k].kind == OUT_SWEEP;
         n_fig += r->outs[k].kind == OUT_SVG;
     }

@@ -97,8 +97,8 @@ static rb_exit plan_files(const rb_cli_opts *op, rb_outplan *p, outputs *o)
         rb_status st = rb_outplan_add(p, "--dir", o->files[k], &d);
         if (st != RB_OK)
             return rb_cli_plan_error(st, &d);
-        o->plan_of[k] = p->n - 1;
-        if (p->outs[p->n - 1].how != RB_OUT_FILE) {
+        o->plan_of[k] = rb_outplan_count(p) - 1;
+        if (!rb_outplan_is_file(p, o->plan_of[k])) {
             rb_cli_error(o->files[k], "--dir", "a FIFO, device or descriptor has the name "
                          "this motion's file takes: it is never written over; remove it or "
                          "give another directory");

@@ -15,6 +15,8 @@
 #include <time.h>
 #include <unistd.h>
 #include "util/grow.h"
+#include <pthread.h>
+#include <sys/types.h>
 
 #ifndef PATH_MAX
 #define PATH_MAX 4096
@@ -23,6 +25,63 @@
 #define RB_TEMP_TRIES 100
 #define RB_LINK_HOPS 40
 #define RB_FIFO_WAIT_MS 10000  /* for a FIFO's reader to open it */
+
+/* ---- The plan's parts --------------------------------------------------- */
+
+typedef enum {
+    RB_OUT_FILE = 0,  /* regular file, new or replaced: staged and renamed */
+    RB_OUT_FD,        /* an open descriptor: "-", /dev/stdout, /dev/fd/N */
+    RB_OUT_DEVICE     /* a character device or a FIFO, opened by name */
+} rb_out_how;
+
+typedef struct {
+    char *opt;        /* owned: the option that asked for it ("--json") */
+    char *path;       /* owned: as given */
+    rb_out_how how;
+    int fd_no;        /* RB_OUT_FD: the descriptor */
+    char *target;     /* owned: FILE: the path renamed over, links
+                         followed; DEVICE: the path opened */
+    int exists;       /* dev, ino valid */
+    dev_t dev;
+    ino_t ino;
+    char *canon;      /* owned: FILE not existing yet: canonical dir/name */
+    struct rb_out_temp *tmp; /* FILE while staged */
+    int reserved;     /* rb_outplan_reserve: checked, never filled */
+    int dir_fd;       /* FILE: its directory, held open from planning to
+                         the rename (the plan's, not owned) */
+} rb_out;
+
+/* A directory that outputs go to, opened when the first of them is
+ * planned: temporary files are made and renamed in it through the
+ * descriptor, so a directory renamed or replaced by a link while the
+ * command runs does not send the outputs elsewhere. */
+typedef struct {
+    char *path;       /* owned: as planned */
+    dev_t dev;
+    ino_t ino;
+    int fd;
+    int probed;       /* took a new file when tried */
+} rb_out_dir;
+
+typedef struct {
+    char *path;       /* owned */
+    dev_t dev;
+    ino_t ino;
+} rb_out_input;
+
+typedef struct rb_outplan_state {
+    rb_out *outs;
+    size_t n, cap;
+    rb_out_input *ins;
+    size_t n_in, cap_in;
+    struct rb_out_temp **extra;  /* rb_outplan_stage_data's files */
+    size_t n_extra, cap_extra;
+    pthread_mutex_t lock;
+    struct rb_out_slot { char *key; long val; } *idx; /* identities */
+    size_t idx_n, idx_cap;
+    rb_out_dir *dirs;            /* under lock */
+    size_t n_dirs, cap_dirs;
+} plan;
 
 /* ---- Temporary files and signals ---------------------------------------- */
 
@@ -339,7 +398,7 @@ static int can_create(int dir_fd, int *err)
 
 /* Open dir and add it to the plan's directories; NULL with *err. Under
  * the plan's lock. */
-static rb_out_dir *dir_open(rb_outplan *p, const char *dir, int *err)
+static rb_out_dir *dir_open(plan *p, const char *dir, int *err)
 {
     struct stat sb;
     rb_out_dir *e;
@@ -379,7 +438,7 @@ static rb_out_dir *dir_open(rb_outplan *p, const char *dir, int *err)
  * given to another since. A file is tried there once (can_create).
  * Returns the descriptor, or -1 with *err, and *probe set when the
  * directory opened but took no file. Thread-safe. */
-static int plan_dir(rb_outplan *p, const char *dir, int *err, int *probe)
+static int plan_dir(plan *p, const char *dir, int *err, int *probe)
 {
     rb_out_dir *e = NULL;
     size_t i;
@@ -406,7 +465,7 @@ static int plan_dir(rb_outplan *p, const char *dir, int *err, int *probe)
 /* The directory of a regular output: exists, is a directory, writable and
  * takes new files; the name and the temporary file's fit the limits. It
  * is held open (o->dir_fd) until the plan is freed. */
-static rb_status check_dir(rb_outplan *p, rb_out *o, rb_diag *d)
+static rb_status check_dir(plan *p, rb_out *o, rb_diag *d)
 {
     char *dir = dir_of(o->target), *real;
     const char *name = base_of(o->target);
@@ -458,7 +517,7 @@ static rb_status check_dir(rb_outplan *p, rb_out *o, rb_diag *d)
 }
 
 /* Resolve o->path into how it is written and what file it is. */
-static rb_status resolve(rb_outplan *pl, rb_out *o, rb_diag *d)
+static rb_status resolve(plan *pl, rb_out *o, rb_diag *d)
 {
     struct stat sb;
     int err;
@@ -527,7 +586,7 @@ static unsigned long hash_str(const char *s)
     return h;
 }
 
-static long *idx_find(rb_outplan *p, const char *key)
+static long *idx_find(plan *p, const char *key)
 {
     size_t i;
     if (!p->idx_cap)
@@ -538,7 +597,7 @@ static long *idx_find(rb_outplan *p, const char *key)
     return NULL;
 }
 
-static rb_status idx_put(rb_outplan *p, const char *key, long val)
+static rb_status idx_put(plan *p, const char *key, long val)
 {
     size_t i;
     char *k;
@@ -582,18 +641,24 @@ static void out_keys(const rb_out *o, char keys[2][PATH_MAX + 32], int *n)
 
 /* ---- The plan ---------------------------------------------------------- */
 
-void rb_outplan_init(rb_outplan *p)
+void rb_outplan_init(rb_outplan *op)
 {
+    plan *p = op->st = malloc(sizeof *op->st);
     mode_t mask = umask(0);
     umask(mask);
     file_mask = mask;
+    if (!p)
+        return;
     memset(p, 0, sizeof *p);
     pthread_mutex_init(&p->lock, NULL);
 }
 
-void rb_outplan_free(rb_outplan *p)
+void rb_outplan_free(rb_outplan *op)
 {
+    plan *p = op->st;
     size_t i;
+    if (!p)
+        return;
     for (i = 0; i < p->n; i++)
         out_free(&p->outs[i]);
     for (i = 0; i < p->n_in; i++)
@@ -613,7 +678,8 @@ void rb_outplan_free(rb_outplan *p)
     free(p->ins);
     free(p->extra);
     pthread_mutex_destroy(&p->lock);
-    memset(p, 0, sizeof *p);
+    free(p);
+    op->st = NULL;
 }
 
 static rb_status clash_input(const rb_out *o, const rb_out_input *in, rb_diag *d)
@@ -622,7 +688,7 @@ static rb_status clash_input(const rb_out *o, const rb_out_input *in, rb_diag *d
                 "is an input (%.300s); refusing to overwrite it", in->path);
 }
 
-static rb_status add_out(rb_outplan *p, const char *opt, const char *path, int reserved,
+static rb_status add_out(plan *p, const char *opt, const char *path, int reserved,
                          rb_diag *d)
 {
     char keys[2][PATH_MAX + 32];
@@ -685,17 +751,20 @@ static rb_status add_out(rb_outplan *p, const char *opt, const char *path, int r
 
 rb_status rb_outplan_add(rb_outplan *p, const char *opt, const char *path, rb_diag *d)
 {
-    return add_out(p, opt, path, 0, d);
+    return !p->st ? RB_ERR_NOMEM : add_out(p->st, opt, path, 0, d);
 }
 
 rb_status rb_outplan_reserve(rb_outplan *p, const char *opt, const char *path,
                              rb_diag *d)
 {
-    return add_out(p, opt, path, 1, d);
+    return !p->st ? RB_ERR_NOMEM : add_out(p->st, opt, path, 1, d);
 }
 
-rb_status rb_outplan_add_input(rb_outplan *p, const char *path, rb_diag *d)
+rb_status rb_outplan_add_input(rb_outplan *op, const char *path, rb_diag *d)
 {
+    plan *p = op->st;
+    if (!p)
+        return RB_ERR_NOMEM;
     struct stat sb;
     rb_out_input in;
     char key[64];
@@ -727,9 +796,12 @@ rb_status rb_outplan_add_input(rb_outplan *p, const char *path, rb_diag *d)
     return RB_OK;
 }
 
-int rb_outplan_uses_stdout(const rb_outplan *p)
+int rb_outplan_uses_stdout(const rb_outplan *op)
 {
+    const plan *p = op->st;
     size_t i;
+    if (!p)
+        return 0;
     for (i = 0; i < p->n; i++)
         if (p->outs[i].how == RB_OUT_FD && p->outs[i].fd_no == 1)
             return 1;
@@ -831,7 +903,7 @@ static rb_status close_out(FILE *fp, int sync, const char *path, const char *opt
     return RB_OK;
 }
 
-static rb_status fill_one(rb_outplan *p, size_t i, FILE *fp, rb_outplan_fill_fn fill,
+static rb_status fill_one(plan *p, size_t i, FILE *fp, rb_outplan_fill_fn fill,
                           void *ctx, rb_diag *d)
 {
     rb_out *o = &p->outs[i];
@@ -903,9 +975,12 @@ done:
     return RB_OK;
 }
 
-rb_status rb_outplan_write(rb_outplan *p, rb_outplan_fill_fn fill, void *ctx,
+rb_status rb_outplan_write(rb_outplan *op, rb_outplan_fill_fn fill, void *ctx,
                            rb_diag *d)
 {
+    plan *p = op->st;
+    if (!p)
+        return RB_ERR_NOMEM;
     rb_status st = RB_OK;
     size_t i;
     int pass, absent;
@@ -951,21 +1026,24 @@ rb_status rb_outplan_write(rb_outplan *p, rb_outplan_fill_fn fill, void *ctx,
 /* A reserved output by the path it was reserved by, else NULL. The
  * outputs are all added before any file is staged, so reading the index
  * from the threads that stage is safe. */
-static const rb_out *reserved_out(const rb_outplan *p, const char *path)
+static const rb_out *reserved_out(const plan *p, const char *path)
 {
     char *key = malloc(strlen(path) + 3);
     long *v;
     if (!key)
         return NULL;
     sprintf(key, "p:%s", path);
-    v = idx_find((rb_outplan *)p, key);
+    v = idx_find((plan *)p, key);
     free(key);
     return v && *v >= 0 && (size_t)*v < p->n ? &p->outs[*v] : NULL;
 }
 
-rb_status rb_outplan_stage_data(rb_outplan *p, const char *path, const char *data,
+rb_status rb_outplan_stage_data(rb_outplan *op, const char *path, const char *data,
                                 size_t len, rb_diag *d)
 {
+    plan *p = op->st;
+    if (!p)
+        return RB_ERR_NOMEM;
     rb_out o;
     struct rb_out_temp *t = NULL;
     FILE *fp = NULL;
@@ -1015,4 +1093,24 @@ rb_status rb_outplan_stage_data(rb_outplan *p, const char *path, const char *dat
     }
     out_free(&o);
     return st;
+}
+
+size_t rb_outplan_count(const rb_outplan *p)
+{
+    return p->st ? p->st->n : 0;
+}
+
+const char *rb_outplan_opt(const rb_outplan *p, size_t i)
+{
+    return p->st->outs[i].opt;
+}
+
+int rb_outplan_is_file(const rb_outplan *p, size_t i)
+{
+    return p->st->outs[i].how == RB_OUT_FILE;
+}
+
+size_t rb_outplan_inputs(const rb_outplan *p)
+{
+    return p->st ? p->st->n_in : 0;
 }

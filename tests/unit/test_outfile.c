@@ -156,7 +156,7 @@ static rb_status fill_name(void *ctx, size_t i, FILE *fp, rb_diag *d)
 {
     const rb_outplan *p = ctx;
     (void)d;
-    fprintf(fp, "%s\n", p->outs[i].opt);
+    fprintf(fp, "%s\n", rb_outplan_opt(p, i));
     return RB_OK;
 }
 
@@ -186,7 +186,7 @@ static void test_plan_clashes(void)
     rb_outplan_init(&p);
     CHECK(rb_outplan_add_input(&p, in, &d) == RB_OK);
     CHECK(rb_outplan_add_input(&p, ln, &d) == RB_OK); /* one input, twice */
-    CHECK(p.n_in == 1);
+    CHECK(rb_outplan_inputs(&p) == 1);
     CHECK(rb_outplan_add(&p, "--json", a, &d) == RB_OK);
     /* a file still to be made, spelt differently */
     CHECK(rb_outplan_add(&p, "--html", a2, &d) == RB_ERR_INVALID);
@@ -210,7 +210,7 @@ static void test_plan_clashes(void)
         CHECK(rb_outplan_add(&p, "--svg", longp, &d) == RB_ERR_IO);
         CHECK(strstr(d.msg, "too long") != NULL);
     }
-    CHECK(p.n == 2);
+    CHECK(rb_outplan_count(&p) == 2);
     rb_outplan_free(&p);
     /* an output added first, the input after */
     rb_outplan_init(&p);
