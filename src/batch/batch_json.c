@@ -303,8 +303,8 @@ static void rd_fail(rd_ctx *r, const char *key, const char *msg)
     if (r->bad++)
         return;
     if (r->diag) {
-        snprintf(r->diag->key, sizeof r->diag->key, "%s", key);
-        snprintf(r->diag->msg, sizeof r->diag->msg, "%s", msg);
+        rb_diag_set_key(r->diag, "%s", key);
+        rb_diag_set_msg(r->diag, "%s", msg);
     }
 }
 
