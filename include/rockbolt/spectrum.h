@@ -79,20 +79,46 @@ rb_status rb_spectrum_of_motion(const rb_motion *m, rb_spectrum *sp);
 
 typedef enum {
     RB_TARGET_AC156 = 0,  /* ICC-ES AC156 required response spectrum */
-    RB_TARGET_TABLE       /* frequency / acceleration pairs */
+    RB_TARGET_TABLE,      /* frequency / acceleration pairs */
+    RB_TARGET_IEEE693     /* IEEE 693 performance level spectrum */
 } rb_target_kind;
-extern const rb_enum_name rb_target_type_names[];   /* rb_target_kind: ac156, table */
+extern const rb_enum_name rb_target_type_names[];   /* rb_target_kind: ac156, table, ieee693 */
+
+/* IEEE 693's qualification levels: High (a ZPA of 1.0 g at 5 %) and
+ * Moderate (half of High at every frequency and damping). */
+typedef enum {
+    RB_IEEE693_HIGH = 0,
+    RB_IEEE693_MODERATE
+} rb_ieee693_level;
+extern const rb_enum_name rb_ieee693_level_names[]; /* rb_ieee693_level: high, moderate */
 
 /* Which AC156 form of the horizontal levels (docs/motion.md):
  * 2010: A_FLX-H = S_DS (1 + 2 z/h) <= 1.6 S_DS, A_RIG-H = 0.4 S_DS (1 + 2 z/h)
  *       (AC156 with ASCE 7-05 to 7-16);
  * 2024: A_FLX-H = S_DS H_f / R_mu <= 1.6 S_DS, A_RIG-H = 0.4 S_DS H_f / R_mu
- *       with ASCE 7-22's H_f = 1 + 2.5 z/h and R_mu = 1.3 (1.0 at grade). */
+ *       with ASCE 7-22's H_f and R_mu (rb_asce722_hf, rb_asce722_rmu): the
+ *       building's where given, else H_f = 1 + 2.5 z/h and R_mu = 1.3
+ *       (1.0 at grade). */
 typedef enum {
     RB_AC156_2010 = 0,
     RB_AC156_2024
 } rb_ac156_edition;
 extern const rb_enum_name rb_ac156_edition_names[]; /* rb_ac156_edition */
+
+/* ASCE 7-22 13.3.1.1, eq. 13.3-4 and 13.3-5: H_f = 1 + a1 z/h + a2 (z/h)^10,
+ * a1 = min(1 / T_a, 2.5), a2 = max(0, 1 - (0.4 / T_a)^2); T_a not > 0
+ * (unknown): 1 + 2.5 z/h; 1 at or below grade. */
+double rb_asce722_hf(double z_over_h, double ta_s, int at_or_below_grade);
+/* ASCE 7-22 13.3.1.2, eq. 13.3-6: R_mu = max(1.3, sqrt(1.1 R / (I_e
+ * Omega_0))); 1.3 when any of them is not > 0 (unknown); 1 at or below
+ * grade. */
+double rb_asce722_rmu(double r, double ie, double omega0, int at_or_below_grade);
+
+/* The building an AC156-24 target's H_f and R_mu take (0: not given). */
+typedef struct {
+    double ta_s;            /* T_a, the building's approximate period */
+    double r, ie, omega0;   /* R, I_e, Omega_0: all three or none */
+} rb_ac156_building;
 
 typedef struct {
     rb_target_kind kind;
@@ -101,8 +127,16 @@ typedef struct {
     rb_ac156_edition edition;
     double sds_mps2;        /* S_DS as an acceleration */
     double z_over_h;        /* 0 (grade) to 1 (roof) */
-    int vertical;           /* the vertical RRS: A_FLX-V = 0.67 S_DS,
-                               A_RIG-V = 0.27 S_DS, no height term */
+    rb_ac156_building building; /* 2024: H_f and R_mu from these */
+    /* a second level the RRS envelopes (a laboratory certifies a unit for
+     * a roof and a grade S_DS at once): each of A_FLX and A_RIG the larger
+     * of the two levels'; sds2_mps2 0: none */
+    double sds2_mps2, z_over_h2;
+    int vertical;           /* the vertical RRS: AC156's A_FLX-V = 0.67 S_DS,
+                               A_RIG-V = 0.27 S_DS, no height term; IEEE
+                               693's 80 % of the horizontal */
+    /* IEEE 693 */
+    rb_ieee693_level level;
     /* table: owned, n points, frequencies ascending; log-log between */
     double *freq_hz;
     double *accel_mps2;
@@ -117,9 +151,15 @@ typedef struct {
     double min_peak_mps2;
 } rb_target;
 
-/* AC156's horizontal flexible and rigid levels A_FLX-H and A_RIG-H. */
+/* AC156's horizontal flexible and rigid levels A_FLX-H and A_RIG-H, the
+ * building not known. */
 void rb_ac156_levels(rb_ac156_edition ed, double sds_mps2, double z_over_h,
                      double *a_flx, double *a_rig);
+/* Give an AC156 target the building of its H_f and R_mu (edition 2024)
+ * and a second level to envelope (sds2_mps2 0: none); its least peak
+ * follows the enveloped A_RIG. */
+void rb_target_ac156_more(rb_target *t, const rb_ac156_building *b, double sds2_mps2,
+                          double z_over_h2);
 /* An AC156 target for S_DS and z/h with the criteria's check range, band
  * and resolution. */
 void rb_target_ac156(rb_target *t, rb_ac156_edition ed, double sds_mps2, double z_over_h);
@@ -128,13 +168,35 @@ void rb_target_ac156(rb_target *t, rb_ac156_edition ed, double sds_mps2, double 
 void rb_target_ac156_vertical(rb_target *t, double sds_mps2);
 /* The flexible and rigid levels of an AC156 target, either component. */
 void rb_target_ac156_levels(const rb_target *t, double *a_flx, double *a_rig);
+/* IEEE 693-2005's High performance level spectrum at damping xi (Figure
+ * A.1, as CODES.md states it), in units of g:
+ *   2.288 beta f                        f <= 1.1 Hz
+ *   2.5 beta                            1.1 < f <= 8 Hz
+ *   (26.4 beta - 10.56) / f - 0.8 beta + 1.32    8 < f <= 33 Hz
+ *   1.0                                 f > 33 Hz
+ * beta = (3.21 - 0.68 ln(100 xi)) / 2.1156 (1 at 5 %). */
+double rb_ieee693_beta(double damping);
+/* An IEEE 693 target of a level at a damping (0 < damping < 1), checked
+ * from 1.1 to 33 Hz at 1/6 octave within [0.9, 1.3], its least peak 0.9
+ * of its ZPA; vertical: 80 % of the horizontal (Annex A). */
+void rb_target_ieee693(rb_target *t, rb_ieee693_level level, double damping, int vertical);
 /* A table target (takes ownership of freq and accel, n >= 2, frequencies
  * ascending and > 0, accelerations > 0) checked over its own frequency
- * range at 1/6 octave within [0.9, 1.3], as AC156 does. */
+ * range at 1/6 octave within [0.9, 1.3], as AC156 does, until
+ * rb_target_tolerance says otherwise. */
 void rb_target_table(rb_target *t, double *freq_hz, double *accel_mps2, size_t n,
                      double damping);
-/* The target's acceleration at f (> 0); a table is constant beyond its
- * ends. */
+/* A table's own tolerance: no point of the TRS below `below` x RRS (the
+ * acceptance's lower rule), `above` its upper line (held by the generator,
+ * reported by the acceptance). RB_TARGET_MIN_ABOVE: the generator aims up
+ * to 1.22 x RRS. */
+#define RB_TARGET_MIN_BELOW 0.5
+#define RB_TARGET_MIN_ABOVE 1.25
+#define RB_TARGET_MAX_ABOVE 3.0
+void rb_target_tolerance(rb_target *t, double below, double above);
+/* The target's acceleration at f (> 0); a table is constant above its
+ * last frequency and falls in proportion to f below its first (the
+ * taper, docs/motion.md "Tables"). */
 double rb_target_at(const rb_target *t, double f_hz);
 void rb_target_free(rb_target *t);
 

@@ -134,11 +134,16 @@ typedef struct rb_cmotion {
     int synthetic;
     rb_target_kind target_kind;
     rb_ac156_edition edition;
+    rb_ieee693_level ieee693_level;
     rb_quantity sds;
     const rb_ynode *sds_node;
     double z_over_h;
+    rb_ac156_building building;   /* spectrum.ta, r, ie, omega0 (0: not given) */
+    rb_quantity sds2;             /* spectrum.envelope (value 0: none) */
+    double z_over_h2;
     const rb_ynode *table_node;   /* spectrum.file */
-    double table_units_to_mps2, table_damping;
+    double table_units_to_mps2, table_damping; /* table_damping: IEEE 693's too */
+    double tolerance_below, tolerance_above;   /* a table's `tolerance` */
     long count;                   /* motions made from this entry, >= 1 */
     const rb_ynode *count_node;
     unsigned long long seed;
@@ -264,7 +269,8 @@ extern const char *const *const rb_case_top_keys, *const *const rb_case_equipmen
     *const *const rb_case_record_keys, *const *const rb_case_building_keys,
     *const *const rb_case_synthetic_keys, *const *const rb_case_ac156_keys,
     *const *const rb_case_table_keys, *const *const rb_case_project_keys,
-    *const *const rb_case_synth_table_keys,
+    *const *const rb_case_synth_table_keys, *const *const rb_case_ieee693_keys,
+    *const *const rb_case_envelope_keys, *const *const rb_case_tolerance_keys,
     *const *const rb_case_vertical_harmonic_keys, *const *const rb_case_vertical_pulse_keys,
     *const *const rb_case_vertical_record_keys;
 

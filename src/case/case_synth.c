@@ -17,16 +17,27 @@
 #define SYNTH_MIN_DT_S RB_SYNTH_MIN_DT_S
 #define SYNTH_MAX_DT_S RB_SYNTH_MAX_DT_S
 #define SYNTH_STANDARD_G 9.80665
+/* a table's tolerance unless it states its own: AC156's band */
+#define AC156_LIKE_BELOW 0.9
+#define AC156_LIKE_ABOVE 1.3
 
 static const char *const synthetic_keys[] = {
     "type", "name", "polarity", "spectrum", "count", "seed", "duration", "strong", "dt",
     "run_time", "components", "table", NULL};
 static const char *const synth_table_keys[] = {"displacement", "velocity", NULL};
-static const char *const ac156_keys[] = {"type", "sds", "z_over_h", "edition", NULL};
-static const char *const table_keys[] = {"type", "file", "units", "damping", NULL};
+static const char *const ac156_keys[] = {"type", "sds", "z_over_h", "edition", "ta", "r",
+                                         "ie", "omega0", "envelope", NULL};
+static const char *const envelope_keys[] = {"sds", "z_over_h", NULL};
+static const char *const table_keys[] = {"type", "file", "units", "damping", "tolerance",
+                                         NULL};
+static const char *const tolerance_keys[] = {"below", "above", NULL};
+static const char *const ieee693_keys[] = {"type", "level", "damping", NULL};
 const char *const *const rb_case_synthetic_keys = synthetic_keys;
 const char *const *const rb_case_ac156_keys = ac156_keys;
 const char *const *const rb_case_table_keys = table_keys;
+const char *const *const rb_case_ieee693_keys = ieee693_keys;
+const char *const *const rb_case_envelope_keys = envelope_keys;
+const char *const *const rb_case_tolerance_keys = tolerance_keys;
 const char *const *const rb_case_synth_table_keys = synth_table_keys;
 
 /* `table: {displacement, velocity}`: the table's envelope (0: no limit) */
@@ -52,13 +63,13 @@ static int read_envelope(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
     return ok;
 }
 
-/* `components: horizontal | triaxial`: AC156 sets are triaxial by
- * default; a table has no vertical spectrum */
+/* `components: horizontal | triaxial`: AC156 and IEEE 693 sets are
+ * triaxial by default; a table has no vertical spectrum */
 static int read_components(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
 {
     char k[RB_CASE_KEY_MAX];
     int i;
-    cm->components = cm->target_kind == RB_TARGET_AC156 ? RB_SYNTH_TRIAXIAL
+    cm->components = cm->target_kind != RB_TARGET_TABLE ? RB_SYNTH_TRIAXIAL
                                                          : RB_SYNTH_HORIZONTAL;
     rb_ynode *v = rb_cv_get(c, map, cm->key, "components", 0, "");
     if (!v)
@@ -68,36 +79,81 @@ static int read_components(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
     if (!rb_cv_enum_table(c, v, k, rb_synth_components_names, 0, &i))
         return 0;
     cm->components = (rb_synth_components)i;
-    if (cm->components == RB_SYNTH_TRIAXIAL && cm->target_kind != RB_TARGET_AC156) {
+    if (cm->components == RB_SYNTH_TRIAXIAL && cm->target_kind == RB_TARGET_TABLE) {
         rb_cctx_error(c, v, k, "a table target has no vertical spectrum: triaxial sets "
-                      "are made for an ac156 spectrum; give 'horizontal'");
+                      "are made for an ac156 or ieee693 spectrum; give 'horizontal'");
         return 0;
     }
     return 1;
+}
+
+/* S_DS and z/h of a level (the spectrum's own, or its `envelope`) */
+static int read_level(rb_cctx *c, rb_ynode *sp, const char *k, rb_quantity *sds,
+                      const rb_ynode **sds_node, double *z_over_h)
+{
+    char kk[RB_CASE_KEY_MAX];
+    int ok = 1;
+    rb_ynode *v = rb_cv_get(c, sp, k, "sds", 1, "S_DS as an acceleration, e.g. '1.0 g'");
+    rb_case_keypath(kk, k, "sds");
+    if (v && rb_cv_quantity(c, v, kk, RB_DIM_ACCEL, sds)) {
+        if (sds->relative_a_star) {
+            rb_cctx_error(c, v, kk, "S_DS is a site value: give it in g or m/s^2, not A*");
+            ok = 0;
+        } else if (!(sds->value > 0)
+                   || sds->value > RB_CASE_MAX_ACCEL_G * SYNTH_STANDARD_G) {
+            rb_cctx_error(c, v, kk, "must be > 0 and at most %g g (got '%s')",
+                          RB_CASE_MAX_ACCEL_G, v->text);
+            ok = 0;
+        }
+        if (sds_node)
+            *sds_node = v;
+    } else {
+        ok = 0;
+    }
+    ok &= rb_cv_number(c, sp, k, "z_over_h", 1, RB_DIM_RATIO, 0, 1, 1, 1, z_over_h) != NULL;
+    return ok;
+}
+
+/* AC156-24's building (ASCE 7-22's T_a, R, I_e, Omega_0): R, I_e and
+ * Omega_0 together or not at all; not in the 2010 form */
+static int read_building(rb_cctx *c, rb_ynode *sp, const char *k, rb_cmotion *cm)
+{
+    static const char *const keys[] = {"ta", "r", "ie", "omega0"};
+    char kk[RB_CASE_KEY_MAX];
+    int ok = 1, given[4] = {0, 0, 0, 0};
+    double *out[4] = {&cm->building.ta_s, &cm->building.r, &cm->building.ie,
+                      &cm->building.omega0};
+    for (int i = 0; i < 4; i++) {
+        if (!rb_ymap_find(sp, keys[i]))
+            continue;
+        given[i] = 1;
+        rb_case_keypath(kk, k, keys[i]);
+        if (cm->edition != RB_AC156_2024) {
+            rb_ynode *v = rb_cv_get(c, sp, k, keys[i], 0, "");
+            rb_cctx_error(c, v, kk, "the building's %s enters AC156-24's H_f and R_mu "
+                          "only: give 'edition: 2024' or remove it", keys[i]);
+            ok = 0;
+            continue;
+        }
+        ok &= rb_cv_number(c, sp, k, keys[i], 0, i == 0 ? RB_DIM_TIME : RB_DIM_RATIO, 0, 0,
+                           i == 0 ? 100 : 1000, 1, out[i]) != NULL;
+    }
+    if (ok && (given[1] || given[2] || given[3]) && !(given[1] && given[2] && given[3])) {
+        rb_case_keypath(kk, k, given[1] ? (given[2] ? "omega0" : "ie") : "r");
+        rb_cctx_error_at(c, RB_ERR_INVALID, sp->file, sp->line, sp->col, kk, "R_mu takes "
+                         "the building's r, ie and omega0 together: give all three, or "
+                         "none for R_mu = 1.3");
+        ok = 0;
+    }
+    return ok;
 }
 
 static int read_ac156(rb_cctx *c, rb_ynode *sp, const char *k, rb_cmotion *cm)
 {
     char kk[RB_CASE_KEY_MAX];
     int ok = 1, i;
-    rb_ynode *v = rb_cv_get(c, sp, k, "sds", 1, "S_DS as an acceleration, e.g. '1.0 g'");
-    rb_case_keypath(kk, k, "sds");
-    if (v && rb_cv_quantity(c, v, kk, RB_DIM_ACCEL, &cm->sds)) {
-        if (cm->sds.relative_a_star) {
-            rb_cctx_error(c, v, kk, "S_DS is a site value: give it in g or m/s^2, not A*");
-            ok = 0;
-        } else if (!(cm->sds.value > 0)
-                   || cm->sds.value > RB_CASE_MAX_ACCEL_G * SYNTH_STANDARD_G) {
-            rb_cctx_error(c, v, kk, "must be > 0 and at most %g g (got '%s')",
-                          RB_CASE_MAX_ACCEL_G, v->text);
-            ok = 0;
-        }
-        cm->sds_node = v;
-    } else {
-        ok = 0;
-    }
-    ok &= rb_cv_number(c, sp, k, "z_over_h", 1, RB_DIM_RATIO, 0, 1, 1, 1,
-                       &cm->z_over_h) != NULL;
+    rb_ynode *v;
+    ok &= read_level(c, sp, k, &cm->sds, &cm->sds_node, &cm->z_over_h);
     cm->edition = RB_AC156_2010;
     if ((v = rb_cv_get(c, sp, k, "edition", 0, ""))) {
         rb_case_keypath(kk, k, "edition");
@@ -106,7 +162,39 @@ static int read_ac156(rb_cctx *c, rb_ynode *sp, const char *k, rb_cmotion *cm)
         else
             ok = 0;
     }
+    ok &= read_building(c, sp, k, cm);
+    if ((v = rb_cv_get(c, sp, k, "envelope", 0, ""))) {
+        rb_case_keypath(kk, k, "envelope");
+        if (rb_cv_map(c, v, kk)) {
+            ok &= read_level(c, v, kk, &cm->sds2, NULL, &cm->z_over_h2);
+            rb_cv_unknown_keys(c, v, kk, envelope_keys);
+        } else {
+            ok = 0;
+        }
+    }
     rb_cv_unknown_keys(c, sp, k, ac156_keys);
+    return ok;
+}
+
+/* IEEE 693's beta takes ln(100 xi): its damping is bounded away from 0 */
+#define IEEE693_MIN_DAMPING 0.005
+#define IEEE693_MAX_DAMPING 0.2
+
+static int read_ieee693(rb_cctx *c, rb_ynode *sp, const char *k, rb_cmotion *cm)
+{
+    char kk[RB_CASE_KEY_MAX];
+    int ok = 1, i;
+    rb_ynode *v = rb_cv_get(c, sp, k, "level", 1, "high or moderate");
+    rb_case_keypath(kk, k, "level");
+    if (v && rb_cv_enum_table(c, v, kk, rb_ieee693_level_names, 0, &i))
+        cm->ieee693_level = (rb_ieee693_level)i;
+    else
+        ok = 0;
+    cm->table_damping = 0.05;
+    if (rb_ymap_find(sp, "damping"))
+        ok &= rb_cv_number(c, sp, k, "damping", 0, RB_DIM_RATIO, IEEE693_MIN_DAMPING, 1,
+                           IEEE693_MAX_DAMPING, 1, &cm->table_damping) != NULL;
+    rb_cv_unknown_keys(c, sp, k, ieee693_keys);
     return ok;
 }
 
@@ -143,6 +231,22 @@ static int read_table(rb_cctx *c, rb_ynode *sp, const char *k, rb_cmotion *cm)
     if (rb_ymap_find(sp, "damping"))
         ok &= rb_cv_number(c, sp, k, "damping", 0, RB_DIM_RATIO, 0, 0, 0.5, 1,
                            &cm->table_damping) != NULL;
+    cm->tolerance_below = AC156_LIKE_BELOW;
+    cm->tolerance_above = AC156_LIKE_ABOVE;
+    if ((v = rb_cv_get(c, sp, k, "tolerance", 0, ""))) {
+        rb_case_keypath(kk, k, "tolerance");
+        if (rb_cv_map(c, v, kk)) {
+            if (rb_ymap_find(v, "below"))
+                ok &= rb_cv_number(c, v, kk, "below", 0, RB_DIM_RATIO, RB_TARGET_MIN_BELOW,
+                                   1, 1.0, 1, &cm->tolerance_below) != NULL;
+            if (rb_ymap_find(v, "above"))
+                ok &= rb_cv_number(c, v, kk, "above", 0, RB_DIM_RATIO, RB_TARGET_MIN_ABOVE,
+                                   1, RB_TARGET_MAX_ABOVE, 1, &cm->tolerance_above) != NULL;
+            rb_cv_unknown_keys(c, v, kk, tolerance_keys);
+        } else {
+            ok = 0;
+        }
+    }
     rb_cv_unknown_keys(c, sp, k, table_keys);
     return ok;
 }
@@ -154,7 +258,7 @@ static int read_spectrum(rb_cctx *c, rb_ynode *sp, rb_cmotion *cm)
     rb_case_keypath(k, cm->key, "spectrum");
     if (!rb_cv_map(c, sp, k))
         return 0;
-    rb_ynode *v = rb_cv_get(c, sp, k, "type", 1, "ac156 or table");
+    rb_ynode *v = rb_cv_get(c, sp, k, "type", 1, "ac156, ieee693 or table");
     rb_case_keypath(kk, k, "type");
     if (!v || !rb_cv_enum_table(c, v, kk, rb_target_type_names, 0, &t)) {
         for (size_t i = 0; i < sp->n; i++)
@@ -162,7 +266,9 @@ static int read_spectrum(rb_cctx *c, rb_ynode *sp, rb_cmotion *cm)
         return 0;
     }
     cm->target_kind = (rb_target_kind)t;
-    return t == RB_TARGET_AC156 ? read_ac156(c, sp, k, cm) : read_table(c, sp, k, cm);
+    if (t == RB_TARGET_AC156)
+        return read_ac156(c, sp, k, cm);
+    return t == RB_TARGET_IEEE693 ? read_ieee693(c, sp, k, cm) : read_table(c, sp, k, cm);
 }
 
 int rb_case_read_synthetic(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
@@ -232,7 +338,14 @@ int rb_case_make_target(rb_cctx *c, const rb_cmotion *cm, rb_case_target *ct)
     memset(ct, 0, sizeof *ct);
     if (cm->target_kind == RB_TARGET_AC156) {
         rb_target_ac156(&ct->target, cm->edition, cm->sds.value, cm->z_over_h);
-        rb_target_ac156_vertical(&ct->vertical, cm->sds.value);
+        rb_target_ac156_more(&ct->target, &cm->building, cm->sds2.value, cm->z_over_h2);
+        /* the vertical has no height term: the larger S_DS's */
+        rb_target_ac156_vertical(&ct->vertical, fmax(cm->sds.value, cm->sds2.value));
+        return 1;
+    }
+    if (cm->target_kind == RB_TARGET_IEEE693) {
+        rb_target_ieee693(&ct->target, cm->ieee693_level, cm->table_damping, 0);
+        rb_target_ieee693(&ct->vertical, cm->ieee693_level, cm->table_damping, 1);
         return 1;
     }
     char k[RB_CASE_KEY_MAX];
@@ -265,6 +378,7 @@ int rb_case_make_target(rb_cctx *c, const rb_cmotion *cm, rb_case_target *ct)
         return 0;
     }
     rb_target_table(&ct->target, f, a, n, cm->table_damping);
+    rb_target_tolerance(&ct->target, cm->tolerance_below, cm->tolerance_above);
     return 1;
 }
 
@@ -274,12 +388,14 @@ int rb_case_make_target(rb_cctx *c, const rb_cmotion *cm, rb_case_target *ct)
 static int cache_key(const rb_cmotion *cm, const rb_target *t, const char *file,
                      unsigned index, char *key, size_t n)
 {
-    int len = snprintf(key, n, "synthetic:%d:%d:%d:%.17g:%.17g:%.17g:%s:%.17g:%.17g|%llu|%u|"
-                       "%.17g|%.17g|%.17g|%.17g|%.17g", (int)t->kind, (int)t->edition,
-                       t->vertical, t->sds_mps2, t->z_over_h, t->damping, file ? file : "",
-                       cm->table_units_to_mps2, t->band_upper, cm->seed, index,
+    int len = snprintf(key, n, "synthetic:%d:%d:%d:%d:%.17g:%.17g:%.17g:%s:%.17g:%.17g|%llu|"
+                       "%u|%.17g|%.17g|%.17g|%.17g|%.17g|%.17g:%.17g:%.17g:%.17g:%.17g:"
+                       "%.17g", (int)t->kind, (int)t->edition,
+                       (int)t->level, t->vertical, t->sds_mps2, t->z_over_h, t->damping, file ? file : "",
+                       cm->table_units_to_mps2, t->band_upper * 1000 + t->band_lower, cm->seed, index,
                        cm->total_s, cm->strong_s, cm->synth_dt_s, cm->table_displacement_m,
-                       cm->table_velocity_mps);
+                       cm->table_velocity_mps, t->building.ta_s, t->building.r,
+                       t->building.ie, t->building.omega0, t->sds2_mps2, t->z_over_h2);
     return len > 0 && (size_t)len < n;
 }
 
@@ -370,12 +486,13 @@ static int take_job(rb_cctx *c, const rb_cmotion *cm, unsigned index,
         const rb_motion_summary *m = &info->summary;
         rb_cctx_error_at(c, RB_ERR_INVALID, at->file, at->line, at->col, k, "motion %u%s "
                          "of seed %llu did not meet both the spectrum (the laboratory's "
-                         "rules at every offset within [%g, %g], the rigid end to 50 Hz, "
+                         "rules at every offset within [%g, %g]%s, "
                          "a peak of %.3g g) and the table's envelope (%s, %g m/s) in %u "
                          "passes: the closest had a margin of %.3f, ratios %.3f to %.3f, "
                          "a peak of %.3g g, PGD %.3g m and PGV %.3g m/s; try another seed "
                          "or a larger table", index + 1, what, cm->seed, t->band_lower,
-                         t->band_upper, RB_SYNTH_PEAK_MARGIN * t->min_peak_mps2 / RB_G0,
+                         t->band_upper, t->kind == RB_TARGET_AC156 ? ", the rigid end to "
+                         "50 Hz" : "", RB_SYNTH_PEAK_MARGIN * t->min_peak_mps2 / RB_G0,
                          cm->table_displacement_m > 0
                              ? rb_qty_str(c->units, RB_Q_SMALL_LENGTH,
                                           cm->table_displacement_m, 4).s : "no limit",
@@ -401,7 +518,11 @@ static int describe_motion(rb_cctx *c, const rb_cmotion *cm, const rb_target *t,
                            unsigned index, const char *comp, rb_case_motion *out)
 {
     char desc[200];
-    if (t->vertical)
+    if (t->kind == RB_TARGET_IEEE693)
+        snprintf(desc, sizeof desc, "synthetic: IEEE 693 %s%s, damping %g %%, seed %llu, "
+                 "motion %u", rb_enum_str(rb_ieee693_level_names, (int)t->level),
+                 t->vertical ? " vertical" : "", 100.0 * t->damping, cm->seed, index + 1);
+    else if (t->vertical)
         snprintf(desc, sizeof desc, "synthetic: AC156 vertical S_DS %s, seed %llu, "
                  "motion %u", rb_qty_str(c->units, RB_Q_ACCEL, t->sds_mps2, 6).s,
                  cm->seed, index + 1);
@@ -411,7 +532,8 @@ static int describe_motion(rb_cctx *c, const rb_cmotion *cm, const rb_target *t,
                  rb_qty_str(c->units, RB_Q_ACCEL, t->sds_mps2, 6).s, t->z_over_h,
                  cm->seed, index + 1);
     out->source = rb_case_strdup(c, desc);
-    const char *base = cm->name ? cm->name : "ac156";
+    const char *base = cm->name ? cm->name
+                                : rb_enum_str(rb_target_type_names, (int)t->kind);
     if (cm->count > 1)
         snprintf(desc, sizeof desc, "%.150s-%u%s", base, index + 1, comp);
     else

@@ -6,6 +6,7 @@
 #include <math.h>
 #include <string.h>
 #include "rockbolt/asce7.h"
+#include "rockbolt/spectrum.h"
 
 /* ACI 318-19 17.6.1.2: futa is taken as at most 1.9 fya and 125 ksi. */
 #define RB_FUTA_CAP_PA 861.8e6
@@ -62,25 +63,16 @@ static rb_status check_inputs(const rb_model *m, const rb_code_inputs *in, rb_di
                        "missing or out of range for the code-static comparison");
 }
 
-/* ASCE 7-22 sec. 13.3.1.1: height amplification Hf. */
+/* ASCE 7-22 sec. 13.3.1.1 and 13.3.1.2: Hf and Rmu, one rule with the
+ * AC156-24 spectrum's (rockbolt/spectrum.h). */
 static double hf_7_22(const rb_code_inputs *in)
 {
-    double zh = in->z_over_h;
-    if (in->at_or_below_grade)
-        return 1.0;
-    if (!(in->ta_s > 0))
-        return 1.0 + 2.5 * zh;
-    double a1 = fmin(1.0 / in->ta_s, 2.5);
-    double a2 = fmax(0.0, 1.0 - pow(0.4 / in->ta_s, 2));
-    return 1.0 + a1 * zh + a2 * pow(zh, 10);
+    return rb_asce722_hf(in->z_over_h, in->ta_s, in->at_or_below_grade);
 }
 
-/* ASCE 7-22 sec. 13.3.1.2: structure ductility reduction Rmu. */
 static double rmu_7_22(const rb_code_inputs *in)
 {
-    if (in->at_or_below_grade)
-        return 1.0;
-    return fmax(1.3, sqrt(1.1 * in->r / (in->ie * in->omega0)));
+    return rb_asce722_rmu(in->r, in->ie, in->omega0, in->at_or_below_grade);
 }
 
 /* Fp from eq. 13.3-1 and its bounds (13.3-2, 13.3-3), both editions. */

@@ -5,7 +5,10 @@
 #include "rockbolt/spectrum.h"
 
 const rb_enum_name rb_target_type_names[] = {
-    {"ac156", RB_TARGET_AC156}, {"table", RB_TARGET_TABLE}, {NULL, 0}};
+    {"ac156", RB_TARGET_AC156}, {"table", RB_TARGET_TABLE}, {"ieee693", RB_TARGET_IEEE693},
+    {NULL, 0}};
+const rb_enum_name rb_ieee693_level_names[] = {
+    {"high", RB_IEEE693_HIGH}, {"moderate", RB_IEEE693_MODERATE}, {NULL, 0}};
 const rb_enum_name rb_ac156_edition_names[] = {
     {"2010", RB_AC156_2010}, {"2024", RB_AC156_2024}, {NULL, 0}};
 const rb_enum_name rb_pulse_shape_names[] = {

@@ -1,4 +1,5 @@
-/* Target spectra: the AC156 required response spectrum and tables.
+/* Target spectra: the AC156 required response spectrum, IEEE 693's and
+ * tables.
  *
  * AC156's spectrum (5 % damping) is flat at A_FLX from 1.3 to 8.3 Hz,
  * falls on a straight line in log-log axes to A_RIG at 33.3 Hz and stays
@@ -25,13 +26,37 @@
 #define AC156_FLX_V_OF_SDS 0.67
 #define AC156_RIG_V_OF_SDS 0.27
 
-void rb_ac156_levels(rb_ac156_edition ed, double sds_mps2, double z_over_h,
-                     double *a_flx, double *a_rig)
+double rb_asce722_hf(double z_over_h, double ta_s, int at_or_below_grade)
+{
+    if (at_or_below_grade)
+        return 1.0;
+    if (!(ta_s > 0))
+        return 1.0 + 2.5 * z_over_h;
+    double a1 = fmin(1.0 / ta_s, 2.5);
+    double a2 = fmax(0.0, 1.0 - pow(0.4 / ta_s, 2));
+    return 1.0 + a1 * z_over_h + a2 * pow(z_over_h, 10);
+}
+
+double rb_asce722_rmu(double r, double ie, double omega0, int at_or_below_grade)
+{
+    if (at_or_below_grade)
+        return 1.0;
+    if (!(r > 0 && ie > 0 && omega0 > 0))
+        return 1.3;
+    return fmax(1.3, sqrt(1.1 * r / (ie * omega0)));
+}
+
+/* One level's A_FLX-H and A_RIG-H; b NULL: the building not known. AC156
+ * takes z/h 0 as grade (R_mu 1), as the laboratory's processing does. */
+static void level(rb_ac156_edition ed, const rb_ac156_building *b, double sds_mps2,
+                  double z_over_h, double *a_flx, double *a_rig)
 {
     double amp;
     if (ed == RB_AC156_2024) {
-        double hf = 1.0 + 2.5 * z_over_h;
-        double rmu = z_over_h > 0 ? 1.3 : 1.0;
+        int grade = !(z_over_h > 0);
+        double hf = rb_asce722_hf(z_over_h, b ? b->ta_s : 0.0, grade);
+        double rmu = b ? rb_asce722_rmu(b->r, b->ie, b->omega0, grade)
+                       : rb_asce722_rmu(0, 0, 0, grade);
         amp = hf / rmu;
     } else {
         amp = 1.0 + 2.0 * z_over_h;
@@ -39,6 +64,12 @@ void rb_ac156_levels(rb_ac156_edition ed, double sds_mps2, double z_over_h,
     double flx = sds_mps2 * amp;
     *a_flx = flx < AC156_FLX_CAP * sds_mps2 ? flx : AC156_FLX_CAP * sds_mps2;
     *a_rig = 0.4 * sds_mps2 * amp;
+}
+
+void rb_ac156_levels(rb_ac156_edition ed, double sds_mps2, double z_over_h,
+                     double *a_flx, double *a_rig)
+{
+    level(ed, NULL, sds_mps2, z_over_h, a_flx, a_rig);
 }
 
 static void band_defaults(rb_target *t)
@@ -64,6 +95,18 @@ void rb_target_ac156(rb_target *t, rb_ac156_edition ed, double sds_mps2, double 
     t->min_peak_mps2 = AC156_MIN_PEAK_OF_RIG * rig;
 }
 
+void rb_target_ac156_more(rb_target *t, const rb_ac156_building *b, double sds2_mps2,
+                          double z_over_h2)
+{
+    if (b)
+        t->building = *b;
+    t->sds2_mps2 = sds2_mps2 > 0 ? sds2_mps2 : 0.0;
+    t->z_over_h2 = z_over_h2;
+    double flx, rig;
+    rb_target_ac156_levels(t, &flx, &rig);
+    t->min_peak_mps2 = AC156_MIN_PEAK_OF_RIG * rig;
+}
+
 void rb_target_ac156_vertical(rb_target *t, double sds_mps2)
 {
     rb_target_ac156(t, RB_AC156_2010, sds_mps2, 0.0);
@@ -77,8 +120,63 @@ void rb_target_ac156_levels(const rb_target *t, double *a_flx, double *a_rig)
         *a_flx = AC156_FLX_V_OF_SDS * t->sds_mps2;
         *a_rig = AC156_RIG_V_OF_SDS * t->sds_mps2;
     } else {
-        rb_ac156_levels(t->edition, t->sds_mps2, t->z_over_h, a_flx, a_rig);
+        level(t->edition, &t->building, t->sds_mps2, t->z_over_h, a_flx, a_rig);
+        if (t->sds2_mps2 > 0) {
+            double f2, r2;
+            level(t->edition, &t->building, t->sds2_mps2, t->z_over_h2, &f2, &r2);
+            *a_flx = fmax(*a_flx, f2);
+            *a_rig = fmax(*a_rig, r2);
+        }
     }
+}
+
+/* IEEE 693-2005, Figure A.1 (the High performance level; docs/motion.md
+ * says what of it is confirmed): the corners and the ZPA's frequency. */
+#define IEEE693_F_RISE_HZ 1.1
+#define IEEE693_F_FLAT_HZ 8.0
+#define IEEE693_F_ZPA_HZ 33.0
+#define IEEE693_MODERATE 0.5
+#define IEEE693_VERTICAL 0.8
+#define IEEE693_MIN_PEAK_OF_ZPA 0.9
+#define STANDARD_G 9.80665
+
+double rb_ieee693_beta(double damping)
+{
+    return (3.21 - 0.68 * log(100.0 * damping)) / 2.1156;
+}
+
+/* The level's factor on the High spectrum, and the vertical's on that. */
+static double ieee693_factor(const rb_target *t)
+{
+    double k = t->level == RB_IEEE693_MODERATE ? IEEE693_MODERATE : 1.0;
+    return t->vertical ? IEEE693_VERTICAL * k : k;
+}
+
+static double ieee693_at(const rb_target *t, double f)
+{
+    double b = rb_ieee693_beta(t->damping), g;
+    if (f <= IEEE693_F_RISE_HZ)
+        g = 2.288 * b * f;
+    else if (f <= IEEE693_F_FLAT_HZ)
+        g = 2.5 * b;
+    else if (f <= IEEE693_F_ZPA_HZ)
+        g = (26.4 * b - 10.56) / f - 0.8 * b + 1.32;
+    else
+        g = 1.0;
+    return ieee693_factor(t) * g * STANDARD_G;
+}
+
+void rb_target_ieee693(rb_target *t, rb_ieee693_level level, double damping, int vertical)
+{
+    memset(t, 0, sizeof *t);
+    t->kind = RB_TARGET_IEEE693;
+    t->damping = damping;
+    t->level = level;
+    t->vertical = vertical;
+    t->check_from_hz = IEEE693_F_RISE_HZ;
+    t->check_to_hz = IEEE693_F_ZPA_HZ;
+    band_defaults(t);
+    t->min_peak_mps2 = IEEE693_MIN_PEAK_OF_ZPA * ieee693_factor(t) * STANDARD_G;
 }
 
 void rb_target_table(rb_target *t, double *freq_hz, double *accel_mps2, size_t n,
@@ -93,6 +191,12 @@ void rb_target_table(rb_target *t, double *freq_hz, double *accel_mps2, size_t n
     t->check_from_hz = freq_hz[0];
     t->check_to_hz = freq_hz[n - 1];
     band_defaults(t);
+}
+
+void rb_target_tolerance(rb_target *t, double below, double above)
+{
+    t->band_lower = below;
+    t->band_upper = above;
 }
 
 void rb_target_free(rb_target *t)
@@ -127,6 +231,10 @@ static double ac156_at(const rb_target *t, double f)
 
 static double table_at(const rb_target *t, double f)
 {
+    /* below the first frequency the taper: in proportion to f (never held
+     * flat: a flat low end asks metres of table stroke) */
+    if (f < t->freq_hz[0])
+        return t->accel_mps2[0] * f / t->freq_hz[0];
     if (f <= t->freq_hz[0])
         return t->accel_mps2[0];
     if (f >= t->freq_hz[t->n - 1])
@@ -144,7 +252,15 @@ static double table_at(const rb_target *t, double f)
 
 double rb_target_at(const rb_target *t, double f_hz)
 {
-    return t->kind == RB_TARGET_AC156 ? ac156_at(t, f_hz) : table_at(t, f_hz);
+    switch (t->kind) {
+    case RB_TARGET_AC156:
+        return ac156_at(t, f_hz);
+    case RB_TARGET_IEEE693:
+        return ieee693_at(t, f_hz);
+    case RB_TARGET_TABLE:
+        break;
+    }
+    return table_at(t, f_hz);
 }
 
 rb_status rb_target_check_grid(const rb_target *t, rb_spectrum *sp)

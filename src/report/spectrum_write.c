@@ -266,8 +266,28 @@ void rb_report_target_json(rb_strbuf *b, const rb_target *t)
                          rb_enum_str(rb_ac156_edition_names, (int)t->edition));
         rb_report_json_num(b, "sds_mps2", t->sds_mps2, 1);
         rb_report_json_num(b, "z_over_h", t->z_over_h, 1);
+        if (t->building.ta_s > 0)
+            rb_report_json_num(b, "ta_s", t->building.ta_s, 1);
+        if (t->building.r > 0) {
+            rb_report_json_num(b, "r", t->building.r, 1);
+            rb_report_json_num(b, "ie", t->building.ie, 1);
+            rb_report_json_num(b, "omega0", t->building.omega0, 1);
+        }
+        if (t->sds2_mps2 > 0) {
+            rb_strbuf_puts(b, "\"envelope\": {");
+            rb_report_json_num(b, "sds_mps2", t->sds2_mps2, 1);
+            rb_report_json_num(b, "z_over_h", t->z_over_h2, 0);
+            rb_strbuf_puts(b, "}, ");
+        }
         rb_report_json_num(b, "a_flx_mps2", flx, 1);
         rb_report_json_num(b, "a_rig_mps2", rig, 1);
+        rb_report_json_num(b, "min_peak_mps2", t->min_peak_mps2, 1);
+    } else if (t->kind == RB_TARGET_IEEE693) {
+        rb_strbuf_printf(b, "\"level\": \"%s\", \"vertical\": %s, ",
+                         rb_enum_str(rb_ieee693_level_names, (int)t->level),
+                         t->vertical ? "true" : "false");
+        rb_report_json_num(b, "beta", rb_ieee693_beta(t->damping), 1);
+        rb_report_json_num(b, "zpa_mps2", rb_target_at(t, t->check_to_hz * 2.0), 1);
         rb_report_json_num(b, "min_peak_mps2", t->min_peak_mps2, 1);
     }
     rb_report_json_num(b, "damping", t->damping, 1);

@@ -157,16 +157,91 @@ table = write("ec8.csv", "\n".join(rows) + "\n")
 tcase = write("ec8.yaml", f"""extends: {src}/cases/base/reference-cabinet.yaml
 name: ec8-table
 motions:
-  - {{type: synthetic, spectrum: {{type: table, file: ec8.csv, damping: 5 %}}, seed: 3}}
+  - {{type: synthetic, spectrum: {{type: table, file: ec8.csv, damping: 5 %,
+     tolerance: {{below: 0.95, above: 1.4}}}}, seed: 3}}
 """)
+first_f, first_g = 1.0, float(rows[2].split(",")[1])
 tj = os.path.join(scratch, "t.json")
 r = run("spectrum", tcase, "--json", tj, "-q")
 if r.returncode != 0:
     fail(f"spectrum of the table case exited {r.returncode}: {r.stderr}")
 else:
-    m = json.load(open(tj))["motions"][0]
+    tjs = json.load(open(tj))
+    m = tjs["motions"][0]
     if not m["fit"]["within"] or m["fit"]["min_ratio"] < 1.0 or m["target"]["type"] != "table":
         fail(f"table fit {m['fit']}")
+    # the table's own tolerance, and the taper below its first frequency:
+    # the target there is first_g x f / first_f (written here); a point
+    # over 1/3 octave below it must stay under it (3e-3: the generator's
+    # quick spectrum)
+    if m["target"]["band_lower"] != 0.95 or m["target"]["band_upper"] != 1.4:
+        fail(f"table tolerance {m['target']}")
+    if not m["summary"]["acceptance"]["pass"]:
+        fail(f"table acceptance {m['summary']['acceptance']}")
+    low = [(f, sa) for f, sa in zip(tjs["frequency_hz"], m["sa_mps2"])
+           if f <= first_f / 2 ** (1 / 3)]
+    worst = max(sa / (G * first_g * f / first_f) for f, sa in low)
+    print(f"table: below {first_f / 2 ** (1 / 3):.2f} Hz ({len(low)} points) the spectrum "
+          f"reaches {worst:.3f} of the taper")
+    if not low or worst > 1.003:
+        fail(f"the table's low end is not under its taper: {worst}")
+# --- AC156-24 with the building's H_f and R_mu and a two-level envelope --
+# (ASCE 7-22 13.3.1 written here: T_a 0.5 s, R 8, I_e 1, Omega_0 3 at z/h
+# 0.5 with S_DS 1.0 g, enveloped with S_DS 1.5 g at grade)
+def levels_2024(sds, zh, ta, r, ie, om):
+    if zh <= 0:
+        hf, rmu = 1.0, 1.0
+    else:
+        hf = 1 + min(1 / ta, 2.5) * zh + max(0.0, 1 - (0.4 / ta) ** 2) * zh ** 10
+        rmu = max(1.3, math.sqrt(1.1 * r / (ie * om)))
+    return min(sds * hf / rmu, 1.6 * sds), 0.4 * sds * hf / rmu
+
+
+ecase = write("ac156-2024.yaml", f"""extends: {src}/cases/base/reference-cabinet.yaml
+name: ac156-2024
+motions:
+  - type: synthetic
+    spectrum: {{type: ac156, edition: 2024, sds: 1.0 g, z_over_h: 0.5, ta: 0.5 s, r: 8,
+               ie: 1, omega0: 3, envelope: {{sds: 1.5 g, z_over_h: 0}}}}
+    components: horizontal
+    seed: 4
+  - type: synthetic
+    spectrum: {{type: ieee693, level: moderate, damping: 5 %}}
+    seed: 4
+""")
+ej = os.path.join(scratch, "e.json")
+r = run("spectrum", ecase, "--json", ej, "-q")
+if r.returncode != 0:
+    fail(f"spectrum of the AC156-24 / IEEE 693 case exited {r.returncode}: {r.stderr}")
+else:
+    ms = json.load(open(ej))["motions"]
+    t = ms[0]["target"]
+    f1, r1 = levels_2024(1.0, 0.5, 0.5, 8, 1, 3)
+    f2, r2 = levels_2024(1.5, 0.0, 0.5, 8, 1, 3)
+    want = (max(f1, f2) * G, max(r1, r2) * G)
+    print(f"AC156-24 enveloped: A_FLX {t['a_flx_mps2'] / G:.6f} g, A_RIG "
+          f"{t['a_rig_mps2'] / G:.6f} g (here {want[0] / G:.6f}, {want[1] / G:.6f})")
+    if (abs(t["a_flx_mps2"] - want[0]) > 1e-9 * want[0]
+            or abs(t["a_rig_mps2"] - want[1]) > 1e-9 * want[1]
+            or abs(t["min_peak_mps2"] - 0.9 * want[1]) > 1e-9 * want[1]):
+        fail(f"AC156-24 target {t}, want A_FLX, A_RIG {want}")
+    if not ms[0]["summary"]["acceptance"]["pass"] or ms[0]["peak_mps2"] < 0.9 * want[1]:
+        fail(f"AC156-24 motion not accepted: {ms[0]['summary']['acceptance']}")
+    ti = ms[1]["target"]
+    if (ti["type"] != "ieee693" or ti["level"] != "moderate" or ti["vertical"]
+            or abs(ti["zpa_mps2"] - 0.5 * G) > 1e-9 or abs(ti["beta"] - 1) > 1e-5
+            or ms[1]["name"] != "ieee693"):
+        fail(f"IEEE 693 target {ti}, name {ms[1]['name']}")
+    # the vertical is matched to 80 % of Moderate: its peak at least 0.9 of
+    # a 0.4 g ZPA
+    if not ms[1]["vertical"]["pga_mps2"] >= 0.9 * 0.4 * G:
+        fail(f"IEEE 693 vertical peak {ms[1]['vertical']['pga_mps2']}")
+    for what, acc in (("h1", ms[1]["summary"]["acceptance"]),
+                      ("h2", ms[1]["h2"]["acceptance"]),
+                      ("v", ms[1]["vertical"]["acceptance"])):
+        if not acc["pass"]:
+            fail(f"IEEE 693 {what} not accepted: {acc}")
+
 # the table is an input: an output over it is refused
 r = run("spectrum", tcase, "--csv", table, "-q")
 if r.returncode != 2 or not open(table).read().startswith("# EN 1998-1"):

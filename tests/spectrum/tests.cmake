@@ -9,3 +9,11 @@ target_link_libraries(synth_sets PRIVATE rb_all)
 add_test(NAME synth_sets COMMAND synth_sets)
 set_tests_properties(synth_sets PROPERTIES LABELS spectrum TIMEOUT 600
     WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+# IEEE 693 triaxial sets (Moderate, at 5 % and 2 %) as a laboratory
+# accepts them, checked apart from the generator.
+add_executable(synth_ieee693 ${PROJECT_SOURCE_DIR}/tests/spectrum/synth_ieee693.c)
+rb_target_defaults(synth_ieee693)
+target_link_libraries(synth_ieee693 PRIVATE rb_all)
+add_test(NAME synth_ieee693 COMMAND synth_ieee693)
+set_tests_properties(synth_ieee693 PROPERTIES LABELS spectrum TIMEOUT 600
+    WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
