@@ -15,6 +15,7 @@
 #include <string.h>
 #include "../unit/harness.h"
 #include "rockbolt/synth.h"
+#include "set_checks.h"
 
 #define G 9.80665
 
@@ -128,17 +129,8 @@ static void check_component(const job *j)
         offsets += ok;
     }
     rb_spectrum_free(&sp);
-    double peak = 0, v = 0, d = 0, pgv = 0, pgd = 0;
-    for (size_t i = 0; i < j->s.n; i++) {
-        peak = fmax(peak, fabs(j->s.accel_mps2[i]));
-        if (i == 0)
-            continue;
-        double a0 = j->s.accel_mps2[i - 1], a1 = j->s.accel_mps2[i], h = j->s.dt_s;
-        d += h * v + h * h * (2 * a0 + a1) / 6;
-        v += 0.5 * h * (a0 + a1);
-        pgv = fmax(pgv, fabs(v));
-        pgd = fmax(pgd, fabs(d));
-    }
+    set_peaks pk = motion_peaks(&j->s);
+    double peak = pk.pga, pgv = pk.pgv, pgd = pk.pgd;
     CHECK(peak >= 0.9 * factor * G);
     CHECK(pgd <= 0.15);
     CHECK(pgv <= 1.0);
@@ -148,29 +140,6 @@ static void check_component(const job *j)
            j->level == RB_IEEE693_HIGH ? "high" : "moderate", 100 * j->xi,
            j->comp == RB_SYNTH_H1 ? "H1" : j->comp == RB_SYNTH_H2 ? "H2" : "V", offsets,
            least, most, peak / (factor * G), pgd, pgv);
-}
-
-static double correlation(const rb_series *a, const rb_series *b)
-{
-    size_t n = a->n;
-    double ma = 0, mb = 0, va = 0, vb = 0;
-    for (size_t i = 0; i < n; i++) {
-        ma += a->accel_mps2[i] / (double)n;
-        mb += b->accel_mps2[i] / (double)n;
-    }
-    for (size_t i = 0; i < n; i++) {
-        va += (a->accel_mps2[i] - ma) * (a->accel_mps2[i] - ma) / (double)n;
-        vb += (b->accel_mps2[i] - mb) * (b->accel_mps2[i] - mb) / (double)n;
-    }
-    double best = 0;
-    for (long lag = -(long)n + 1; lag < (long)n; lag++) {
-        double s = 0;
-        size_t i0 = lag > 0 ? (size_t)lag : 0, i1 = lag > 0 ? n : n + (size_t)lag;
-        for (size_t i = i0; i < i1; i++)
-            s += (a->accel_mps2[i] - ma) * (b->accel_mps2[(size_t)((long)i - lag)] - mb);
-        best = fmax(best, fabs(s));
-    }
-    return best / ((double)n * sqrt(va * vb));
 }
 
 static void check_set(rb_ieee693_level level, double xi, unsigned long long seed)
@@ -192,7 +161,7 @@ static void check_set(rb_ieee693_level level, double xi, unsigned long long seed
     if (!jobs[0].st && !jobs[1].st && !jobs[2].st) {
         static const int pairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
         for (int p = 0; p < 3; p++) {
-            double r = correlation(&jobs[pairs[p][0]].s, &jobs[pairs[p][1]].s);
+            double r = set_correlation(&jobs[pairs[p][0]].s, &jobs[pairs[p][1]].s);
             printf("  correlation %d-%d %.3f\n", pairs[p][0], pairs[p][1], r);
             CHECK(r <= 0.3);
         }

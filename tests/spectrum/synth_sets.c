@@ -25,6 +25,7 @@
 #include <string.h>
 #include "../unit/harness.h"
 #include "rockbolt/synth.h"
+#include "set_checks.h"
 
 #define G 9.80665
 #define SETS 7
@@ -167,17 +168,8 @@ static void check_component(const job *j)
         worst_tail_hi = fmax(worst_tail_hi, r);
     }
     rb_spectrum_free(&sp);
-    double peak = 0, v = 0, d = 0, pgv = 0, pgd = 0;
-    for (size_t i = 0; i < s->n; i++) {
-        peak = fmax(peak, fabs(s->accel_mps2[i]));
-        if (i == 0)
-            continue;
-        double a0 = s->accel_mps2[i - 1], a1 = s->accel_mps2[i], h = s->dt_s;
-        d += h * v + h * h * (2 * a0 + a1) / 6;
-        v += 0.5 * h * (a0 + a1);
-        pgv = fmax(pgv, fabs(v));
-        pgd = fmax(pgd, fabs(d));
-    }
+    set_peaks pk = motion_peaks(s);
+    double peak = pk.pga, pgv = pk.pgv, pgd = pk.pgd;
     CHECK(peak >= 0.95 * j->rig);
     CHECK(pgd <= 0.15);
     CHECK(pgv <= 1.0);
@@ -188,30 +180,6 @@ static void check_component(const job *j)
     CHECK(j->info.summary.accept.pass);
     CHECK_REL(j->info.summary.pgd_m, pgd, 1e-9);
     CHECK_REL(j->info.summary.pga_mps2, peak, 1e-12);
-}
-
-/* max over lags of |sum a b| / (n sd_a sd_b), summed directly */
-static double correlation(const rb_series *a, const rb_series *b)
-{
-    size_t n = a->n;
-    double ma = 0, mb = 0, va = 0, vb = 0;
-    for (size_t i = 0; i < n; i++) {
-        ma += a->accel_mps2[i] / (double)n;
-        mb += b->accel_mps2[i] / (double)n;
-    }
-    for (size_t i = 0; i < n; i++) {
-        va += (a->accel_mps2[i] - ma) * (a->accel_mps2[i] - ma) / (double)n;
-        vb += (b->accel_mps2[i] - mb) * (b->accel_mps2[i] - mb) / (double)n;
-    }
-    double best = 0;
-    for (long lag = -(long)n + 1; lag < (long)n; lag++) {
-        double s = 0;
-        size_t i0 = lag > 0 ? (size_t)lag : 0, i1 = lag > 0 ? n : n + (size_t)lag;
-        for (size_t i = i0; i < i1; i++)
-            s += a->accel_mps2[i] * b->accel_mps2[(size_t)((long)i - lag)];
-        best = fmax(best, fabs(s));
-    }
-    return best / ((double)n * sqrt(va * vb));
 }
 
 static void check_suite(double sds_g, double zh, unsigned long long seed)
@@ -242,7 +210,7 @@ static void check_suite(double sds_g, double zh, unsigned long long seed)
         static const int pairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
         for (int p = 0; p < 3; p++) {
             const rb_series *a = &c[pairs[p][0]].s, *b = &c[pairs[p][1]].s;
-            double r = correlation(a, b);
+            double r = set_correlation(a, b);
             rb_synth_pair tool;
             CHECK(rb_synth_independence(a, b, &tool) == RB_OK);
             CHECK(r <= 0.3);
