@@ -93,6 +93,17 @@ def solved_as(r):
     return f"tolerance: {r['tolerance']:g};rest_fraction: {r['rest_fraction']:g}"
 
 
+def runs_are_checks(name, runs, base):
+    """Each confirming run's margin is check's at that run's tolerance and
+    rest fraction, with confirmation off."""
+    for r in runs:
+        d, _ = check(variant(f"{name}-at-{r['tolerance']:g}", "confirm: off", solved_as(r),
+                             base=base))
+        if d and conv(d)["margin"] != r["margin"]:
+            fail(f"the run at {r['tolerance']:g} has margin {r['margin']}, check at that "
+                 f"tolerance and rest fraction {conv(d)['margin']}")
+
+
 def unconverged(name, path):
     """A case whose three runs all pass but do not converge: unconfirmed it
     passes; confirmed it fails with the convergence warning. Its report,
@@ -282,12 +293,7 @@ if sc and off:
     elif rc != 1 or c["status"] != "warning" or not reason.startswith(
             f"not confirmed: at tolerance {at(runs[1], runs)} (auto), {runs[1]['reason']}"):
         fail(f"the scatter case should fail naming its last run: exit {rc}, '{reason}'")
-    for r in runs:
-        d, _ = check(variant(f"scatter-at-{r['tolerance']:g}", "confirm: off", solved_as(r),
-                             base=SCATTER))
-        if d and conv(d)["margin"] != r["margin"]:
-            fail(f"the run at {r['tolerance']:g} has margin {r['margin']}, check at that "
-                 f"tolerance and rest fraction {conv(d)['margin']}")
+    runs_are_checks("scatter", runs, SCATTER)
 
 # 7b. runs that all pass and scatter by more than the least margin: not
 #     signed
@@ -305,12 +311,7 @@ if sr:
             "the run does not converge")
     if not reason.startswith(want):
         fail(f"reason '{reason}', expected it to start '{want}'")
-    for r in c["runs"]:
-        d, _ = check(variant(f"scatter-runs-at-{r['tolerance']:g}", "confirm: off",
-                             solved_as(r), base=SCATTER_RUNS))
-        if d and conv(d)["margin"] != r["margin"]:
-            fail(f"the run at {r['tolerance']:g} has margin {r['margin']}, check at that "
-                 f"tolerance and rest fraction {conv(d)['margin']}")
+    runs_are_checks("scatter-runs", c["runs"], SCATTER_RUNS)
 
 # 8. runs that agree better than they are from the limit, but do not
 #    converge: not signed within the band, and the reason names the least
