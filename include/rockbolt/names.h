@@ -18,5 +18,9 @@ typedef struct {
 const char *rb_enum_str(const rb_enum_name *t, int value);
 /* The value named s: 1 and *value set, or 0. */
 int rb_enum_parse(const rb_enum_name *t, const char *s, int *value);
+/* The name of value in table t with each '-' written as sep, into buf (of
+ * size n, cut to fit): "no_yield" as a key or template name, "no yield" in
+ * words. Returns buf. */
+char *rb_enum_str_sep(const rb_enum_name *t, int value, char sep, char *buf, size_t n);
 
 #endif

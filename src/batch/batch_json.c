@@ -214,7 +214,8 @@ static int add_digest(cJSON *o)
 /* The head with an empty list of cases, which comes last; then the cases
  * one at a time, so that the tree of one case is all that is ever held
  * besides the text (a whole list's tree took 5 KB a row). */
-void rb_batch_json_head(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_counts *n)
+void rb_batch_render_json_head(rb_strbuf *b, const rb_batch_summary *s,
+                               const rb_batch_counts *n)
 {
     char shard[64];
     cJSON *root = cJSON_CreateObject(), *counts;
@@ -258,8 +259,8 @@ void rb_batch_json_head(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_
     free(head);
 }
 
-void rb_batch_json_case(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_case *c,
-                        size_t pos)
+void rb_batch_render_json_case(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_case *c,
+                               size_t pos)
 {
     cJSON *one = cJSON_CreateArray();
     char *text = one && add_case(one, c, s) && add_digest(one->child)
@@ -285,7 +286,8 @@ void rb_batch_json_case(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_
     free(text);
 }
 
-void rb_batch_json_tail(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_counts *n)
+void rb_batch_render_json_tail(rb_strbuf *b, const rb_batch_summary *s,
+                               const rb_batch_counts *n)
 {
     (void)s, (void)n;
     rb_strbuf_puts(b, "]\n}\n");
@@ -663,7 +665,7 @@ static void rd_fragility_head(rd_ctx *r, const cJSON *root, rb_batch_summary *ou
     out->intensity = (rb_fragility_intensity)imv;
 }
 
-rb_status rb_batch_json_read_head(const cJSON *root, rb_batch_summary *out, rb_diag *diag)
+rb_status rb_batch_read_json_head(const cJSON *root, rb_batch_summary *out, rb_diag *diag)
 {
     rd_ctx r = {diag, 0};
     memset(out, 0, sizeof *out);
@@ -688,7 +690,7 @@ rb_status rb_batch_json_read_head(const cJSON *root, rb_batch_summary *out, rb_d
     return r.bad ? RB_ERR_PARSE : RB_OK;
 }
 
-rb_status rb_batch_json_read_case(const cJSON *o, const rb_batch_summary *s,
+rb_status rb_batch_read_json_case(const cJSON *o, const rb_batch_summary *s,
                                   rb_batch_case *c, rb_diag *diag)
 {
     rd_ctx r = {diag, 0};

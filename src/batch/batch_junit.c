@@ -195,7 +195,8 @@ static void junit_case(rb_strbuf *b, const rb_batch_case *c)
     rb_strbuf_puts(b, "    </testcase>\n");
 }
 
-void rb_batch_junit_head(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_counts *n)
+void rb_batch_render_junit_head(rb_strbuf *b, const rb_batch_summary *s,
+                                const rb_batch_counts *n)
 {
     (void)s;
     size_t errors = n->unreadable + n->errors;
@@ -206,14 +207,15 @@ void rb_batch_junit_head(rb_strbuf *b, const rb_batch_summary *s, const rb_batch
                    "errors=\"%zu\" skipped=\"0\">\n", n->cases, n->failed, errors);
 }
 
-void rb_batch_junit_case(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_case *c,
-                         size_t pos)
+void rb_batch_render_junit_case(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_case *c,
+                                size_t pos)
 {
     (void)s, (void)pos;
     junit_case(b, c);
 }
 
-void rb_batch_junit_tail(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_counts *n)
+void rb_batch_render_junit_tail(rb_strbuf *b, const rb_batch_summary *s,
+                                const rb_batch_counts *n)
 {
     (void)s, (void)n;
     rb_strbuf_puts(b, "  </testsuite>\n</testsuites>\n");

@@ -7,7 +7,7 @@
 #include "batch_summary.h"
 #include "rockbolt/report.h"
 
-void rb_batch_p58_head(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_counts *n)
+void rb_batch_render_p58_head(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_counts *n)
 {
     (void)s;
     (void)n;
@@ -20,8 +20,8 @@ void rb_batch_p58_head(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_c
     free(h);
 }
 
-void rb_batch_p58_case(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_case *c,
-                       size_t pos)
+void rb_batch_render_p58_case(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_case *c,
+                              size_t pos)
 {
     (void)s;
     (void)pos;
@@ -56,7 +56,7 @@ void rb_batch_p58_case(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_c
     free(row);
 }
 
-void rb_batch_p58_tail(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_counts *n)
+void rb_batch_render_p58_tail(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_counts *n)
 {
     (void)b;
     (void)s;

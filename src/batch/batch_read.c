@@ -267,7 +267,7 @@ static rb_status read_head(rb_batch_reader *r, cJSON *root, rb_diag *d)
     }
     /* the head's own errors first, as when the summary was read whole */
     int line = r->line, col = r->col;
-    if ((st = rb_batch_json_read_head(root, &r->head, d)) != RB_OK) {
+    if ((st = rb_batch_read_json_head(root, &r->head, d)) != RB_OK) {
         r->vline = r->vcol = 0;   /* the head as a whole, as before */
         return place(r, d, st);
     }
@@ -373,7 +373,7 @@ rb_status rb_batch_reader_next(rb_batch_reader *r, rb_batch_case *c, int *got,
     if (!cJSON_IsObject(o))
         st = fail_at(r, d, RB_ERR_PARSE, r->vline, r->vcol, "cases", "expected an object "
                      "for each case");
-    else if ((st = rb_batch_json_read_case(o, &r->head, c, d)) != RB_OK)
+    else if ((st = rb_batch_read_json_case(o, &r->head, c, d)) != RB_OK)
         place(r, d, st);
     cJSON_Delete(o);
     if (st != RB_OK)

@@ -13,11 +13,16 @@ static const struct {
     case_fn one;
     end_fn tail;
 } formats[RB_BATCH_N_FORMATS] = {
-    [RB_BATCH_TEXT] = {rb_batch_text_head, rb_batch_text_case, rb_batch_text_tail},
-    [RB_BATCH_CSV] = {rb_batch_csv_head, rb_batch_csv_case, rb_batch_csv_tail},
-    [RB_BATCH_JSON] = {rb_batch_json_head, rb_batch_json_case, rb_batch_json_tail},
-    [RB_BATCH_JUNIT] = {rb_batch_junit_head, rb_batch_junit_case, rb_batch_junit_tail},
-    [RB_BATCH_P58] = {rb_batch_p58_head, rb_batch_p58_case, rb_batch_p58_tail},
+    [RB_BATCH_TEXT] = {rb_batch_render_text_head, rb_batch_render_text_case,
+                       rb_batch_render_text_tail},
+    [RB_BATCH_CSV] = {rb_batch_render_csv_head, rb_batch_render_csv_case,
+                       rb_batch_render_csv_tail},
+    [RB_BATCH_JSON] = {rb_batch_render_json_head, rb_batch_render_json_case,
+                       rb_batch_render_json_tail},
+    [RB_BATCH_JUNIT] = {rb_batch_render_junit_head, rb_batch_render_junit_case,
+                       rb_batch_render_junit_tail},
+    [RB_BATCH_P58] = {rb_batch_render_p58_head, rb_batch_render_p58_case,
+                       rb_batch_render_p58_tail},
 };
 
 static int known(rb_batch_format f)

@@ -69,12 +69,12 @@ void rb_batch_stats(const rb_batch_case *c, rb_batch_stat *mean, rb_batch_stat *
  * the head, which holds the counts, each case at its position in the
  * output, and the tail. */
 #define RB_BATCH_PIECES(fmt)                                                       \
-    void rb_batch_##fmt##_head(rb_strbuf *b, const rb_batch_summary *s,             \
-                               const rb_batch_counts *n);                           \
-    void rb_batch_##fmt##_case(rb_strbuf *b, const rb_batch_summary *s,             \
-                               const rb_batch_case *c, size_t pos);                 \
-    void rb_batch_##fmt##_tail(rb_strbuf *b, const rb_batch_summary *s,             \
-                               const rb_batch_counts *n);
+    void rb_batch_render_##fmt##_head(rb_strbuf *b, const rb_batch_summary *s,    \
+                                      const rb_batch_counts *n);                  \
+    void rb_batch_render_##fmt##_case(rb_strbuf *b, const rb_batch_summary *s,    \
+                                      const rb_batch_case *c, size_t pos);        \
+    void rb_batch_render_##fmt##_tail(rb_strbuf *b, const rb_batch_summary *s,    \
+                                      const rb_batch_counts *n);
 RB_BATCH_PIECES(text)
 RB_BATCH_PIECES(csv)
 RB_BATCH_PIECES(json)
@@ -88,8 +88,8 @@ void rb_batch_digest_text(const char *text, char out[RB_BATCH_DIGEST_CHARS]);
  * batch_read.c: the head's members (all but "cases") from root, and one
  * element of "cases", which must match its digest. RB_ERR_PARSE with the
  * field in diag->key and the reason in diag->msg, no place. */
-rb_status rb_batch_json_read_head(const cJSON *root, rb_batch_summary *out, rb_diag *diag);
-rb_status rb_batch_json_read_case(const cJSON *o, const rb_batch_summary *s,
+rb_status rb_batch_read_json_head(const cJSON *root, rb_batch_summary *out, rb_diag *diag);
+rb_status rb_batch_read_json_case(const cJSON *o, const rb_batch_summary *s,
                                   rb_batch_case *c, rb_diag *diag);
 
 #endif

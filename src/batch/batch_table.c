@@ -136,7 +136,8 @@ static void text_case(rb_strbuf *b, const rb_batch_case *c, int design)
         text_fragility(b, c);
 }
 
-void rb_batch_text_head(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_counts *n)
+void rb_batch_render_text_head(rb_strbuf *b, const rb_batch_summary *s,
+                               const rb_batch_counts *n)
 {
     (void)n;
     rb_strbuf_printf(b, "%-24s %-18s %-10s", "tag", "motion", "verdict");
@@ -146,14 +147,15 @@ void rb_batch_text_head(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_
     rb_strbuf_puts(b, "\n");
 }
 
-void rb_batch_text_case(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_case *c,
-                        size_t pos)
+void rb_batch_render_text_case(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_case *c,
+                               size_t pos)
 {
     (void)pos;
     text_case(b, c, s->design);
 }
 
-void rb_batch_text_tail(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_counts *n)
+void rb_batch_render_text_tail(rb_strbuf *b, const rb_batch_summary *s,
+                               const rb_batch_counts *n)
 {
     (void)s;
     rb_strbuf_printf(b, "%zu case%s: %zu passed, %zu failed, %zu unreadable, %zu "
@@ -183,15 +185,6 @@ static void csv_head(rb_strbuf *b, const rb_batch_case *c, const char *motion,
     rb_strbuf_puts(b, ",");
     csv_field(b, motion);
     rb_strbuf_printf(b, ",%d,%s,%s", governing, verdict, rb_batch_verdict_str(c->verdict));
-}
-
-/* A limit state's name in a column name: first_yield, lift_off. */
-static void limit_column(int k, char *buf, size_t n)
-{
-    snprintf(buf, n, "%s", rb_enum_str(rb_limit_state_names, k));
-    for (char *p = buf; *p; p++)
-        if (*p == '-')
-            *p = '_';
 }
 
 /* A number of 6 significant digits, or an empty field when there is none. */
@@ -263,7 +256,7 @@ static void csv_fragility(rb_strbuf *b, const rb_batch_fragility *f,
     }
     char gov[32] = "";
     if (f->governing >= 0)
-        limit_column(f->governing, gov, sizeof gov);
+        rb_enum_str_sep(rb_limit_state_names, f->governing, '_', gov, sizeof gov);
     rb_strbuf_printf(b, ",%s,", f->governing >= 0 ? gov : "none");
 }
 
@@ -272,7 +265,7 @@ static void csv_fragility(rb_strbuf *b, const rb_batch_fragility *f,
  * when there is none. */
 #define FRAGILITY_COLUMNS (2 + 1 + 6 * RB_N_LIMITS + 1 + 1)
 
-void rb_batch_csv_head(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_counts *n)
+void rb_batch_render_csv_head(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_counts *n)
 {
     (void)n;
     rb_strbuf_puts(b, "index,source,line,tag,motion,governing,verdict,case_verdict");
@@ -289,7 +282,7 @@ void rb_batch_csv_head(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_c
                         "fragility_level_g");
         for (int k = 0; k < RB_N_LIMITS; k++) {
             char st[32];
-            limit_column(k, st, sizeof st);
+            rb_enum_str_sep(rb_limit_state_names, k, '_', st, sizeof st);
             rb_strbuf_printf(b, ",fragility_%s_median_g,fragility_%s_beta,"
                              "fragility_%s_median_lo_g,fragility_%s_median_hi_g,"
                              "fragility_%s_p_at_level,fragility_%s_reached", st, st, st, st,
@@ -302,13 +295,13 @@ void rb_batch_csv_head(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_c
                     "code_anchor_utilization,governs,reason,error\n");
 }
 
-void rb_batch_csv_tail(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_counts *n)
+void rb_batch_render_csv_tail(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_counts *n)
 {
     (void)b, (void)s, (void)n;
 }
 
-void rb_batch_csv_case(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_case *c,
-                       size_t pos)
+void rb_batch_render_csv_case(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_case *c,
+                              size_t pos)
 {
     (void)pos;
     if (c->verdict != RB_BATCH_PASS && c->verdict != RB_BATCH_FAIL) {

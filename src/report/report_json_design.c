@@ -127,10 +127,7 @@ void rb_report_json_motion_design(rb_jctx *cx, cJSON *motion_o, const rb_report 
     f = rb_j_obj(cx, o, "design_factor");
     for (int k = 0; k < RB_N_CRITERIA; k++) {
         char key[32];   /* "no_yield": the kind's name as a key */
-        snprintf(key, sizeof key, "%s", rb_enum_str(rb_criterion_names, k));
-        for (char *p = key; *p; p++)
-            if (*p == '-')
-                *p = '_';
+        rb_enum_str_sep(rb_criterion_names, k, '_', key, sizeof key);
         add_factor(cx, f, key, &md->factor[k], &d->factor_criteria[k]);
     }
     add_gap(cx, o, md, &d->gap_criteria);

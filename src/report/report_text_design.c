@@ -242,10 +242,9 @@ static void factor_vars(const rb_report *r, rb_tvars *t, const char *num, const 
 /* A kind's variables: factor_no_yield and factor_no_yield_text. */
 static void factor_names(int kind, char *num, char *num_text)
 {
-    snprintf(num, FACTOR_NAME_MAX, "factor_%s", rb_enum_str(rb_criterion_names, kind));
-    for (char *p = num; *p; p++)
-        if (*p == '-')
-            *p = '_';
+    char key[FACTOR_NAME_MAX - 8];
+    snprintf(num, FACTOR_NAME_MAX, "factor_%s",
+             rb_enum_str_sep(rb_criterion_names, kind, '_', key, sizeof key));
     snprintf(num_text, FACTOR_NAME_MAX, "%s_text", num);
 }
 

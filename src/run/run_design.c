@@ -72,14 +72,12 @@ static rb_status factors(searches *s, rb_diag *diag)
 {
     const rb_case *c = s->c;
     for (int k = 0; k < RB_N_CRITERIA; k++) {
-        char what[64];
+        char what[64], words[40];
         if (!s->full && (int)c->criteria.kind != k)
             continue;
         /* "design factor (no yield)": the kind's name in words */
-        snprintf(what, sizeof what, "design factor (%s)", rb_enum_str(rb_criterion_names, k));
-        for (char *p = what; *p; p++)
-            if (*p == '-')
-                *p = ' ';
+        snprintf(what, sizeof what, "design factor (%s)",
+                 rb_enum_str_sep(rb_criterion_names, k, ' ', words, sizeof words));
         step(s->pg, s->cm->name, what);
         rb_status st = rb_design_factor(&c->model, &s->cm->motion, &c->solve,
                                         &s->cd->factor_criteria[k], &c->design, s->n_threads,
