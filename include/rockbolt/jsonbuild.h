@@ -1,5 +1,6 @@
 /* The one way JSON trees are built (library rb_report): the check report,
- * the design's sweeps and the batch summary add their values through these,
+ * the design's sweeps, the batch summary and the fragility, spectra and
+ * floor-motion files add their values through these,
  * and every number is printed by rb_json_number (rockbolt/jsonnum.h), so
  * the same double is the same text in all of them. The text is printed
  * by rb_json_print (rockbolt/jsonprint.h).
@@ -11,6 +12,7 @@
 #ifndef ROCKBOLT_JSONBUILD_H
 #define ROCKBOLT_JSONBUILD_H
 
+#include <stddef.h>
 #include <cjson/cJSON.h>
 #include "rockbolt/status.h"
 
@@ -42,6 +44,15 @@ void rb_j_opt(rb_jctx *cx, cJSON *o, const char *key, int have, double v);
 void rb_j_norm(rb_jctx *cx, cJSON *o, const char *key, double v);
 void rb_j_bool(rb_jctx *cx, cJSON *o, const char *key, int v);
 void rb_j_str(rb_jctx *cx, cJSON *o, const char *key, const char *s);
+/* Text from the inputs (a case's or a motion's name, a path): bytes that
+ * are not UTF-8 written as \xHH (rb_utf8_fix), as every output shows them,
+ * so that it reads back as it was. NULL is "". */
+void rb_j_text(rb_jctx *cx, cJSON *o, const char *key, const char *s);
+/* A count or seed, printed whole. */
+void rb_j_int(rb_jctx *cx, cJSON *o, const char *key, long long v);
+void rb_j_uint(rb_jctx *cx, cJSON *o, const char *key, unsigned long long v);
+/* n numbers as an array, each null when it is not finite. */
+void rb_j_nums(rb_jctx *cx, cJSON *o, const char *key, const double *v, size_t n);
 /* Per-row values as {"left": .., "right": ..}. */
 void rb_j_pair(rb_jctx *cx, cJSON *o, const char *key, const double v[2]);
 void rb_j_pair_or_null(rb_jctx *cx, cJSON *o, const char *key, const double v[2]);
@@ -53,5 +64,7 @@ void rb_j_pair_when(rb_jctx *cx, cJSON *o, const char *key,
 /* rb_j_num_or_null for writers that chain their own checks (the batch
  * summary): nonzero when added, 0 when out of memory. */
 int rb_j_add_num(cJSON *o, const char *key, double v);
+/* rb_j_text for such writers: the member added, NULL when out of memory. */
+cJSON *rb_j_add_text(cJSON *o, const char *key, const char *s);
 
 #endif

@@ -24,21 +24,6 @@
 #include "rockbolt/report.h"
 #include "rockbolt/textsafe.h"
 
-/* Text from the inputs (tags, paths, motion names, messages): JSON must
- * be UTF-8, so bytes that are not are written as \xHH, as every other
- * output shows them (rockbolt/textsafe.h). */
-static cJSON *add_text(cJSON *o, const char *k, const char *v)
-{
-    if (!v)
-        v = "";
-    if (rb_utf8_invalid_at(v, strlen(v)) == strlen(v))
-        return cJSON_AddStringToObject(o, k, v);
-    char *t = rb_utf8_fix(v);
-    cJSON *r = t ? cJSON_AddStringToObject(o, k, t) : NULL;
-    free(t);
-    return r;
-}
-
 /* The columns of one group (the run's own, or the design's) of a run or
  * of a case's mean and maximum; none is null. key_max: the aggregates'
  * names (in "max"); bounds NULL: no bound columns (a mean or maximum). */
@@ -87,13 +72,13 @@ static int add_run(cJSON *arr, const rb_batch_result *r, int design)
     cJSON *o = cJSON_CreateObject();
     if (!o || !cJSON_AddItemToArray(arr, o))
         return cJSON_Delete(o), 0;
-    int ok = add_text(o, "motion", r->motion) != NULL
+    int ok = rb_j_add_text(o, "motion", r->motion) != NULL
         && cJSON_AddStringToObject(o, "verdict", r->pass ? "pass" : "fail") != NULL
         && add_columns(o, r->value, &r->bounds, 0, 0)
         && rb_j_add_num(o, "margin", r->margin)
         && cJSON_AddStringToObject(o, "governs",
                                    rb_governs_name((rb_governs_limit)r->limit)) != NULL
-        && add_text(o, "reason", r->reason) != NULL
+        && rb_j_add_text(o, "reason", r->reason) != NULL
         && add_warnings(o, r->warnings);
     /* only with a concrete check, so that other summaries keep their bytes */
     if (ok && r->has_anchor)
@@ -109,10 +94,10 @@ static int add_error(cJSON *o, const rb_batch_case *c)
         return cJSON_AddNullToObject(o, "error") != NULL;
     cJSON *e = cJSON_AddObjectToObject(o, "error");
     const rb_diag *d = rb_batch_case_error(c);
-    return e && add_text(e, "file", d->file)
+    return e && rb_j_add_text(e, "file", d->file)
         && rb_j_add_num(e, "line", d->line) && rb_j_add_num(e, "col", d->col)
-        && add_text(e, "key", d->key)
-        && add_text(e, "message", d->msg)
+        && rb_j_add_text(e, "key", d->key)
+        && rb_j_add_text(e, "message", d->msg)
         && rb_j_add_num(e, "count", (double)c->n_errors);
 }
 
@@ -124,7 +109,7 @@ static int add_fragility(cJSON *o, const rb_batch_fragility *f)
     if (!fo)
         return 0;
     if (f->error)
-        return add_text(fo, "error", f->error) != NULL;
+        return rb_j_add_text(fo, "error", f->error) != NULL;
     int ok = (!(f->im_freq_hz > 0) || rb_j_add_num(fo, "intensity_freq_hz", f->im_freq_hz))
         && rb_j_add_num(fo, "g_mps2", f->g_mps2) && rb_j_add_num(fo, "level_mps2", f->level_mps2)
         && (f->governing >= 0
@@ -174,17 +159,17 @@ static int add_case(cJSON *arr, const rb_batch_case *c, const rb_batch_summary *
         return cJSON_Delete(o), 0;
     int solved = c->verdict == RB_BATCH_PASS || c->verdict == RB_BATCH_FAIL;
     int ok = rb_j_add_num(o, "index", (double)c->index)
-        && add_text(o, "source", c->source)
+        && rb_j_add_text(o, "source", c->source)
         && rb_j_add_num(o, "line", c->line)
-        && add_text(o, "tag", c->tag)
+        && rb_j_add_text(o, "tag", c->tag)
         && cJSON_AddStringToObject(o, "verdict", rb_batch_verdict_str(c->verdict))
-        && add_text(o, "reason", c->reason)
+        && rb_j_add_text(o, "reason", c->reason)
         && add_error(o, c);
     if (!ok)
         return 0;
     if (!solved)
         return cJSON_AddNullToObject(o, "governing_motion") != NULL;
-    if (!add_text(o, "governing_motion",
+    if (!rb_j_add_text(o, "governing_motion",
                   c->runs[rb_batch_governing(c)].motion))
         return 0;
     cJSON *runs = cJSON_AddArrayToObject(o, "runs");

@@ -6,11 +6,14 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <cjson/cJSON.h>
 #include "rockbolt/floor_files.h"
+#include "rockbolt/jsonprint.h"
 #include "rockbolt/names.h"
 #include "rockbolt/textsafe.h"
 #include "rockbolt/units.h"
 #include "report_internal.h"
+#include "util/strbuf.h"
 
 static const char *motion_name(const rb_case *c, size_t m)
 {
@@ -137,70 +140,70 @@ char *rb_floors_render_text(const rb_case *c, const rb_case_floors *f,
     return rb_strbuf_take(&b);
 }
 
-static void json_component(rb_strbuf *b, const rb_floor_component *fc, int a,
+static void json_component(rb_jctx *cx, cJSON *arr, const rb_floor_component *fc, int a,
                            const char *const *files, size_t m)
 {
-    rb_strbuf_printf(b, "{\"axis\": \"%s\", \"between\": \"%s\", ",
-                     rb_enum_str(rb_floor_axis_names, a),
-                     rb_enum_str(rb_between_names, (int)fc->between));
-    rb_report_json_num(b, "dt_s", fc->s.dt_s, 1);
-    rb_strbuf_printf(b, "\"samples\": %zu, ", fc->s.n);
-    const rb_motion_summary *sm = &fc->sum;
-    rb_report_json_num(b, "pga_mps2", sm->pga_mps2, 1);
-    rb_report_json_num(b, "pgv_mps", sm->pgv_mps, 1);
-    rb_report_json_num(b, "pgd_m", sm->pgd_m, 1);
-    rb_report_json_num(b, "end_velocity_mps", sm->end_velocity_mps, 1);
-    rb_report_json_num(b, "end_displacement_m", sm->end_displacement_m, 1);
-    rb_report_json_num(b, "arias_mps", sm->arias_mps, 1);
-    rb_report_json_num(b, "arias_t5_s", sm->arias_t5_s, 1);
-    rb_report_json_num(b, "arias_t95_s", sm->arias_t95_s, 1);
-    if (sm->has_target) {
-        rb_report_target_json(b, fc->target);
-        rb_report_accept_json(b, &sm->accept);
-        rb_strbuf_printf(b, "\"peak_ok\": %s, ", sm->peak_ok ? "true" : "false");
-    }
-    rb_strbuf_puts(b, "\"files\": {");
     static const char *const kinds[RB_FLOOR_FILE_KINDS] = {"at2", "csv"};
-    int first = 1;
+    const rb_motion_summary *sm = &fc->sum;
+    cJSON *o = rb_j_item(cx, arr);
+    rb_j_str(cx, o, "axis", rb_enum_str(rb_floor_axis_names, a));
+    rb_j_str(cx, o, "between", rb_enum_str(rb_between_names, (int)fc->between));
+    rb_j_num_or_null(cx, o, "dt_s", fc->s.dt_s);
+    rb_j_uint(cx, o, "samples", fc->s.n);
+    rb_j_num_or_null(cx, o, "pga_mps2", sm->pga_mps2);
+    rb_j_num_or_null(cx, o, "pgv_mps", sm->pgv_mps);
+    rb_j_num_or_null(cx, o, "pgd_m", sm->pgd_m);
+    rb_j_num_or_null(cx, o, "end_velocity_mps", sm->end_velocity_mps);
+    rb_j_num_or_null(cx, o, "end_displacement_m", sm->end_displacement_m);
+    rb_j_num_or_null(cx, o, "arias_mps", sm->arias_mps);
+    rb_j_num_or_null(cx, o, "arias_t5_s", sm->arias_t5_s);
+    rb_j_num_or_null(cx, o, "arias_t95_s", sm->arias_t95_s);
+    if (sm->has_target) {
+        rb_report_target_json(cx, o, fc->target);
+        rb_report_accept_json(cx, o, &sm->accept);
+        rb_j_bool(cx, o, "peak_ok", sm->peak_ok);
+    }
+    cJSON *fo = rb_j_obj(cx, o, "files");
     for (int k = 0; k < RB_FLOOR_FILE_KINDS; k++) {
         const char *p = file_of(files, m, a, (rb_floor_file_kind)k);
-        if (!p)
-            continue;
-        rb_strbuf_printf(b, "%s\"%s\": ", first ? "" : ", ", kinds[k]);
-        rb_report_json_str(b, p);
-        first = 0;
+        if (p)
+            rb_j_text(cx, fo, kinds[k], p);
     }
-    rb_strbuf_puts(b, "}}");
 }
+
+/* Where the summary's lines break: the head in two lines, each motion on a
+ * line of its own and each of its components on one below it. */
+static const rb_json_break floors_breaks[] = {
+    {0, "case", ",\n  ", NULL, NULL},
+    {0, "motions", ",\n  ", "\n    ", "\n  "},
+    {1, "components", NULL, "\n      ", ""},
+};
+static const rb_json_layout floors_layout = {
+    "\n  ", "\n", floors_breaks, sizeof floors_breaks / sizeof floors_breaks[0]};
 
 char *rb_floors_render_json(const rb_case *c, const rb_case_floors *f,
                             const char *const *files)
 {
-    rb_strbuf b = {0};
-    rb_strbuf_puts(&b, "{\n  \"format\": \"rockbolt-motions\", \"format_version\": 1,\n"
-                       "  \"case\": ");
-    rb_report_json_str(&b, c->name ? c->name : "");
-    rb_strbuf_puts(&b, ", ");
-    rb_report_json_num(&b, "g_mps2", f->g_mps2, 0);
-    rb_strbuf_puts(&b, ",\n  \"motions\": [\n");
+    rb_jctx cx = {.st = RB_OK, .where = "motions"};
+    cJSON *root = cJSON_CreateObject();
+    rb_j_oom(&cx, root);
+    rb_j_str(&cx, root, "format", "rockbolt-motions");
+    rb_j_int(&cx, root, "format_version", 1);
+    rb_j_text(&cx, root, "case", c->name);
+    rb_j_num_or_null(&cx, root, "g_mps2", f->g_mps2);
+    cJSON *motions = rb_j_arr(&cx, root, "motions");
     for (size_t m = 0; m < f->n_motions; m++) {
         const rb_floor_motion *fm = &f->motions[m];
-        rb_strbuf_puts(&b, "    {\"name\": ");
-        rb_report_json_str(&b, motion_name(c, m));
-        rb_strbuf_printf(&b, ", \"kind\": \"%s\", ",
-                         rb_enum_str(rb_case_motion_type_names, (int)c->motions[m].type));
-        rb_report_json_num(&b, "run_s", fm->run_s, 1);
-        rb_strbuf_puts(&b, "\"components\": [");
-        int first = 1;
-        for (int a = 0; a < RB_FLOOR_AXES; a++) {
-            if (!fm->axis[a].present)
-                continue;
-            rb_strbuf_puts(&b, first ? "\n      " : ",\n      ");
-            json_component(&b, &fm->axis[a], a, files, m);
-            first = 0;
-        }
-        rb_strbuf_printf(&b, "]}%s\n", m + 1 < f->n_motions ? "," : "");
+        cJSON *o = rb_j_item(&cx, motions);
+        rb_j_text(&cx, o, "name", motion_name(c, m));
+        rb_j_str(&cx, o, "kind", rb_enum_str(rb_case_motion_type_names, (int)c->motions[m].type));
+        rb_j_num_or_null(&cx, o, "run_s", fm->run_s);
+        cJSON *comps = rb_j_arr(&cx, o, "components");
+        for (int a = 0; a < RB_FLOOR_AXES; a++)
+            if (fm->axis[a].present)
+                json_component(&cx, comps, &fm->axis[a], a, files, m);
     }
-    rb_strbuf_puts(&b, "  ]\n}\n");
-    return rb_strbuf_take(&b);
+    char *text = cx.st == RB_OK ? rb_json_print_layout(root, &floors_layout) : NULL;
+    cJSON_Delete(root);
+    return text;
 }

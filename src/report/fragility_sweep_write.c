@@ -3,6 +3,9 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <cjson/cJSON.h>
+#include "rockbolt/jsonbuild.h"
+#include "rockbolt/jsonprint.h"
 #include "rockbolt/names.h"
 #include "rockbolt/report.h"
 #include "rockbolt/textsafe.h"
@@ -60,50 +63,45 @@ char *rb_fragility_sweep_render_text(const rb_case *c, const rb_fragility_sweep 
     return rb_strbuf_take(&b);
 }
 
+/* Where the sweep's lines break: the head in three lines, then each point
+ * on a line of its own with its limit states below it. */
+static const rb_json_break sweep_breaks[] = {
+    {0, "case", ",\n  ", NULL, NULL},
+    {0, "intensity", ",\n  ", NULL, NULL},
+    {0, "points", ",\n  ", "\n    ", "\n  "},
+    {1, "limit_states", NULL, "\n      ", "\n    "},
+};
+static const rb_json_layout sweep_layout = {
+    "\n  ", "\n", sweep_breaks, sizeof sweep_breaks / sizeof sweep_breaks[0]};
+
 char *rb_fragility_sweep_render_json(const rb_case *c, const rb_fragility_sweep *s)
 {
-    rb_strbuf b = {0};
+    rb_jctx cx = {.st = RB_OK, .where = "fragility sweep"};
     const rb_case_fragility *f0 = s->n_points ? &s->points[0] : NULL;
     long runs = 0;
     for (size_t i = 0; i < s->n_points; i++)
         runs += s->points[i].runs;
-    rb_strbuf_puts(&b, "{\n  \"format\": \"rockbolt-fragility-gap-sweep\", "
-                       "\"format_version\": 1,\n  \"case\": ");
-    rb_report_json_str(&b, c->name ? c->name : "");
-    rb_fragility_intensity im = f0 ? f0->intensity : RB_IM_PFA;
-    rb_strbuf_printf(&b, ",\n  \"intensity\": \"%s\", ",
-                     rb_enum_str(rb_intensity_report_names, (int)im));
-    if (im == RB_IM_SA) {
-        rb_report_json_num(&b, "intensity_freq_hz", f0->im_freq_hz, 1);
-        rb_report_json_num(&b, "intensity_damping", f0->im_damping, 1);
-    }
-    rb_report_json_num(&b, "g_mps2", f0 ? f0->g_mps2 : (double)NAN, 1);
-    rb_report_json_num(&b, "a_star_mps2", f0 ? f0->a_star_mps2 : (double)NAN, 1);
-    rb_report_json_num(&b, "level_mps2", f0 ? f0->level_mps2 : (double)NAN, 1);
-    rb_strbuf_printf(&b, "\"motions\": %zu, \"bootstrap\": {\"resamples\": %u, \"seed\": "
-                     "%llu, \"interval\": 0.9}, \"runs\": %ld,\n  \"points\": [\n",
-                     f0 ? f0->n_motions : 0, f0 ? f0->n_boot : 0,
-                     f0 ? (unsigned long long)f0->seed : 0ull, runs);
+    cJSON *root = cJSON_CreateObject();
+    rb_j_oom(&cx, root);
+    rb_report_fragility_head_json(&cx, root, "rockbolt-fragility-gap-sweep", c, f0);
+    rb_j_uint(&cx, root, "motions", f0 ? f0->n_motions : 0);
+    rb_report_fragility_bootstrap_json(&cx, root, f0);
+    rb_j_int(&cx, root, "runs", runs);
+    cJSON *points = rb_j_arr(&cx, root, "points");
     for (size_t i = 0; i < s->n_points; i++) {
         const rb_case_fragility *f = &s->points[i];
-        rb_strbuf_puts(&b, "    {");
-        rb_report_json_num(&b, "gap_ratio", s->gap_ratios[i], 1);
-        rb_strbuf_printf(&b, "\"runs\": %ld, ", f->runs);
-        rb_report_fragility_governing_json(&b, f);
-        rb_strbuf_puts(&b, ", \"limit_states\": [\n");
-        const char *sep = "";
-        for (int k = 0; k < RB_N_LIMITS; k++) {
-            if (!rb_case_fragility_has(f, k))
-                continue;
-            rb_strbuf_printf(&b, "%s      ", sep);
-            rb_report_fragility_limit_json(&b, f, k);
-            sep = ",\n";
-        }
-        rb_strbuf_puts(&b, "\n");
-        rb_strbuf_printf(&b, "    ]}%s\n", i + 1 < s->n_points ? "," : "");
+        cJSON *o = rb_j_item(&cx, points);
+        rb_j_num_or_null(&cx, o, "gap_ratio", s->gap_ratios[i]);
+        rb_j_int(&cx, o, "runs", f->runs);
+        rb_report_fragility_governing_json(&cx, o, f);
+        cJSON *limits = rb_j_arr(&cx, o, "limit_states");
+        for (int k = 0; k < RB_N_LIMITS; k++)
+            if (rb_case_fragility_has(f, k))
+                rb_report_fragility_limit_json(&cx, limits, f, k);
     }
-    rb_strbuf_puts(&b, "  ]\n}\n");
-    return rb_strbuf_take(&b);
+    char *text = cx.st == RB_OK ? rb_json_print_layout(root, &sweep_layout) : NULL;
+    cJSON_Delete(root);
+    return text;
 }
 
 /* A number of 6 significant digits, or nothing when there is none. */

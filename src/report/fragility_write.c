@@ -5,7 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <cjson/cJSON.h>
-#include "rockbolt/jsonnum.h"
+#include "rockbolt/jsonbuild.h"
 #include "rockbolt/jsonprint.h"
 #include "rockbolt/names.h"
 #include "rockbolt/report.h"
@@ -94,126 +94,114 @@ char *rb_fragility_render_text(const rb_case *c, const rb_case_fragility *f)
     return rb_strbuf_take(&b);
 }
 
-void rb_report_json_num(rb_strbuf *b, const char *key, double v, int comma)
+void rb_report_fragility_limit_json(rb_jctx *cx, cJSON *arr, const rb_case_fragility *f,
+                                    int k)
 {
-    char buf[RB_JSONNUM_MAX];
-    rb_json_number_or_null(v, buf);
-    rb_strbuf_printf(b, "\"%s\": %s%s", key, buf, comma ? ", " : "");
-}
-
-/* A JSON string of text from the case: bytes that are not UTF-8 shown as
- * \xHH first (rockbolt/textsafe.h), as the other JSON outputs show them,
- * then JSON's own escapes (rockbolt/jsonprint.h): the text reads back as
- * it was. */
-void rb_report_json_str(rb_strbuf *b, const char *s)
-{
-    char *fixed = rb_utf8_fix(s);
-    cJSON *j = fixed ? cJSON_CreateString(fixed) : NULL;
-    char *e = j ? rb_json_print(j, 0) : NULL;
-    cJSON_Delete(j);
-    free(fixed);
-    if (!e) {
-        b->oom = 1;
-        return;
-    }
-    rb_strbuf_puts(b, e);
-    free(e);
-}
-
-void rb_report_fragility_limit_json(rb_strbuf *b, const rb_case_fragility *f, int k)
-{
-    rb_strbuf_printf(b, "{\"limit_state\": \"%s\", \"fitted\": %s",
-                     rb_enum_str(rb_limit_state_names, k), f->fitted[k] ? "true" : "false");
+    cJSON *o = rb_j_item(cx, arr);
+    rb_j_str(cx, o, "limit_state", rb_enum_str(rb_limit_state_names, k));
+    rb_j_bool(cx, o, "fitted", f->fitted[k]);
     if (f->fitted[k]) {
-        rb_strbuf_puts(b, ", ");
-        rb_report_json_num(b, "median_mps2", f->fit[k].median, 1);
-        rb_report_json_num(b, "beta", f->fit[k].beta, 1);
-        rb_report_json_num(b, "median_lo_mps2", f->median_lo[k], 1);
-        rb_report_json_num(b, "median_hi_mps2", f->median_hi[k], 1);
-        rb_report_json_num(b, "p_at_level", f->p_at_level[k], 1);
-        rb_report_json_num(b, "level_p10_mps2", f->im10[k], 1);
-        rb_report_json_num(b, "level_p50_mps2", f->im50[k], 1);
-        rb_report_json_num(b, "loglik", f->fit[k].loglik, 0);
+        rb_j_num_or_null(cx, o, "median_mps2", f->fit[k].median);
+        rb_j_num_or_null(cx, o, "beta", f->fit[k].beta);
+        rb_j_num_or_null(cx, o, "median_lo_mps2", f->median_lo[k]);
+        rb_j_num_or_null(cx, o, "median_hi_mps2", f->median_hi[k]);
+        rb_j_num_or_null(cx, o, "p_at_level", f->p_at_level[k]);
+        rb_j_num_or_null(cx, o, "level_p10_mps2", f->im10[k]);
+        rb_j_num_or_null(cx, o, "level_p50_mps2", f->im50[k]);
+        rb_j_num_or_null(cx, o, "loglik", f->fit[k].loglik);
     }
-    rb_strbuf_puts(b, "}");
 }
 
-void rb_report_fragility_governing_json(rb_strbuf *b, const rb_case_fragility *f)
+void rb_report_fragility_governing_json(rb_jctx *cx, cJSON *o, const rb_case_fragility *f)
 {
-    rb_strbuf_puts(b, "\"judged_limit_states\": [");
-    for (int k = 0, first = 1; k < RB_N_LIMITS; k++)
-        if ((f->judged >> k) & 1u) {
-            rb_strbuf_printf(b, "%s\"%s\"", first ? "" : ", ",
-                             rb_enum_str(rb_limit_state_names, k));
-            first = 0;
-        }
-    rb_strbuf_puts(b, "], \"governing_limit_state\": ");
+    cJSON *judged = rb_j_arr(cx, o, "judged_limit_states");
+    for (int k = 0; k < RB_N_LIMITS; k++)
+        if ((f->judged >> k) & 1u)
+            rb_j_append(cx, judged, cJSON_CreateString(rb_enum_str(rb_limit_state_names, k)));
     if (f->governing >= 0)
-        rb_strbuf_printf(b, "\"%s\"", rb_enum_str(rb_limit_state_names, f->governing));
+        rb_j_str(cx, o, "governing_limit_state",
+                 rb_enum_str(rb_limit_state_names, f->governing));
     else
-        rb_strbuf_puts(b, "null");
+        rb_j_null(cx, o, "governing_limit_state");
+}
+
+void rb_report_fragility_head_json(rb_jctx *cx, cJSON *root, const char *format,
+                                   const rb_case *c, const rb_case_fragility *f0)
+{
+    rb_fragility_intensity im = f0 ? f0->intensity : RB_IM_PFA;
+    rb_j_str(cx, root, "format", format);
+    rb_j_int(cx, root, "format_version", 1);
+    rb_j_text(cx, root, "case", c->name);
+    rb_j_str(cx, root, "intensity", rb_enum_str(rb_intensity_report_names, (int)im));
+    if (im == RB_IM_SA) {
+        rb_j_num_or_null(cx, root, "intensity_freq_hz", f0->im_freq_hz);
+        rb_j_num_or_null(cx, root, "intensity_damping", f0->im_damping);
+    }
+    rb_j_num_or_null(cx, root, "g_mps2", f0 ? f0->g_mps2 : (double)NAN);
+    rb_j_num_or_null(cx, root, "a_star_mps2", f0 ? f0->a_star_mps2 : (double)NAN);
+    rb_j_num_or_null(cx, root, "level_mps2", f0 ? f0->level_mps2 : (double)NAN);
+}
+
+void rb_report_fragility_bootstrap_json(rb_jctx *cx, cJSON *root,
+                                        const rb_case_fragility *f0)
+{
+    cJSON *boot = rb_j_obj(cx, root, "bootstrap");
+    rb_j_uint(cx, boot, "resamples", f0 ? f0->n_boot : 0);
+    rb_j_uint(cx, boot, "seed", f0 ? (unsigned long long)f0->seed : 0ull);
+    rb_j_num(cx, boot, "interval", 0.9);
+}
+
+/* Where the fragility's lines break: the head in three lines, then each
+ * limit state and each motion on a line of its own. */
+static const rb_json_break fragility_breaks[] = {
+    {0, "case", ",\n  ", NULL, NULL},
+    {0, "intensity", ",\n  ", NULL, NULL},
+    {0, "judged_limit_states", ",\n  ", NULL, NULL},
+    {0, "limit_states", ",\n  ", "\n    ", "\n  "},
+    {0, "motions", ",\n  ", "\n    ", "\n  "},
+};
+static const rb_json_layout fragility_layout = {
+    "\n  ", "\n", fragility_breaks, sizeof fragility_breaks / sizeof fragility_breaks[0]};
+
+static void motion_json(rb_jctx *cx, cJSON *arr, const rb_case *c,
+                        const rb_case_fragility *f, size_t m)
+{
+    cJSON *o = rb_j_item(cx, arr);
+    rb_j_text(cx, o, "name", motion_name(c, m));
+    if (f->intensity != RB_IM_PFA)
+        rb_j_num_or_null(cx, o, "im_per_pfa", f->motions[m].im_per_pfa);
+    cJSON *cap = rb_j_obj(cx, o, "capacity_mps2");
+    for (int k = 0; k < RB_N_LIMITS; k++)
+        if (rb_case_fragility_has(f, k))
+            rb_j_num_or_null(cx, cap, rb_enum_str(rb_limit_state_names, k),
+                             f->motions[m].capacity_mps2[k]);
+    cJSON *cens = rb_j_obj(cx, o, "censored");
+    for (int k = 0; k < RB_N_LIMITS; k++)
+        if (rb_case_fragility_has(f, k))
+            rb_j_bool(cx, cens, rb_enum_str(rb_limit_state_names, k),
+                      f->motions[m].censored[k]);
+    rb_j_int(cx, o, "runs", f->motions[m].runs);
 }
 
 char *rb_fragility_render_json(const rb_case *c, const rb_case_fragility *f)
 {
-    rb_strbuf b = {0};
-    rb_strbuf_puts(&b, "{\n  \"format\": \"rockbolt-fragility\", \"format_version\": 1,\n"
-                       "  \"case\": ");
-    rb_report_json_str(&b, c->name ? c->name : "");
-    rb_strbuf_printf(&b, ",\n  \"intensity\": \"%s\", ",
-                     rb_enum_str(rb_intensity_report_names, (int)f->intensity));
-    if (f->intensity == RB_IM_SA) {
-        rb_report_json_num(&b, "intensity_freq_hz", f->im_freq_hz, 1);
-        rb_report_json_num(&b, "intensity_damping", f->im_damping, 1);
-    }
-    rb_report_json_num(&b, "g_mps2", f->g_mps2, 1);
-    rb_report_json_num(&b, "a_star_mps2", f->a_star_mps2, 1);
-    rb_report_json_num(&b, "level_mps2", f->level_mps2, 1);
-    rb_strbuf_printf(&b, "\"bootstrap\": {\"resamples\": %u, \"seed\": %llu, "
-                     "\"interval\": 0.9}, \"runs\": %ld,\n  ",
-                     f->n_boot, (unsigned long long)f->seed, f->runs);
-    rb_report_fragility_governing_json(&b, f);
-    rb_strbuf_puts(&b, ",\n  \"limit_states\": [\n");
-    const char *sep = "";
-    for (int k = 0; k < RB_N_LIMITS; k++) {
-        if (!rb_case_fragility_has(f, k))
-            continue;
-        rb_strbuf_printf(&b, "%s    ", sep);
-        rb_report_fragility_limit_json(&b, f, k);
-        sep = ",\n";
-    }
-    rb_strbuf_puts(&b, "\n");
-    rb_strbuf_puts(&b, "  ],\n  \"motions\": [\n");
-    for (size_t m = 0; m < f->n_motions; m++) {
-        rb_strbuf_puts(&b, "    {\"name\": ");
-        rb_report_json_str(&b, motion_name(c, m));
-        if (f->intensity != RB_IM_PFA) {
-            rb_strbuf_puts(&b, ", ");
-            rb_report_json_num(&b, "im_per_pfa", f->motions[m].im_per_pfa, 0);
-        }
-        rb_strbuf_puts(&b, ", \"capacity_mps2\": {");
-        for (int k = 0, first = 1; k < RB_N_LIMITS; k++) {
-            if (!rb_case_fragility_has(f, k))
-                continue;
-            rb_strbuf_puts(&b, first ? "" : ", ");
-            rb_report_json_num(&b, rb_enum_str(rb_limit_state_names, k),
-                               f->motions[m].capacity_mps2[k], 0);
-            first = 0;
-        }
-        rb_strbuf_puts(&b, "}, \"censored\": {");
-        for (int k = 0, first = 1; k < RB_N_LIMITS; k++) {
-            if (!rb_case_fragility_has(f, k))
-                continue;
-            rb_strbuf_printf(&b, "%s\"%s\": %s", first ? "" : ", ",
-                             rb_enum_str(rb_limit_state_names, k),
-                             f->motions[m].censored[k] ? "true" : "false");
-            first = 0;
-        }
-        rb_strbuf_printf(&b, "}, \"runs\": %ld}%s\n", f->motions[m].runs,
-                         m + 1 < f->n_motions ? "," : "");
-    }
-    rb_strbuf_puts(&b, "  ]\n}\n");
-    return rb_strbuf_take(&b);
+    rb_jctx cx = {.st = RB_OK, .where = "fragility"};
+    cJSON *root = cJSON_CreateObject();
+    rb_j_oom(&cx, root);
+    rb_report_fragility_head_json(&cx, root, "rockbolt-fragility", c, f);
+    rb_report_fragility_bootstrap_json(&cx, root, f);
+    rb_j_int(&cx, root, "runs", f->runs);
+    rb_report_fragility_governing_json(&cx, root, f);
+    cJSON *limits = rb_j_arr(&cx, root, "limit_states");
+    for (int k = 0; k < RB_N_LIMITS; k++)
+        if (rb_case_fragility_has(f, k))
+            rb_report_fragility_limit_json(&cx, limits, f, k);
+    cJSON *motions = rb_j_arr(&cx, root, "motions");
+    for (size_t m = 0; m < f->n_motions; m++)
+        motion_json(&cx, motions, c, f, m);
+    char *text = cx.st == RB_OK ? rb_json_print_layout(root, &fragility_layout) : NULL;
+    cJSON_Delete(root);
+    return text;
 }
 
 char *rb_fragility_render_csv(const rb_case *c, const rb_case_fragility *f)

@@ -99,23 +99,29 @@ void rb_report_text_motion_anchorage(rb_tvars *t, const rb_report *r,
 rb_status rb_report_text_motion_anchor_modes(const rb_report *r, const rb_report_motion *m,
                                              rb_txt_arena *a, rb_tlist *out);
 
-/* ---- fragility_write.c: what the fragility's and its sweep's JSON share - */
-#include "util/strbuf.h"
-/* "key": v in the shortest form that reads back the same (null when not
- * finite), with ", " after it when comma is set. */
-void rb_report_json_num(rb_strbuf *b, const char *key, double v, int comma);
-/* Text from the case as a JSON string, escaped as every output escapes it. */
-void rb_report_json_str(rb_strbuf *b, const char *s);
-/* "target": {type, its levels, damping, check range and band}, then ", "
- * (spectrum_write.c). */
-void rb_report_target_json(rb_strbuf *b, const rb_target *t);
-/* "acceptance": {...}, with ", " after it: a laboratory's acceptance of a
- * motion (rockbolt/accept.h), every offset's outcome with it. */
-void rb_report_accept_json(rb_strbuf *b, const rb_accept_result *ac);
-/* Limit state k of f as one JSON object, on one line. */
-void rb_report_fragility_limit_json(rb_strbuf *b, const rb_case_fragility *f, int k);
-/* "judged_limit_states": [...], "governing_limit_state": name or null
- * (rb_fragility_governing), on one line with no comma after it. */
-void rb_report_fragility_governing_json(rb_strbuf *b, const rb_case_fragility *f);
+/* ---- the fragility's, its sweep's, the spectra's and the floor motions'
+ * JSON: trees built by rb_j_* (rockbolt/jsonbuild.h), laid out by
+ * rb_json_print_layout ---------------------------------------------------- */
+#include "rockbolt/jsonbuild.h"
+/* fragility_write.c: limit state k of f as an object at the end of arr. */
+void rb_report_fragility_limit_json(rb_jctx *cx, cJSON *arr, const rb_case_fragility *f,
+                                    int k);
+/* "judged_limit_states": [...] and "governing_limit_state": its name or
+ * null (rb_fragility_governing). */
+void rb_report_fragility_governing_json(rb_jctx *cx, cJSON *o, const rb_case_fragility *f);
+/* The head a fragility and its sweep share: format, its version, case,
+ * intensity (its frequency and damping for a spectral one), g, A* and the
+ * case's level, from f0 (NULL: a sweep without points). */
+void rb_report_fragility_head_json(rb_jctx *cx, cJSON *root, const char *format,
+                                   const rb_case *c, const rb_case_fragility *f0);
+/* "bootstrap": {resamples, seed, interval}. */
+void rb_report_fragility_bootstrap_json(rb_jctx *cx, cJSON *root,
+                                        const rb_case_fragility *f0);
+/* spectrum_write.c: "target": {type, its levels, damping, check range and
+ * band}, for every JSON output that compares a motion with one. */
+void rb_report_target_json(rb_jctx *cx, cJSON *o, const rb_target *t);
+/* "acceptance": {...}: a laboratory's acceptance of a motion
+ * (rockbolt/accept.h), every offset's outcome with it. */
+void rb_report_accept_json(rb_jctx *cx, cJSON *o, const rb_accept_result *ac);
 
 #endif

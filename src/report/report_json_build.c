@@ -4,9 +4,12 @@
  * key it was meant for) is what the report returns. */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 #include <cjson/cJSON.h>
 #include "rockbolt/version.h"
 #include "rockbolt/jsonnum.h"
+#include "rockbolt/textsafe.h"
 #include "report_json_build.h"
 
 void rb_j_oom(rb_jctx *cx, const void *added)
@@ -114,6 +117,54 @@ void rb_j_str(rb_jctx *cx, cJSON *o, const char *key, const char *s)
         rb_j_oom(cx, cJSON_AddStringToObject(o, key, s));
     else
         rb_j_null(cx, o, key);
+}
+
+cJSON *rb_j_add_text(cJSON *o, const char *key, const char *s)
+{
+    if (!s)
+        s = "";
+    if (rb_utf8_invalid_at(s, strlen(s)) == strlen(s))
+        return cJSON_AddStringToObject(o, key, s);
+    char *t = rb_utf8_fix(s);
+    cJSON *r = t ? cJSON_AddStringToObject(o, key, t) : NULL;
+    free(t);
+    return r;
+}
+
+void rb_j_text(rb_jctx *cx, cJSON *o, const char *key, const char *s)
+{
+    if (cx->st == RB_OK)
+        rb_j_oom(cx, rb_j_add_text(o, key, s));
+}
+
+static void add_raw(rb_jctx *cx, cJSON *o, const char *key, const char *text)
+{
+    if (cx->st == RB_OK)
+        rb_j_oom(cx, cJSON_AddRawToObject(o, key, text));
+}
+
+void rb_j_int(rb_jctx *cx, cJSON *o, const char *key, long long v)
+{
+    char buf[24];
+    snprintf(buf, sizeof buf, "%lld", v);
+    add_raw(cx, o, key, buf);
+}
+
+void rb_j_uint(rb_jctx *cx, cJSON *o, const char *key, unsigned long long v)
+{
+    char buf[24];
+    snprintf(buf, sizeof buf, "%llu", v);
+    add_raw(cx, o, key, buf);
+}
+
+void rb_j_nums(rb_jctx *cx, cJSON *o, const char *key, const double *v, size_t n)
+{
+    cJSON *a = rb_j_arr(cx, o, key);
+    char buf[RB_JSONNUM_MAX];
+    for (size_t i = 0; i < n && cx->st == RB_OK; i++) {
+        rb_json_number_or_null(v[i], buf);
+        rb_j_append(cx, a, cJSON_CreateRaw(buf));
+    }
 }
 
 void rb_j_pair(rb_jctx *cx, cJSON *o, const char *key, const double v[2])

@@ -4,11 +4,14 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include "rockbolt/jsonnum.h"
+#include <cjson/cJSON.h>
+#include "rockbolt/jsonbuild.h"
+#include "rockbolt/jsonprint.h"
 #include "rockbolt/names.h"
 #include "rockbolt/report.h"
 #include "rockbolt/textsafe.h"
 #include "report_internal.h"
+#include "util/strbuf.h"
 
 static const char *motion_name(const rb_case *c, size_t m)
 {
@@ -102,130 +105,134 @@ char *rb_spectra_render_text(const rb_case *c, const rb_case_spectra *s)
     return rb_strbuf_take(&b);
 }
 
-static void array(rb_strbuf *b, const char *key, const double *v, size_t n)
-{
-    char buf[RB_JSONNUM_MAX];
-    rb_strbuf_printf(b, "\"%s\": [", key);
-    for (size_t i = 0; i < n; i++) {
-        rb_json_number_or_null(v[i], buf);
-        rb_strbuf_printf(b, "%s%s", i ? ", " : "", buf);
-    }
-    rb_strbuf_puts(b, "]");
-}
-
 /* The acceptance as JSON: the rules' outcome at every offset (the floor
  * files' summary and the spectra's alike). */
-void rb_report_accept_json(rb_strbuf *b, const rb_accept_result *ac)
+void rb_report_accept_json(rb_jctx *cx, cJSON *o, const rb_accept_result *ac)
 {
-    rb_strbuf_puts(b, "\"acceptance\": {");
-    rb_strbuf_printf(b, "\"pass\": %s, \"worst_offset\": %u, ", ac->pass ? "true" : "false",
-                     ac->worst);
-    rb_report_json_num(b, "margin", ac->margin, 1);
-    rb_report_json_num(b, "min_ratio", ac->min_ratio, 1);
-    rb_report_json_num(b, "min_at_hz", ac->min_at_hz, 1);
-    rb_report_json_num(b, "max_ratio", ac->max_ratio, 1);
-    rb_report_json_num(b, "max_at_hz", ac->max_at_hz, 1);
-    rb_strbuf_printf(b, "\"above_guide\": %s, ", ac->above_guide ? "true" : "false");
-    rb_report_json_num(b, "tail_min_ratio", ac->tail_min_ratio, 1);
-    rb_report_json_num(b, "tail_max_ratio", ac->tail_max_ratio, 1);
-    rb_strbuf_puts(b, "\"offsets\": [");
+    cJSON *a = rb_j_obj(cx, o, "acceptance");
+    rb_j_bool(cx, a, "pass", ac->pass);
+    rb_j_uint(cx, a, "worst_offset", ac->worst);
+    rb_j_num_or_null(cx, a, "margin", ac->margin);
+    rb_j_num_or_null(cx, a, "min_ratio", ac->min_ratio);
+    rb_j_num_or_null(cx, a, "min_at_hz", ac->min_at_hz);
+    rb_j_num_or_null(cx, a, "max_ratio", ac->max_ratio);
+    rb_j_num_or_null(cx, a, "max_at_hz", ac->max_at_hz);
+    rb_j_bool(cx, a, "above_guide", ac->above_guide);
+    rb_j_num_or_null(cx, a, "tail_min_ratio", ac->tail_min_ratio);
+    rb_j_num_or_null(cx, a, "tail_max_ratio", ac->tail_max_ratio);
+    cJSON *offsets = rb_j_arr(cx, a, "offsets");
     for (int k = 0; k < RB_ACCEPT_OFFSETS; k++) {
-        const rb_accept_offset *o = &ac->offset[k];
-        rb_strbuf_printf(b, "%s{\"pass\": %s, ", k ? ", " : "", o->pass ? "true" : "false");
-        rb_report_json_num(b, "margin", o->margin, 1);
-        rb_report_json_num(b, "min_ratio", o->min_ratio, 1);
-        rb_report_json_num(b, "max_ratio", o->max_ratio, 0);
-        rb_strbuf_puts(b, "}");
+        const rb_accept_offset *off = &ac->offset[k];
+        cJSON *e = rb_j_item(cx, offsets);
+        rb_j_bool(cx, e, "pass", off->pass);
+        rb_j_num_or_null(cx, e, "margin", off->margin);
+        rb_j_num_or_null(cx, e, "min_ratio", off->min_ratio);
+        rb_j_num_or_null(cx, e, "max_ratio", off->max_ratio);
     }
-    rb_strbuf_puts(b, "]}, ");
 }
 
 /* A generated motion's summary: its peaks and the laboratory's
  * acceptance at the least favourable of the 12 offsets (accept.h). */
-static void json_summary(rb_strbuf *b, const char *key, const rb_motion_summary *m)
+static void json_summary(rb_jctx *cx, cJSON *o, const char *key, const rb_motion_summary *m)
 {
-    rb_strbuf_printf(b, "\"%s\": {", key);
-    rb_report_json_num(b, "pga_mps2", m->pga_mps2, 1);
-    rb_report_json_num(b, "pgv_mps", m->pgv_mps, 1);
-    rb_report_json_num(b, "pgd_m", m->pgd_m, 1);
-    rb_report_json_num(b, "arias_t5_s", m->arias_t5_s, 1);
-    rb_report_json_num(b, "arias_t95_s", m->arias_t95_s, 1);
-    rb_strbuf_printf(b, "\"peak_ok\": %s, ", m->peak_ok ? "true" : "false");
+    cJSON *s = rb_j_obj(cx, o, key);
+    rb_j_num_or_null(cx, s, "pga_mps2", m->pga_mps2);
+    rb_j_num_or_null(cx, s, "pgv_mps", m->pgv_mps);
+    rb_j_num_or_null(cx, s, "pgd_m", m->pgd_m);
+    rb_j_num_or_null(cx, s, "arias_t5_s", m->arias_t5_s);
+    rb_j_num_or_null(cx, s, "arias_t95_s", m->arias_t95_s);
+    rb_j_bool(cx, s, "peak_ok", m->peak_ok);
     if (m->has_target)
-        rb_report_accept_json(b, &m->accept);
-    rb_report_json_num(b, "end_velocity_mps", m->end_velocity_mps, 0);
-    rb_strbuf_puts(b, "}, ");
+        rb_report_accept_json(cx, s, &m->accept);
+    rb_j_num_or_null(cx, s, "end_velocity_mps", m->end_velocity_mps);
 }
 
 /* A triaxial set's other components and their independence. */
-static void json_set(rb_strbuf *b, const rb_case_motion *cm)
+static void json_set(rb_jctx *cx, cJSON *o, const rb_case_motion *cm)
 {
     static const char *const pairs[3] = {"h1_h2", "h1_v", "h2_v"};
-    json_summary(b, "h2", &cm->h2_synth.summary);
-    json_summary(b, "vertical", &cm->vertical->synth.summary);
-    rb_strbuf_puts(b, "\"independence\": {");
+    json_summary(cx, o, "h2", &cm->h2_synth.summary);
+    json_summary(cx, o, "vertical", &cm->vertical->synth.summary);
+    cJSON *ind = rb_j_obj(cx, o, "independence");
     for (int p = 0; p < 3; p++) {
-        rb_strbuf_printf(b, "\"%s\": {", pairs[p]);
-        rb_report_json_num(b, "correlation", cm->independence[p].correlation, 1);
-        rb_report_json_num(b, "coherence", cm->independence[p].coherence, 0);
-        rb_strbuf_printf(b, "}%s", p < 2 ? ", " : "");
+        cJSON *e = rb_j_obj(cx, ind, pairs[p]);
+        rb_j_num_or_null(cx, e, "correlation", cm->independence[p].correlation);
+        rb_j_num_or_null(cx, e, "coherence", cm->independence[p].coherence);
     }
-    rb_strbuf_puts(b, "}, ");
 }
+
+static void json_synthetic(rb_jctx *cx, cJSON *o, const rb_case_motion *cm)
+{
+    rb_j_uint(cx, o, "seed", cm->synth_seed);
+    rb_j_uint(cx, o, "index", cm->synth_index + 1);
+    rb_j_uint(cx, o, "passes", cm->synth.iterations);
+    rb_j_uint(cx, o, "starts", cm->synth.attempts);
+    rb_j_num_or_null(cx, o, "end_velocity_mps", cm->synth.end_velocity_mps);
+    rb_j_num_or_null(cx, o, "end_displacement_m", cm->synth.end_displacement_m);
+    rb_j_num_or_null(cx, o, "peak_velocity_mps", cm->synth.peak_velocity_mps);
+    rb_j_num_or_null(cx, o, "peak_displacement_m", cm->synth.peak_displacement_m);
+    json_summary(cx, o, "summary", &cm->synth.summary);
+    if (cm->has_set)
+        json_set(cx, o, cm);
+}
+
+static void json_fit(rb_jctx *cx, cJSON *o, const rb_target_fit *fit)
+{
+    cJSON *f = rb_j_obj(cx, o, "fit");
+    rb_j_num_or_null(cx, f, "min_ratio", fit->min_ratio);
+    rb_j_num_or_null(cx, f, "min_at_hz", fit->min_at_hz);
+    rb_j_num_or_null(cx, f, "max_ratio", fit->max_ratio);
+    rb_j_num_or_null(cx, f, "max_at_hz", fit->max_at_hz);
+    rb_j_uint(cx, f, "points", fit->n_checked);
+    rb_j_bool(cx, f, "within", fit->within);
+}
+
+/* Where the spectra's lines break: the head in two lines, each motion on
+ * lines of its own, its two spectra each on one. */
+static const rb_json_break spectra_breaks[] = {
+    {0, "case", ",\n  ", NULL, NULL},
+    {0, "motions", ",\n  ", "\n    ", "\n  "},
+    {1, "psa_mps2", ", \n     ", NULL, NULL},
+    {1, "sa_mps2", ",\n     ", NULL, NULL},
+};
+static const rb_json_layout spectra_layout = {
+    "\n  ", "\n", spectra_breaks, sizeof spectra_breaks / sizeof spectra_breaks[0]};
 
 char *rb_spectra_render_json(const rb_case *c, const rb_case_spectra *s)
 {
-    rb_strbuf b = {0};
-    rb_strbuf_puts(&b, "{\n  \"format\": \"rockbolt-spectra\", \"format_version\": 1,\n"
-                       "  \"case\": ");
-    rb_report_json_str(&b, c->name ? c->name : "");
-    rb_strbuf_puts(&b, ", ");
-    rb_report_json_num(&b, "damping", s->opts.damping, 1);
-    rb_report_json_num(&b, "g_mps2", s->g_mps2, 1);
+    rb_jctx cx = {.st = RB_OK, .where = "spectra"};
+    cJSON *root = cJSON_CreateObject();
+    rb_j_oom(&cx, root);
+    rb_j_str(&cx, root, "format", "rockbolt-spectra");
+    rb_j_int(&cx, root, "format_version", 1);
+    rb_j_text(&cx, root, "case", c->name);
+    rb_j_num_or_null(&cx, root, "damping", s->opts.damping);
+    rb_j_num_or_null(&cx, root, "g_mps2", s->g_mps2);
     size_t n = s->n_motions ? s->motions[0].sp.n : 0;
-    array(&b, "frequency_hz", n ? s->motions[0].sp.freq_hz : NULL, n);
-    rb_strbuf_puts(&b, ",\n  \"motions\": [\n");
+    rb_j_nums(&cx, root, "frequency_hz", n ? s->motions[0].sp.freq_hz : NULL, n);
+    cJSON *motions = rb_j_arr(&cx, root, "motions");
     for (size_t m = 0; m < s->n_motions; m++) {
         const rb_motion_spectrum *ms = &s->motions[m];
         const rb_case_motion *cm = &c->motions[m];
-        rb_strbuf_puts(&b, "    {\"name\": ");
-        rb_report_json_str(&b, motion_name(c, m));
-        rb_strbuf_printf(&b, ", \"kind\": \"%s\", ",
-                         rb_enum_str(rb_case_motion_type_names, (int)cm->type));
-        rb_report_json_num(&b, "peak_mps2", ms->peak_mps2, 1);
-        rb_report_json_num(&b, "arias_mps", ms->arias_mps, 1);
-        rb_report_json_num(&b, "arias_t5_s", ms->arias_t5_s, 1);
-        rb_report_json_num(&b, "arias_t95_s", ms->arias_t95_s, 1);
-        if (cm->type == RB_CASE_MOTION_SYNTHETIC) {
-            rb_strbuf_printf(&b, "\"seed\": %llu, \"index\": %u, \"passes\": %u, "
-                             "\"starts\": %u, ", cm->synth_seed, cm->synth_index + 1,
-                             cm->synth.iterations, cm->synth.attempts);
-            rb_report_json_num(&b, "end_velocity_mps", cm->synth.end_velocity_mps, 1);
-            rb_report_json_num(&b, "end_displacement_m", cm->synth.end_displacement_m, 1);
-            rb_report_json_num(&b, "peak_velocity_mps", cm->synth.peak_velocity_mps, 1);
-            rb_report_json_num(&b, "peak_displacement_m", cm->synth.peak_displacement_m, 1);
-            json_summary(&b, "summary", &cm->synth.summary);
-            if (cm->has_set)
-                json_set(&b, cm);
-        }
+        cJSON *o = rb_j_item(&cx, motions);
+        rb_j_text(&cx, o, "name", motion_name(c, m));
+        rb_j_str(&cx, o, "kind", rb_enum_str(rb_case_motion_type_names, (int)cm->type));
+        rb_j_num_or_null(&cx, o, "peak_mps2", ms->peak_mps2);
+        rb_j_num_or_null(&cx, o, "arias_mps", ms->arias_mps);
+        rb_j_num_or_null(&cx, o, "arias_t5_s", ms->arias_t5_s);
+        rb_j_num_or_null(&cx, o, "arias_t95_s", ms->arias_t95_s);
+        if (cm->type == RB_CASE_MOTION_SYNTHETIC)
+            json_synthetic(&cx, o, cm);
         if (ms->has_target) {
-            rb_report_target_json(&b, cm->target);
-            rb_strbuf_puts(&b, "\"fit\": {");
-            rb_report_json_num(&b, "min_ratio", ms->fit.min_ratio, 1);
-            rb_report_json_num(&b, "min_at_hz", ms->fit.min_at_hz, 1);
-            rb_report_json_num(&b, "max_ratio", ms->fit.max_ratio, 1);
-            rb_report_json_num(&b, "max_at_hz", ms->fit.max_at_hz, 1);
-            rb_strbuf_printf(&b, "\"points\": %zu, \"within\": %s}, ", ms->fit.n_checked,
-                             ms->fit.within ? "true" : "false");
+            rb_report_target_json(&cx, o, cm->target);
+            json_fit(&cx, o, &ms->fit);
         }
-        rb_strbuf_puts(&b, "\n     ");
-        array(&b, "psa_mps2", ms->sp.psa_mps2, ms->sp.n);
-        rb_strbuf_puts(&b, ",\n     ");
-        array(&b, "sa_mps2", ms->sp.sa_mps2, ms->sp.n);
-        rb_strbuf_printf(&b, "}%s\n", m + 1 < s->n_motions ? "," : "");
+        rb_j_nums(&cx, o, "psa_mps2", ms->sp.psa_mps2, ms->sp.n);
+        rb_j_nums(&cx, o, "sa_mps2", ms->sp.sa_mps2, ms->sp.n);
     }
-    rb_strbuf_puts(&b, "  ]\n}\n");
-    return rb_strbuf_take(&b);
+    char *text = cx.st == RB_OK ? rb_json_print_layout(root, &spectra_layout) : NULL;
+    cJSON_Delete(root);
+    return text;
 }
 
 char *rb_spectra_render_csv(const rb_case *c, const rb_case_spectra *s)
@@ -253,48 +260,44 @@ char *rb_spectra_render_csv(const rb_case *c, const rb_case_spectra *s)
     return rb_strbuf_take(&b);
 }
 
-/* "target": {...}, with ", " after it: what a target is, for every JSON
- * output that compares a motion with one. */
-void rb_report_target_json(rb_strbuf *b, const rb_target *t)
+/* "target": {...}: what a target is, for every JSON output that compares
+ * a motion with one. */
+void rb_report_target_json(rb_jctx *cx, cJSON *o, const rb_target *t)
 {
-    rb_strbuf_printf(b, "\"target\": {\"type\": \"%s\", ",
-                     rb_enum_str(rb_target_type_names, (int)t->kind));
+    cJSON *j = rb_j_obj(cx, o, "target");
+    rb_j_str(cx, j, "type", rb_enum_str(rb_target_type_names, (int)t->kind));
     if (t->kind == RB_TARGET_AC156) {
         double flx, rig;
         rb_target_ac156_levels(t, &flx, &rig);
-        rb_strbuf_printf(b, "\"edition\": \"%s\", ",
-                         rb_enum_str(rb_ac156_edition_names, (int)t->edition));
-        rb_report_json_num(b, "sds_mps2", t->sds_mps2, 1);
-        rb_report_json_num(b, "z_over_h", t->z_over_h, 1);
+        rb_j_str(cx, j, "edition", rb_enum_str(rb_ac156_edition_names, (int)t->edition));
+        rb_j_num_or_null(cx, j, "sds_mps2", t->sds_mps2);
+        rb_j_num_or_null(cx, j, "z_over_h", t->z_over_h);
         if (t->building.ta_s > 0)
-            rb_report_json_num(b, "ta_s", t->building.ta_s, 1);
+            rb_j_num_or_null(cx, j, "ta_s", t->building.ta_s);
         if (t->building.r > 0) {
-            rb_report_json_num(b, "r", t->building.r, 1);
-            rb_report_json_num(b, "ie", t->building.ie, 1);
-            rb_report_json_num(b, "omega0", t->building.omega0, 1);
+            rb_j_num_or_null(cx, j, "r", t->building.r);
+            rb_j_num_or_null(cx, j, "ie", t->building.ie);
+            rb_j_num_or_null(cx, j, "omega0", t->building.omega0);
         }
         if (t->sds2_mps2 > 0) {
-            rb_strbuf_puts(b, "\"envelope\": {");
-            rb_report_json_num(b, "sds_mps2", t->sds2_mps2, 1);
-            rb_report_json_num(b, "z_over_h", t->z_over_h2, 0);
-            rb_strbuf_puts(b, "}, ");
+            cJSON *e = rb_j_obj(cx, j, "envelope");
+            rb_j_num_or_null(cx, e, "sds_mps2", t->sds2_mps2);
+            rb_j_num_or_null(cx, e, "z_over_h", t->z_over_h2);
         }
-        rb_report_json_num(b, "a_flx_mps2", flx, 1);
-        rb_report_json_num(b, "a_rig_mps2", rig, 1);
-        rb_report_json_num(b, "min_peak_mps2", t->min_peak_mps2, 1);
+        rb_j_num_or_null(cx, j, "a_flx_mps2", flx);
+        rb_j_num_or_null(cx, j, "a_rig_mps2", rig);
+        rb_j_num_or_null(cx, j, "min_peak_mps2", t->min_peak_mps2);
     } else if (t->kind == RB_TARGET_IEEE693) {
-        rb_strbuf_printf(b, "\"level\": \"%s\", \"vertical\": %s, ",
-                         rb_enum_str(rb_ieee693_level_names, (int)t->level),
-                         t->vertical ? "true" : "false");
-        rb_report_json_num(b, "beta", rb_ieee693_beta(t->damping), 1);
-        rb_report_json_num(b, "zpa_mps2", rb_target_at(t, t->check_to_hz * 2.0), 1);
-        rb_report_json_num(b, "min_peak_mps2", t->min_peak_mps2, 1);
+        rb_j_str(cx, j, "level", rb_enum_str(rb_ieee693_level_names, (int)t->level));
+        rb_j_bool(cx, j, "vertical", t->vertical);
+        rb_j_num_or_null(cx, j, "beta", rb_ieee693_beta(t->damping));
+        rb_j_num_or_null(cx, j, "zpa_mps2", rb_target_at(t, t->check_to_hz * 2.0));
+        rb_j_num_or_null(cx, j, "min_peak_mps2", t->min_peak_mps2);
     }
-    rb_report_json_num(b, "damping", t->damping, 1);
-    rb_report_json_num(b, "check_from_hz", t->check_from_hz, 1);
-    rb_report_json_num(b, "check_to_hz", t->check_to_hz, 1);
-    rb_report_json_num(b, "check_per_octave", t->check_per_octave, 1);
-    rb_report_json_num(b, "band_lower", t->band_lower, 1);
-    rb_report_json_num(b, "band_upper", t->band_upper, 0);
-    rb_strbuf_puts(b, "}, ");
+    rb_j_num_or_null(cx, j, "damping", t->damping);
+    rb_j_num_or_null(cx, j, "check_from_hz", t->check_from_hz);
+    rb_j_num_or_null(cx, j, "check_to_hz", t->check_to_hz);
+    rb_j_num_or_null(cx, j, "check_per_octave", t->check_per_octave);
+    rb_j_num_or_null(cx, j, "band_lower", t->band_lower);
+    rb_j_num_or_null(cx, j, "band_upper", t->band_upper);
 }
