@@ -7,7 +7,8 @@
 # it prints what it checked and exits 0 (pass), 1 (fail) or 77 (skipped).
 # Exit codes, the JSON/text agreement and the all-or-nothing output files
 # are the contract checked here; the numbers themselves are the solver
-# tests' business, so only their sanity is checked.
+# tests' business, so only their sanity is checked (the text's numbers
+# against the JSON's, a suite's and the US units' are tests/cli/numbers.py's).
 set -u
 
 T=$1
@@ -125,48 +126,6 @@ test_harmonic() {
         fail "with --text, stdout must be the verdict line only"
     no_temp_files "$D"
     echo "harmonic: ok (exit $rc)"
-}
-
-# Numbers in the text report are the JSON's at the text's precision.
-test_consistency() {
-    run check "$HARMONIC" --json "$D/h.json" --text "$D/h.txt"
-    J=$D/h.json M=motions.0 P=motions.0.result.peaks B=motions.0.result.bolts
-    a_star_g=$(jget "$J" derived.a_star_g)
-    holds "$a_star_g" 0 "A > 11.5 && A < 11.9" "A* of the reference cabinet is 11.7 g"
-    holds "$(jget "$J" $M.motion.peak_floor_over_a_star)" 0.6 \
-        "A - B < 1e-9 && B - A < 1e-9" "the case asks for 0.6 A*"
-    for check in \
-        "= $(jget "$J" $P.max_u_over_ustatic 2) U_static" \
-        "= $(jget "$J" $P.max_theta_over_alpha 4) alpha" \
-        "= $(jget "$J" $P.max_shear_elastic_over_w 3) W = $(jget "$J" $P.max_shear_elastic_over_v0 3) V0  (elastic" \
-        "= $(jget "$J" $P.max_shear_total_over_w 3) W = $(jget "$J" $P.max_shear_total_over_v0 3) V0  (total" \
-        "= $(jget "$J" $M.motion.peak_floor_over_a_star 4) A*" \
-        "A*           $(jget "$J" derived.a_star_mps2 2) m/s^2 = $(jget "$J" derived.a_star_g 3) g"; do
-        grep -qF -- "$check" "$D/h.txt" || fail "text lacks '$check'"
-    done
-    for side in left right; do
-        u=$(jget "$J" $B.usage.$side 4)
-        f=$(jget "$J" $P.max_bolt_force_over_fy.$side 4)
-        holds "$u" 0 "A >= 0" "usage $side >= 0"
-        holds "$f" 0 "A >= 0" "force / Fy $side >= 0"
-        holds "$(jget "$J" $B.final_gap_ratio.$side)" 0 "A >= 0" "final gap $side"
-    done
-    grep -Eq "^  toughness usage +$(jget "$J" $B.usage.left 4) +$(jget "$J" $B.usage.right 4)\$" \
-        "$D/h.txt" || fail "usage row differs from the JSON"
-    grep -Eq "^  max force / Fy +$(jget "$J" $P.max_bolt_force_over_fy.left 4) +$(jget "$J" $P.max_bolt_force_over_fy.right 4)\$" \
-        "$D/h.txt" || fail "force / Fy row differs from the JSON"
-    # peaks are consistent with their normalisations
-    w=$(jget "$J" $M.result.constants.weight_n)
-    holds "$(jget "$J" $P.max_shear_elastic_n)" \
-        "$(awk -v r="$(jget "$J" $P.max_shear_elastic_over_w)" -v w="$w" 'BEGIN { printf "%.17g", r * w }')" \
-        "A - B <= 1e-9 * A + 1e-9 && B - A <= 1e-9 * A + 1e-9" "shear / W times W is the shear"
-    sum=$(for s in fixed uplift impact held yield; do
-              jget "$J" $M.result.outcome.stage_time_s.$s; done | awk '{ s += $1 } END { printf "%.12g", s }')
-    holds "$sum" "$(jget "$J" $M.result.outcome.t_end_s)" \
-        "A - B < 1e-6 * (B + 1) && B - A < 1e-6 * (B + 1)" "stage times add up to t_end"
-    holds "$(jget "$J" $M.result.outcome.t_end_s)" "$(jget "$J" $M.motion.duration_s)" \
-        "A <= B * (1 + 1e-9)" "t_end within the duration"
-    echo "consistency: ok"
 }
 
 test_stdout() {
@@ -394,32 +353,6 @@ test_design_threads() {
 
 # A case of several motions: the suite names the motion of largest demand
 # and the mean and maximum agree with the per-motion results.
-test_suite() {
-    run check cases/reference-suite.yaml --json "$D/s.json" --text "$D/s.txt"
-    [ "$rc" -eq 0 ] || [ "$rc" -eq 1 ] || fail "exit code $rc"
-    verdict_agrees "$D/s.json" "$D/s.txt"
-    [ "$(jget "$D/s.json" suite.motions)" -eq 4 ] || fail "four motions"
-    best=0 bi=0 sum=0
-    for i in 0 1 2 3; do
-        l=$(jget "$D/s.json" motions.$i.result.bolts.usage.left)
-        r=$(jget "$D/s.json" motions.$i.result.bolts.usage.right)
-        u=$(awk -v l="$l" -v r="$r" 'BEGIN { print (l > r ? l : r) }')
-        sum=$(awk -v s="$sum" -v u="$u" 'BEGIN { printf "%.17g", s + u }')
-        if awk -v u="$u" -v b="$best" 'BEGIN { exit !(u > b) }'; then best=$u bi=$((i + 1)); fi
-    done
-    [ "$(jget "$D/s.json" suite.governing_index)" -eq "$bi" ] ||
-        fail "governing motion is not the one of largest usage ($bi)"
-    holds "$(jget "$D/s.json" suite.max.usage)" "$best" \
-        "A - B < 1e-12 && B - A < 1e-12" "suite maximum usage"
-    holds "$(jget "$D/s.json" suite.mean.usage)" "$sum" \
-        "A - B / 4 < 1e-9 && B / 4 - A < 1e-9" "suite mean usage"
-    grep -q "^suite        4 motions; governing: motion $bi" "$D/s.txt" ||
-        fail "suite line missing from the text report"
-    run check "$HARMONIC" --text "$D/h.txt"
-    grep -q "^suite" "$D/h.txt" && fail "suite block for a single motion"
-    echo "suite: ok (governing motion $bi)"
-}
-
 # --svg and --html: per motion its time history and, with bolts, its
 # hysteresis, then one figure per sweep; the page holds the summary tables,
 # every figure and the text report. (XML well-formedness and the browser
@@ -485,75 +418,8 @@ EOF
 # Output units: a case written in US customary units reports in kip, in,
 # ksi, ft-lbf and g; output_units: si turns it back to kN, mm, MPa, J; each
 # shown value is the SI one converted, to 1e-9 relative.
-test_units() {
-    US=cases/us-customary.yaml
-    run check "$US"
-    [ "$rc" -eq 0 ] || [ "$rc" -eq 1 ] || fail "exit code $rc"
-    for w in "kip, height 2h = 77.087 in" " in^2 each, fy = 36 ksi" "kip, toughness capacity" \
-        "ft-lbf" "gap = 0.3071 in" "max force (kip)" "final gap (in)" "energy (ft-lbf)" \
-        "kip/in"; do
-        grep -qF -- "$w" "$D/out" || fail "US report lacks '$w'"
-    done
-    grep -q "kN\|MPa\|m/s^2\| mm" "$D/out" && fail "SI units in the US report"
-    grep -q "^A\\*  *[0-9.]* g (uplift" "$D/out" || fail "A* in g"
-    run check "$US" --html "$D/us.html" --quiet
-    grep -qF "largest bolt force (kip)" "$D/us.html" || fail "the page's peaks not in kip"
-    grep -qF "<td>in</td>" "$D/us.html" || fail "the page's anchorage not in inches"
-    run design "$US" --text "$D/usd.txt" --quiet
-    grep -q "up to [0-9.]* A\* ([0-9.]* g)" "$D/usd.txt" || fail "design levels not in g"
-    # the gap search's bound (1/4 in by default) is a length too
-    grep -q "(gap [0-9.]* in)\|bounded by design.max_gap 0.25 in " "$D/usd.txt" ||
-        fail "recommended gap not in inches"
-    grep -q "m/s^2\| mm)" "$D/usd.txt" && fail "SI units in the US design report"
-    cp "$US" "$D/si.yaml" && echo "output_units: si" >>"$D/si.yaml"
-    run check "$D/si.yaml"
-    for w in "M = 454.0 kg" "kN, height 2h = 1.958 m" "mm^2 each" "MPa" "max force (kN)" \
-        "final gap (mm)" "energy (J)" "m/s^2 ="; do
-        grep -qF -- "$w" "$D/out" || fail "output_units: si report lacks '$w'"
-    done
-    grep -q "kip\|ksi\|ft-lbf" "$D/out" && fail "US units in the SI report"
-    # an SI case asking for US units
-    printf 'extends: %s/%s\noutput_units: us\n' "$(pwd)" "$HARMONIC" >"$D/us.yaml"
-    run check "$D/us.yaml"
-    grep -qF "max force (kip)" "$D/out" || fail "output_units: us on an SI case"
-    # every converted value against its SI name, at full precision
-    mkdir -p "$D/tmpl"
-    cat >"$D/tmpl/report.txt" <<'EOT'
-{{mass:%.17g}} {{mass_kg:%.17g}} 0.45359237
-{{weight:%.17g}} {{weight_kn:%.17g}} 4.4482216152605
-{{height:%.17g}} {{height_m:%.17g}} 0.0254
-{{bolt_area:%.17g}} {{bolt_area_mm2:%.17g}} 645.16
-{{yield_stress:%.17g}} {{yield_stress_mpa:%.17g}} 6.894757293168361
-{{gap:%.17g}} {{gap_mm:%.17g}} 25.4
-{{fy_row:%.17g}} {{fy_row_kn:%.17g}} 4.4482216152605
-{{capacity:%.17g}} {{capacity_j:%.17g}} 1.3558179483314004
-{{#motions}}
-{{max_u:%.17g}} {{max_u_mm:%.17g}} 25.4
-{{shear_elastic:%.17g}} {{shear_elastic_kn:%.17g}} 4.4482216152605
-{{force_left:%.17g}} {{force_left_kn:%.17g}} 4.4482216152605
-{{force_right:%.17g}} {{force_right_kn:%.17g}} 4.4482216152605
-{{absorbed_left:%.17g}} {{absorbed_left_j:%.17g}} 1.3558179483314004
-{{final_gap_right:%.17g}} {{final_gap_right_mm:%.17g}} 25.4
-{{e_input:%.17g}} {{e_input_j:%.17g}} 1.3558179483314004
-{{k_row:%.17g}} {{k_row_mn_per_m:%.17g}} 0.17512683524647637
-{{/motions}}
-EOT
-    RB_TEMPLATE_DIR=$D/tmpl
-    export RB_TEMPLATE_DIR
-    run check "$US"
-    cp "$D/out" "$D/us.txt"
-    run check "$D/si.yaml"
-    unset RB_TEMPLATE_DIR
-    [ "$(wc -l <"$D/us.txt")" -eq 16 ] || fail "16 values in the US report"
-    awk '{ r = $1 * $3 / $2 - 1; if (r < -1e-9 || r > 1e-9 || $2 == 0) { print "line " NR ": " $0; bad = 1 } }
-         END { exit bad }' "$D/us.txt" || fail "US values are not the SI ones converted"
-    awk '{ r = $1 / $2 - 1; if (r < -1e-9 || r > 1e-9) { print "line " NR ": " $0; bad = 1 } }
-         END { exit bad }' "$D/out" || fail "output_units: si values are not the SI ones"
-    echo "units: ok"
-}
-
 case "$T" in
-    help|usage|harmonic|consistency|stdout|elcentro|unwritable|preserved|history|init|template|solver_error|free_standing|design|design_threads|suite|figures|units|titles)
+    help|usage|harmonic|stdout|elcentro|unwritable|preserved|history|init|template|solver_error|free_standing|design|design_threads|figures|titles)
         "test_$T" ;;
     *) echo "unknown test $T"; exit 1 ;;
 esac

@@ -7,6 +7,10 @@ target_link_libraries(jsonget PRIVATE PkgConfig::CJSON)
 
 rb_shell_tests(PREFIX cli SCRIPT tests/cli/cli_test.sh SCRATCH cli LABEL cli TIMEOUT 300
                TOOLS $<TARGET_FILE:jsonget>
-               TESTS help usage harmonic consistency stdout elcentro unwritable preserved
+               TESTS help usage harmonic stdout elcentro unwritable preserved
                      history init template solver_error free_standing design
-                     design_threads suite figures units titles)
+                     design_threads figures titles)
+# the reports' numbers: the text's against the JSON's, a suite's, US units
+foreach(t consistency suite units)
+  rb_script_test(NAME cli_${t} SCRIPT tests/cli/numbers.py LABEL cli AFTER ${t})
+endforeach()
