@@ -45,11 +45,6 @@ jget() {
         fail "no value at $2 in $1"
 }
 
-# awk_true EXPR: the awk expression holds (numbers passed as A and B)
-holds() {
-    awk -v A="$1" -v B="$2" "BEGIN { exit !($3) }" || fail "$4 (A=$1 B=$2)"
-}
-
 no_temp_files() {
     ls -a "$1" | grep -q '\.tmp\.' && fail "temporary files left in $1: $(ls -a "$1")"
     return 0
@@ -149,10 +144,6 @@ test_elcentro() {
     [ "$rc" -eq 0 ] || [ "$rc" -eq 1 ] || fail "exit code $rc"
     verdict_agrees "$D/e.json" "$D/e.txt"
     [ "$(jget "$D/e.json" motions.0.motion.kind)" = record ] || fail "record motion"
-    holds "$(jget "$D/e.json" motions.0.motion.peak_floor_over_a_star)" 0.4 \
-        "A - B < 1e-6 && B - A < 1e-6" "floor peak scaled to 0.4 A*"
-    holds "$(jget "$D/e.json" motions.0.result.peaks.max_u_over_ustatic)" 0 \
-        "A > 1 && A < 100" "max U / U_static in a sane range"
     grep -q "elcentro_1940_ns.at2" "$D/e.txt" || fail "record source not in text"
     echo "elcentro: ok (exit $rc)"
 }
@@ -196,25 +187,11 @@ test_history() {
     run check "$HARMONIC" --quiet --history "$D/h.csv" --json "$D/h.json"
     [ "$rc" -eq 0 ] || [ "$rc" -eq 1 ] || fail "exit code $rc"
     head -1 "$D/h.csv" | grep -q '^motion,t_s,accel_mps2,theta_rad,u_m,' || fail "CSV header"
-    rows=$(($(wc -l <"$D/h.csv") - 1))
-    duration=$(jget "$D/h.json" motions.0.motion.duration_s)
-    holds "$rows" "$duration" "A >= B / 0.01" "one row per 0.01 s at least"
-    awk -F, 'NR > 1 && NF != 15 { exit 1 }' "$D/h.csv" || fail "rows of 15 fields"
-    awk -F, 'NR > 1 && ($1 != 1 || $15 < 1 || $15 > 5) { exit 1 }' "$D/h.csv" ||
-        fail "motion index or stage out of range"
     # the JSON report counts the rows it carries (none without
     # analysis.history), whatever --history asks for
     [ "$(jget "$D/h.json" motions.0.result.cost.history_rows)" = "0" ] ||
         fail "history_rows in JSON depends on --history"
-    # analysis.output_interval sets the rows of --history, with or without
-    # analysis.history
-    printf 'extends: %s/%s\nanalysis:\n  output_interval: 2.5 ms\n' "$(pwd)" "$HARMONIC" \
-        >"$D/fine.yaml"
-    run check "$D/fine.yaml" --quiet --history "$D/fine.csv"
-    [ "$rc" -le 1 ] || fail "output_interval: exit code $rc"
-    awk -F, 'NR == 3 && $2 != 0.0025 { exit 1 }' "$D/fine.csv" ||
-        fail "--history ignores analysis.output_interval: $(sed -n 3p "$D/fine.csv" | cut -c1-40)"
-    echo "history: ok ($rows rows)"
+    echo "history: ok"
 }
 
 test_init() {
@@ -302,27 +279,14 @@ test_solver_error() {
 DESIGN=cases/reference-design.yaml
 
 # `design`: the same verdict and exit code as `check`, the design results
-# in both reports, one CSV per sweep, and relations the searches must obey.
+# in both reports, one CSV per sweep (the relations the searches must obey
+# are numbers.py's).
 test_design() {
     run check "$DESIGN" --quiet
     check_rc=$rc
     run design "$DESIGN" --json "$D/d.json" --text "$D/d.txt" --sweep-csv "$D/sw.csv"
     expect_rc "$check_rc" "design (check exits $check_rc)"
     verdict_agrees "$D/d.json" "$D/d.txt"
-    ny=$(jget "$D/d.json" motions.0.design.design_factor.no_yield.factor)
-    nb=$(jget "$D/d.json" motions.0.design.design_factor.no_break.factor)
-    lv=$(jget "$D/d.json" motions.0.design.design_factor.no_yield.level_astar)
-    holds "$ny" "$lv" "A * B > 0.999999 && A * B < 1.000001" "factor = 1 / level in A*"
-    # a run that breaks nothing may still yield: no-yield is the stricter
-    holds "$nb" "$ny" "A <= B && A > 1" "no-break factor <= no-yield factor"
-    fl=$(jget "$D/d.json" motions.0.design.design_factor.no_yield.fail_astar)
-    holds "$fl" "$lv" "A > B && A - B <= 0.001 + 1e-12" "bracket within the resolution"
-    holds "$(jget "$D/d.json" design.frequency_sweeps.0.points.18.frequency_ratio)" 2 \
-        "A - B < 1e-12 && B - A < 1e-12" "19-point frequency sweep ends at 2"
-    t=$(jget "$D/d.json" design.code_static.tension_n)
-    c=$(jget "$D/d.json" design.code_static.phi_nsa_n)
-    holds "$(jget "$D/d.json" design.code_static.ratio)" "$t / $c" \
-        "A - $t / $c < 1e-9 && $t / $c - A < 1e-9" "code ratio = T / phi Nsa"
     [ -f "$D/sw-1.csv" ] && [ -f "$D/sw-2.csv" ] || fail "sweep CSVs: $(ls "$D")"
     [ "$(wc -l <"$D/sw-1.csv")" -eq 20 ] || fail "frequency sweep CSV: 19 rows + header"
     [ "$(wc -l <"$D/sw-2.csv")" -eq 13 ] || fail "amplitude sweep CSV: 12 rows + header"
@@ -330,7 +294,7 @@ test_design() {
     grep -q "^code-static  ASCE 7-22" "$D/d.txt" || fail "code-static not in text"
     grep -q "^frequency sweep 1" "$D/d.txt" || fail "frequency sweep not in text"
     no_temp_files "$D"
-    echo "design: ok (factors $ny / $nb, exit $rc)"
+    echo "design: ok (exit $rc)"
 }
 
 # The searches give byte-identical reports on one thread, two and six.

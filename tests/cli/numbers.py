@@ -16,7 +16,14 @@ Run from the source root (ctest does), one TEST a run:
                motions';
   units        the US customary case in US units (and in SI when its
                output_units say so, and an SI case in US units), every
-               converted value against its SI name at full precision.
+               converted value against its SI name at full precision;
+  elcentro     the El Centro case's floor scaled to 0.4 A*, its peak uplift
+               in a sane range;
+  history      --history: a row each 0.01 s at least, 15 fields, the motion
+               index and the stage in range, analysis.output_interval obeyed;
+  design       the design factor is 1 / the level in A*, no-break's at most
+               no-yield's, the bracket within the resolution, the frequency
+               sweep's end, the code-static ratio T / phi N_sa.
 
 The commands' exit codes and files are tests/cli/cli_test.sh's."""
 import json, os, re, sys
@@ -213,5 +220,66 @@ def test_units():
             fail(f"output_units: si {a} {r[0]} is not the SI {b} {r[1]}")
 
 
-{"consistency": test_consistency, "suite": test_suite, "units": test_units}[test]()
+def test_elcentro():
+    p, J, text = check("cases/reference-elcentro.yaml")
+    m = J["motions"][0]
+    near(m["motion"]["peak_floor_over_a_star"], 0.4, 0, "floor peak scaled to 0.4 A*", 1e-6)
+    u = m["result"]["peaks"]["max_u_over_ustatic"]
+    if not 1 < u < 100:
+        fail(f"max U / U_static {u} not in a sane range (1, 100)")
+
+
+def rows_of(path):
+    with open(path) as f:
+        return [line.rstrip("\n").split(",") for line in f][1:]
+
+
+def test_history():
+    csv = os.path.join(scratch, "h.csv")
+    p, J, text = check(HARMONIC, "--history", csv)
+    rows = rows_of(csv)
+    duration = J["motions"][0]["motion"]["duration_s"]
+    if not len(rows) >= duration / 0.01:
+        fail(f"{len(rows)} rows for {duration} s: fewer than one a 0.01 s")
+    for i, r in enumerate(rows):
+        if len(r) != 15:
+            fail(f"row {i + 1} has {len(r)} fields, not 15", 3)
+        elif r[0] != "1" or not 1 <= float(r[14]) <= 5:
+            fail(f"row {i + 1}: motion index {r[0]} or stage {r[14]} out of range", 3)
+    # analysis.output_interval sets the rows of --history
+    fine = write("fine.yaml", f"extends: {os.getcwd()}/{HARMONIC}\n"
+                              "analysis:\n  output_interval: 2.5 ms\n")
+    fine_csv = os.path.join(scratch, "fine.csv")
+    p = run("check", fine, "--quiet", "--history", fine_csv)
+    rows = rows_of(fine_csv) if p.returncode <= 1 else []
+    if len(rows) < 2 or float(rows[1][1]) != 0.0025:
+        fail(f"--history ignores analysis.output_interval: {rows[1][:2] if len(rows) > 1 else rows}")
+
+
+def test_design():
+    j = os.path.join(scratch, "d.json")
+    p = run("design", "cases/reference-design.yaml", "--json", j, "--quiet")
+    if p.returncode not in (0, 1):
+        fail(f"design: exit code {p.returncode}: {p.stderr.strip()}")
+        finish()
+    with open(j) as f:
+        J = json.load(f)
+    df = J["motions"][0]["design"]["design_factor"]
+    ny, nb = df["no_yield"]["factor"], df["no_break"]["factor"]
+    level, fails = df["no_yield"]["level_astar"], df["no_yield"]["fail_astar"]
+    if not 0.999999 < ny * level < 1.000001:
+        fail(f"factor {ny} is not 1 / the level {level} in A*")
+    # a run that breaks nothing may still yield: no-yield is the stricter
+    if not 1 < nb <= ny:
+        fail(f"no-break factor {nb} not in (1, no-yield's {ny}]")
+    if not 0 < fails - level <= 0.001 + 1e-12:
+        fail(f"bracket [{level}, {fails}] not within the resolution 0.001")
+    near(J["design"]["frequency_sweeps"][0]["points"][18]["frequency_ratio"], 2, 0,
+         "the 19-point frequency sweep ends at 2", 1e-12)
+    k = J["design"]["code_static"]
+    near(k["ratio"], k["tension_n"] / k["phi_nsa_n"], 0, "code ratio = T / phi N_sa", 1e-9)
+
+
+{"consistency": test_consistency, "suite": test_suite, "units": test_units,
+ "elcentro": test_elcentro, "history": test_history, "design": test_design}[test]()
 finish()

@@ -10,7 +10,8 @@ rb_shell_tests(PREFIX cli SCRIPT tests/cli/cli_test.sh SCRATCH cli LABEL cli TIM
                TESTS help usage harmonic stdout elcentro unwritable preserved
                      history init template solver_error free_standing design
                      design_threads figures titles)
-# the reports' numbers: the text's against the JSON's, a suite's, US units
-foreach(t consistency suite units)
-  rb_script_test(NAME cli_${t} SCRIPT tests/cli/numbers.py LABEL cli AFTER ${t})
+# the reports' numbers: the text's against the JSON's, a suite's, US units, the
+# El Centro scaling, the history's rows, the design's relations
+foreach(t consistency suite units elcentro history design)
+  rb_script_test(NAME cli_numbers_${t} SCRIPT tests/cli/numbers.py LABEL cli AFTER ${t})
 endforeach()
