@@ -185,11 +185,7 @@ char *rb_floors_render_json(const rb_case *c, const rb_case_floors *f,
                             const char *const *files)
 {
     rb_jctx cx = {.st = RB_OK, .where = "motions"};
-    cJSON *root = cJSON_CreateObject();
-    rb_j_oom(&cx, root);
-    rb_j_str(&cx, root, "format", "rockbolt-motions");
-    rb_j_int(&cx, root, "format_version", 1);
-    rb_j_text(&cx, root, "case", c->name);
+    cJSON *root = rb_report_file_json(&cx, "rockbolt-motions", c);
     rb_j_num_or_null(&cx, root, "g_mps2", f->g_mps2);
     cJSON *motions = rb_j_arr(&cx, root, "motions");
     for (size_t m = 0; m < f->n_motions; m++) {
@@ -203,7 +199,5 @@ char *rb_floors_render_json(const rb_case *c, const rb_case_floors *f,
             if (fm->axis[a].present)
                 json_component(&cx, comps, &fm->axis[a], a, files, m);
     }
-    char *text = cx.st == RB_OK ? rb_json_print_layout(root, &floors_layout) : NULL;
-    cJSON_Delete(root);
-    return text;
+    return rb_report_file_print(&cx, root, &floors_layout);
 }

@@ -81,9 +81,7 @@ char *rb_fragility_sweep_render_json(const rb_case *c, const rb_fragility_sweep 
     long runs = 0;
     for (size_t i = 0; i < s->n_points; i++)
         runs += s->points[i].runs;
-    cJSON *root = cJSON_CreateObject();
-    rb_j_oom(&cx, root);
-    rb_report_fragility_head_json(&cx, root, "rockbolt-fragility-gap-sweep", c, f0);
+    cJSON *root = rb_report_fragility_head_json(&cx, "rockbolt-fragility-gap-sweep", c, f0);
     rb_j_uint(&cx, root, "motions", f0 ? f0->n_motions : 0);
     rb_report_fragility_bootstrap_json(&cx, root, f0);
     rb_j_int(&cx, root, "runs", runs);
@@ -99,9 +97,7 @@ char *rb_fragility_sweep_render_json(const rb_case *c, const rb_fragility_sweep 
             if (rb_case_fragility_has(f, k))
                 rb_report_fragility_limit_json(&cx, limits, f, k);
     }
-    char *text = cx.st == RB_OK ? rb_json_print_layout(root, &sweep_layout) : NULL;
-    cJSON_Delete(root);
-    return text;
+    return rb_report_file_print(&cx, root, &sweep_layout);
 }
 
 /* A number of 6 significant digits, or nothing when there is none. */

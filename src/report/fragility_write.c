@@ -125,13 +125,28 @@ void rb_report_fragility_governing_json(rb_jctx *cx, cJSON *o, const rb_case_fra
         rb_j_null(cx, o, "governing_limit_state");
 }
 
-void rb_report_fragility_head_json(rb_jctx *cx, cJSON *root, const char *format,
-                                   const rb_case *c, const rb_case_fragility *f0)
+cJSON *rb_report_file_json(rb_jctx *cx, const char *format, const rb_case *c)
 {
-    rb_fragility_intensity im = f0 ? f0->intensity : RB_IM_PFA;
+    cJSON *root = cJSON_CreateObject();
+    rb_j_oom(cx, root);
     rb_j_str(cx, root, "format", format);
     rb_j_int(cx, root, "format_version", 1);
     rb_j_text(cx, root, "case", c->name);
+    return root;
+}
+
+char *rb_report_file_print(rb_jctx *cx, cJSON *root, const rb_json_layout *layout)
+{
+    char *text = cx->st == RB_OK ? rb_json_print_layout(root, layout) : NULL;
+    cJSON_Delete(root);
+    return text;
+}
+
+cJSON *rb_report_fragility_head_json(rb_jctx *cx, const char *format, const rb_case *c,
+                                     const rb_case_fragility *f0)
+{
+    rb_fragility_intensity im = f0 ? f0->intensity : RB_IM_PFA;
+    cJSON *root = rb_report_file_json(cx, format, c);
     rb_j_str(cx, root, "intensity", rb_enum_str(rb_intensity_report_names, (int)im));
     if (im == RB_IM_SA) {
         rb_j_num_or_null(cx, root, "intensity_freq_hz", f0->im_freq_hz);
@@ -140,6 +155,7 @@ void rb_report_fragility_head_json(rb_jctx *cx, cJSON *root, const char *format,
     rb_j_num_or_null(cx, root, "g_mps2", f0 ? f0->g_mps2 : (double)NAN);
     rb_j_num_or_null(cx, root, "a_star_mps2", f0 ? f0->a_star_mps2 : (double)NAN);
     rb_j_num_or_null(cx, root, "level_mps2", f0 ? f0->level_mps2 : (double)NAN);
+    return root;
 }
 
 void rb_report_fragility_bootstrap_json(rb_jctx *cx, cJSON *root,
@@ -186,9 +202,7 @@ static void motion_json(rb_jctx *cx, cJSON *arr, const rb_case *c,
 char *rb_fragility_render_json(const rb_case *c, const rb_case_fragility *f)
 {
     rb_jctx cx = {.st = RB_OK, .where = "fragility"};
-    cJSON *root = cJSON_CreateObject();
-    rb_j_oom(&cx, root);
-    rb_report_fragility_head_json(&cx, root, "rockbolt-fragility", c, f);
+    cJSON *root = rb_report_fragility_head_json(&cx, "rockbolt-fragility", c, f);
     rb_report_fragility_bootstrap_json(&cx, root, f);
     rb_j_int(&cx, root, "runs", f->runs);
     rb_report_fragility_governing_json(&cx, root, f);
@@ -199,9 +213,7 @@ char *rb_fragility_render_json(const rb_case *c, const rb_case_fragility *f)
     cJSON *motions = rb_j_arr(&cx, root, "motions");
     for (size_t m = 0; m < f->n_motions; m++)
         motion_json(&cx, motions, c, f, m);
-    char *text = cx.st == RB_OK ? rb_json_print_layout(root, &fragility_layout) : NULL;
-    cJSON_Delete(root);
-    return text;
+    return rb_report_file_print(&cx, root, &fragility_layout);
 }
 
 char *rb_fragility_render_csv(const rb_case *c, const rb_case_fragility *f)

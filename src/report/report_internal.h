@@ -103,17 +103,23 @@ rb_status rb_report_text_motion_anchor_modes(const rb_report *r, const rb_report
  * JSON: trees built by rb_j_* (rockbolt/jsonbuild.h), laid out by
  * rb_json_print_layout ---------------------------------------------------- */
 #include "rockbolt/jsonbuild.h"
-/* fragility_write.c: limit state k of f as an object at the end of arr. */
+#include "rockbolt/jsonprint.h"
+/* fragility_write.c: the root of such a file, with its format, the format's
+ * version (1) and the case's name; NULL (and cx->st set) when out of memory. */
+cJSON *rb_report_file_json(rb_jctx *cx, const char *format, const rb_case *c);
+/* The file's text laid out by layout, root freed; NULL after any problem. */
+char *rb_report_file_print(rb_jctx *cx, cJSON *root, const rb_json_layout *layout);
+/* Limit state k of f as an object at the end of arr. */
 void rb_report_fragility_limit_json(rb_jctx *cx, cJSON *arr, const rb_case_fragility *f,
                                     int k);
 /* "judged_limit_states": [...] and "governing_limit_state": its name or
  * null (rb_fragility_governing). */
 void rb_report_fragility_governing_json(rb_jctx *cx, cJSON *o, const rb_case_fragility *f);
-/* The head a fragility and its sweep share: format, its version, case,
- * intensity (its frequency and damping for a spectral one), g, A* and the
+/* The root with the head a fragility and its sweep share: format, its
+ * version, case, intensity (its frequency and damping for a spectral one), g, A* and the
  * case's level, from f0 (NULL: a sweep without points). */
-void rb_report_fragility_head_json(rb_jctx *cx, cJSON *root, const char *format,
-                                   const rb_case *c, const rb_case_fragility *f0);
+cJSON *rb_report_fragility_head_json(rb_jctx *cx, const char *format, const rb_case *c,
+                                     const rb_case_fragility *f0);
 /* "bootstrap": {resamples, seed, interval}. */
 void rb_report_fragility_bootstrap_json(rb_jctx *cx, cJSON *root,
                                         const rb_case_fragility *f0);

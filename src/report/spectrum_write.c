@@ -201,11 +201,7 @@ static const rb_json_layout spectra_layout = {
 char *rb_spectra_render_json(const rb_case *c, const rb_case_spectra *s)
 {
     rb_jctx cx = {.st = RB_OK, .where = "spectra"};
-    cJSON *root = cJSON_CreateObject();
-    rb_j_oom(&cx, root);
-    rb_j_str(&cx, root, "format", "rockbolt-spectra");
-    rb_j_int(&cx, root, "format_version", 1);
-    rb_j_text(&cx, root, "case", c->name);
+    cJSON *root = rb_report_file_json(&cx, "rockbolt-spectra", c);
     rb_j_num_or_null(&cx, root, "damping", s->opts.damping);
     rb_j_num_or_null(&cx, root, "g_mps2", s->g_mps2);
     size_t n = s->n_motions ? s->motions[0].sp.n : 0;
@@ -230,9 +226,7 @@ char *rb_spectra_render_json(const rb_case *c, const rb_case_spectra *s)
         rb_j_nums(&cx, o, "psa_mps2", ms->sp.psa_mps2, ms->sp.n);
         rb_j_nums(&cx, o, "sa_mps2", ms->sp.sa_mps2, ms->sp.n);
     }
-    char *text = cx.st == RB_OK ? rb_json_print_layout(root, &spectra_layout) : NULL;
-    cJSON_Delete(root);
-    return text;
+    return rb_report_file_print(&cx, root, &spectra_layout);
 }
 
 char *rb_spectra_render_csv(const rb_case *c, const rb_case_spectra *s)

@@ -36,13 +36,6 @@ test = sys.argv[3]
 HARMONIC = "cases/reference-harmonic.yaml"
 
 
-def at(doc, path):
-    """The value at a dotted path (list items by index)."""
-    for k in path.split("."):
-        doc = doc[int(k)] if isinstance(doc, list) else doc[k]
-    return doc
-
-
 def check(case, *outs):
     """check case writing JSON and text into the scratch directory: the
     process, the JSON document and the text."""
