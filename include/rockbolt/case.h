@@ -33,11 +33,14 @@ typedef enum {
 } rb_case_motion_type;
 extern const rb_enum_name rb_case_motion_type_names[];
 
-/* A target spectrum a case names, shared by the motions made from it. */
+/* A target spectrum a case names, shared by the motions made from it,
+ * and the laboratory's acceptance of each: rb_accept_rules_init's with the
+ * motion's `low_cutoff` and `max_ratio` (docs/case-format.md). */
 typedef struct {
     rb_target target;
     rb_target vertical;   /* AC156's vertical, for a triaxial suite */
     char *file;           /* owned: a table's path as resolved, else NULL */
+    rb_accept_rules rules, vertical_rules;
 } rb_case_target;
 
 typedef struct rb_case_motion {
@@ -51,6 +54,10 @@ typedef struct rb_case_motion {
     /* synthetic: the target (borrowed from rb_case.targets), the motion's
      * place in its suite and seed, and what the generator made */
     const rb_target *target;
+    /* with a target: how its acceptance is judged (borrowed from
+     * rb_case.targets, as target); a record, harmonic or pulse has a target
+     * only when its `spectrum:` names one, and is judged, not matched */
+    const rb_accept_rules *rules;
     unsigned synth_index;
     unsigned long long synth_seed;
     rb_synth_info synth;
@@ -118,7 +125,7 @@ typedef struct {
     rb_case_project project;  /* project: */
     rb_case_motion *motions;  /* owned array of n_motions (>= 1) */
     size_t n_motions;
-    rb_case_target *targets;  /* owned array: the synthetic motions' targets */
+    rb_case_target *targets;  /* owned array: the motions' targets */
     size_t n_targets;
     int write_history;        /* analysis.history: true */
     /* The units of the text report and the figures (the JSON report is

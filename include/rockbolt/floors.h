@@ -51,7 +51,9 @@ typedef struct {
     rb_spectrum trs;        /* owned, with a target: the TRS the acceptance
                                judged, on rb_accept_grid's grid at the
                                target's damping (what the figure draws) */
-    rb_accept_rules rules;  /* with a target: rb_accept_rules_init's */
+    rb_accept_rules rules;  /* with a target: the motion's (rb_case_motion.rules:
+                               rb_accept_rules_init's, with the case's
+                               low_cutoff and max_ratio) */
 } rb_floor_component;
 
 typedef struct {
@@ -66,5 +68,11 @@ typedef struct {
 } rb_case_floors;
 
 void rb_case_floors_free(rb_case_floors *f);
+
+/* 1 when some component matched to a target fails its acceptance (an
+ * offset fails the laboratory's rules, or the peak is below the target's
+ * least): `rockbolt motion` then exits 1. A component without a target
+ * has no acceptance and never fails. */
+int rb_case_floors_fail(const rb_case_floors *f);
 
 #endif

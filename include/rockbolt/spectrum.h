@@ -80,9 +80,12 @@ rb_status rb_spectrum_of_motion(const rb_motion *m, rb_spectrum *sp);
 typedef enum {
     RB_TARGET_AC156 = 0,  /* ICC-ES AC156 required response spectrum */
     RB_TARGET_TABLE,      /* frequency / acceleration pairs */
-    RB_TARGET_IEEE693     /* IEEE 693 performance level spectrum */
+    RB_TARGET_IEEE693,    /* IEEE 693 performance level spectrum */
+    RB_TARGET_GR63        /* Telcordia GR-63-CORE: a user's RRS table, judged
+                             from 1 to 50 Hz at 2 % (rb_target_gr63) */
 } rb_target_kind;
-extern const rb_enum_name rb_target_type_names[];   /* rb_target_kind: ac156, table, ieee693 */
+extern const rb_enum_name rb_target_type_names[];   /* rb_target_kind: ac156, table,
+                                                       ieee693, gr63 */
 
 /* IEEE 693's qualification levels: High (a ZPA of 1.0 g at 5 %) and
  * Moderate (half of High at every frequency and damping). */
@@ -186,6 +189,15 @@ void rb_target_ieee693(rb_target *t, rb_ieee693_level level, double damping, int
  * rb_target_tolerance says otherwise. */
 void rb_target_table(rb_target *t, double *freq_hz, double *accel_mps2, size_t n,
                      double damping);
+/* GR-63-CORE's check of a waveform against a user's RRS (CODES.md: TRS >=
+ * RRS from 1 to 50 Hz at 2 % damping): a table target (takes ownership
+ * as rb_target_table, the table from at most 1 Hz) at 2 %, checked from 1
+ * to 50 Hz with no point below 1.0 x RRS; 1.3 is drawn and reported as
+ * the guide line, no least peak. */
+#define RB_GR63_DAMPING 0.02
+#define RB_GR63_FROM_HZ 1.0
+#define RB_GR63_TO_HZ 50.0
+void rb_target_gr63(rb_target *t, double *freq_hz, double *accel_mps2, size_t n);
 /* A table's own tolerance: no point of the TRS below `below` x RRS (the
  * acceptance's lower rule), `above` its upper line (held by the generator,
  * reported by the acceptance). RB_TARGET_MIN_ABOVE: the generator aims up

@@ -153,6 +153,13 @@ typedef struct rb_cmotion {
     double table_displacement_m, table_velocity_mps; /* `table:` */
     const rb_ynode *synth_dt_node;  /* NULL: the default */
     const rb_ynode *synth_total_node, *synth_strong_node; /* alike */
+    /* a record's, harmonic's or pulse's `spectrum:`: judged against it */
+    int judged;
+    /* `low_cutoff` (auto, or a frequency; 0: the target's own) and
+     * `max_ratio` (0: none) of the acceptance (case_accept.c) */
+    int low_cutoff_auto;
+    double low_cutoff_hz, max_ratio;
+    const rb_ynode *low_cutoff_node, *max_ratio_node;
     /* `vertical:` (case_motion.c): the floor's vertical acceleration as
      * read, owned, NULL for none; is_vertical marks the vertical itself */
     struct rb_cmotion *vertical;
@@ -270,6 +277,7 @@ extern const char *const *const rb_case_top_keys, *const *const rb_case_equipmen
     *const *const rb_case_synthetic_keys, *const *const rb_case_ac156_keys,
     *const *const rb_case_table_keys, *const *const rb_case_project_keys,
     *const *const rb_case_synth_table_keys, *const *const rb_case_ieee693_keys,
+    *const *const rb_case_gr63_keys,
     *const *const rb_case_envelope_keys, *const *const rb_case_tolerance_keys,
     *const *const rb_case_vertical_harmonic_keys, *const *const rb_case_vertical_pulse_keys,
     *const *const rb_case_vertical_record_keys;
@@ -285,6 +293,9 @@ rb_status rb_case_read_merged_text(rb_cctx *c, const char *name, unsigned char *
 /* --- case_synth.c: synthetic motions ------------------------------------ */
 /* Read a `type: synthetic` motion's keys into cm; 0 after an error. */
 int rb_case_read_synthetic(rb_cctx *c, rb_ynode *map, rb_cmotion *cm);
+/* Read a motion's `spectrum:` (a synthetic motion's target, or the one a
+ * record, harmonic or pulse is judged against) into cm; 0 after an error. */
+int rb_case_read_spectrum(rb_cctx *c, rb_ynode *sp, rb_cmotion *cm);
 /* Make the target cm names (reading a table file); 0 after an error. */
 int rb_case_make_target(rb_cctx *c, const rb_cmotion *cm, rb_case_target *ct);
 /* Check what generating cm's suite of count motions takes (the options
@@ -300,6 +311,17 @@ double rb_case_suite_duration(const rb_cmotion *cm);
  * motion that could not be made. */
 int rb_case_build_suite(rb_cctx *c, const rb_cmotion *cm, const rb_case_target *ct,
                         rb_case_motion *out, size_t count);
+
+/* --- case_accept.c: the acceptance of a motion against its target ------ */
+/* A motion's `low_cutoff` and `max_ratio` into cm (a motion that is not
+ * synthetic must have a `spectrum` to take them); 0 after an error. */
+int rb_case_read_accept(rb_cctx *c, rb_ynode *map, rb_cmotion *cm);
+/* ct's rules and vertical_rules: rb_accept_rules_init's with cm's low
+ * cutoff (auto: rb_accept_low_cutoff of m's fixed-base frequency, none when
+ * rigid or m NULL) and max_ratio; 0 after an error (the low cutoff at or
+ * above the target's high cutoff). */
+int rb_case_accept_rules(rb_cctx *c, const rb_cmotion *cm, const rb_model *m,
+                         rb_case_target *ct);
 
 /* --- case_value.c: typed values ----------------------------------------- */
 /* A file a case names, relative to the directory of the file that named

@@ -17,15 +17,17 @@ const rb_enum_name rb_case_motion_type_names[] = {
     {"harmonic", RB_CASE_MOTION_HARMONIC}, {"pulse", RB_CASE_MOTION_PULSE},
     {"record", RB_CASE_MOTION_RECORD}, {"synthetic", RB_CASE_MOTION_SYNTHETIC}, {NULL, 0}};
 
+/* spectrum, low_cutoff, max_ratio: the target a motion is judged against
+ * and how (case_accept.c) */
 static const char *const harmonic_keys[] = {
     "type", "name", "polarity", "amplitude", "frequency", "duration", "ramp",
-    "vertical", NULL};
+    "vertical", "spectrum", "low_cutoff", "max_ratio", NULL};
 static const char *const pulse_keys[] = {
     "type", "name", "polarity", "shape", "amplitude", "duration", "run_time",
-    "vertical", NULL};
+    "vertical", "spectrum", "low_cutoff", "max_ratio", NULL};
 static const char *const record_keys[] = {
     "type", "name", "polarity", "file", "format", "units", "dt", "building",
-    "peak", "window", "run_time", "vertical", NULL};
+    "peak", "window", "run_time", "vertical", "spectrum", "low_cutoff", "max_ratio", NULL};
 static const char *const building_keys[] = {"frequency", "damping", NULL};
 const char *const *const rb_case_harmonic_keys = harmonic_keys;
 const char *const *const rb_case_pulse_keys = pulse_keys;
@@ -323,6 +325,19 @@ static int read_vertical(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
     return vm->ok;
 }
 
+/* A record's, harmonic's or pulse's `spectrum` (the target it is judged
+ * against, not matched to) and its acceptance keys (case_accept.c). */
+static int read_judged(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
+{
+    rb_ynode *v = rb_cv_get(c, map, cm->key, "spectrum", 0, "");
+    int ok = 1;
+    if (v) {
+        cm->judged = 1;
+        ok = rb_case_read_spectrum(c, v, cm);
+    }
+    return rb_case_read_accept(c, map, cm) && ok;
+}
+
 static void read_motion(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
 {
     char k[RB_CASE_KEY_MAX];
@@ -358,12 +373,15 @@ static void read_motion(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
         return;
     }
     rb_ynode *vv = rb_cv_get(c, map, cm->key, "vertical", 0, "");
+    /* before the type's own keys, which report what is left unread */
+    int judged_ok = read_judged(c, map, cm);
     if (t == RB_CASE_MOTION_HARMONIC)
         cm->ok = read_harmonic(c, map, cm);
     else if (t == RB_CASE_MOTION_PULSE)
         cm->ok = read_pulse(c, map, cm);
     else
         cm->ok = read_record(c, map, cm);
+    cm->ok &= judged_ok;
     if (vv && !read_vertical(c, vv, cm))
         cm->ok = 0;
 }

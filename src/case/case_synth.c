@@ -23,7 +23,7 @@
 
 static const char *const synthetic_keys[] = {
     "type", "name", "polarity", "spectrum", "count", "seed", "duration", "strong", "dt",
-    "run_time", "components", "table", NULL};
+    "run_time", "components", "table", "low_cutoff", "max_ratio", NULL};
 static const char *const synth_table_keys[] = {"displacement", "velocity", NULL};
 static const char *const ac156_keys[] = {"type", "sds", "z_over_h", "edition", "ta", "r",
                                          "ie", "omega0", "envelope", NULL};
@@ -32,10 +32,12 @@ static const char *const table_keys[] = {"type", "file", "units", "damping", "to
                                          NULL};
 static const char *const tolerance_keys[] = {"below", "above", NULL};
 static const char *const ieee693_keys[] = {"type", "level", "damping", NULL};
+static const char *const gr63_keys[] = {"type", "file", "units", NULL};
 const char *const *const rb_case_synthetic_keys = synthetic_keys;
 const char *const *const rb_case_ac156_keys = ac156_keys;
 const char *const *const rb_case_table_keys = table_keys;
 const char *const *const rb_case_ieee693_keys = ieee693_keys;
+const char *const *const rb_case_gr63_keys = gr63_keys;
 const char *const *const rb_case_envelope_keys = envelope_keys;
 const char *const *const rb_case_tolerance_keys = tolerance_keys;
 const char *const *const rb_case_synth_table_keys = synth_table_keys;
@@ -69,8 +71,8 @@ static int read_components(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
 {
     char k[RB_CASE_KEY_MAX];
     int i;
-    cm->components = cm->target_kind != RB_TARGET_TABLE ? RB_SYNTH_TRIAXIAL
-                                                         : RB_SYNTH_HORIZONTAL;
+    cm->components = cm->target_kind == RB_TARGET_AC156 || cm->target_kind == RB_TARGET_IEEE693
+                     ? RB_SYNTH_TRIAXIAL : RB_SYNTH_HORIZONTAL;
     rb_ynode *v = rb_cv_get(c, map, cm->key, "components", 0, "");
     if (!v)
         return 1;
@@ -198,7 +200,8 @@ static int read_ieee693(rb_cctx *c, rb_ynode *sp, const char *k, rb_cmotion *cm)
     return ok;
 }
 
-static int read_table(rb_cctx *c, rb_ynode *sp, const char *k, rb_cmotion *cm)
+/* A table's `file` and `units` (a table target's, GR-63's) */
+static int read_table_file(rb_cctx *c, rb_ynode *sp, const char *k, rb_cmotion *cm)
 {
     char kk[RB_CASE_KEY_MAX], text[64], msg[300];
     int ok = 1;
@@ -227,6 +230,32 @@ static int read_table(rb_cctx *c, rb_ynode *sp, const char *k, rb_cmotion *cm)
             cm->table_units_to_mps2 = q.value;
         }
     }
+    return ok;
+}
+
+/* GR-63-CORE's check of a given waveform: the user's RRS table, at the
+ * standard's 2 % (rb_target_gr63) */
+static int read_gr63(rb_cctx *c, rb_ynode *sp, const char *k, rb_cmotion *cm)
+{
+    int ok = read_table_file(c, sp, k, cm);
+    cm->table_damping = RB_GR63_DAMPING;
+    rb_ynode *v = rb_cv_get(c, sp, k, "damping", 0, "");
+    if (v) {
+        char kk[RB_CASE_KEY_MAX];
+        rb_case_keypath(kk, k, "damping");
+        rb_cctx_error(c, v, kk, "GR-63-CORE's TRS is at 2 %% damping, which the check "
+                      "takes: remove damping (a table at another damping is type: table)");
+        ok = 0;
+    }
+    rb_cv_unknown_keys(c, sp, k, gr63_keys);
+    return ok;
+}
+
+static int read_table(rb_cctx *c, rb_ynode *sp, const char *k, rb_cmotion *cm)
+{
+    char kk[RB_CASE_KEY_MAX];
+    rb_ynode *v;
+    int ok = read_table_file(c, sp, k, cm);
     cm->table_damping = 0.05;
     if (rb_ymap_find(sp, "damping"))
         ok &= rb_cv_number(c, sp, k, "damping", 0, RB_DIM_RATIO, 0, 0, 0.5, 1,
@@ -251,14 +280,15 @@ static int read_table(rb_cctx *c, rb_ynode *sp, const char *k, rb_cmotion *cm)
     return ok;
 }
 
-static int read_spectrum(rb_cctx *c, rb_ynode *sp, rb_cmotion *cm)
+int rb_case_read_spectrum(rb_cctx *c, rb_ynode *sp, rb_cmotion *cm)
 {
     char k[RB_CASE_KEY_MAX], kk[RB_CASE_KEY_MAX];
     int t;
     rb_case_keypath(k, cm->key, "spectrum");
     if (!rb_cv_map(c, sp, k))
         return 0;
-    rb_ynode *v = rb_cv_get(c, sp, k, "type", 1, "ac156, ieee693 or table");
+    rb_ynode *v = rb_cv_get(c, sp, k, "type", 1, cm->synthetic ? "ac156, ieee693 or table"
+                            : "ac156, ieee693, table or gr63");
     rb_case_keypath(kk, k, "type");
     if (!v || !rb_cv_enum_table(c, v, kk, rb_target_type_names, 0, &t)) {
         for (size_t i = 0; i < sp->n; i++)
@@ -266,6 +296,16 @@ static int read_spectrum(rb_cctx *c, rb_ynode *sp, rb_cmotion *cm)
         return 0;
     }
     cm->target_kind = (rb_target_kind)t;
+    if (t == RB_TARGET_GR63 && cm->synthetic) {
+        rb_cctx_error(c, v, kk, "GR-63-CORE prescribes its own waveform: rockbolt checks a "
+                      "given one against it (a record's 'spectrum: {type: gr63, file: "
+                      "...}'), it does not generate one; give ac156, ieee693 or table");
+        for (size_t i = 0; i < sp->n; i++)
+            sp->entries[i].used = 1;
+        return 0;
+    }
+    if (t == RB_TARGET_GR63)
+        return read_gr63(c, sp, k, cm);
     if (t == RB_TARGET_AC156)
         return read_ac156(c, sp, k, cm);
     return t == RB_TARGET_IEEE693 ? read_ieee693(c, sp, k, cm) : read_table(c, sp, k, cm);
@@ -280,7 +320,8 @@ int rb_case_read_synthetic(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
     cm->motion.kind = RB_MOTION_SAMPLED;
     rb_ynode *v = rb_cv_get(c, map, p, "spectrum", 1, "the target spectrum, e.g. "
                             "{type: ac156, sds: 1.0 g, z_over_h: 0.5}");
-    ok &= v && read_spectrum(c, v, cm);
+    ok &= v && rb_case_read_spectrum(c, v, cm);
+    ok &= rb_case_read_accept(c, map, cm);
     ok &= read_components(c, map, cm);
     ok &= read_envelope(c, map, cm);
     cm->count = 1;
@@ -377,6 +418,19 @@ int rb_case_make_target(rb_cctx *c, const rb_cmotion *cm, rb_case_target *ct)
                              rd.msg[0] ? rd.msg : rb_status_str(st));
         return 0;
     }
+    if (cm->target_kind == RB_TARGET_GR63) {
+        if (!(f[0] <= RB_GR63_FROM_HZ)) {
+            rb_cctx_error_at(c, RB_ERR_INVALID, v->file, v->line, v->col, k, "GR-63-CORE's "
+                             "RRS is checked from %g Hz: the table '%s' starts at %g Hz; "
+                             "state it from %g Hz or below", RB_GR63_FROM_HZ, ct->file,
+                             f[0], RB_GR63_FROM_HZ);
+            free(f);
+            free(a);
+            return 0;
+        }
+        rb_target_gr63(&ct->target, f, a, n);
+        return 1;
+    }
     rb_target_table(&ct->target, f, a, n, cm->table_damping);
     rb_target_tolerance(&ct->target, cm->tolerance_below, cm->tolerance_above);
     return 1;
@@ -385,17 +439,18 @@ int rb_case_make_target(rb_cctx *c, const rb_cmotion *cm, rb_case_target *ct)
 /* Everything a generated motion depends on, as the record cache's name for
  * it (no file has such a name: it starts with "synthetic:"); 0 when it
  * does not fit, and the motion is then not cached. */
-static int cache_key(const rb_cmotion *cm, const rb_target *t, const char *file,
-                     unsigned index, char *key, size_t n)
+static int cache_key(const rb_cmotion *cm, const rb_target *t, const rb_accept_rules *r,
+                     const char *file, unsigned index, char *key, size_t n)
 {
     int len = snprintf(key, n, "synthetic:%d:%d:%d:%d:%.17g:%.17g:%.17g:%s:%.17g:%.17g|%llu|"
                        "%u|%.17g|%.17g|%.17g|%.17g|%.17g|%.17g:%.17g:%.17g:%.17g:%.17g:"
-                       "%.17g", (int)t->kind, (int)t->edition,
+                       "%.17g|%.17g:%.17g", (int)t->kind, (int)t->edition,
                        (int)t->level, t->vertical, t->sds_mps2, t->z_over_h, t->damping, file ? file : "",
                        cm->table_units_to_mps2, t->band_upper * 1000 + t->band_lower, cm->seed, index,
                        cm->total_s, cm->strong_s, cm->synth_dt_s, cm->table_displacement_m,
                        cm->table_velocity_mps, t->building.ta_s, t->building.r,
-                       t->building.ie, t->building.omega0, t->sds2_mps2, t->z_over_h2);
+                       t->building.ie, t->building.omega0, t->sds2_mps2, t->z_over_h2,
+                       r->low_cutoff_hz, r->max_ratio);
     return len > 0 && (size_t)len < n;
 }
 
@@ -424,7 +479,10 @@ static void job_init(const rb_cmotion *cm, const rb_case_target *ct, unsigned in
     j->o.index = index + ((unsigned)comp + 3 * retry) * RB_SYNTH_COMPONENT_STREAM;
     j->o.table_displacement_m = cm->table_displacement_m;
     j->o.table_velocity_mps = cm->table_velocity_mps;
-    j->keyed = cache_key(cm, j->o.target, ct->file, j->o.index, j->key, sizeof j->key);
+    /* the motion's own acceptance (its low cutoff, its max_ratio) */
+    j->o.rules = comp == RB_SYNTH_V ? &ct->vertical_rules : &ct->rules;
+    j->keyed = cache_key(cm, j->o.target, j->o.rules, ct->file, j->o.index, j->key,
+                         sizeof j->key);
 }
 
 static int generate_on = 1;
@@ -551,6 +609,7 @@ static int build_one(rb_cctx *c, const rb_cmotion *cm, const rb_case_target *ct,
     out->type = RB_CASE_MOTION_SYNTHETIC;
     out->motion = cm->motion;
     out->target = t;
+    out->rules = &ct->rules;
     out->synth_index = index;
     out->synth_seed = cm->seed;
     if (!take_job(c, cm, index, RB_SYNTH_H1, set, &jobs[0], &out->series, &out->synth))
@@ -590,6 +649,7 @@ static int build_one(rb_cctx *c, const rb_cmotion *cm, const rb_case_target *ct,
     rb_motion_init(&v->motion);
     v->motion.kind = RB_MOTION_SAMPLED;
     v->target = &ct->vertical;
+    v->rules = &ct->vertical_rules;
     v->synth_index = index;
     v->synth_seed = cm->seed;
     if (!take_job(c, cm, index, RB_SYNTH_V, 1, &jobs[2], &v->series, &v->synth)

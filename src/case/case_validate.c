@@ -353,7 +353,7 @@ static size_t count_motions(rb_cctx *c, size_t *n_targets)
     for (size_t i = 0; i < c->n_motions; i++) {
         const rb_cmotion *cm = &c->motions[i];
         size_t k = cm->synthetic ? (size_t)cm->count : 1;
-        *n_targets += cm->synthetic;
+        *n_targets += cm->synthetic || cm->judged;
         if (n + k > RB_CASE_MAX_MOTIONS) {
             const rb_ynode *v = cm->count_node ? cm->count_node : cm->map;
             rb_cctx_error_at(c, RB_ERR_LIMIT, v->file, v->line, v->col, cm->key,
@@ -474,19 +474,28 @@ void rb_case_resolve(rb_cctx *c, rb_case *cs, const rb_ynode *root)
         at += cm->synthetic ? (size_t)cm->count : 1;
         if (!cm->ok)
             continue;
-        if (cm->synthetic) {
-            rb_case_target *ct = &cs->targets[cs->n_targets];
+        rb_case_target *ct = NULL;
+        if (cm->synthetic || cm->judged) {
+            ct = &cs->targets[cs->n_targets];
             if (!rb_case_make_target(c, cm, ct)) {
                 free(ct->file);
                 continue;
             }
             cs->n_targets++;
+            if (!rb_case_accept_rules(c, cm, have_model ? &cs->model : NULL, ct))
+                continue;
+        }
+        if (cm->synthetic) {
             if (!rb_case_check_suite(c, cm, ct, at - first))
                 continue;
             suite[i] = ct;
         } else if (!build_motion(c, cm, &cs->motions[first], &d, have_model)
                    || !build_vertical(c, cm, &cs->motions[first], &d, have_model)) {
             continue;
+        } else if (ct) {
+            /* judged against its target, not matched to it */
+            cs->motions[first].target = &ct->target;
+            cs->motions[first].rules = &ct->rules;
         }
         for (size_t j = first; j < at; j++) {
             /* the history a run would record, asked for or not: whether a

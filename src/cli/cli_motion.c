@@ -3,7 +3,9 @@
  * and a CSV under --dir, with a summary on stdout and as JSON, and each
  * TRS against its RRS as a figure (--svg, --html). Every file
  * is planned and checked against the case's inputs before anything is
- * written, and all are written or none. Exit 0 when they are written. */
+ * written, and all are written or none. Exit 0 when they are written and
+ * every component matched to a target is accepted, 1 when they are written
+ * and one is not. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -151,6 +153,10 @@ rb_exit rb_cli_motion_run(const rb_cli_opts *op)
         rb_cli_renders r = {&out, title, "summary", text_of, json_of, NULL, figure,
                             NULL, NULL, "--dir", dir_file};
         e = rb_cli_emit_case_outputs(op, &p, &r);
+        /* written and read: a motion that fails its acceptance is a failed
+         * check of the motion (docs/exit-codes.md) */
+        if (e == RB_EXIT_PASS && rb_case_floors_fail(&f))
+            e = RB_EXIT_FAIL;
     }
     for (size_t k = 0; out.files && k < out.n_files; k++)
         free(out.files[k]);
@@ -160,7 +166,7 @@ rb_exit rb_cli_motion_run(const rb_cli_opts *op)
     rb_case_free(&c);
     rb_outplan_free(&p);
     /* refused before anything was written: not even the directory is left */
-    if (e != RB_EXIT_PASS && made_dir)
+    if (e != RB_EXIT_PASS && e != RB_EXIT_FAIL && made_dir)
         rmdir(op->dir_path);
     return e;
 }

@@ -6,7 +6,7 @@
 
 const rb_enum_name rb_target_type_names[] = {
     {"ac156", RB_TARGET_AC156}, {"table", RB_TARGET_TABLE}, {"ieee693", RB_TARGET_IEEE693},
-    {NULL, 0}};
+    {"gr63", RB_TARGET_GR63}, {NULL, 0}};
 const rb_enum_name rb_ieee693_level_names[] = {
     {"high", RB_IEEE693_HIGH}, {"moderate", RB_IEEE693_MODERATE}, {NULL, 0}};
 const rb_enum_name rb_ac156_edition_names[] = {

@@ -1,5 +1,5 @@
-/* Target spectra: the AC156 required response spectrum, IEEE 693's and
- * tables.
+/* Target spectra: the AC156 required response spectrum, IEEE 693's,
+ * tables and GR-63-CORE's check of a user's table.
  *
  * AC156's spectrum (5 % damping) is flat at A_FLX from 1.3 to 8.3 Hz,
  * falls on a straight line in log-log axes to A_RIG at 33.3 Hz and stays
@@ -193,6 +193,16 @@ void rb_target_table(rb_target *t, double *freq_hz, double *accel_mps2, size_t n
     band_defaults(t);
 }
 
+void rb_target_gr63(rb_target *t, double *freq_hz, double *accel_mps2, size_t n)
+{
+    rb_target_table(t, freq_hz, accel_mps2, n, RB_GR63_DAMPING);
+    t->kind = RB_TARGET_GR63;
+    t->check_from_hz = RB_GR63_FROM_HZ;
+    t->check_to_hz = RB_GR63_TO_HZ;
+    /* TRS >= RRS: the envelope itself, no 0.9 allowance */
+    t->band_lower = 1.0;
+}
+
 void rb_target_tolerance(rb_target *t, double below, double above)
 {
     t->band_lower = below;
@@ -258,6 +268,7 @@ double rb_target_at(const rb_target *t, double f_hz)
     case RB_TARGET_IEEE693:
         return ieee693_at(t, f_hz);
     case RB_TARGET_TABLE:
+    case RB_TARGET_GR63:
         break;
     }
     return table_at(t, f_hz);

@@ -105,6 +105,18 @@ static void text_component(rb_strbuf *b, const rb_case *c, const rb_floor_motion
     if (!sm->has_target)
         return;
     const rb_accept_result *ac = &sm->accept;
+    const rb_accept_rules *r = &fc->rules;
+    rb_strbuf_printf(b, "    against %s at %g %% damping from %g to %g Hz: no point below "
+                     "%g x RRS", rb_enum_str(rb_target_type_names, (int)fc->target->kind),
+                     100.0 * r->damping, r->low_cutoff_hz, r->high_cutoff_hz, r->lower);
+    if (r->lower < 1.0)
+        rb_strbuf_printf(b, ", no two adjacent below 1, at most two below 1 up to and "
+                         "above %g Hz", r->split_hz);
+    if (r->max_ratio > 0)
+        rb_strbuf_printf(b, ", none above max_ratio %g\n", r->max_ratio);
+    else
+        rb_strbuf_printf(b, "; %g x RRS the guide line (%s)\n", r->guide, ac->above_guide
+                         ? "crossed, reported" : "not crossed");
     rb_strbuf_printf(b, "    TRS / RRS %.3f (%.2f Hz) to %.3f (%.2f Hz) on the 1/%d-octave "
                      "grid; least margin %.3f at offset %u: %s\n", ac->min_ratio,
                      ac->min_at_hz, ac->max_ratio, ac->max_at_hz, RB_ACCEPT_PER_OCTAVE,
@@ -140,6 +152,21 @@ char *rb_floors_render_text(const rb_case *c, const rb_case_floors *f,
     return rb_strbuf_take(&b);
 }
 
+/* "rules": how the acceptance was judged (accept.h's rb_accept_rules);
+ * max_ratio null: not enforced, the guide line reported */
+static void rules_json(rb_jctx *cx, cJSON *parent, const rb_accept_rules *r)
+{
+    cJSON *o = rb_j_obj(cx, parent, "rules");
+    rb_j_num_or_null(cx, o, "damping", r->damping);
+    rb_j_num_or_null(cx, o, "low_cutoff_hz", r->low_cutoff_hz);
+    rb_j_num_or_null(cx, o, "high_cutoff_hz", r->high_cutoff_hz);
+    rb_j_num_or_null(cx, o, "split_hz", r->split_hz);
+    rb_j_num_or_null(cx, o, "lower", r->lower);
+    rb_j_num_or_null(cx, o, "guide", r->guide);
+    rb_j_num_or_null(cx, o, "max_ratio", r->max_ratio > 0 ? r->max_ratio : (double)NAN);
+    rb_j_num_or_null(cx, o, "tail_to_hz", r->tail_to_hz > 0 ? r->tail_to_hz : (double)NAN);
+}
+
 static void json_component(rb_jctx *cx, cJSON *arr, const rb_floor_component *fc, int a,
                            const char *const *files, size_t m)
 {
@@ -160,6 +187,7 @@ static void json_component(rb_jctx *cx, cJSON *arr, const rb_floor_component *fc
     rb_j_num_or_null(cx, o, "arias_t95_s", sm->arias_t95_s);
     if (sm->has_target) {
         rb_report_target_json(cx, o, fc->target);
+        rules_json(cx, o, &fc->rules);
         rb_report_accept_json(cx, o, &sm->accept);
         rb_j_bool(cx, o, "peak_ok", sm->peak_ok);
     }

@@ -71,7 +71,8 @@ static rb_status closed(const rb_motion *m, double run_s, rb_series *out, const 
 }
 
 static rb_status component(const rb_motion *m, double run_s, const rb_target *target,
-                           rb_floor_component *fc, const char **why)
+                           const rb_accept_rules *rules, rb_floor_component *fc,
+                           const char **why)
 {
     rb_status st;
     memset(fc, 0, sizeof *fc);
@@ -91,10 +92,13 @@ static rb_status component(const rb_motion *m, double run_s, const rb_target *ta
     }
     if (st != RB_OK)
         return st;
-    st = rb_motion_summarise(&fc->s, target, NULL, &fc->sum);
+    if (target && rules)
+        fc->rules = *rules;
+    else if (target)
+        rb_accept_rules_init(&fc->rules, target);
+    st = rb_motion_summarise(&fc->s, target, target ? &fc->rules : NULL, &fc->sum);
     if (st == RB_OK && target) {
         /* the TRS again, for the figure: the summary keeps only its verdict */
-        rb_accept_rules_init(&fc->rules, target);
         st = rb_accept_grid(&fc->rules, &fc->trs);
         if (st == RB_OK)
             st = rb_spectrum_of_series(&fc->s, 1.0, &fc->trs);
@@ -121,7 +125,8 @@ rb_status rb_run_floors(const rb_case *c, rb_case_floors *out, rb_diag *diag)
         const char *why = NULL;
         rb_floor_axis at = RB_FLOOR_H1;
         fm->run_s = cm->motion.duration_s;
-        st = component(&cm->motion, fm->run_s, cm->target, &fm->axis[RB_FLOOR_H1], &why);
+        st = component(&cm->motion, fm->run_s, cm->target, cm->rules, &fm->axis[RB_FLOOR_H1],
+                       &why);
         if (st == RB_OK && cm->has_set && cm->h2.n > 0) {
             /* H2 is the set's other horizontal, matched to the same RRS;
              * a reversed polarity turns the cabinet (or the set) half
@@ -132,13 +137,14 @@ rb_status rb_run_floors(const rb_case *c, rb_case_floors *out, rb_diag *diag)
             h2.series = &cm->h2;
             h2.polarity = cm->motion.polarity;
             at = RB_FLOOR_H2;
-            st = component(&h2, fm->run_s, cm->target, &fm->axis[RB_FLOOR_H2], &why);
+            st = component(&h2, fm->run_s, cm->target, cm->rules, &fm->axis[RB_FLOOR_H2], &why);
         }
         if (st == RB_OK && cm->motion.vertical) {
             at = RB_FLOOR_V;
             st = component(cm->motion.vertical, fm->run_s,
                            cm->vertical ? cm->vertical->target : NULL,
-                           &fm->axis[RB_FLOOR_V], &why);
+                           cm->vertical ? cm->vertical->rules : NULL, &fm->axis[RB_FLOOR_V],
+                           &why);
         }
         if (st != RB_OK && st != RB_ERR_NOMEM)
             rb_diag_set(diag, st, NULL, 0, 0, cm->name ? cm->name : "motion",
@@ -146,6 +152,17 @@ rb_status rb_run_floors(const rb_case *c, rb_case_floors *out, rb_diag *diag)
                         : at == RB_FLOOR_H2 ? "its second horizontal" : "the motion", why ? why : rb_status_str(st));
     }
     return st;
+}
+
+int rb_case_floors_fail(const rb_case_floors *f)
+{
+    for (size_t i = 0; i < f->n_motions; i++)
+        for (int a = 0; a < RB_FLOOR_AXES; a++) {
+            const rb_floor_component *fc = &f->motions[i].axis[a];
+            if (fc->present && fc->sum.has_target && !(fc->sum.accept.pass && fc->sum.peak_ok))
+                return 1;
+        }
+    return 0;
 }
 
 void rb_case_floors_free(rb_case_floors *f)
