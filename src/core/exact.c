@@ -175,6 +175,14 @@ static void build_table(rb_solver *sv, double h, int n, rb_exact_table *t)
             }
     }
     table_bounds(sv, &r, h, t);
+    const double cw[2] = {sv->sys.d.Cstar, sv->sys.d.Nstar};
+    for (int w = 0; w < 2; w++) {
+        double(*q)[ZN] = w == 0 ? t->gvv : t->gxv;
+        int k = 0;
+        for (int i = 0; i < ZN; i++)
+            for (int j = i; j < ZN; j++)
+                t->work[w][k++] = cw[w] * (i == j ? q[i][i] : q[i][j] + q[j][i]);
+    }
 }
 
 /* Step lengths repeat (a sample interval, or its share of steps capped at
@@ -288,18 +296,6 @@ static void quantities_at(const rb_solver *sv, const double *z, double *q)
     rb_dyn_reactions(&sv->sys, &sv->disc, p.y, &a, &q[Q_SHEAR], &V);
     q[Q_UP_POS] = g[G_UP_POS];
     q[Q_UP_NEG] = g[G_UP_NEG];
-}
-
-static double quad(const double q[ZN][ZN], const double *z)
-{
-    double s = 0;
-    for (int i = 0; i < ZN; i++) {
-        double r = 0;
-        for (int j = 0; j < ZN; j++)
-            r += q[i][j] * z[j];
-        s += z[i] * r;
-    }
-    return s;
 }
 
 static int point_finite(const point *p)
@@ -507,23 +503,48 @@ static void check_state(const rb_exact_table *tab, const rb_floor_line *fl, cons
     z[ZS] = fl->slope;
 }
 
-/* Advance the run over a step taken: the works from their Gramians, the
- * state, its rates and the guards at the end point p (tracked there by
- * the caller). */
-static void finish_step(rb_solver *sv, const rb_exact_table *tab, const double *z0,
-                        double t1, const point *p, const double *g_end, double *g, rb_aux *a)
+/* The works' quadratic forms of z added to *wd and *wi, written out
+ * (the 21 pairs of a 6-state: a loop over the triangle is not unrolled,
+ * and costs twice as many instructions). */
+_Static_assert(ZN == 6, "work_forms writes out the pairs of a 6-state");
+static void work_forms(const rb_exact_table *tab, const double *z, double *wd, double *wi)
+{
+    const double *w = tab->work[0], *x = tab->work[1];
+    double zz, d = 0, e = 0;
+#define PAIR(i, j, k) (zz = z[i] * z[j], d += w[k] * zz, e += x[k] * zz)
+    PAIR(0, 0, 0); PAIR(0, 1, 1); PAIR(0, 2, 2); PAIR(0, 3, 3); PAIR(0, 4, 4); PAIR(0, 5, 5);
+    PAIR(1, 1, 6); PAIR(1, 2, 7); PAIR(1, 3, 8); PAIR(1, 4, 9); PAIR(1, 5, 10);
+    PAIR(2, 2, 11); PAIR(2, 3, 12); PAIR(2, 4, 13); PAIR(2, 5, 14);
+    PAIR(3, 3, 15); PAIR(3, 4, 16); PAIR(3, 5, 17);
+    PAIR(4, 4, 18); PAIR(4, 5, 19);
+    PAIR(5, 5, 20);
+#undef PAIR
+    *wd += d;
+    *wi += e;
+}
+
+/* Advance the run's time, state and works over a step taken from z0,
+ * whose end point carries U and U' (u_end, v_end). */
+static void advance_step(rb_solver *sv, const rb_exact_table *tab, const double *z0, double t1,
+                         double u_end, double v_end)
 {
     sv->res->steps++;
     sv->res->exact_steps++;
     sv->res->stage_steps[sv->disc.stage]++;
     sv->res->stage_time_s[sv->disc.stage] += t1 - sv->t;
-    double wd = sv->y[RB_Y_WDAMP] + sv->sys.d.Cstar * quad(tab->gvv, z0);
-    double wi = sv->y[RB_Y_WIN] + sv->sys.d.Nstar * quad(tab->gxv, z0);
+    double wd = sv->y[RB_Y_WDAMP], wi = sv->y[RB_Y_WIN];
+    work_forms(tab, z0, &wd, &wi);
     sv->t = t1;
-    sv->y[RB_Y_U] = p->y[RB_Y_U];
-    sv->y[RB_Y_UD] = p->y[RB_Y_UD];
+    sv->y[RB_Y_U] = u_end;
+    sv->y[RB_Y_UD] = v_end;
     sv->y[RB_Y_WDAMP] = wd;
     sv->y[RB_Y_WIN] = wi;
+}
+
+/* The rates at the end point p of the step just advanced over, and the
+ * guards there (g_end, read by the caller) into g. */
+static void end_rates(rb_solver *sv, const point *p, const double *g_end, double *g, rb_aux *a)
+{
     aux_of(sv, p, a);
     sv->f[RB_Y_U] = p->y[RB_Y_UD];
     sv->f[RB_Y_UD] = p->udd;
@@ -531,38 +552,85 @@ static void finish_step(rb_solver *sv, const rb_exact_table *tab, const double *
     sv->f[RB_Y_WDAMP] = sv->sys.d.Cstar * p->y[RB_Y_UD] * p->y[RB_Y_UD];
     sv->f[RB_Y_WIN] = a->p_input;
     sv->f[RB_Y_WCPL] = a->p_coupling;
-    memcpy(g, g_end, G_COUNT * sizeof *g);
+    if (g)
+        memcpy(g, g_end, G_COUNT * sizeof *g);
 }
 
-/* A quiet step (step_quiet): nothing read inside it but its last two
- * points, which the peaks' windows keep for the next step, with windows
- * that start at them as after a transition: the next step's windows then
- * hold the points a step with check points would have left in them. */
-static int exact_quiet(rb_solver *sv, const rb_exact_table *tab, const rb_floor_line *fl,
-                       const double *z0, double t1, double *g, rb_status *status)
+/* Advance the run over a step taken: the works from their Gramians, the
+ * state, its rates and the guards at the end point p (tracked there by
+ * the caller). */
+static void finish_step(rb_solver *sv, const rb_exact_table *tab, const double *z0,
+                        double t1, const point *p, const double *g_end, double *g, rb_aux *a)
 {
-    const rb_exact_cache *c = &sv->exact;
+    advance_step(sv, tab, z0, t1, p->y[RB_Y_U], p->y[RB_Y_UD]);
+    end_rates(sv, p, g_end, g, a);
+}
+
+/* What a quiet step reads at its end, read once a run of them is over:
+ * its last two points, which the peaks' windows keep for the next step,
+ * with windows that start at them as after a transition (the next step's
+ * windows then hold the points a step with check points would have left
+ * in them); the guards and the rates at its end. The points of the quiet
+ * steps before it move no result: their bounds kept U, the shear, the
+ * friction and anchor demands at or below the running peaks and the
+ * floor's reaction at W, at or above the least (step_quiet), and the
+ * windows each of them would have left are overwritten by the next. */
+void rb_exact_settle(rb_solver *sv, double *g)
+{
+    rb_exact_cache *c = &sv->exact;
+    if (!c->pending)
+        return;
+    c->pending = 0;
+    const rb_exact_table *tab = c->pend_tab;
+    const rb_floor_line fl = {.g0 = c->pend_g0, .slope = c->pend_slope};
     int n = tab->n;
-    double z[ZN], gs[G_COUNT], t0 = sv->t, u[2], H[2];
+    double z[ZN], gs[G_COUNT], u[2], H[2], t0 = c->pend_t0, t1 = sv->t;
     point p[2];
     for (int k = 0; k < 2; k++) {
-        check_state(tab, fl, z0, n - 1 + k, z);
+        check_state(tab, &fl, c->pend_z0, n - 1 + k, z);
         point_at(sv, z, &p[k]);
-        if (!point_finite(&p[k]))
-            return 0;
         /* the shear's form is the reactions' own (linear_forms) */
         u[k] = p[k].y[RB_Y_U];
         H[k] = c->lin0[Q_SHEAR];
         for (int j = 0; j < ZN; j++)
             H[k] += c->lin[Q_SHEAR][j] * z[j];
     }
-    if ((*status = history(sv, t0, sv->y, tab->h, t1)) != RB_OK)
-        return 1;
     rb_guard_eval_x(sv, t1, p[1].y, p[1].x, sv->sys.d.g, gs);
     rb_aux a;
     double tt[2] = {t0 + (t1 - t0) / n * (n - 1), t1};
-    finish_step(sv, tab, z0, t1, &p[1], gs, g, &a);
+    end_rates(sv, &p[1], gs, g, &a);
     rb_track_quiet_points(sv, tt, u, H, p[1].x);
+}
+
+/* A quiet step (step_quiet): it advances the state and the works alone,
+ * and leaves what is read at its end to rb_exact_settle, at once where a
+ * time history is kept (its rows read the rates), else when the run of
+ * quiet steps is over. 0 where the end is not finite (nothing changed). */
+static int exact_quiet(rb_solver *sv, const rb_exact_table *tab, const rb_floor_line *fl,
+                       const double *z0, double t1, double *g, rb_status *status)
+{
+    rb_exact_cache *c = &sv->exact;
+    const double *e = tab->row[tab->n - 1][0], *ed = tab->row[tab->n - 1][1];
+    double u = 0, v = 0, t0 = sv->t;
+    for (int j = 0; j < ZN; j++) {
+        u += e[j] * z0[j];
+        v += ed[j] * z0[j];
+    }
+    if (!isfinite(u) || !isfinite(v))
+        return 0;
+    /* a quiet step before this one leaves nothing to read: this one's end
+     * takes its place */
+    if ((*status = history(sv, t0, sv->y, tab->h, t1)) != RB_OK)
+        return 1;
+    advance_step(sv, tab, z0, t1, u, v);
+    c->pending = 1;
+    c->pend_tab = tab;
+    memcpy(c->pend_z0, z0, sizeof c->pend_z0);
+    c->pend_t0 = t0;
+    c->pend_g0 = fl->g0;
+    c->pend_slope = fl->slope;
+    if (sv->res->history)
+        rb_exact_settle(sv, g);
     return 1;
 }
 
@@ -578,10 +646,21 @@ static int exact_step(rb_solver *sv, double target, double *g, rb_status *status
     double t0 = sv->t, h = rb_step_length(sv, target, &landing);
     if (!(h > 0) || !rb_motion_floor_line(sv->sys.motion, t0, &fl))
         return 0;
-    int n = rb_step_checks(sv, h);
-    const rb_exact_table *tab = table_for(sv, h, n);
-    if (!tab)
-        return 0;
+    /* a run's steps are mostly of one length, looked up once */
+    rb_exact_cache *c = &sv->exact;
+    int n;
+    const rb_exact_table *tab;
+    if (c->last_tab && h == c->last_h) {
+        n = c->last_n;
+        tab = c->last_tab;
+    } else {
+        n = rb_step_checks(sv, h);
+        if (!(tab = table_for(sv, h, n)))
+            return 0;
+        c->last_h = h;
+        c->last_n = n;
+        c->last_tab = tab;
+    }
     double t1 = landing ? target : t0 + h;
     double z0[ZN] = {sv->y[RB_Y_U], sv->y[RB_Y_UD], fl.u, fl.v, fl.g0, fl.slope};
     point p[RB_SUB_MAX + 1];
@@ -590,8 +669,9 @@ static int exact_step(rb_solver *sv, double target, double *g, rb_status *status
     unsigned mask = rb_guard_mask(sv);
     double dt_guard = h / n, dt_track = (t1 - t0) / n;
 
-    if (step_quiet(sv, tab, z0))
-        return exact_quiet(sv, tab, &fl, z0, t1, g, status);
+    if (step_quiet(sv, tab, z0) && exact_quiet(sv, tab, &fl, z0, t1, g, status))
+        return 1;
+    rb_exact_settle(sv, g);
 
     /* the start as the step before left it */
     point_at(sv, z0, &p[0]);
@@ -645,7 +725,11 @@ static rb_step_outcome exact_apply(rb_solver *sv, double target, double h, rb_rk
 {
     (void)h;
     (void)st;
-    return exact_step(sv, target, g, status) ? RB_STEP_ADVANCED : RB_STEP_DECLINED;
+    if (exact_step(sv, target, g, status))
+        return RB_STEP_ADVANCED;
+    /* the next stepper reads the guards, the rates and the tracking */
+    rb_exact_settle(sv, g);
+    return RB_STEP_DECLINED;
 }
 
 const rb_stepper rb_stepper_exact = {"exact", exact_apply, NULL};

@@ -25,6 +25,13 @@
  * the building and the run's constants. */
 void rb_exact_setup(rb_solver *sv);
 
+/* A run of quiet steps (exact.c, "Bounds over a step") reads nothing at
+ * the steps' ends but the state and the works: what the guards, the rates
+ * and the tracking read of the last one's end is read here, when anything
+ * else is to read them (the next step that is not quiet, a Taylor step,
+ * the end of the run). g, where not NULL, takes the guards at that end. */
+void rb_exact_settle(rb_solver *sv, double *g);
+
 /* The exact step is a stepper (stepper.h): rb_stepper_exact, which
  * declines a step it cannot take (a root inside, a length it keeps no
  * table for), for the Taylor step to take. */

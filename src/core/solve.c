@@ -717,6 +717,8 @@ rb_status rb_solve_run(const rb_model *model, const rb_motion *motion,
     rb_status s = rb_solver_setup(&sv, model, motion, opts, out, diag);
     if (s == RB_OK)
         s = run(&sv, diag);
+    /* what the last of a run of quiet exact steps leaves to be read */
+    rb_exact_settle(&sv, NULL);
     if (s == RB_OK && sv.res->history && sv.res->history->n
         && sv.res->history->t[sv.res->history->n - 1] < sv.t)
         s = rb_history_push(&sv, sv.t, sv.y);

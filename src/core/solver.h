@@ -78,6 +78,10 @@ typedef struct {
     int n;
     double row[RB_SUB_MAX][4][RB_EXACT_DIM];
     double gvv[RB_EXACT_DIM][RB_EXACT_DIM], gxv[RB_EXACT_DIM][RB_EXACT_DIM];
+    /* the damping and input works over the step as symmetric quadratic
+     * forms of its start state, their coefficients (C* gvv, N* gxv) packed
+     * by pairs i <= j */
+    double work[2][RB_EXACT_DIM * (RB_EXACT_DIM + 1) / 2];
     /* bound[q][j]: the largest |row j| over the step of quantity q's row
      * (exact.c, "Bounds over a step"); bounded 0 where none was proved */
     int bounded;
@@ -96,6 +100,16 @@ typedef struct {
     int n_tab;
     double seen[RB_EXACT_TABLES];         /* step lengths met once */
     int n_seen;
+    /* the last quiet step, whose end the guards, the rates and the
+     * tracking have not read yet (exact.c, rb_exact_settle): its table,
+     * start state, start time and the floor line's g0 and slope */
+    int pending;
+    const rb_exact_table *pend_tab;
+    /* the last step length looked up, with its check points and table */
+    double last_h;
+    int last_n;
+    const rb_exact_table *last_tab;
+    double pend_z0[RB_EXACT_DIM], pend_t0, pend_g0, pend_slope;
 } rb_exact_cache;
 
 typedef struct {

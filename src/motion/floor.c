@@ -159,6 +159,19 @@ int rb_series_floor_line(const rb_series *s, double t0, rb_floor_line *fl)
         fl->u = fl->v = fl->omega = fl->xi = 0.0;
         return 1;
     }
+    const rb_series_building *b = &s->bld;
+    if (tau == 0.0) {
+        /* a step from a sample (nearly every step): the building's state
+         * is the table's, and no free vibration is formed */
+        double slope = (b->ground_mps2[i + 1] - b->ground_mps2[i]) / s->dt_s;
+        fl->slope = slope;
+        fl->g0 = b->ground_mps2[i] + slope * tau;
+        fl->omega = b->omega_rps;
+        fl->xi = b->xi;
+        fl->u = b->u_m[i];
+        fl->v = b->v_mps[i];
+        return 1;
+    }
     segment g;
     segment_at(s, (size_t)i, &g);
     double w2 = g.w * g.w;
@@ -166,11 +179,6 @@ int rb_series_floor_line(const rb_series *s, double t0, rb_floor_line *fl)
     fl->g0 = g.g0 + g.slope * tau;
     fl->omega = g.w;
     fl->xi = g.xi;
-    if (tau == 0.0) {
-        fl->u = s->bld.u_m[i];
-        fl->v = s->bld.v_mps[i];
-        return 1;
-    }
     /* the free vibration plus the particular solution of the line */
     double uh, vh;
     free_state(&g, tau, &uh, &vh);
