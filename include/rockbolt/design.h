@@ -232,6 +232,12 @@ rb_status rb_gap_recommend(const rb_model *model, const rb_motion *motion,
                            const rb_solve_opts *opts, const rb_criteria *criteria,
                            const rb_design_opts *design, int n_threads,
                            rb_gap_result *out, rb_diag *diag);
+/* The same through memo (NULL: every run solved), shared with the design
+ * factors of the same motion; the result is the same bit for bit. */
+rb_status rb_gap_recommend_memo(const rb_model *model, const rb_motion *motion,
+                                const rb_solve_opts *opts, const rb_criteria *criteria,
+                                const rb_design_opts *design, int n_threads,
+                                rb_design_memo *memo, rb_gap_result *out, rb_diag *diag);
 
 /* One English sentence: the recommended gap ratio and the range it holds
  * over, or "no gap ratio in [min, max] meets the criteria". */

@@ -56,7 +56,19 @@ typedef struct {
  * included). */
 int rb_design_memo_get(rb_design_memo *m, const rb_model *model, const rb_motion *motion,
                        const rb_solve_opts *opts, rb_status *status, rb_result *r);
-/* Keep a run's summary (a result with a history is not kept). */
+/* A run the memo holds (HIT: status and r filled, waiting first for a run
+ * another thread has claimed), or CLAIMED: the caller solves it and must
+ * settle the claim with rb_design_memo_put (or _release), since others
+ * wait for it; SOLVE: solve it (memo NULL, or one that cannot grow). */
+typedef enum { RB_MEMO_SOLVE, RB_MEMO_CLAIMED, RB_MEMO_HIT } rb_design_memo_claim;
+rb_design_memo_claim rb_design_memo_take(rb_design_memo *m, const rb_model *model,
+                                         const rb_motion *motion, const rb_solve_opts *opts,
+                                         rb_status *status, rb_result *r);
+/* Give up a claim without a run to keep: a waiting thread solves it. */
+void rb_design_memo_release(rb_design_memo *m, const rb_model *model,
+                            const rb_motion *motion, const rb_solve_opts *opts);
+/* Keep a run's summary, settling a claim on it (a result with a history
+ * is not kept). */
 void rb_design_memo_put(rb_design_memo *m, const rb_model *model, const rb_motion *motion,
                         const rb_solve_opts *opts, rb_status status, const rb_result *r);
 

@@ -106,7 +106,7 @@ static rb_status solve_memo(void *vctx, const rb_model *model, const rb_motion *
 {
     const rb_design_ctx *ctx = vctx;
     rb_status st;
-    if (rb_design_memo_get(ctx->memo, model, motion, opts, &st, out))
+    if (rb_design_memo_take(ctx->memo, model, motion, opts, &st, out) == RB_MEMO_HIT)
         return st;
     st = rb_solve_run(model, motion, opts, out, NULL);
     /* no history was asked for, but free whatever the result might own */

@@ -136,6 +136,15 @@ rb_status rb_gap_recommend(const rb_model *model, const rb_motion *motion,
                            const rb_design_opts *design, int n_threads,
                            rb_gap_result *out, rb_diag *diag)
 {
+    return rb_gap_recommend_memo(model, motion, opts, criteria, design, n_threads, NULL,
+                                 out, diag);
+}
+
+rb_status rb_gap_recommend_memo(const rb_model *model, const rb_motion *motion,
+                                const rb_solve_opts *opts, const rb_criteria *criteria,
+                                const rb_design_opts *design, int n_threads,
+                                rb_design_memo *memo, rb_gap_result *out, rb_diag *diag)
+{
     rb_design_ctx ctx;
     rb_status st;
     memset(out, 0, sizeof *out);
@@ -145,6 +154,10 @@ rb_status rb_gap_recommend(const rb_model *model, const rb_motion *motion,
     if ((st = check_grid(design, model, diag)) != RB_OK
         || (st = rb_design_ctx_init(&ctx, model, motion, opts, criteria, diag)) != RB_OK)
         return st;
+    /* the case's own gap at the motion's own level is a run the design
+     * factors' scan may have made (and the yielding run too, for bolts
+     * that yield anyway) */
+    ctx.memo = memo;
     /* the range: gap_ratio_max, or max_gap over the lever arm where that is
      * less, but never below gap_ratio_min */
     double top = design->gap_ratio_max;

@@ -46,11 +46,12 @@ static void step(progress *p, const char *motion, const char *what)
     pthread_mutex_unlock(&p->lock);
 }
 
-/* The searches of one motion, as three jobs that may run at once: the
- * two design factors (the second finds most of the first's runs in the
- * memo), the recommended gap (runs of other gaps, nothing to share), and
- * the amplitude sweeps. Each writes its own fields of md and its own diag;
- * their results do not depend on which runs first. */
+/* The searches of one motion, as jobs that may run at once: the design
+ * factor of each criterion kind, the recommended gap and the amplitude
+ * sweeps. They share one memo that waits for a run another search is
+ * solving rather than solve it twice, so the factors run side by side
+ * over the scan levels they share. Each writes its own fields of md and
+ * its own diag; their results do not depend on which runs first. */
 typedef struct {
     const rb_case *c;
     const rb_case_motion *cm;
@@ -61,31 +62,28 @@ typedef struct {
     rb_design_memo *memo;
     rb_motion_design *md;
     progress *pg;
-    rb_diag diag[3];
+    rb_diag diag[RB_N_CRITERIA + 2];
 } searches;
 
-enum { JOB_FACTORS, JOB_GAP, JOB_SWEEPS, N_JOBS };
+/* jobs 0 to RB_N_CRITERIA - 1: the factor of that kind */
+enum { JOB_GAP = RB_N_CRITERIA, JOB_SWEEPS, N_JOBS };
 
-/* The factor of each criterion kind (the case's own only, for the brief
- * design of a batch), each under its kind's criteria. */
-static rb_status factors(searches *s, rb_diag *diag)
+/* The factor of criterion kind k (the case's own only, for the brief
+ * design of a batch), under its kind's criteria. */
+static rb_status factor(searches *s, int k, rb_diag *diag)
 {
     const rb_case *c = s->c;
-    for (int k = 0; k < RB_N_CRITERIA; k++) {
-        char what[64], words[40];
-        if (!s->full && (int)c->criteria.kind != k)
-            continue;
-        /* "design factor (no yield)": the kind's name in words */
-        snprintf(what, sizeof what, "design factor (%s)",
-                 rb_enum_str_sep(rb_criterion_names, k, ' ', words, sizeof words));
-        step(s->pg, s->cm->name, what);
-        rb_status st = rb_design_factor(&c->model, &s->cm->motion, &c->solve,
-                                        &s->cd->factor_criteria[k], &c->design, s->n_threads,
-                                        s->memo, &s->md->factor[k], diag);
-        if (st != RB_OK)
-            return fail_at(diag, s->cm->name, what, st);
-    }
-    return RB_OK;
+    char what[64], words[40];
+    if (!s->full && (int)c->criteria.kind != k)
+        return RB_OK;
+    /* "design factor (no yield)": the kind's name in words */
+    snprintf(what, sizeof what, "design factor (%s)",
+             rb_enum_str_sep(rb_criterion_names, k, ' ', words, sizeof words));
+    step(s->pg, s->cm->name, what);
+    rb_status st = rb_design_factor(&c->model, &s->cm->motion, &c->solve,
+                                    &s->cd->factor_criteria[k], &c->design, s->n_threads,
+                                    s->memo, &s->md->factor[k], diag);
+    return st == RB_OK ? st : fail_at(diag, s->cm->name, what, st);
 }
 
 static rb_status gap(searches *s, rb_diag *diag)
@@ -94,9 +92,9 @@ static rb_status gap(searches *s, rb_diag *diag)
     if (c->model.bolt_model == RB_BOLT_NONE)
         return RB_OK;
     step(s->pg, s->cm->name, "recommended gap");
-    rb_status st = rb_gap_recommend(&c->model, &s->cm->motion, &c->solve,
-                                    &s->cd->gap_criteria, &c->design, s->n_threads,
-                                    &s->md->gap, diag);
+    rb_status st = rb_gap_recommend_memo(&c->model, &s->cm->motion, &c->solve,
+                                         &s->cd->gap_criteria, &c->design, s->n_threads,
+                                         s->memo, &s->md->gap, diag);
     s->md->has_gap = st == RB_OK;
     return st == RB_OK ? st : fail_at(diag, s->cm->name, "recommended gap", st);
 }
@@ -127,11 +125,9 @@ static rb_status search_job(void *v, size_t i)
 {
     searches *s = v;
     rb_diag_clear(&s->diag[i]);
-    switch (i) {
-    case JOB_FACTORS: return factors(s, &s->diag[i]);
-    case JOB_GAP: return gap(s, &s->diag[i]);
-    default: return amplitude_sweeps(s, &s->diag[i]);
-    }
+    if (i < JOB_GAP)
+        return factor(s, (int)i, &s->diag[i]);
+    return i == JOB_GAP ? gap(s, &s->diag[i]) : amplitude_sweeps(s, &s->diag[i]);
 }
 
 static rb_status design_searches(const rb_case *c, const rb_case_motion *cm,
@@ -234,6 +230,29 @@ const rb_design_factor_result *rb_run_own_factor(const rb_case *c,
     return &md->factor[c->criteria.kind];
 }
 
+/* The design's two independent parts: every motion's searches, and the
+ * frequency sweeps (which use no motion), each with its own diag. */
+typedef struct {
+    const rb_case *c;
+    int n_threads;
+    rb_case_design *out;
+    progress *pg;
+    rb_diag diag[2];
+} design_parts;
+
+static rb_status part_job(void *v, size_t i)
+{
+    design_parts *d = v;
+    rb_status st = RB_OK;
+    rb_diag_clear(&d->diag[i]);
+    if (i == 1)
+        return design_sweeps(d->c, d->n_threads, d->out, &d->diag[i], d->pg);
+    for (size_t m = 0; m < d->c->n_motions && st == RB_OK; m++)
+        st = design_motion(d->c, &d->c->motions[m], RB_RUN_DESIGN_FULL, d->n_threads, d->out,
+                           &d->out->motions[m], &d->diag[i], d->pg);
+    return st;
+}
+
 rb_status rb_run_design(const rb_case *c, int n_threads, rb_case_design *out,
                         rb_diag *diag, rb_design_progress_fn fn, void *ctx)
 {
@@ -251,11 +270,20 @@ rb_status rb_run_design(const rb_case *c, int n_threads, rb_case_design *out,
     if (!(out->motions = calloc(c->n_motions ? c->n_motions : 1, sizeof *out->motions)))
         return RB_ERR_NOMEM;
     out->n_motions = c->n_motions;
-    for (i = 0; i < c->n_motions && st == RB_OK; i++)
-        st = design_motion(c, &c->motions[i], RB_RUN_DESIGN_FULL, n_threads, out,
-                           &out->motions[i], diag, &pg);
-    if (st == RB_OK)
-        st = design_sweeps(c, n_threads, out, diag, &pg);
+    /* the frequency sweeps side by side with the motions' searches: a
+     * search's bisection is a chain of runs, one after another, and the
+     * sweep's independent points fill the cores it leaves idle (each
+     * part is given every thread; with one, they run in this order) */
+    int nt = n_threads > 0 ? n_threads : rb_pool_threads_default();
+    design_parts parts = {.c = c, .n_threads = n_threads, .out = out, .pg = &pg};
+    rb_status sts[2];
+    st = rb_pool_map(n_freq ? 2 : 1, nt > 1 ? 2 : 1, part_job, &parts, sts);
+    for (i = 0; i < (n_freq ? 2u : 1u) && st == RB_OK; i++)
+        if (sts[i] != RB_OK) {
+            st = sts[i];
+            if (diag)
+                *diag = parts.diag[i];
+        }
     if (st == RB_OK && c->has_code) {
         step(&pg, NULL, "code-static comparison");
         st = rb_code_static(&c->model, &c->code, &out->code, diag);
