@@ -7,6 +7,7 @@
  * numbers with 1, 2 and 3 threads; the sweep writers. */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
@@ -16,6 +17,7 @@
 #include "rockbolt/design.h"
 #include "rockbolt/report.h"
 #include "rockbolt/record.h"
+#include "design/design_internal.h"
 
 /* ---- Rigid block, triangular-decreasing pulse, p t1 = 7 ------------------ */
 
@@ -597,8 +599,80 @@ static void amplitude_sweep_block(void)
     rb_sweep_free(&s);
 }
 
+/* A run claimed by one search is waited for by another that asks for it,
+ * which then gets the claimer's result, not a solve of its own; a claim
+ * given up passes to the one waiting. */
+typedef struct {
+    rb_design_memo *memo;
+    const rb_model *m;
+    const rb_motion *mo;
+    const rb_solve_opts *o;
+    rb_design_memo_claim got;
+    rb_status st;
+    rb_result r;
+} memo_asker;
+
+static void *memo_ask(void *v)
+{
+    memo_asker *a = v;
+    a->got = rb_design_memo_take(a->memo, a->m, a->mo, a->o, &a->st, &a->r);
+    return NULL;
+}
+
+static void memo_claims_wait(void)
+{
+    rb_model m;
+    rb_motion mo;
+    rb_solve_opts o;
+    rb_model_init(&m);
+    rb_motion_init(&mo);
+    rb_solve_opts_init(&o);
+    mo.kind = RB_MOTION_HARMONIC;
+    mo.amplitude_mps2 = 3;
+    mo.freq_hz = 2;
+    rb_design_memo *memo = rb_design_memo_new();
+    CHECK(memo != NULL);
+    rb_status st;
+    rb_result r, kept;
+    memset(&kept, 0, sizeof kept);
+    kept.max_theta_over_alpha = 0.25;
+    kept.usage[1] = 0.5;
+    CHECK(rb_design_memo_take(memo, &m, &mo, &o, &st, &r) == RB_MEMO_CLAIMED);
+    memo_asker a;
+    memset(&a, 0, sizeof a);
+    a.memo = memo;
+    a.m = &m;
+    a.mo = &mo;
+    a.o = &o;
+    pthread_t t;
+    CHECK(pthread_create(&t, NULL, memo_ask, &a) == 0);
+    usleep(50000);
+    /* still waiting: nothing is held yet */
+    CHECK(rb_design_memo_runs(memo) == 0);
+    rb_design_memo_put(memo, &m, &mo, &o, RB_ERR_LIMIT, &kept);
+    pthread_join(t, NULL);
+    CHECK(a.got == RB_MEMO_HIT && a.st == RB_ERR_LIMIT);
+    CHECK(a.r.max_theta_over_alpha == 0.25 && a.r.usage[1] == 0.5);
+    CHECK(rb_design_memo_runs(memo) == 1);
+
+    /* another run: claimed, then given up, so the waiter claims it */
+    mo.freq_hz = 3;
+    CHECK(rb_design_memo_take(memo, &m, &mo, &o, &st, &r) == RB_MEMO_CLAIMED);
+    a.got = RB_MEMO_SOLVE;
+    CHECK(pthread_create(&t, NULL, memo_ask, &a) == 0);
+    usleep(50000);
+    rb_design_memo_release(memo, &m, &mo, &o);
+    pthread_join(t, NULL);
+    CHECK(a.got == RB_MEMO_CLAIMED);
+    rb_design_memo_put(memo, &m, &mo, &o, RB_OK, &kept);
+    CHECK(rb_design_memo_take(memo, &m, &mo, &o, &st, &r) == RB_MEMO_HIT && st == RB_OK);
+    CHECK(rb_design_memo_runs(memo) == 2);
+    rb_design_memo_free(memo);
+}
+
 int main(void)
 {
+    memo_claims_wait();
     factor_finds_overturn_threshold();
     factor_finds_uplift_level();
     factor_finds_static_yield();
