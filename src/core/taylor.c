@@ -243,82 +243,83 @@ static double still_order(const consts *K, const series *s, int k)
     return (QU - K->Ks * s->U[k] - K->Cs * s->V[k]) * K->inv_Ms;
 }
 
-/* The work integrals' series to order n: these do not feed back into the
- * motion, so they are formed once the state is known. w[k][0..2] = damping,
+/* The work integrals' series, one order at a time: these do not feed back
+ * into the motion, so order k + 1 is formed as soon as the motion's order
+ * k is (inside the order loop, one pass per order). w[k][0..2] = damping,
  * input, coupling. */
-static void work_series(const consts *K, const series *s, int rocking, int n,
-                        double (*w)[3])
-{
+enum { WV, WC, WF, WL };
+typedef struct {
     /* U' side by side with what it multiplies: itself (damping), cos theta
      * (input) and the coupling factor N* (g sin - b theta'^2) per unit U',
      * so one pass of independent lanes forms the three products */
-    enum { WV, WC, WF, WL };
     double P[NT][WL + 1], G[NT];
-    for (int k = 0; k < n; k++) {
-        P[k][WV] = s->V[k];
-        P[k][WC] = C_(s, k);
-        if (K->vert) /* the still stages' angle is constant, G is not */
-            P[k][WF] = K->Ns * ((K->small ? times_g(s->T, 1, s, k)
-                                          : times_g(&s->CSO[0][LS], LANES + 1, s, k))
-                                - (rocking ? K->b * s->Q[k] : 0));
-        else
-            P[k][WF] = K->Ns * (K->g * (K->small ? s->T[k] : S_(s, k))
-                                - (rocking ? K->b * s->Q[k] : 0));
-        P[k][WL] = 0;
-    }
     /* the vertical floor's power -z'' dH/dt (dynamics.c's vertical_power):
      * dH/dt is M (b cos + h sin)' rocking (large), M R (alpha - theta)
      * theta' (small), 0 with the plate still */
-    double DH[NT] = {0};
-    if (K->vert && rocking)
-        for (int k = 0; k < n; k++) {
-            if (K->small) {
-                double to = 0;
-                for (int j = 0; j <= k; j++)
-                    to += s->T[j] * O_(s, k - j);
-                DH[k] = K->M * K->R * (K->alpha * O_(s, k) - to);
-            } else
-                DH[k] = K->M * (k + 1) * (K->b * S_(s, k + 1) + K->h * C_(s, k + 1));
-        }
-    for (int k = 0; k < n; k++) {
-        double acc[WL + 1] = {0};
-        if (rocking) {
+    double DH[NT];
+} work_rows;
+
+static void work_order(const consts *K, const series *s, int rocking, int k, work_rows *r,
+                       double (*w)[3])
+{
+    double *P = r->P[k];
+    P[WV] = s->V[k];
+    P[WC] = C_(s, k);
+    if (K->vert) /* the still stages' angle is constant, G is not */
+        P[WF] = K->Ns * ((K->small ? times_g(s->T, 1, s, k)
+                                   : times_g(&s->CSO[0][LS], LANES + 1, s, k))
+                         - (rocking ? K->b * s->Q[k] : 0));
+    else
+        P[WF] = K->Ns * (K->g * (K->small ? s->T[k] : S_(s, k))
+                         - (rocking ? K->b * s->Q[k] : 0));
+    P[WL] = 0;
+    if (K->vert && rocking) {
+        if (K->small) {
+            double to = 0;
             for (int j = 0; j <= k; j++)
-                for (int i = 0; i <= WL; i++)
-                    acc[i] += s->V[j] * P[k - j][i];
-        } else {
-            /* the still stages' angle and its factors are constants */
-            double vv = 0;
-            for (int j = 0; j <= k; j++)
-                vv += s->V[j] * s->V[k - j];
-            acc[WV] = vv;
-            acc[WC] = s->V[k] * P[0][WC];
-            if (K->vert) {
-                double f = 0;
-                for (int j = 0; j <= k; j++)
-                    f += s->V[j] * P[k - j][WF];
-                acc[WF] = f;
-            } else
-                acc[WF] = s->V[k] * P[0][WF];
-        }
-        /* input power per unit floor acceleration: N* cos U' + M (h cos +
-         * b sin) theta'; the second is the derivative of M (h sin - b cos) */
-        if (K->small)
-            G[k] = K->Ns * s->V[k] + (rocking ? K->M * K->R * O_(s, k) : 0);
-        else
-            G[k] = K->Ns * acc[WC]
-                   + (rocking ? K->M * (k + 1) * (K->h * S_(s, k + 1) - K->b * C_(s, k + 1))
-                              : 0);
-        w[k + 1][0] = K->Cs * acc[WV] * inv[k + 1];
-        if (K->vert) {
-            double pv = 0;
-            for (int j = 0; j <= k; j++)
-                pv += s->Z[j] * DH[k - j];
-            w[k + 1][1] = (times_x(G, 1, s, k) - pv) * inv[k + 1];
+                to += s->T[j] * O_(s, k - j);
+            r->DH[k] = K->M * K->R * (K->alpha * O_(s, k) - to);
         } else
-            w[k + 1][1] = times_x(G, 1, s, k) * inv[k + 1];
-        w[k + 1][2] = acc[WF] * inv[k + 1];
+            r->DH[k] = K->M * (k + 1) * (K->b * S_(s, k + 1) + K->h * C_(s, k + 1));
+    } else
+        r->DH[k] = 0;
+    double acc[WL + 1] = {0};
+    if (rocking) {
+        for (int j = 0; j <= k; j++)
+            for (int i = 0; i <= WL; i++)
+                acc[i] += s->V[j] * r->P[k - j][i];
+    } else {
+        /* the still stages' angle and its factors are constants */
+        double vv = 0;
+        for (int j = 0; j <= k; j++)
+            vv += s->V[j] * s->V[k - j];
+        acc[WV] = vv;
+        acc[WC] = s->V[k] * r->P[0][WC];
+        if (K->vert) {
+            double f = 0;
+            for (int j = 0; j <= k; j++)
+                f += s->V[j] * r->P[k - j][WF];
+            acc[WF] = f;
+        } else
+            acc[WF] = s->V[k] * r->P[0][WF];
     }
+    /* input power per unit floor acceleration: N* cos U' + M (h cos +
+     * b sin) theta'; the second is the derivative of M (h sin - b cos) */
+    if (K->small)
+        r->G[k] = K->Ns * s->V[k] + (rocking ? K->M * K->R * O_(s, k) : 0);
+    else
+        r->G[k] = K->Ns * acc[WC]
+                  + (rocking ? K->M * (k + 1) * (K->h * S_(s, k + 1) - K->b * C_(s, k + 1))
+                             : 0);
+    w[k + 1][0] = K->Cs * acc[WV] * inv[k + 1];
+    if (K->vert) {
+        double pv = 0;
+        for (int j = 0; j <= k; j++)
+            pv += s->Z[j] * r->DH[k - j];
+        w[k + 1][1] = (times_x(r->G, 1, s, k) - pv) * inv[k + 1];
+    } else
+        w[k + 1][1] = times_x(r->G, 1, s, k) * inv[k + 1];
+    w[k + 1][2] = acc[WF] * inv[k + 1];
 }
 
 /* Largest scaled size of the order-k coefficients over a step of hk = h^k.
@@ -400,6 +401,8 @@ double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double
     double tol_x = 1 / (atol_x + rtol * fabs(s.X[0]));
 
     double h = h_want, hk = 1, e_prev = HUGE_VAL;
+    double w[NT][3];
+    work_rows wr;
     int n = 0;
     for (int k = 0;; k++) {
         double udd, thdd = 0;
@@ -417,6 +420,7 @@ double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double
         s.T[k + 1] = rocking ? O_(&s, k) * inv[k + 1] : 0;
         O_(&s, k + 1) = thdd * inv[k + 1];
         s.CSO[k + 1][LANES] = 0;
+        work_order(&K, &s, rocking, k, &wr, w);
         n = k + 1;
         hk *= h;
         double e = scaled(&s, n, hk, tol, tol_x);
@@ -434,8 +438,6 @@ double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double
         }
         e_prev = e;
     }
-    double w[NT][3];
-    work_series(&K, &s, rocking, n, w);
     w[0][0] = y0[RB_Y_WDAMP];
     w[0][1] = y0[RB_Y_WIN];
     w[0][2] = y0[RB_Y_WCPL];
