@@ -148,19 +148,35 @@ rb_status rb_design_uplift_level(const rb_model *model, const rb_motion *motion,
                                  const rb_solve_opts *opts, rb_design_memo *memo,
                                  double *level_mps2, rb_diag *diag);
 
-/* rb_design_factor where the caller has shown that no level below
- * near_astar (> 0, in A*) fails, and expects the failing levels to start
- * near it: once the scan has its bracket, near_astar - resolution / 2 is
- * taken as a pass without a run, the levels 1, 2, 4, ... resolutions above
- * that are run until one fails, and the bisection goes on from the
- * bracket they leave. The result is the search's own (a failing level at
- * most resolution above a pass) provided the caller's bound holds; where
- * the failing levels do start there, it is reached in one or two runs.
- * 0: rb_design_factor. */
+/* What a caller knows or asks of a search beyond rb_design_factor's:
+ * near_astar (> 0, in A*): no level below it fails, and the failing
+ * levels are expected to start near it; once the scan has its bracket,
+ * near_astar - resolution / 2 is taken as a pass without a run, the levels
+ * 1, 2, 4, ... resolutions above that are run until one fails, and the
+ * bisection goes on from the bracket they leave (the result is the
+ * search's own, a failing level at most resolution above a pass, provided
+ * the caller's bound holds; where the failing levels do start there, it is
+ * reached in one or two runs). 0: no such bound.
+ * secant 1: before the bisection, where the criteria give a margin that is
+ * continuous in the level (the usage of no-break with the bolts
+ * stretching on; the largest row force over Fy of no-yield before a
+ * yield), a run half a resolution either side of where the margin's
+ * secant crosses 0: a bracket one resolution wide in two runs where the
+ * margin is near linear; the bisection goes on from whatever bracket they
+ * leave. The result is a failing level within the resolution above a
+ * pass either way; it can differ from the bisection's by up to the
+ * resolution, or more where the response crosses more than once inside
+ * the scan's bracket. */
+typedef struct {
+    double near_astar;
+    int secant;
+} rb_design_hints;
+
+/* rb_design_factor with hints (NULL: none, rb_design_factor itself). */
 rb_status rb_design_factor_near(const rb_model *model, const rb_motion *motion,
                                 const rb_solve_opts *opts, const rb_criteria *criteria,
                                 const rb_design_opts *design, int n_threads,
-                                rb_design_memo *memo, double near_astar,
+                                rb_design_memo *memo, const rb_design_hints *hints,
                                 rb_design_factor_result *out, rb_diag *diag);
 
 /* One English sentence for reports, e.g. "design factor 4.13: meets the

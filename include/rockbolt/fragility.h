@@ -118,6 +118,9 @@ typedef struct {
      * the one of them that governs (rb_fragility_governing; -1: none) */
     unsigned judged;
     int governing;
+    /* the limit states whose capacities are confirmed at tighter
+     * tolerances: the governing state's (rb_run_fragility) */
+    unsigned confirmed;
     rb_fragility_intensity intensity;
     double im_freq_hz, im_damping;  /* RB_IM_SA: where Sa is taken */
     double level_mps2;              /* the case's own level: motion 1's

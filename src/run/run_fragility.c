@@ -21,8 +21,8 @@
 /* The judge's criteria and the solver options under which a run fails
  * exactly when limit state k is reached (or a worse state: a yield comes
  * before any usage, a row that breaks before it overturns is stretched on). */
-static void limit_criteria(const rb_case *c, rb_limit_state k, rb_criteria *cr,
-                           rb_solve_opts *so)
+static void limit_criteria(const rb_case *c, rb_limit_state k, int confirm,
+                           rb_criteria *cr, rb_solve_opts *so)
 {
     rb_criteria_init(cr);
     *so = c->solve;
@@ -68,9 +68,9 @@ static void limit_criteria(const rb_case *c, rb_limit_state k, rb_criteria *cr,
         break;
     }
     /* A capacity is a point of a fitted curve, not a verdict: it is
-     * confirmed at tighter tolerances only for the limit states the case's
-     * own verdict fails on, among which the governing state is chosen. */
-    if (!((rb_run_fragility_judged(c) >> k) & 1u))
+     * confirmed at tighter tolerances only where it signs one, as the
+     * governing state's (rb_run_fragility) */
+    if (!confirm)
         cr->confirm = RB_CONFIRM_OFF;
 }
 
@@ -105,7 +105,7 @@ size_t rb_run_fragility_searches(const rb_case *c)
     return n * c->n_motions;
 }
 
-static rb_status search(const rb_case *c, size_t m, rb_limit_state k, int n_threads,
+static rb_status search(const rb_case *c, size_t m, rb_limit_state k, int confirm,
                         double a_star_mps2, rb_design_memo *memo, rb_motion_fragility *out,
                         rb_diag *diag)
 {
@@ -113,8 +113,10 @@ static rb_status search(const rb_case *c, size_t m, rb_limit_state k, int n_thre
     rb_solve_opts so;
     rb_design_factor_result f;
     rb_design_opts grid = c->design;
-    limit_criteria(c, k, &cr, &so);
-    double near_astar = 0;
+    limit_criteria(c, k, confirm, &cr, &so);
+    /* the bracket narrowed by the margin's secant where the criteria give
+     * one (usage, first yield: docs/fragility.md, "Fewer runs") */
+    rb_design_hints hints = {0, 1};
     rb_status st = RB_OK;
     if (k == RB_LIMIT_LIFT_OFF) {
         /* the base cannot leave the floor below the level at which it first
@@ -124,11 +126,11 @@ static rb_status search(const rb_case *c, size_t m, rb_limit_state k, int n_thre
             grid.resolution = RB_LIFT_OFF_RESOLUTION;
         st = rb_design_uplift_level(&c->model, &c->motions[m].motion, &so, memo,
                                     &uplift_mps2, diag);
-        near_astar = uplift_mps2 / a_star_mps2;
+        hints.near_astar = uplift_mps2 / a_star_mps2;
     }
     if (st == RB_OK)
         st = rb_design_factor_near(&c->model, &c->motions[m].motion, &so, &cr, &grid,
-                                   n_threads, memo, near_astar, &f, diag);
+                                   1, memo, &hints, &f, diag);
     if (st != RB_OK) {
         char key[sizeof diag->key];
         snprintf(key, sizeof key, "motion '%.60s': %s", c->motions[m].name ?
@@ -138,7 +140,7 @@ static rb_status search(const rb_case *c, size_t m, rb_limit_state k, int n_thre
     }
     out->censored[k] = f.no_failure;
     out->capacity_mps2[k] = f.no_failure ? f.level_mps2 : f.fail_mps2;
-    out->runs += f.runs;
+    out->runs = f.runs;
     return RB_OK;
 }
 
@@ -155,6 +157,9 @@ typedef struct {
      * the same levels */
     rb_design_memo *memo;
     rb_limit_state order[RB_N_LIMITS]; /* the case's limit states, longest first */
+    int confirming;             /* -1, or the state whose searches confirm */
+    long *runs;                 /* per motion and limit state: the runs its
+                                   search read (its last search's) */
 } job_ctx;
 
 /* The limit states in the order their searches are handed out: the
@@ -170,23 +175,38 @@ static rb_status job(void *arg, size_t i)
 {
     job_ctx *jc = arg;
     size_t n = jc->out->n_motions, m = i % n;
-    int k = (int)jc->order[i / n];
+    int k = jc->confirming >= 0 ? jc->confirming : (int)jc->order[i / n];
     rb_motion_fragility one = {{0}, {0}, 0, 1.0};
     rb_diag_clear(&jc->diags[i]);
-    rb_status st = search(jc->c, m, (rb_limit_state)k, 1, jc->out->a_star_mps2, jc->memo,
-                          &one, &jc->diags[i]);
+    rb_status st = search(jc->c, m, (rb_limit_state)k, jc->confirming >= 0,
+                          jc->out->a_star_mps2, jc->memo, &one, &jc->diags[i]);
     pthread_mutex_lock(&jc->lock);
     rb_motion_fragility *slot = &jc->out->motions[m];
     slot->capacity_mps2[k] = one.capacity_mps2[k];
     slot->censored[k] = one.censored[k];
-    slot->runs += one.runs;
-    if (jc->progress) {
+    jc->runs[m * RB_N_LIMITS + (size_t)k] = one.runs;
+    if (jc->progress && jc->confirming < 0) {
         char what[160];
         snprintf(what, sizeof what, "motion '%.100s': %s", jc->c->motions[m].name
                  ? jc->c->motions[m].name : "?", rb_enum_str(rb_limit_state_names, k));
         jc->progress(jc->progress_ctx, ++jc->done, jc->total, what);
     }
     pthread_mutex_unlock(&jc->lock);
+    return st;
+}
+
+/* n searches of jc through the pool; the first that failed, in the order
+ * they were handed out, gives the status and the diag. */
+static rb_status searches(job_ctx *jc, size_t n, int n_threads, rb_status *sts,
+                          rb_diag *diag)
+{
+    rb_status st = rb_pool_map(n, n_threads, job, jc, sts);
+    for (size_t i = 0; i < n && st == RB_OK; i++)
+        if (sts[i] != RB_OK) {
+            st = sts[i];
+            if (diag)
+                *diag = jc->diags[i];
+        }
     return st;
 }
 
@@ -257,37 +277,51 @@ rb_status rb_run_fragility(const rb_case *c, int n_threads, uint64_t seed, unsig
     out->n_boot = n_boot;
     size_t total = rb_run_fragility_searches(c);
     job_ctx jc = {c, out, NULL, progress, ctx, 0, total, PTHREAD_MUTEX_INITIALIZER, NULL,
-                  {0}};
+                  {0}, -1, NULL};
     for (int i = 0, j = 0; i < RB_N_LIMITS; i++)
         if ((out->present >> longest_first[i]) & 1u)
             jc.order[j++] = longest_first[i];
     jc.diags = calloc(total, sizeof *jc.diags);
     rb_status *sts = calloc(total, sizeof *sts);
+    jc.runs = calloc(c->n_motions * RB_N_LIMITS, sizeof *jc.runs);
     jc.memo = rb_design_memo_new();
-    if (!jc.diags || !sts || !jc.memo) {
+    if (!jc.diags || !sts || !jc.runs || !jc.memo) {
         free(jc.diags);
         free(sts);
+        free(jc.runs);
         rb_design_memo_free(jc.memo);
         return RB_ERR_NOMEM;
     }
-    st = rb_pool_map(total, n_threads, job, &jc, sts);
-    /* the first search that failed, in the order they were handed out */
-    for (size_t i = 0; i < total && st == RB_OK; i++)
-        if (sts[i] != RB_OK) {
-            st = sts[i];
-            if (diag)
-                *diag = jc.diags[i];
-        }
+    st = searches(&jc, total, n_threads, sts, diag);
+    /* Every capacity is first searched unconfirmed; then the governing
+     * state's searches again with their confirmations (their scans and
+     * bisections from the memo), until the state that governs is one
+     * whose capacities are confirmed. A confirmation only lowers a
+     * capacity, so the state that governed still does, as a rule; the loop
+     * makes sure of it. */
+    if (st == RB_OK)
+        fit_all(out);
+    while (st == RB_OK && out->governing >= 0
+           && !((out->confirmed >> out->governing) & 1u)) {
+        jc.confirming = out->governing;
+        st = searches(&jc, c->n_motions, n_threads, sts, diag);
+        out->confirmed |= 1u << jc.confirming;
+        if (st == RB_OK)
+            fit_all(out);
+    }
     free(jc.diags);
     free(sts);
     out->solves = (long)rb_design_memo_runs(jc.memo);
     rb_design_memo_free(jc.memo);
     pthread_mutex_destroy(&jc.lock);
+    for (size_t m = 0; st == RB_OK && m < c->n_motions; m++) {
+        for (int k = 0; k < RB_N_LIMITS; k++)
+            out->motions[m].runs += jc.runs[m * RB_N_LIMITS + (size_t)k];
+        out->runs += out->motions[m].runs;
+    }
+    free(jc.runs);
     if (st != RB_OK)
         return st;
-    for (size_t m = 0; m < c->n_motions; m++)
-        out->runs += out->motions[m].runs;
-    fit_all(out);
     if (progress)
         progress(ctx, total, total, NULL);
     return RB_OK;

@@ -16,3 +16,7 @@ rb_script_test(NAME fragility_anchorage SCRIPT tests/fragility/anchorage.py LABE
 # the lift-off capacity over random cabinets: the first failing level to
 # the search's resolution, by a brute-force scan down to the floor
 rb_script_test(NAME fragility_lift_off SCRIPT tests/fragility/lift_off.py LABEL fragility)
+# the searches with fewer runs: usage and first-yield capacities against
+# design's factors to the resolution, the governing state confirmed,
+# check at each capacity, one thread and two
+rb_script_test(NAME fragility_fewer_runs SCRIPT tests/fragility/fewer_runs.py LABEL fragility)
