@@ -43,7 +43,7 @@ static double load_cost(const rb_batch_list *l, size_t n, rb_record_cache *cache
         rb_case c;
         rb_diag_list d = {0};
         if (rb_case_load_overrides(it->base, it->source, it->tag, it->ov, it->n_ov, cache,
-                                   &c, &d) != RB_OK) {
+                                   NULL, &c, &d) != RB_OK) {
             fprintf(stderr, "%s:%d: error: %s\n", it->source, it->line,
                     d.n ? d.items[0].msg : "cannot load");
             rb_diag_list_free(&d);

@@ -49,6 +49,10 @@ typedef struct {
     const char *encoding; /* not owned: the equipment lists' character
                              encoding, an iconv name ("cp1252"); NULL: UTF-8.
                              Set it before adding lists. */
+    const struct rb_sandbox *sandbox; /* not owned: the lists, and the cases
+                             their items load, must lie in it
+                             (rockbolt/sandbox.h); NULL: anywhere. Set it
+                             before adding lists. */
 } rb_batch_list;
 
 /* Add what arg names, in this order of checks: a directory (its *.yaml

@@ -168,17 +168,22 @@ rb_diag *rb_diag_list_add(rb_diag_list *l);
 rb_status rb_case_load(const char *path, rb_case *out, rb_diag_list *diags);
 
 /* rb_case_load, taking records from cache (may be NULL) and putting there
- * those it had to read: for many cases that share records. */
+ * those it had to read: for many cases that share records. Every file the
+ * case reads (itself, its bases, records and spectrum tables) must lie in
+ * sandbox (rockbolt/sandbox.h; NULL: anywhere, as with rb_case_load). */
 struct rb_record_cache;
+struct rb_sandbox;
 rb_status rb_case_load_cached(const char *path, struct rb_record_cache *cache,
-                              rb_case *out, rb_diag_list *diags);
+                              const struct rb_sandbox *sandbox, rb_case *out,
+                              rb_diag_list *diags);
 
 /* rb_case_load_cached for a case document rockbolt made itself in memory
  * (rb_case_load_overrides), named name in diagnostics: it is not a file,
- * so not held to --sandbox (rockbolt/sandbox.h) nor listed among the
+ * so not held to sandbox (rockbolt/sandbox.h) nor listed among the
  * inputs; the bases and records it names are. */
 rb_status rb_case_load_text(const char *name, const char *text, size_t len,
-                            struct rb_record_cache *cache, rb_case *out,
+                            struct rb_record_cache *cache,
+                            const struct rb_sandbox *sandbox, rb_case *out,
                             rb_diag_list *diags);
 
 /* Free what a case owns; accepts NULL. */

@@ -28,11 +28,14 @@ typedef struct {
  * becomes the case's name; out->path is set to origin. Returns as
  * rb_case_load, plus RB_ERR_INVALID with a diag at the override when a key
  * is malformed. On error *out is left empty. Records come from cache (may
- * be NULL), as with rb_case_load_cached. */
+ * be NULL) and files are held to sandbox (may be NULL), as with
+ * rb_case_load_cached. */
 struct rb_record_cache;
+struct rb_sandbox;
 rb_status rb_case_load_overrides(const char *base_path, const char *origin,
                                  const char *name, const rb_case_override *ov,
                                  size_t n, struct rb_record_cache *cache,
+                                 const struct rb_sandbox *sandbox,
                                  rb_case *out, rb_diag_list *diags);
 
 /* rb_case_load_overrides with the place the base was named (1-based
@@ -43,7 +46,8 @@ rb_status rb_case_load_overrides(const char *base_path, const char *origin,
 rb_status rb_case_load_overrides_at(const char *base_path, int base_line, int base_col,
                                     const char *origin, const char *name,
                                     const rb_case_override *ov, size_t n,
-                                    struct rb_record_cache *cache, rb_case *out,
+                                    struct rb_record_cache *cache,
+                                    const struct rb_sandbox *sandbox, rb_case *out,
                                     rb_diag_list *diags);
 
 /* 1 if the dotted key names a value a case file can give (one scalar), as

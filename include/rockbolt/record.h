@@ -24,6 +24,8 @@ typedef struct {
     double units_to_mps2;  /* factor to m/s^2 when the file does not say; 0 -> from header, else error */
     double dt_s;           /* one-column files: required; others: 0 -> from the file */
     size_t max_points;     /* refuse longer records (RB_ERR_LIMIT); 0 -> 10 000 000 */
+    const struct rb_sandbox *sandbox; /* borrowed: refuse a file outside it
+                                         (RB_ERR_IO); NULL -> any file */
 } rb_record_opts;
 
 void rb_record_opts_init(rb_record_opts *o);
@@ -60,9 +62,11 @@ rb_status rb_record_units_parse(const char *name, double *to_mps2);
  * RB_SPECTRUM_MIN_HZ to RB_SPECTRUM_MAX_HZ, accelerations > 0 and at most
  * RB_SPECTRUM_MAX_ACCEL_MPS2 once converted, 2 to max_points rows. *freq_hz and *accel_mps2 are
  * the caller's (free); on error they are NULL and diag names the file,
- * line and column. RB_ERR_IO, RB_ERR_PARSE, RB_ERR_INVALID, RB_ERR_LIMIT,
+ * line and column; a file outside sandbox (may be NULL) is RB_ERR_IO.
+ * RB_ERR_IO, RB_ERR_PARSE, RB_ERR_INVALID, RB_ERR_LIMIT,
  * RB_ERR_NOMEM. */
-rb_status rb_spectrum_table_read(const char *path, double units_to_mps2, size_t max_points,
+rb_status rb_spectrum_table_read(const char *path, const struct rb_sandbox *sandbox,
+                                 double units_to_mps2, size_t max_points,
                                  double **freq_hz, double **accel_mps2, size_t *n,
                                  rb_diag *diag);
 

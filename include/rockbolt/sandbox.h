@@ -6,9 +6,11 @@
  * lists name as `elcentro`, `taft` and cases as `shipped:elcentro`:
  * rockbolt/datadir.h) are always allowed.
  *
- * The sandbox is process-wide: set it once, before loading anything (and
- * before any thread starts); the loaders then check every file they open.
- * Without a sandbox every path is allowed. docs/robustness.md ("Inputs
+ * The sandbox is a value, not process state: the command opens it once,
+ * before loading anything, and hands it to each loader (the case loader,
+ * rb_record_opts.sandbox, the equipment-list reader), which checks every
+ * file it opens; threads only read it. A NULL sandbox, or one opened with
+ * no directory, allows every path. docs/robustness.md ("Inputs
  * outside a tree") says what it defends against and what it does not. */
 #ifndef ROCKBOLT_SANDBOX_H
 #define ROCKBOLT_SANDBOX_H
@@ -16,18 +18,29 @@
 #include <stddef.h>
 #include "rockbolt/status.h"
 
-/* Confine inputs to dir, which must be an existing directory: RB_ERR_IO
- * (with diag) if it is not. dir NULL lifts the sandbox. */
-rb_status rb_sandbox_set(const char *dir, rb_diag *diag);
+/* Longest real path the sandbox holds (PATH_MAX on Linux). */
+#define RB_SANDBOX_PATH_MAX 4096
 
-/* The sandbox's real path, or NULL when there is none. */
-const char *rb_sandbox_dir(void);
+typedef struct rb_sandbox {
+    char root[RB_SANDBOX_PATH_MAX];    /* real path of DIR */
+    char shipped[RB_SANDBOX_PATH_MAX]; /* real path of the shipped records,
+                                          or "" when they do not resolve */
+    int on;                            /* 0: every path allowed */
+} rb_sandbox;
 
-/* 1 if path may be read: there is no sandbox, or its real path lies inside
- * the sandbox (or among the shipped records). A path that does not resolve
+/* Open sb confining inputs to dir, which must be an existing directory:
+ * RB_ERR_IO (with diag, sb left off) if it is not. dir NULL: sb allows
+ * every path. */
+rb_status rb_sandbox_open(rb_sandbox *sb, const char *dir, rb_diag *diag);
+
+/* The sandbox's real path, or NULL when sb is NULL or allows every path. */
+const char *rb_sandbox_dir(const rb_sandbox *sb);
+
+/* 1 if path may be read: sb is NULL or off, or path's real path lies
+ * inside the sandbox (or among the shipped records). A path that does not resolve
  * because it does not exist is allowed here: opening it then fails on its
  * own. Otherwise 0, with the real path (or why it could not be resolved)
  * in why. */
-int rb_sandbox_allows(const char *path, char *why, size_t why_size);
+int rb_sandbox_allows(const rb_sandbox *sb, const char *path, char *why, size_t why_size);
 
 #endif

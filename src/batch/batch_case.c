@@ -66,10 +66,10 @@ void rb_batch_case_load(rb_batch_slot *s, const rb_batch_item *it, rb_batch_case
     if (it->tag)
         st = rb_case_load_overrides_at(it->base, it->base_line ? it->base_line : it->line,
                                        it->base_col, it->source,
-                                       it->tag, it->ov, it->n_ov, s->cache, &s->c,
+                                       it->tag, it->ov, it->n_ov, s->cache, s->sandbox, &s->c,
                                        &diags);
     else
-        st = rb_case_load_cached(it->source, s->cache, &s->c, &diags);
+        st = rb_case_load_cached(it->source, s->cache, s->sandbox, &s->c, &diags);
     if (st != RB_OK) {
         rb_diag d;
         rb_diag_clear(&d);

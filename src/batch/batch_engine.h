@@ -25,6 +25,7 @@ typedef struct {
      * for --reports (NULL otherwise, or when the case has none) */
     char *frag_json, *frag_text;
     rb_record_cache *cache;  /* borrowed: the run's record cache */
+    const struct rb_sandbox *sandbox; /* borrowed: the list's; NULL: none */
 } rb_batch_slot;
 
 /* Load the item into s (verdict and error in bc if it cannot be). */

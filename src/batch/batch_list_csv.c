@@ -841,9 +841,9 @@ rb_status rb_batch_list_read_csv(rb_batch_list *l, const char *path, const char 
     cx.dir[dl] = '\0';
     char why[600];
     char *buf = NULL;
-    if (!rb_sandbox_allows(path, why, sizeof why))
+    if (!rb_sandbox_allows(l->sandbox, path, why, sizeof why))
         snprintf(msg, sizeof msg, "the list lies outside the sandbox '%.*s' (%.*s)",
-                 300, rb_sandbox_dir(), 300, why);
+                 300, rb_sandbox_dir(l->sandbox), 300, why);
     else
         buf = slurp(path, &len, l->encoding != NULL, msg, sizeof msg);
     int bad_line = 0, bad_col = 0;

@@ -118,6 +118,7 @@ static rb_status run_row(run_ctx *cx, size_t i, rb_batch_case *bc)
         return RB_ERR_NOMEM;
     }
     s->cache = cx->cache;
+    s->sandbox = cx->l->sandbox;
     rb_batch_case_load(s, &cx->l->items[i], bc);
     if (s->loaded && s->remaining > 0) {
         row_ctx r = {cx, s, bc};

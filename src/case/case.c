@@ -132,24 +132,22 @@ static int case_defaults(rb_case *cs, const char *path)
 
 rb_status rb_case_load(const char *path, rb_case *out, rb_diag_list *diags)
 {
-    return rb_case_load_cached(path, NULL, out, diags);
-}
-
-static rb_status case_load_from(const char *path, rb_record_cache *cache,
-                                   rb_case *out, rb_diag_list *diags, int confined);
-
-rb_status rb_case_load_cached(const char *path, rb_record_cache *cache, rb_case *out,
-                              rb_diag_list *diags)
-{
-    return case_load_from(path, cache, out, diags, 1);
+    return rb_case_load_cached(path, NULL, NULL, out, diags);
 }
 
 static rb_status case_load_any(const char *path, unsigned char *text, size_t len,
-                                  rb_record_cache *cache, rb_case *out,
-                                  rb_diag_list *diags, int confined);
+                                  rb_record_cache *cache, const rb_sandbox *sandbox,
+                                  rb_case *out, rb_diag_list *diags);
+
+rb_status rb_case_load_cached(const char *path, rb_record_cache *cache,
+                              const rb_sandbox *sandbox, rb_case *out, rb_diag_list *diags)
+{
+    return case_load_any(path, NULL, 0, cache, sandbox, out, diags);
+}
 
 rb_status rb_case_load_text(const char *name, const char *text, size_t len,
-                            rb_record_cache *cache, rb_case *out, rb_diag_list *diags)
+                            rb_record_cache *cache, const rb_sandbox *sandbox,
+                            rb_case *out, rb_diag_list *diags)
 {
     unsigned char *copy = malloc(len + 1);
     if (!copy) {
@@ -158,21 +156,15 @@ rb_status rb_case_load_text(const char *name, const char *text, size_t len,
     }
     memcpy(copy, text, len);
     copy[len] = '\0';
-    return case_load_any(name, copy, len, cache, out, diags, 0);
-}
-
-static rb_status case_load_from(const char *path, rb_record_cache *cache,
-                                   rb_case *out, rb_diag_list *diags, int confined)
-{
-    return case_load_any(path, NULL, 0, cache, out, diags, confined);
+    return case_load_any(name, copy, len, cache, sandbox, out, diags);
 }
 
 /* A case file at path, or (text != NULL, taken and freed) a document in
  * memory named path: a list row's overrides, whose `motion:` applies to
  * each motion of a base's list and which is not a file to list as read. */
 static rb_status case_load_any(const char *path, unsigned char *text, size_t len,
-                                  rb_record_cache *cache, rb_case *out,
-                                  rb_diag_list *diags, int confined)
+                                  rb_record_cache *cache, const rb_sandbox *sandbox,
+                                  rb_case *out, rb_diag_list *diags)
 {
     rb_cctx c;
     char why[600];
@@ -181,6 +173,7 @@ static rb_status case_load_any(const char *path, unsigned char *text, size_t len
     c.judge_concrete = -1;
     c.diags = diags;
     c.cache = cache;
+    c.sandbox = sandbox;
     c.overrides = text != NULL;
     size_t first = diags->n;
     c.first_diag = first;
@@ -192,9 +185,9 @@ static rb_status case_load_any(const char *path, unsigned char *text, size_t len
     rb_status read;
     if (text) {
         read = rb_case_read_merged_text(&c, path, text, len, &root);
-    } else if (confined && path && !rb_sandbox_allows(path, why, sizeof why)) {
+    } else if (path && !rb_sandbox_allows(sandbox, path, why, sizeof why)) {
         rb_cctx_error_at(&c, RB_ERR_IO, path, 0, 0, "case", "'%s' lies outside the "
-                         "sandbox '%s' (%s)", path, rb_sandbox_dir(), why);
+                         "sandbox '%s' (%s)", path, rb_sandbox_dir(sandbox), why);
         c.fatal = 1;
         read = RB_ERR_IO;
     } else {

@@ -422,9 +422,9 @@ static rb_status read_chain(rb_cctx *c, const char *file, const rb_ynode *where,
         return RB_ERR_LIMIT;
     }
     char why[600];
-    if (where && !rb_sandbox_allows(file, why, sizeof why)) {
+    if (where && !rb_sandbox_allows(c->sandbox, file, why, sizeof why)) {
         rb_cctx_error(c, where, "extends", "cannot use '%s': it lies outside the "
-                      "sandbox '%s' (%s)", file, rb_sandbox_dir(), why);
+                      "sandbox '%s' (%s)", file, rb_sandbox_dir(c->sandbox), why);
         free(id);
         return RB_ERR_IO;
     }

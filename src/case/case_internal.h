@@ -17,6 +17,7 @@
 #include "rockbolt/case.h"
 #include "rockbolt/record.h"
 #include "rockbolt/record_cache.h"
+#include "rockbolt/sandbox.h"
 #include "rockbolt/units.h"
 
 #define RB_CASE_MAX_DEPTH 32         /* nesting of mappings and sequences */
@@ -189,6 +190,8 @@ typedef struct {
     rb_diag dropped;            /* the first of them */
     size_t n_samples;           /* record samples held, RB_CASE_MAX_SAMPLES */
     rb_record_cache *cache;     /* borrowed; NULL: own_records */
+    const rb_sandbox *sandbox;  /* borrowed: every file read must lie in
+                                   it; NULL: anywhere */
     rb_record_cache *own_records; /* owned: a case loaded without a cache
                                    keeps its records here, so that motions
                                    naming one record read it once */

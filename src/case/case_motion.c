@@ -193,6 +193,7 @@ static int read_record(rb_cctx *c, rb_ynode *map, rb_cmotion *cm)
     rb_motion *m = &cm->motion;
     m->kind = RB_MOTION_SAMPLED;
     rb_record_opts_init(&cm->ropts);
+    cm->ropts.sandbox = c->sandbox;
     rb_ynode *v = rb_cv_get(c, map, p, "file", 1, "the record file, relative "
                             "to this case file, or shipped:NAME");
     const rb_shipped_record *sr = NULL;

@@ -310,16 +310,19 @@ static rb_status generate(rb_ovgen *g, const char *base_abs, const char *name,
 
 rb_status rb_case_load_overrides(const char *base_path, const char *origin,
                                  const char *name, const rb_case_override *ov,
-                                 size_t n, struct rb_record_cache *cache, rb_case *out, rb_diag_list *diags)
+                                 size_t n, struct rb_record_cache *cache,
+                                 const struct rb_sandbox *sandbox, rb_case *out,
+                                 rb_diag_list *diags)
 {
     return rb_case_load_overrides_at(base_path, n ? ov[0].line : 0, 1, origin, name, ov,
-                                     n, cache, out, diags);
+                                     n, cache, sandbox, out, diags);
 }
 
 rb_status rb_case_load_overrides_at(const char *base_path, int row_line, int row_col,
                                     const char *origin, const char *name,
                                     const rb_case_override *ov, size_t n,
-                                    struct rb_record_cache *cache, rb_case *out,
+                                    struct rb_record_cache *cache,
+                                    const struct rb_sandbox *sandbox, rb_case *out,
                                     rb_diag_list *diags)
 {
     rb_ovgen g;
@@ -362,7 +365,7 @@ rb_status rb_case_load_overrides_at(const char *base_path, int row_line, int row
     /* the document's name in diagnostics until they are mapped to the row */
     snprintf(doc, sizeof doc, "%.500s (row at line %d)", origin, row_line);
     size_t first = diags->n;
-    st = rb_case_load_text(doc, g.sb.p, g.sb.n, cache, out, diags);
+    st = rb_case_load_text(doc, g.sb.p, g.sb.n, cache, sandbox, out, diags);
     map_diags(diags, first, doc, &g, origin, row_line, row_col, cwd);
     if (st == RB_OK) {
         char *p = dup_str(origin);

@@ -401,7 +401,7 @@ int rb_case_make_target(rb_cctx *c, const rb_cmotion *cm, rb_case_target *ct)
     size_t n;
     rb_diag rd;
     rb_diag_clear(&rd);
-    rb_status st = rb_spectrum_table_read(ct->file, cm->table_units_to_mps2,
+    rb_status st = rb_spectrum_table_read(ct->file, c->sandbox, cm->table_units_to_mps2,
                                           RB_SPECTRUM_MAX_POINTS, &f, &a, &n, &rd);
     if (st != RB_OK) {
         rb_status as = st == RB_ERR_NOMEM ? st : RB_ERR_IO;

@@ -10,6 +10,7 @@
 #include "rockbolt/plot.h"
 #include "rockbolt/rockbolt.h"
 #include "rockbolt/run.h"
+#include "rockbolt/sandbox.h"
 
 /* Exit codes, as documented in --help and README.md. */
 typedef enum {
@@ -45,6 +46,7 @@ typedef struct {
     const char *svg_path;     /* --svg FILE: the figures, or NULL */
     const char *html_path;    /* --html FILE: report and figures, or NULL */
     const char *sandbox_dir;  /* --sandbox DIR: inputs must lie inside, or NULL */
+    rb_sandbox sandbox;       /* opened from sandbox_dir once parsed */
     const char *help_command; /* help: the command asked about, or NULL */
     const char *csv_path;     /* fragility: --csv FILE, or NULL */
     const char *dir_path;     /* motion: --dir DIR, or NULL */
@@ -74,7 +76,7 @@ rb_exit rb_cli_take_intensity(const char *v, rb_fragility_intensity *out, int *g
 /* --sandbox DIR of check, design and batch: confine every input to DIR
  * (rockbolt/sandbox.h) before anything is read. RB_EXIT_USAGE after
  * printing why when DIR is not a directory. NULL: nothing to do. */
-rb_exit rb_cli_sandbox(const char *dir);
+rb_exit rb_cli_sandbox(const char *dir, rb_sandbox *sb);
 
 /* fragility and spectrum (cli_case_outputs.c): plan --json, --csv, --svg,
  * --html, --p58 and --pdf against the case; load the case and add the files it read to

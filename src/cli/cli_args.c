@@ -444,15 +444,13 @@ rb_exit rb_cli_args_parse(int argc, char **argv, rb_cli_opts *o)
     }
     if ((e = check_distinct(o)) != RB_EXIT_PASS)
         return e;
-    return rb_cli_sandbox(o->sandbox_dir);
+    return rb_cli_sandbox(o->sandbox_dir, &o->sandbox);
 }
 
-rb_exit rb_cli_sandbox(const char *dir)
+rb_exit rb_cli_sandbox(const char *dir, rb_sandbox *sb)
 {
     rb_diag d;
-    if (!dir)
-        return RB_EXIT_PASS;
-    if (rb_sandbox_set(dir, &d) != RB_OK) {
+    if (rb_sandbox_open(sb, dir, &d) != RB_OK) {
         rb_cli_diag_print(&d);
         return RB_EXIT_USAGE;
     }

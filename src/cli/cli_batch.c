@@ -118,8 +118,8 @@ static rb_exit plan_items(rb_batch_cli *o, const rb_batch_list *l)
         rb_status ls = it->tag
             ? rb_case_load_overrides_at(it->base, it->base_line ? it->base_line : it->line,
                                         it->base_col, it->source,
-                                        it->tag, it->ov, it->n_ov, cache, &c, &diags)
-            : rb_case_load_cached(it->source, cache, &c, &diags);
+                                        it->tag, it->ov, it->n_ov, cache, l->sandbox, &c, &diags)
+            : rb_case_load_cached(it->source, cache, l->sandbox, &c, &diags);
         rb_diag_list_free(&diags);
         if (ls == RB_ERR_NOMEM)
             st = ls;
@@ -232,6 +232,7 @@ rb_exit rb_cli_batch_main(int argc, char **argv)
     if (e == RB_EXIT_PASS && o.reports_dir)
         e = rb_cli_output_dir(o.reports_dir, "--reports", &made_dir);
     l.encoding = o.encoding;
+    l.sandbox = &o.sandbox;
     if (e == RB_EXIT_PASS)
         e = build_list(&o, &l);
     if (e == RB_EXIT_PASS)

@@ -14,7 +14,8 @@ typedef struct {
     const char *pdf_path;     /* batch: --pdf FILE, the summary's package, or NULL */
     const char *reports_dir;  /* batch only */
     const char *base;         /* batch: --base CASE */
-    const char *sandbox;      /* batch: --sandbox DIR, or NULL */
+    const char *sandbox_dir;  /* batch: --sandbox DIR, or NULL */
+    rb_sandbox sandbox;       /* opened from sandbox_dir once parsed */
     const char *encoding;     /* batch: --encoding NAME, or NULL (UTF-8) */
     int design;               /* batch: --design */
     int fragility;            /* batch: --fragility */

@@ -108,7 +108,7 @@ static rb_exit take_option(int c, const rb_cli_getopt *g, rb_batch_cli *o)
     case OPT_BASE:
         return take(g->name, g->arg, &o->base);
     case OPT_SANDBOX:
-        return take(g->name, g->arg, &o->sandbox);
+        return take(g->name, g->arg, &o->sandbox_dir);
     case OPT_ENCODING:
         e = take(g->name, g->arg, &o->encoding);
         if (e == RB_EXIT_PASS) {
@@ -229,7 +229,7 @@ rb_exit rb_cli_batch_parse(int argc, char **argv, int is_merge, rb_batch_cli *o)
                      "directories or equipment lists (see 'rockbolt help batch')");
         return RB_EXIT_USAGE;
     }
-    return rb_cli_sandbox(o->sandbox);
+    return rb_cli_sandbox(o->sandbox_dir, &o->sandbox);
 }
 
 void rb_cli_batch_cli_free(rb_batch_cli *o)

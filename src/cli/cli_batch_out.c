@@ -70,7 +70,7 @@ static rb_status pdf(rb_batch_cli *o, const rb_batch_summary *s, FILE *fp, rb_di
     int have_base = 0;
     if (st == RB_OK && o->base) {
         rb_diag_list dl = {NULL, 0, 0};
-        have_base = rb_case_load(o->base, &base, &dl) == RB_OK;
+        have_base = rb_case_load_cached(o->base, NULL, &o->sandbox, &base, &dl) == RB_OK;
         rb_diag_list_free(&dl);
     }
     if (st == RB_OK) {

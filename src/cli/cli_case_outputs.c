@@ -52,7 +52,7 @@ rb_exit rb_cli_output_dir(const char *dir, const char *opt, int *created)
 rb_exit rb_cli_load_case_planned(const rb_cli_opts *o, rb_case *c, rb_outplan *p)
 {
     rb_diag_list diags = {0};
-    rb_status st = rb_case_load(o->case_path, c, &diags);
+    rb_status st = rb_case_load_cached(o->case_path, NULL, &o->sandbox, c, &diags);
     for (size_t i = 0; i < diags.n; i++)
         rb_cli_diag_print(&diags.items[i]);
     if (st != RB_OK && diags.n == 0)

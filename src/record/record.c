@@ -168,9 +168,9 @@ rb_status rb_record_read(const char *path, const rb_record_opts *opts,
         return rb_rec_fail_at(&r, RB_ERR_INVALID, 0, 0, "no file name or no output");
     rb_status st = record_check_opts(&r, opts);
     char why[600];
-    if (st == RB_OK && !rb_sandbox_allows(path, why, sizeof why))
+    if (st == RB_OK && !rb_sandbox_allows(opts->sandbox, path, why, sizeof why))
         st = rb_rec_fail_at(&r, RB_ERR_IO, 0, 0, "it lies outside the sandbox '%s' "
-                            "(%s)", rb_sandbox_dir(), why);
+                            "(%s)", rb_sandbox_dir(opts->sandbox), why);
     if (st == RB_OK)
         st = rb_rec_reader_open(&r, path, diag);
     if (st == RB_OK)

@@ -61,7 +61,8 @@ static int same_key(const entry *e, const char *path, const rb_record_opts *o,
 {
     return strcmp(e->path, path) == 0 && e->opts.format == o->format
            && e->opts.units_to_mps2 == o->units_to_mps2 && e->opts.dt_s == o->dt_s
-           && e->opts.max_points == o->max_points && e->f_hz == f_hz && e->xi == xi;
+           && e->opts.max_points == o->max_points && e->opts.sandbox == o->sandbox
+           && e->f_hz == f_hz && e->xi == xi;
 }
 
 static int copy_series(const rb_series *from, rb_series *to)

@@ -51,7 +51,8 @@ static rb_status table_row(const rb_rec_reader *r, double units, rb_rec_values *
     return st;
 }
 
-rb_status rb_spectrum_table_read(const char *path, double units_to_mps2, size_t max_points,
+rb_status rb_spectrum_table_read(const char *path, const rb_sandbox *sandbox,
+                                 double units_to_mps2, size_t max_points,
                                  double **freq_hz, double **accel_mps2, size_t *n,
                                  rb_diag *diag)
 {
@@ -62,9 +63,9 @@ rb_status rb_spectrum_table_read(const char *path, double units_to_mps2, size_t 
     memset(&r, 0, sizeof r);
     r.path = path;
     r.diag = diag;
-    if (!rb_sandbox_allows(path, why, sizeof why))
+    if (!rb_sandbox_allows(sandbox, path, why, sizeof why))
         return rb_rec_fail_at(&r, RB_ERR_IO, 0, 0, "it lies outside the sandbox '%s' (%s)",
-                              rb_sandbox_dir(), why);
+                              rb_sandbox_dir(sandbox), why);
     rb_status st = rb_rec_reader_open(&r, path, diag);
     if (st != RB_OK)
         return st;

@@ -9,22 +9,19 @@
 #include "rockbolt/datadir.h"
 #include "rockbolt/sandbox.h"
 
-#ifndef PATH_MAX
-#define PATH_MAX 4096
+#if defined(PATH_MAX) && PATH_MAX > RB_SANDBOX_PATH_MAX
+#error "realpath may write more than rb_sandbox holds"
 #endif
 
-static char sandbox_root[PATH_MAX];
-static char sandbox_shipped[PATH_MAX];
-static int sandbox_on;
-
-rb_status rb_sandbox_set(const char *dir, rb_diag *diag)
+rb_status rb_sandbox_open(rb_sandbox *sb, const char *dir, rb_diag *diag)
 {
-    struct stat sb;
-    sandbox_on = 0;
+    struct stat st;
+    sb->on = 0;
+    sb->root[0] = sb->shipped[0] = '\0';
     if (!dir)
         return RB_OK;
-    if (!realpath(dir, sandbox_root) || stat(sandbox_root, &sb) != 0
-        || !S_ISDIR(sb.st_mode)) {
+    if (!realpath(dir, sb->root) || stat(sb->root, &st) != 0
+        || !S_ISDIR(st.st_mode)) {
         if (diag) {
             rb_diag_clear(diag);
             rb_diag_set_file(diag, "%s", dir);
@@ -34,15 +31,15 @@ rb_status rb_sandbox_set(const char *dir, rb_diag *diag)
         }
         return RB_ERR_IO;
     }
-    if (!realpath(rb_data_records_dir(), sandbox_shipped))
-        sandbox_shipped[0] = '\0';
-    sandbox_on = 1;
+    if (!realpath(rb_data_records_dir(), sb->shipped))
+        sb->shipped[0] = '\0';
+    sb->on = 1;
     return RB_OK;
 }
 
-const char *rb_sandbox_dir(void)
+const char *rb_sandbox_dir(const rb_sandbox *sb)
 {
-    return sandbox_on ? sandbox_root : NULL;
+    return sb && sb->on ? sb->root : NULL;
 }
 
 static int under(const char *real, const char *root)
@@ -55,10 +52,10 @@ static int under(const char *real, const char *root)
     return strncmp(real, root, n) == 0 && (real[n] == '\0' || real[n] == '/');
 }
 
-int rb_sandbox_allows(const char *path, char *why, size_t why_size)
+int rb_sandbox_allows(const rb_sandbox *sb, const char *path, char *why, size_t why_size)
 {
-    char real[PATH_MAX];
-    if (!sandbox_on)
+    char real[RB_SANDBOX_PATH_MAX];
+    if (!sb || !sb->on)
         return 1;
     errno = 0;
     if (!realpath(path, real)) {
@@ -72,7 +69,7 @@ int rb_sandbox_allows(const char *path, char *why, size_t why_size)
                      strerror(errno));
         return 0;
     }
-    if (under(real, sandbox_root) || under(real, sandbox_shipped))
+    if (under(real, sb->root) || under(real, sb->shipped))
         return 1;
     if (why && why_size)
         snprintf(why, why_size, "it resolves to '%s'", real);

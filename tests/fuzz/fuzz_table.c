@@ -32,7 +32,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     rb_fuzz_write("table.csv", data, size);
     rb_fuzz_path(path, sizeof path, "table.csv");
     rb_diag_clear(&d);
-    rb_status st = rb_spectrum_table_read(path, RB_G0, max, &f, &a, &n, &d);
+    rb_status st = rb_spectrum_table_read(path, NULL, RB_G0, max, &f, &a, &n, &d);
     if (st != RB_OK) {
         check_refused(st, &d, f, a);
         return 0;
@@ -52,7 +52,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     double *f2 = NULL, *a2 = NULL;
     size_t n2 = 0;
     rb_diag_clear(&d);
-    st = rb_spectrum_table_read(path, RB_G0, n - 1, &f2, &a2, &n2, &d);
+    st = rb_spectrum_table_read(path, NULL, RB_G0, n - 1, &f2, &a2, &n2, &d);
     if (n > 2 && st != RB_ERR_LIMIT)
         rb_fuzz_fail("a table one row over the limit was not refused with RB_ERR_LIMIT",
                      rb_status_str(st));

@@ -206,7 +206,8 @@ static int load(const char *fmt, const char *coef, rb_case *c)
     rb_diag_list dl = {0};
     const char *at = strstr(fmt, "%s");
     snprintf(text, sizeof text, "%.*s%s%s", (int)(at - fmt), fmt, coef, at + 2);
-    rb_status st = rb_case_load_text("inline.yaml", text, strlen(text), NULL, c, &dl);
+    rb_status st = rb_case_load_text("inline.yaml", text, strlen(text), NULL, NULL, c,
+                                     &dl);
     for (size_t i = 0; i < dl.n; i++)
         fprintf(stderr, "%s:%d:%d: %s: %s\n", dl.items[i].file, dl.items[i].line,
                 dl.items[i].col, dl.items[i].key, dl.items[i].msg);

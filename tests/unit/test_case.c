@@ -486,7 +486,7 @@ static void test_suite_after_validation(void)
         "z_over_h: 0.5}}\nequipmnt: {mass: 400 kg}\n");
     rb_record_cache *cache = rb_record_cache_new(0);
     memset(&l, 0, sizeof l);
-    CHECK(rb_case_load_cached(p, cache, &c, &l) == RB_ERR_INVALID);
+    CHECK(rb_case_load_cached(p, cache, NULL, &c, &l) == RB_ERR_INVALID);
     CHECK(l.n == 1 && strstr(l.items[0].msg, "unknown key"));
     long hits = -1, misses = -1;
     rb_record_cache_stats(cache, &hits, &misses);

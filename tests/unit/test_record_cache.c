@@ -13,7 +13,7 @@
 static int load(const char *path, rb_record_cache *cache, rb_case *c)
 {
     rb_diag_list dl = {0};
-    rb_status st = rb_case_load_cached(path, cache, c, &dl);
+    rb_status st = rb_case_load_cached(path, cache, NULL, c, &dl);
     rb_diag_list_free(&dl);
     return st == RB_OK;
 }
