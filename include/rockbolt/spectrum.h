@@ -67,6 +67,21 @@ void rb_spectrum_free(rb_spectrum *sp);
  * peak. RB_ERR_INVALID for an empty series. */
 rb_status rb_spectrum_of_series(const rb_series *s, double scale, rb_spectrum *sp);
 
+/* The oscillators of a spectrum made ready for the spectra of many series
+ * of one time step on a floor given directly (their exact transitions
+ * made once): for a caller that takes the spectrum of every pass of an
+ * iteration on one grid. rb_spectrum_of_series_banked gives
+ * rb_spectrum_of_series's ordinates to the bit, through the bank when it
+ * was made for sp's grid, damping and step_phase and the series' step
+ * (and the series has no building), by rb_spectrum_of_series otherwise.
+ * rb_spectrum_bank_new: RB_ERR_INVALID as rb_spectrum_of_series, and
+ * RB_ERR_NOMEM. */
+typedef struct rb_spectrum_bank rb_spectrum_bank;
+rb_status rb_spectrum_bank_new(const rb_spectrum *sp, double dt_s, rb_spectrum_bank **out);
+rb_status rb_spectrum_of_series_banked(rb_spectrum_bank *b, const rb_series *s,
+                                       double scale, rb_spectrum *sp);
+void rb_spectrum_bank_free(rb_spectrum_bank *b);
+
 /* The spectrum of any motion: a sampled one through rb_spectrum_of_series
  * (with its scale); a closed form (harmonic, pulse) sampled every
  * 1 / (200 f_max) s over its duration first, a straight-line

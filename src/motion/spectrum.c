@@ -133,13 +133,53 @@ void rb_spec_substep_peaks(const rb_series *s, double f_hz, double xi, double ph
     *sa = t.sa;
 }
 
+/* The phase sp's sub-steps are taken at. */
+static double phase_of(const rb_spectrum *sp)
+{
+    double phase = sp->step_phase;
+    if (!(phase > 0) || phase > SPECTRUM_COARSEST_PHASE)
+        phase = phase > SPECTRUM_COARSEST_PHASE ? SPECTRUM_COARSEST_PHASE : SPECTRUM_MAX_PHASE;
+    return phase;
+}
+
+static void scale_ordinates(rb_spectrum *sp, double scale)
+{
+    for (size_t i = 0; i < sp->n; i++) {
+        sp->psa_mps2[i] *= fabs(scale);
+        sp->sa_mps2[i] *= fabs(scale);
+    }
+}
+
+rb_status rb_spectrum_bank_new(const rb_spectrum *sp, double dt_s, rb_spectrum_bank **out)
+{
+    *out = NULL;
+    if (!sp || sp->n == 0 || !(dt_s > 0))
+        return RB_ERR_INVALID;
+    return rb_spec_bank_new(sp->freq_hz, sp->n, sp->damping, dt_s, phase_of(sp), out);
+}
+
+void rb_spectrum_bank_free(rb_spectrum_bank *b)
+{
+    rb_spec_bank_free(b);
+}
+
+rb_status rb_spectrum_of_series_banked(rb_spectrum_bank *b, const rb_series *s,
+                                       double scale, rb_spectrum *sp)
+{
+    if (!s || s->n < 1 || !sp || sp->n == 0 || !(s->dt_s > 0) || s->bld.ground_mps2
+        || !rb_spec_bank_fits(b, sp->freq_hz, sp->n, sp->damping, s->dt_s, phase_of(sp)))
+        return rb_spectrum_of_series(s, scale, sp);
+    rb_status st = rb_spec_bank_run(b, s, sp->psa_mps2, sp->sa_mps2);
+    if (st == RB_OK)
+        scale_ordinates(sp, scale);
+    return st;
+}
+
 rb_status rb_spectrum_of_series(const rb_series *s, double scale, rb_spectrum *sp)
 {
     if (!s || s->n < 1 || !sp || sp->n == 0 || !(s->dt_s > 0))
         return RB_ERR_INVALID;
-    double phase = sp->step_phase;
-    if (!(phase > 0) || phase > SPECTRUM_COARSEST_PHASE)
-        phase = phase > SPECTRUM_COARSEST_PHASE ? SPECTRUM_COARSEST_PHASE : SPECTRUM_MAX_PHASE;
+    double phase = phase_of(sp);
     if (!s->bld.ground_mps2) {
         rb_status st = rb_spec_bank_peaks(s, sp->freq_hz, sp->n, sp->damping, phase,
                                           sp->psa_mps2, sp->sa_mps2);
@@ -150,10 +190,7 @@ rb_status rb_spectrum_of_series(const rb_series *s, double scale, rb_spectrum *s
             rb_spec_substep_peaks(s, sp->freq_hz[i], sp->damping, phase, &sp->psa_mps2[i],
                                   &sp->sa_mps2[i]);
     }
-    for (size_t i = 0; i < sp->n; i++) {
-        sp->psa_mps2[i] *= fabs(scale);
-        sp->sa_mps2[i] *= fabs(scale);
-    }
+    scale_ordinates(sp, scale);
     return RB_OK;
 }
 

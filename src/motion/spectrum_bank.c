@@ -34,6 +34,12 @@
 #include "spectrum_bank.h"
 #include "spectrum_step.h"
 
+/* A run expects each peak to reach this fraction of the last run's, and
+ * walks in sub-steps only the intervals that could raise a peak above
+ * that (or above the running peak, when it is higher): the early part of
+ * a motion, under peaks still small, is not walked again and again. */
+#define SPECTRUM_BANK_HINT 0.8
+
 /* One array per quantity, each of n oscillators: the loop over them reads
  * consecutive doubles. */
 enum {
@@ -45,37 +51,57 @@ enum {
     B_P0, B_V0, B_P1, B_V1,      /* the state, double-buffered */
     B_PSA, B_SA,                 /* running peaks: w u, absolute accel */
     B_FLAG,                      /* the interval may hold a higher peak */
+    B_HINT_P, B_HINT_A,          /* peaks the run is expected to reach */
     B_FIELDS
 };
 
-typedef struct {
+struct rb_spectrum_bank {
     size_t n;
     double *v;                   /* B_FIELDS arrays of n */
     rb_spec_transition *sub;     /* per oscillator, made when first needed */
     unsigned *sub_k;             /* its sub-steps per sample; 0: not made */
     double dt, xi, phase;
-    const double *f_hz;
-} bank;
+    double *f_hz;                /* owned, n */
+    int hinted;                  /* B_HINT_P and B_HINT_A are set */
+};
+typedef struct rb_spectrum_bank bank;
 
 static double *field(const bank *b, int k)
 {
     return b->v + (size_t)k * b->n;
 }
 
-static rb_status bank_init(bank *b, const double *f_hz, size_t n, double xi, double dt,
-                           double phase)
+void rb_spec_bank_free(bank *b)
 {
-    memset(b, 0, sizeof *b);
+    if (!b)
+        return;
+    free(b->v);
+    free(b->sub);
+    free(b->sub_k);
+    free(b->f_hz);
+    free(b);
+}
+
+rb_status rb_spec_bank_new(const double *f_hz, size_t n, double xi, double dt, double phase,
+                           bank **out)
+{
+    bank *b = *out = calloc(1, sizeof *b);
+    if (!b)
+        return RB_ERR_NOMEM;
     b->n = n;
     b->dt = dt;
     b->xi = xi;
     b->phase = phase;
-    b->f_hz = f_hz;
     b->v = calloc((size_t)B_FIELDS * n, sizeof *b->v);
     b->sub = malloc(n * sizeof *b->sub);
     b->sub_k = calloc(n, sizeof *b->sub_k);
-    if (!b->v || !b->sub || !b->sub_k)
+    b->f_hz = malloc(n * sizeof *b->f_hz);
+    if (!b->v || !b->sub || !b->sub_k || !b->f_hz) {
+        rb_spec_bank_free(b);
+        *out = NULL;
         return RB_ERR_NOMEM;
+    }
+    memcpy(b->f_hz, f_hz, n * sizeof *f_hz);
     double wd_of_w = sqrt(1.0 - xi * xi);
     for (size_t j = 0; j < n; j++) {
         double w = 2.0 * M_PI * f_hz[j], a[4], bv[2];
@@ -103,11 +129,20 @@ static rb_status bank_init(bank *b, const double *f_hz, size_t n, double xi, dou
     return RB_OK;
 }
 
-static void bank_free(bank *b)
+int rb_spec_bank_fits(const bank *b, const double *f_hz, size_t n, double xi, double dt,
+                      double phase)
 {
-    free(b->v);
-    free(b->sub);
-    free(b->sub_k);
+    return b && b->n == n && b->xi == xi && b->dt == dt && b->phase == phase
+           && memcmp(b->f_hz, f_hz, n * sizeof *f_hz) == 0;
+}
+
+/* The sub-step transition of oscillator j, made on first use and kept. */
+static const rb_spec_transition *sub_of(bank *b, size_t j)
+{
+    if (!b->sub_k[j])
+        rb_spec_sub_transition(&b->sub[j], field(b, B_W)[j], b->xi, b->dt, b->phase,
+                               &b->sub_k[j]);
+    return &b->sub[j];
 }
 
 /* Walk oscillator j across the interval from (p, v) under the floor f0 to
@@ -115,13 +150,7 @@ static void bank_free(bank *b)
 static void refine(bank *b, size_t j, double p, double v, double f0, double f1)
 {
     double w = field(b, B_W)[j];
-    if (!b->sub_k[j]) {
-        unsigned k = (unsigned)ceil(w * b->dt / b->phase);
-        b->sub_k[j] = k ? k : 1;
-        double a[4], bv[2];
-        rb_spec_system(w, b->xi, 0.0, 0.0, 2, a, bv);
-        rb_spec_transition_init(&b->sub[j], 2, a, bv, b->dt / b->sub_k[j]);
-    }
+    const rb_spec_transition *sub = sub_of(b, j);
     unsigned k = b->sub_k[j];
     double h = b->dt / k, slope = (f1 - f0) / k, x[2] = {p, v};
     rb_spec_tracker t = {.w = w, .xi = b->xi, .psa = field(b, B_PSA)[j],
@@ -129,7 +158,7 @@ static void refine(bank *b, size_t j, double p, double v, double f0, double f1)
     rb_spec_tracker_read(&t, p, v, -f0);
     for (unsigned i = 0; i < k; i++) {
         double ga = f0 + slope * i, gb = (i + 1 == k) ? f1 : f0 + slope * (i + 1);
-        rb_spec_transition_apply(&b->sub[j], x, ga, gb);
+        rb_spec_transition_apply(sub, x, ga, gb);
         rb_spec_tracker_step(&t, x[0], x[1], -gb, h);
     }
     field(b, B_PSA)[j] = t.psa;
@@ -160,6 +189,7 @@ __attribute__((target_clones("avx2", "default")))
 static int bank_step(size_t n, const double *restrict c, const double *restrict p0,
                      const double *restrict v0, double *restrict p1, double *restrict v1,
                      double *restrict psa, double *restrict sa, double *restrict flag,
+                     const double *restrict hint_p, const double *restrict hint_a,
                      double f0, double f1, double dt)
 {
 #define C(k) c[(size_t)(k) * n + j]
@@ -187,7 +217,8 @@ static int bank_step(size_t n, const double *restrict c, const double *restrict 
         double ep = C(B_HERMITE) * (fabs(ph) + fabs(dp));
         double bp = cubic_bound(p, h * w * v, pn, h * w * vn) + ep;
         double ba = cubic_bound(ya, h * ja, yb, h * jb) + w * ep;
-        double fp = bp - mp, fa = ba - ma;
+        double hp = hint_p[j], ha = hint_a[j];
+        double fp = bp - (mp > hp ? mp : hp), fa = ba - (ma > ha ? ma : ha);
         double fl = fp > fa ? fp : fa;
         flag[j] = fl;
         any |= fl > 0.0 ? ~0ull : 0ull;
@@ -196,27 +227,26 @@ static int bank_step(size_t n, const double *restrict c, const double *restrict 
     return any != 0;
 }
 
-rb_status rb_spec_bank_peaks(const rb_series *s, const double *f_hz, size_t n, double xi,
-                             double phase, double *psa, double *sa)
+rb_status rb_spec_bank_run(bank *b, const rb_series *s, double *psa, double *sa)
 {
-    bank b;
-    rb_status st = bank_init(&b, f_hz, n, xi, s->dt_s, phase);
-    if (st != RB_OK) {
-        bank_free(&b);
-        return st;
-    }
     const double *g = s->accel_mps2;
-    double *p0 = field(&b, B_P0), *v0 = field(&b, B_V0);
-    double *p1 = field(&b, B_P1), *v1 = field(&b, B_V1);
-    double *flag = field(&b, B_FLAG);
-    double *psa_run = field(&b, B_PSA), *sa_run = field(&b, B_SA);
-    /* from rest: the state, and with it the absolute acceleration, is 0 */
+    size_t n = b->n;
+    /* from rest: the state, and with it the absolute acceleration, is 0;
+     * so are the running peaks */
+    memset(field(b, B_P0), 0, (size_t)(B_HINT_P - B_P0) * n * sizeof *b->v);
+    if (!b->hinted)
+        memset(field(b, B_HINT_P), 0, 2 * n * sizeof *b->v);
+    double *p0 = field(b, B_P0), *v0 = field(b, B_V0);
+    double *p1 = field(b, B_P1), *v1 = field(b, B_V1);
+    double *flag = field(b, B_FLAG);
+    double *psa_run = field(b, B_PSA), *sa_run = field(b, B_SA);
+    double *hint_p = field(b, B_HINT_P), *hint_a = field(b, B_HINT_A);
     for (size_t i = 1; i < s->n; i++) {
-        if (bank_step(n, b.v, p0, v0, p1, v1, psa_run, sa_run, flag, g[i - 1], g[i],
-                      s->dt_s))
+        if (bank_step(n, b->v, p0, v0, p1, v1, psa_run, sa_run, flag, hint_p, hint_a,
+                      g[i - 1], g[i], s->dt_s))
             for (size_t j = 0; j < n; j++)
                 if (flag[j] > 0.0)
-                    refine(&b, j, p0[j], v0[j], g[i - 1], g[i]);
+                    refine(b, j, p0[j], v0[j], g[i - 1], g[i]);
         double *t = p0;
         p0 = p1;
         p1 = t;
@@ -225,13 +255,40 @@ rb_status rb_spec_bank_peaks(const rb_series *s, const double *f_hz, size_t n, d
         v1 = t;
     }
     for (size_t j = 0; j < n; j++) {
-        double w = field(&b, B_W)[j], y[2] = {p0[j], v0[j]};
-        rb_spec_tracker t = {.w = w, .xi = xi, .psa = field(&b, B_PSA)[j],
-                             .sa = field(&b, B_SA)[j]};
-        rb_spec_free_tail(&t, y, f_hz[j], s->dt_s, phase);
+        double w = field(b, B_W)[j], y[2] = {p0[j], v0[j]};
+        rb_spec_tracker t = {.w = w, .xi = b->xi, .psa = psa_run[j], .sa = sa_run[j]};
+        rb_spec_free_tail_with(&t, y, b->f_hz[j], s->dt_s, b->phase, sub_of(b, j),
+                               b->sub_k[j]);
         psa[j] = w * t.psa;
         sa[j] = t.sa;
+        psa_run[j] = t.psa;
+        sa_run[j] = t.sa;
     }
-    bank_free(&b);
+    /* Intervals whose bound stayed under a hint were not walked: that is
+     * right where the peak reached the hint (the interval could not raise
+     * it), and the run is made again without hints where one did not. */
+    int short_of_hint = 0;
+    for (size_t j = 0; j < n; j++)
+        short_of_hint |= psa_run[j] < hint_p[j] || sa_run[j] < hint_a[j];
+    if (b->hinted && short_of_hint) {
+        b->hinted = 0;
+        return rb_spec_bank_run(b, s, psa, sa);
+    }
+    for (size_t j = 0; j < n; j++) {
+        hint_p[j] = SPECTRUM_BANK_HINT * psa_run[j];
+        hint_a[j] = SPECTRUM_BANK_HINT * sa_run[j];
+    }
+    b->hinted = 1;
     return RB_OK;
+}
+
+rb_status rb_spec_bank_peaks(const rb_series *s, const double *f_hz, size_t n, double xi,
+                             double phase, double *psa, double *sa)
+{
+    bank *b;
+    rb_status st = rb_spec_bank_new(f_hz, n, xi, s->dt_s, phase, &b);
+    if (st == RB_OK)
+        st = rb_spec_bank_run(b, s, psa, sa);
+    rb_spec_bank_free(b);
+    return st;
 }

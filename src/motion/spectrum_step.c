@@ -155,15 +155,31 @@ void rb_spec_tracker_step(rb_spec_tracker *t, double pw, double v, double load, 
 }
 
 
+void rb_spec_sub_transition(rb_spec_transition *tr, double w, double xi, double dt,
+                            double phase, unsigned *k)
+{
+    double a[4], b[2];
+    rb_spec_system(w, xi, 0.0, 0.0, 2, a, b);
+    unsigned kf = (unsigned)ceil(w * dt / phase);
+    *k = kf ? kf : 1;
+    rb_spec_transition_init(tr, 2, a, b, dt / *k);
+}
+
 void rb_spec_free_tail(rb_spec_tracker *t, const double *y0, double f_hz, double dt,
                        double phase)
 {
-    double w = t->w, a[4], b[2];
-    rb_spec_system(w, t->xi, 0.0, 0.0, 2, a, b);
-    unsigned kf = (unsigned)ceil(w * dt / phase);
-    double hf = dt / (kf ? kf : 1);
     rb_spec_transition tr;
-    rb_spec_transition_init(&tr, 2, a, b, hf);
+    unsigned kf;
+    rb_spec_sub_transition(&tr, t->w, t->xi, dt, phase, &kf);
+    rb_spec_free_tail_with(t, y0, f_hz, dt, phase, &tr, kf);
+}
+
+void rb_spec_free_tail_with(rb_spec_tracker *t, const double *y0, double f_hz, double dt,
+                            double phase, const rb_spec_transition *sub, unsigned kf)
+{
+    double w = t->w, a[4], b[2];
+    double hf = dt / kf;
+    rb_spec_transition tr = *sub;
     double y[2] = {y0[0], y0[1]};
     rb_spec_tracker_read(t, y[0], y[1], 0.0);
     double period = 1.0 / f_hz, rest = 0.0;
@@ -183,6 +199,7 @@ void rb_spec_free_tail(rb_spec_tracker *t, const double *y0, double f_hz, double
          * error depends only on the phase a step covers */
         size_t nb = (size_t)ceil(rest * w / phase);
         double hb = rest / (double)(nb ? nb : 1);
+        rb_spec_system(w, t->xi, 0.0, 0.0, 2, a, b);
         rb_spec_transition_init(&tr, 2, a, b, hb);
         for (size_t i = 0; i < nb; i++) {
             rb_spec_transition_apply(&tr, y, 0.0, 0.0);

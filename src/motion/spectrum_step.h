@@ -44,5 +44,14 @@ void rb_spec_tracker_step(rb_spec_tracker *t, double pw, double v, double load, 
  * with sub-steps of at most `phase` radians. dt: the series' step. */
 void rb_spec_free_tail(rb_spec_tracker *t, const double *y, double f_hz, double dt,
                        double phase);
+/* The same with the sub-step's transition made (rb_spec_sub_transition). */
+void rb_spec_free_tail_with(rb_spec_tracker *t, const double *y, double f_hz, double dt,
+                            double phase, const rb_spec_transition *sub, unsigned k);
+
+/* The transition over a sub-step of an oscillator alone (w, xi) when a
+ * step dt is cut into k = ceil(w dt / phase) (at least 1) of them: the
+ * sub-steps of a flagged interval and of the free tail alike. */
+void rb_spec_sub_transition(rb_spec_transition *tr, double w, double xi, double dt,
+                            double phase, unsigned *k);
 
 #endif

@@ -113,6 +113,8 @@ typedef struct {
     rb_spectrum fine;        /* the laboratory's grid (rb_accept_grid) */
     double *fine_target;
     double *log_ratio;       /* per point of either grid */
+    rb_spectrum_bank *grid_bank, *fine_bank; /* the grids' oscillators, made once */
+    rb_synth_baseline_basis baseline;
     double pgv, pgd;         /* of the last motion made */
 } generator;
 
@@ -128,6 +130,9 @@ static void generator_free(generator *g)
     free(g->log_ratio);
     rb_spectrum_free(&g->grid);
     rb_spectrum_free(&g->fine);
+    rb_spectrum_bank_free(g->grid_bank);
+    rb_spectrum_bank_free(g->fine_bank);
+    rb_synth_baseline_free(&g->baseline);
 }
 
 int rb_synth_opts_check(const rb_synth_opts *o, const char **key, char *why, size_t n)
@@ -275,6 +280,13 @@ static rb_status generator_init(generator *g, const rb_synth_opts *o)
      * does not wrap onto itself within it */
     if (st == RB_OK)
         st = rb_fft_real_init(&g->fft, 2 * g->n);
+    g->grid.step_phase = g->fine.step_phase = SYNTH_QUICK_PHASE;
+    if (st == RB_OK)
+        st = rb_spectrum_bank_new(&g->grid, o->dt_s, &g->grid_bank);
+    if (st == RB_OK)
+        st = rb_spectrum_bank_new(&g->fine, o->dt_s, &g->fine_bank);
+    if (st == RB_OK)
+        st = rb_synth_baseline_init(&g->baseline, g->n, o->dt_s);
     if (st != RB_OK)
         return st;
     size_t bins = g->fft.n / 2 + 1;
@@ -392,7 +404,7 @@ static void synthesise(generator *g, double *a)
     rb_fft_real_inverse(&g->fft);
     for (size_t i = 0; i < g->n; i++)
         a[i] = g->envelope[i] * g->fft.time[i];
-    rb_synth_baseline(a, g->n, g->o->dt_s);
+    rb_synth_baseline(&g->baseline, a);
     double v_end, d_end;
     rb_samples_integrate(a, g->n, g->o->dt_s, &v_end, &d_end, &g->pgv, &g->pgd);
 }
@@ -538,8 +550,7 @@ rb_status rb_synth_describe(const rb_target *t, const rb_series *s, rb_synth_inf
 static rb_status judge_pass(generator *g, const rb_series *work, double peak, double *v,
                             const rb_spectrum **on, const double **on_target)
 {
-    g->grid.step_phase = SYNTH_QUICK_PHASE;
-    rb_status st = rb_spectrum_of_series(work, 1.0, &g->grid);
+    rb_status st = rb_spectrum_of_series_banked(g->grid_bank, work, 1.0, &g->grid);
     if (st != RB_OK)
         return st;
     *on = &g->grid;
@@ -547,8 +558,7 @@ static rb_status judge_pass(generator *g, const rb_series *work, double peak, do
     *v = violation(g, &g->grid, g->target, peak, SYNTH_QUICK_SLACK);
     if (*v > 0)
         return RB_OK;
-    g->fine.step_phase = SYNTH_QUICK_PHASE;
-    st = rb_spectrum_of_series(work, 1.0, &g->fine);
+    st = rb_spectrum_of_series_banked(g->fine_bank, work, 1.0, &g->fine);
     if (st != RB_OK)
         return st;
     *on = &g->fine;
