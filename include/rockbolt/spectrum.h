@@ -71,9 +71,12 @@ rb_status rb_spectrum_of_series(const rb_series *s, double scale, rb_spectrum *s
  * of one time step on a floor given directly (their exact transitions
  * made once): for a caller that takes the spectrum of every pass of an
  * iteration on one grid. rb_spectrum_of_series_banked gives
- * rb_spectrum_of_series's ordinates to the bit, through the bank when it
- * was made for sp's grid, damping and step_phase and the series' step
- * (and the series has no building), by rb_spectrum_of_series otherwise.
+ * rb_spectrum_of_series's ordinates (to the bit in test_spectrum_bank),
+ * through the bank when it was made for sp's grid, damping and step_phase
+ * and the series' step (and the series has no building), by
+ * rb_spectrum_of_series otherwise. A run walks again only the intervals
+ * that could raise a peak above 0.8 of the last run's, and is made again
+ * in full where a peak stays under that.
  * rb_spectrum_bank_new: RB_ERR_INVALID as rb_spectrum_of_series, and
  * RB_ERR_NOMEM. */
 typedef struct rb_spectrum_bank rb_spectrum_bank;

@@ -21,7 +21,7 @@ rb_status rb_spec_bank_peaks(const rb_series *s, const double *f_hz, size_t n, d
  * transitions are made once (rb_spec_bank_new, a copy of f_hz) and each
  * run (rb_spec_bank_run) starts from rest; the sub-steps' transitions are
  * made when first needed and kept. The results are rb_spec_bank_peaks'
- * to the bit. rb_spec_bank_fits: whether b was made for these. */
+ * (to the bit in test_spectrum_bank). rb_spec_bank_fits: whether b was made for these. */
 rb_status rb_spec_bank_new(const double *f_hz, size_t n, double xi, double dt, double phase,
                            rb_spectrum_bank **out);
 rb_status rb_spec_bank_run(rb_spectrum_bank *b, const rb_series *s, double *psa, double *sa);

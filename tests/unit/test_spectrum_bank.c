@@ -12,7 +12,9 @@
  *     peak), within 2.5e-5: the cubic at 0.2 rad on these rough floors
  *     (measured 2.05e-5; (0.2)^4 / 384 = 4.2e-6 is what it gives on a
  *     smooth one, test_spectrum.c).
- * Also: a floor at rest gives zeros, and so does a series of one sample. */
+ * Also: a floor at rest gives zeros, and so does a series of one sample;
+ * a bank made once gives, series after series, what a bank made for each
+ * gives, to the bit (check_banked). */
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -118,10 +120,59 @@ static void check_rest(void)
     rb_series_free(&s);
 }
 
+/* A bank made once and run on series after series of one step (the
+ * synthetic motions' passes): each run gives what rb_spectrum_of_series
+ * gives alone, through the hints the last run left, whether the peaks
+ * grew (the hints held), fell under them (the run made again without) or
+ * the floor is a new one; at the quick phase and the default. A bank made
+ * for another step or grid is not used. */
+static void check_banked(double phase)
+{
+    static const double scales[] = {1.0, 1.1, 0.95, 3.0, 0.2, 1.0, 0.79, 1.3};
+    size_t n = 3000;
+    double dt = 0.005, xi = 0.05, f[FREQS];
+    for (int k = 0; k < FREQS; k++)
+        f[k] = 0.6 * exp2(0.75 * k);
+    rb_series s, other;
+    CHECK(rb_series_alloc(&s, n, dt) == RB_OK);
+    CHECK(rb_series_alloc(&other, n, 2 * dt) == RB_OK);
+    rb_spectrum sp, alone;
+    CHECK(rb_spectrum_alloc(&sp, f, FREQS, xi) == RB_OK);
+    CHECK(rb_spectrum_alloc(&alone, f, FREQS, xi) == RB_OK);
+    sp.step_phase = alone.step_phase = phase;
+    rb_spectrum_bank *b;
+    CHECK(rb_spectrum_bank_new(&sp, dt, &b) == RB_OK);
+    for (int floor = 0; floor < 3; floor++) {
+        random_floor(&s);
+        for (size_t r = 0; r < sizeof scales / sizeof *scales; r++) {
+            for (size_t i = 0; i < n; i++)
+                s.accel_mps2[i] *= scales[r];
+            CHECK(rb_spectrum_of_series_banked(b, &s, 2.0, &sp) == RB_OK);
+            CHECK(rb_spectrum_of_series(&s, 2.0, &alone) == RB_OK);
+            for (int k = 0; k < FREQS; k++) {
+                CHECK(sp.psa_mps2[k] == alone.psa_mps2[k]);
+                CHECK(sp.sa_mps2[k] == alone.sa_mps2[k]);
+            }
+        }
+    }
+    random_floor(&other);
+    CHECK(rb_spectrum_of_series_banked(b, &other, 1.0, &sp) == RB_OK);
+    CHECK(rb_spectrum_of_series(&other, 1.0, &alone) == RB_OK);
+    for (int k = 0; k < FREQS; k++)
+        CHECK(sp.sa_mps2[k] == alone.sa_mps2[k] && sp.sa_mps2[k] > 0);
+    rb_spectrum_bank_free(b);
+    rb_spectrum_free(&sp);
+    rb_spectrum_free(&alone);
+    rb_series_free(&s);
+    rb_series_free(&other);
+}
+
 int main(void)
 {
     check_rest();
     for (int c = 0; c < CASES; c++)
         check_case();
+    check_banked(1.0);
+    check_banked(0.2);
     TEST_MAIN_END();
 }
