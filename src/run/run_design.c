@@ -19,7 +19,10 @@ static rb_status fail_at(rb_diag *diag, const char *motion, const char *what,
     char key[sizeof diag->key];
     if (!diag)
         return st;
-    snprintf(key, sizeof key, "motion '%.60s': %s", motion ? motion : "?", what);
+    /* A long key is cut: the return value is read so that the cut is
+     * deliberate, not a -Wformat-truncation warning in release builds. */
+    if (snprintf(key, sizeof key, "motion '%.60s': %s", motion ? motion : "?", what) < 0)
+        key[0] = '\0';
     return rb_diag_set(diag, st, diag->file, diag->line, diag->col, key, "%s",
                        diag->msg[0] ? diag->msg : rb_status_str(st));
 }

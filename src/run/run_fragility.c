@@ -133,8 +133,10 @@ static rb_status search(const rb_case *c, size_t m, rb_limit_state k, int confir
                                    1, memo, &hints, &f, diag);
     if (st != RB_OK) {
         char key[sizeof diag->key];
-        snprintf(key, sizeof key, "motion '%.60s': %s", c->motions[m].name ?
-                 c->motions[m].name : "?", rb_enum_str(rb_limit_state_names, (int)k));
+        if (snprintf(key, sizeof key, "motion '%.60s': %s", c->motions[m].name ?
+                     c->motions[m].name : "?",
+                     rb_enum_str(rb_limit_state_names, (int)k)) < 0)
+            key[0] = '\0';
         return rb_diag_set(diag, st, diag->file, diag->line, diag->col, key, "%s",
                            diag->msg[0] ? diag->msg : rb_status_str(st));
     }
