@@ -57,4 +57,45 @@ static double set_correlation(const rb_series *a, const rb_series *b)
     return best / ((double)n * sqrt(va * vb));
 }
 
+/* The RRS at f for the test's own target. */
+typedef double (*set_rrs_fn)(double f, const void *ctx);
+
+/* TRS / RRS at one of the 12 offsets of the 1/72-octave grid fq (fq[0] at
+ * k0 steps above 0.1 Hz): the offset's points within [lo, hi] and the
+ * nearest one outside each end, as the laboratory's code takes them. The
+ * largest ratio within [lo, hi] goes to *most (NULL: not asked). Returns
+ * the number of points written to f and q (each at least 80 long). */
+static size_t offset_ratios(const double *fq, const double *sa, size_t n, int k0, int off,
+                            double lo, double hi, set_rrs_fn rrs, const void *ctx,
+                            double *f, double *q, double *most)
+{
+    size_t m = 0;
+    long below = -1, above = -1;
+    for (size_t i = 0; i < n; i++) {
+        if (((k0 + (int)i) % 12) != off)
+            continue;
+        if (fq[i] < lo)
+            below = (long)i;
+        else if (fq[i] > hi) {
+            if (above < 0)
+                above = (long)i;
+        } else {
+            if (m == 0 && below >= 0) {
+                f[m] = fq[below];
+                q[m++] = sa[below] / rrs(fq[below], ctx);
+            }
+            f[m] = fq[i];
+            q[m] = sa[i] / rrs(fq[i], ctx);
+            if (most)
+                *most = fmax(*most, q[m]);
+            m++;
+        }
+    }
+    if (above >= 0) {
+        f[m] = fq[above];
+        q[m++] = sa[above] / rrs(fq[above], ctx);
+    }
+    return m;
+}
+
 #endif

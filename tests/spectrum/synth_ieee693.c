@@ -76,6 +76,16 @@ static void *run(void *arg)
     return NULL;
 }
 
+typedef struct {
+    double xi, factor;
+} ieee_rrs_ctx;
+
+static double ieee_rrs(double f, const void *ctx)
+{
+    const ieee_rrs_ctx *c = ctx;
+    return G * rrs_g(f, c->xi, c->factor);
+}
+
 static void check_component(const job *j)
 {
     CHECK(j->st == RB_OK);
@@ -98,32 +108,11 @@ static void check_component(const job *j)
     int k0 = (int)lround(log2(fq[0] / 0.1) * 72);
     double least = INFINITY, most = 0;
     int offsets = 0;
+    ieee_rrs_ctx rc = {j->xi, factor};
     for (int off = 0; off < 12; off++) {
         double f[80], q[80];
-        size_t m = 0;
-        long below = -1, above = -1;
-        for (size_t i = 0; i < n; i++) {
-            if (((k0 + (int)i) % 12) != off)
-                continue;
-            if (fq[i] < 1.1)
-                below = (long)i;
-            else if (fq[i] > 33.0) {
-                if (above < 0)
-                    above = (long)i;
-            } else {
-                if (m == 0 && below >= 0) {
-                    f[m] = fq[below];
-                    q[m++] = sp.sa_mps2[below] / (G * rrs_g(fq[below], j->xi, factor));
-                }
-                f[m] = fq[i];
-                q[m] = sp.sa_mps2[i] / (G * rrs_g(fq[i], j->xi, factor));
-                most = fmax(most, q[m++]);
-            }
-        }
-        if (above >= 0) {
-            f[m] = fq[above];
-            q[m++] = sp.sa_mps2[above] / (G * rrs_g(fq[above], j->xi, factor));
-        }
+        size_t m = offset_ratios(fq, sp.sa_mps2, n, k0, off, 1.1, 33.0, ieee_rrs, &rc, f, q,
+                                 &most);
         int ok = rules_pass(f, q, m, &least);
         CHECK(ok);
         offsets += ok;

@@ -111,6 +111,12 @@ static void *run(void *arg)
 static double worst_margin = INFINITY, worst_tail_lo = INFINITY, worst_tail_hi = 0;
 static double worst_peak = INFINITY, worst_pgd = 0, worst_pgv = 0, worst_corr = 0;
 
+static double job_rrs(double f, const void *ctx)
+{
+    const job *j = ctx;
+    return rrs(j->flx, j->rig, f);
+}
+
 static void check_component(const job *j)
 {
     CHECK(j->st == RB_OK);
@@ -133,28 +139,8 @@ static void check_component(const job *j)
     int k0 = (int)lround(log2(fq[0] / 0.1) * 72);
     for (int off = 0; off < 12; off++) {
         double f[80], q[80];
-        size_t m = 0;
-        long below = -1, above = -1;
-        for (size_t i = 0; i < n; i++) {
-            if (((k0 + (int)i) % 12) != off)
-                continue;
-            double r = sp.sa_mps2[i] / rrs(j->flx, j->rig, fq[i]);
-            if (fq[i] < 1.3)
-                below = (long)i;
-            else if (fq[i] > 33.3) {
-                if (above < 0)
-                    above = (long)i;
-            } else {
-                if (m == 0) {
-                    f[m] = fq[below];
-                    q[m++] = sp.sa_mps2[below] / rrs(j->flx, j->rig, fq[below]);
-                }
-                f[m] = fq[i];
-                q[m++] = r;
-            }
-        }
-        f[m] = fq[above];
-        q[m++] = sp.sa_mps2[above] / rrs(j->flx, j->rig, fq[above]);
+        size_t m = offset_ratios(fq, sp.sa_mps2, n, k0, off, 1.3, 33.3, job_rrs, j, f, q,
+                                 NULL);
         double factor = lab_factor(f, q, m);
         CHECK(factor >= 1.0);
         worst_margin = fmin(worst_margin, factor);
