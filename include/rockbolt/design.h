@@ -84,6 +84,14 @@ typedef struct rb_design_memo rb_design_memo;
 rb_design_memo *rb_design_memo_new(void);   /* NULL when out of memory */
 void rb_design_memo_free(rb_design_memo *m); /* accepts NULL */
 size_t rb_design_memo_runs(rb_design_memo *m); /* runs held (0 for NULL) */
+/* Keep a run solved outside the searches (`check`'s run of a motion at its
+ * own level, which may carry a history): kept as the same run without a
+ * history (opts with history_dt_s = 0, the options a search solves with),
+ * since recording a history only reads the steps the solver takes
+ * (tests/unit/test_design_memo_keep.c holds the two runs equal). The
+ * result's history is not kept; r stays the caller's. */
+void rb_design_memo_keep(rb_design_memo *m, const rb_model *model, const rb_motion *motion,
+                         const rb_solve_opts *opts, rb_status status, const rb_result *r);
 
 /* ---- Design factor ------------------------------------------------------ */
 

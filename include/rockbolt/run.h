@@ -65,6 +65,14 @@ const rb_design_factor_result *rb_run_own_factor(const rb_case *c,
  * progress callback may be NULL; the results do not depend on it. */
 rb_status rb_run_design(const rb_case *c, int n_threads, rb_case_design *out,
                         rb_diag *diag, rb_design_progress_fn progress, void *ctx);
+/* The same after `check`: checked[i] is motion i's run at its own level
+ * (rb_run_motion's result, history or not), which every search of motion
+ * i that asks for that run is given instead of solving it again (the
+ * recommended gap's run at the case's own gap, the factors' where a scan
+ * level is the motion's own). checked NULL: as rb_run_design. */
+rb_status rb_run_design_checked(const rb_case *c, const rb_result *checked, int n_threads,
+                                rb_case_design *out, rb_diag *diag,
+                                rb_design_progress_fn progress, void *ctx);
 
 /* ---- Fragility ------------------------------------------------------------ */
 

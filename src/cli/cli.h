@@ -123,8 +123,10 @@ rb_exit rb_cli_fragility_run(const rb_cli_opts *o);
 rb_exit rb_cli_check_run(const rb_cli_opts *o);
 
 /* The design step of `rockbolt design`, between solving and reporting:
- * runs rb_run_design and prints a failure. */
-rb_exit rb_cli_design_step(const rb_cli_opts *o, const rb_case *c, rb_case_design *d);
+ * runs rb_run_design_checked on the check's runs of the motions (checked,
+ * one a motion) and prints a failure. */
+rb_exit rb_cli_design_step(const rb_cli_opts *o, const rb_case *c, const rb_result *checked,
+                           rb_case_design *d);
 
 /* The file name of the i-th of n files asked for under one name (sweep
  * CSVs, figures): the name itself when n is 1, else with "-<i+1>" before

@@ -490,7 +490,7 @@ rb_exit rb_cli_check_run(const rb_cli_opts *o)
     if (e == RB_EXIT_PASS)
         e = solve_all(o, &r);
     if (e == RB_EXIT_PASS && o->command == RB_CMD_DESIGN) {
-        e = rb_cli_design_step(o, &r.c, &r.design);
+        e = rb_cli_design_step(o, &r.c, r.results, &r.design);
         r.rep.design = &r.design;
     }
     if (e == RB_EXIT_PASS)

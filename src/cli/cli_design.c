@@ -18,7 +18,8 @@ static void on_progress(void *ctx, size_t done, size_t total, const char *what)
     rb_cli_progress_design(&p->line, done, total, what);
 }
 
-rb_exit rb_cli_design_step(const rb_cli_opts *o, const rb_case *c, rb_case_design *d)
+rb_exit rb_cli_design_step(const rb_cli_opts *o, const rb_case *c, const rb_result *checked,
+                           rb_case_design *d)
 {
     rb_diag diag;
     rb_status st;
@@ -27,7 +28,8 @@ rb_exit rb_cli_design_step(const rb_cli_opts *o, const rb_case *c, rb_case_desig
      * outputs are the same with it or without */
     design_progress p = {0};
     rb_cli_progress_start(&p.line, o->quiet);
-    st = rb_run_design(c, o->threads, d, &diag, p.line.enabled ? on_progress : NULL, &p);
+    st = rb_run_design_checked(c, checked, o->threads, d, &diag,
+                               p.line.enabled ? on_progress : NULL, &p);
     if (p.line.enabled && p.line.shown && st != RB_OK)
         fputs("\r\033[K", stderr);
     else if (st == RB_OK)

@@ -16,14 +16,27 @@
 typedef struct {
     const rb_design_ctx *ctx;
     const double *ratios;
+    const double *own;          /* the case's own point of the grid */
     rb_design_run *runs;
 } gap_batch;
+
+/* The model at a point of the grid; at the case's own point, the case's
+ * model itself, whose gap over the lever arm and back can be an ulp off:
+ * the run `check` made, which the design hands to the search
+ * (rb_design_memo_keep), and whose verdict the own gap's must be. */
+static void model_at(const rb_design_ctx *ctx, const double *ratio, const double *own,
+                     rb_model *m)
+{
+    *m = *ctx->model;
+    if (ratio != own)
+        m->gap_m = *ratio * m->lever_arm_m;
+}
 
 static rb_status gap_job(void *v, size_t i)
 {
     gap_batch *b = v;
-    rb_model m = *b->ctx->model;
-    m.gap_m = b->ratios[i] * m.lever_arm_m;
+    rb_model m;
+    model_at(b->ctx, &b->ratios[i], b->own, &m);
     rb_design_run_one(b->ctx, &m, b->ctx->motion, &b->runs[i]);
     return b->runs[i].status;
 }
@@ -92,8 +105,8 @@ static rb_status yield_run(const rb_design_ctx *ctx, rb_gap_result *out, rb_diag
  * the first failing gap: the gaps below it cannot change the answer. Runs
  * made past that point in the last round are discarded, so the points kept
  * are those a single thread would have run. */
-static rb_status run_grid(const rb_design_ctx *ctx, const double *ratios, int n_threads,
-                          rb_gap_result *out, rb_diag *diag)
+static rb_status run_grid(const rb_design_ctx *ctx, const double *ratios, const double *own,
+                          int n_threads, rb_gap_result *out, rb_diag *diag)
 {
     size_t n = out->n_points;
     size_t nt = (size_t)(n_threads > 0 ? n_threads : rb_pool_threads_default());
@@ -104,7 +117,7 @@ static rb_status run_grid(const rb_design_ctx *ctx, const double *ratios, int n_
     out->fail_index = -1;
     for (size_t k = n; st == RB_OK && k > 0 && out->fail_index < 0;) {
         size_t m = k < nt ? k : nt;
-        gap_batch b = {ctx, ratios + (k - m), runs};
+        gap_batch b = {ctx, ratios + (k - m), own, runs};
         if ((st = rb_pool_map(m, n_threads, gap_job, &b, NULL)) != RB_OK)
             break;
         /* slot j holds grid point k - m + j; read them from the top down */
@@ -202,12 +215,12 @@ rb_status rb_gap_recommend_memo(const rb_model *model, const rb_motion *motion,
     out->own_above = own_i == n - 1 && own > top * (1 + 1e-12);
     for (size_t i = 0; i < n; i++)
         out->points[i].gap_ratio = ratios[i];
-    st = run_grid(&ctx, ratios, n_threads, out, diag);
+    st = run_grid(&ctx, ratios, &ratios[own_i], n_threads, out, diag);
     if (st == RB_OK && !out->points[own_i].evaluated) {
         /* below the highest failing gap: the walk did not reach it */
         rb_design_run run;
-        rb_model m = *ctx.model;
-        m.gap_m = ratios[own_i] * m.lever_arm_m;
+        rb_model m;
+        model_at(&ctx, &ratios[own_i], &ratios[own_i], &m);
         rb_design_run_one(&ctx, &m, ctx.motion, &run);
         out->runs++;
         if (run.status != RB_OK)

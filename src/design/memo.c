@@ -226,3 +226,14 @@ void rb_design_memo_put(rb_design_memo *m, const rb_model *model, const rb_motio
     pthread_cond_broadcast(&m->settled);
     pthread_mutex_unlock(&m->lock);
 }
+
+void rb_design_memo_keep(rb_design_memo *m, const rb_model *model, const rb_motion *motion,
+                         const rb_solve_opts *opts, rb_status status, const rb_result *r)
+{
+    rb_solve_opts o = *opts;
+    rb_result summary = *r;
+    /* the searches solve without a history: the same steps, read less */
+    o.history_dt_s = 0;
+    summary.history = NULL;
+    rb_design_memo_put(m, model, motion, &o, status, &summary);
+}

@@ -163,15 +163,19 @@ static rb_status design_searches(const rb_case *c, const rb_case_motion *cm,
 }
 
 /* The searches of one motion share their runs: the factors' scans and an
- * amplitude sweep ask for many of the same levels. */
+ * amplitude sweep ask for many of the same levels, and the recommended
+ * gap's run at the case's own gap is the motion's own run, which `check`
+ * made before (checked, NULL when none). */
 static rb_status design_motion(const rb_case *c, const rb_case_motion *cm,
-                               rb_run_design_scope scope, int n_threads,
-                               const rb_case_design *cd, rb_motion_design *md,
-                               rb_diag *diag, progress *pg)
+                               const rb_result *checked, rb_run_design_scope scope,
+                               int n_threads, const rb_case_design *cd,
+                               rb_motion_design *md, rb_diag *diag, progress *pg)
 {
     rb_design_memo *memo = rb_design_memo_new();
     if (!memo)
         return RB_ERR_NOMEM;
+    if (checked)
+        rb_design_memo_keep(memo, &c->model, &cm->motion, &c->solve, RB_OK, checked);
     rb_status st = design_searches(c, cm, scope, n_threads, cd, memo, md, diag, pg);
     rb_design_memo_free(memo);
     return st;
@@ -224,7 +228,7 @@ rb_status rb_run_motion_design(const rb_case *c, size_t m, rb_run_design_scope s
 {
     progress none = {NULL, NULL, 0, 0, PTHREAD_MUTEX_INITIALIZER};
     memset(md, 0, sizeof *md);
-    return design_motion(c, &c->motions[m], scope, n_threads, cd, md, diag, &none);
+    return design_motion(c, &c->motions[m], NULL, scope, n_threads, cd, md, diag, &none);
 }
 
 const rb_design_factor_result *rb_run_own_factor(const rb_case *c,
@@ -237,6 +241,7 @@ const rb_design_factor_result *rb_run_own_factor(const rb_case *c,
  * frequency sweeps (which use no motion), each with its own diag. */
 typedef struct {
     const rb_case *c;
+    const rb_result *checked;   /* check's run of each motion, or NULL */
     int n_threads;
     rb_case_design *out;
     progress *pg;
@@ -251,13 +256,21 @@ static rb_status part_job(void *v, size_t i)
     if (i == 1)
         return design_sweeps(d->c, d->n_threads, d->out, &d->diag[i], d->pg);
     for (size_t m = 0; m < d->c->n_motions && st == RB_OK; m++)
-        st = design_motion(d->c, &d->c->motions[m], RB_RUN_DESIGN_FULL, d->n_threads, d->out,
-                           &d->out->motions[m], &d->diag[i], d->pg);
+        st = design_motion(d->c, &d->c->motions[m], d->checked ? &d->checked[m] : NULL,
+                           RB_RUN_DESIGN_FULL, d->n_threads, d->out, &d->out->motions[m],
+                           &d->diag[i], d->pg);
     return st;
 }
 
 rb_status rb_run_design(const rb_case *c, int n_threads, rb_case_design *out,
                         rb_diag *diag, rb_design_progress_fn fn, void *ctx)
+{
+    return rb_run_design_checked(c, NULL, n_threads, out, diag, fn, ctx);
+}
+
+rb_status rb_run_design_checked(const rb_case *c, const rb_result *checked, int n_threads,
+                                rb_case_design *out, rb_diag *diag,
+                                rb_design_progress_fn fn, void *ctx)
 {
     rb_status st = RB_OK;
     size_t i, n_amp = 0, n_freq = 0;
@@ -278,7 +291,8 @@ rb_status rb_run_design(const rb_case *c, int n_threads, rb_case_design *out,
      * sweep's independent points fill the cores it leaves idle (each
      * part is given every thread; with one, they run in this order) */
     int nt = n_threads > 0 ? n_threads : rb_pool_threads_default();
-    design_parts parts = {.c = c, .n_threads = n_threads, .out = out, .pg = &pg};
+    design_parts parts = {.c = c, .checked = checked, .n_threads = n_threads, .out = out,
+                          .pg = &pg};
     rb_status sts[2];
     st = rb_pool_map(n_freq ? 2 : 1, nt > 1 ? 2 : 1, part_job, &parts, sts);
     for (i = 0; i < (n_freq ? 2u : 1u) && st == RB_OK; i++)
