@@ -47,13 +47,16 @@ typedef enum {
 void rb_run_design_criteria(const rb_case *c, rb_case_design *out);
 
 /* The design of motion m of c, the part scope names, against the criteria
- * in cd (rb_run_design_criteria). md is overwritten; free it with
+ * in cd (rb_run_design_criteria). checked is the motion's own run made
+ * before (rb_run_motion's result), which the searches are given instead of
+ * solving it again, or NULL. md is overwritten; free it with
  * rb_motion_design_free (also after an error).
  * Errors as for rb_design_factor; diag->key then names the motion and the
  * search. */
-rb_status rb_run_motion_design(const rb_case *c, size_t m, rb_run_design_scope scope,
-                               int n_threads, const rb_case_design *cd,
-                               rb_motion_design *md, rb_diag *diag);
+rb_status rb_run_motion_design(const rb_case *c, size_t m, const rb_result *checked,
+                               rb_run_design_scope scope, int n_threads,
+                               const rb_case_design *cd, rb_motion_design *md,
+                               rb_diag *diag);
 
 /* The design factor against the case's own criteria, out of md. */
 const rb_design_factor_result *rb_run_own_factor(const rb_case *c,

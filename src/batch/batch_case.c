@@ -149,7 +149,8 @@ void rb_batch_case_solve(rb_batch_slot *s, rb_batch_case *bc, size_t m, int desi
     memset(&cd, 0, sizeof cd);
     rb_run_design_criteria(&s->c, &cd);
     rb_motion_design md;
-    rb_status st = rb_run_motion_design(&s->c, m, RB_RUN_DESIGN_BRIEF, 1, &cd, &md, d);
+    /* the row's own run is the recommended gap's at the case's own gap */
+    rb_status st = rb_run_motion_design(&s->c, m, r, RB_RUN_DESIGN_BRIEF, 1, &cd, &md, d);
     if (st == RB_OK) {
         src.factor = rb_run_own_factor(&s->c, &md);
         src.design = &md;

@@ -222,13 +222,14 @@ void rb_run_design_criteria(const rb_case *c, rb_case_design *out)
     out->gap_criteria = c->criteria;
 }
 
-rb_status rb_run_motion_design(const rb_case *c, size_t m, rb_run_design_scope scope,
-                               int n_threads, const rb_case_design *cd,
-                               rb_motion_design *md, rb_diag *diag)
+rb_status rb_run_motion_design(const rb_case *c, size_t m, const rb_result *checked,
+                               rb_run_design_scope scope, int n_threads,
+                               const rb_case_design *cd, rb_motion_design *md,
+                               rb_diag *diag)
 {
     progress none = {NULL, NULL, 0, 0, PTHREAD_MUTEX_INITIALIZER};
     memset(md, 0, sizeof *md);
-    return design_motion(c, &c->motions[m], NULL, scope, n_threads, cd, md, diag, &none);
+    return design_motion(c, &c->motions[m], checked, scope, n_threads, cd, md, diag, &none);
 }
 
 const rb_design_factor_result *rb_run_own_factor(const rb_case *c,
