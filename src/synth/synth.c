@@ -48,6 +48,10 @@
 #define SYNTH_TAIL_LOWER 0.9
 #define SYNTH_TAIL_UPPER 1.3
 #define SYNTH_BELOW_MAX 1.0
+/* Aimed a little under the line below the cutoffs' zone: a pass counts
+ * as met there at 1 less the quick spectrum's slack (3e-3), and a ratio
+ * aimed at the line itself stalls just above that. */
+#define SYNTH_BELOW_AIM_HI 0.97
 /* The correction grid: 1/12 octave from half the low cutoff to the top
  * (the tail's end, or the high cutoff). */
 #define SYNTH_PER_OCTAVE 12.0
@@ -219,7 +223,7 @@ static void aim_at(const generator *g, double f, double *lo, double *hi, double 
     if (f < r->low_cutoff_hz * (1 - 1e-9)) {
         int edge = f * exp2(1.0 / 3.0) > r->low_cutoff_hz * (1 + 1e-9);
         *lo = edge ? SYNTH_EDGE_AIM_LO : 0.0;
-        *hi = edge ? SYNTH_EDGE_AIM_HI : SYNTH_BELOW_MAX;
+        *hi = edge ? SYNTH_EDGE_AIM_HI : SYNTH_BELOW_AIM_HI;
         *ok_lo = 0.0;
         *ok_hi = edge ? g->o->target->band_upper : SYNTH_BELOW_MAX;
     } else if (f <= r->high_cutoff_hz * (1 + 1e-9)) {
