@@ -53,8 +53,14 @@
  * aimed at the line itself stalls just above that. */
 #define SYNTH_BELOW_AIM_HI 0.97
 /* The correction grid: 1/12 octave from half the low cutoff to the top
- * (the tail's end, or the high cutoff). */
+ * (the tail's end, or the high cutoff), finer in proportion below 5 %
+ * damping: an oscillator's half-power band is 2 xi wide (1/7 octave at
+ * 5 %, 1/17 at 2 %), and a grid coarser than that misses the peaks
+ * between its points that the laboratory's 1/72-octave grid finds, so
+ * that passes alternating between the grids undo each other (IEEE 693 at
+ * 2 %: 30 points an octave). */
 #define SYNTH_PER_OCTAVE 12.0
+#define SYNTH_GRID_DAMPING 0.05
 #define SYNTH_BELOW 0.5
 /* Content above the top fades out (cos^2) by this multiple of it (or
  * 0.4 / dt). The peak is lifted by content there, where it raises the
@@ -264,14 +270,17 @@ static rb_status generator_init(generator *g, const rb_synth_opts *o)
     g->top_hz = r->tail_to_hz > r->high_cutoff_hz ? r->tail_to_hz : r->high_cutoff_hz;
     g->peak_want = RB_SYNTH_PEAK_MARGIN * t->min_peak_mps2;
     /* the grid is anchored at the low cutoff */
-    int j0 = (int)floor(log2(SYNTH_BELOW) * SYNTH_PER_OCTAVE);
-    int j1 = (int)floor(log2(g->top_hz / r->low_cutoff_hz) * SYNTH_PER_OCTAVE + 1e-9);
+    double per_octave = SYNTH_PER_OCTAVE;
+    if (r->damping < SYNTH_GRID_DAMPING)
+        per_octave = ceil(SYNTH_PER_OCTAVE * SYNTH_GRID_DAMPING / r->damping);
+    int j0 = (int)floor(log2(SYNTH_BELOW) * per_octave);
+    int j1 = (int)floor(log2(g->top_hz / r->low_cutoff_hz) * per_octave + 1e-9);
     size_t m = (size_t)(j1 - j0 + 1);
     double *f = malloc(m * sizeof *f);
     if (!f)
         return RB_ERR_NOMEM;
     for (size_t i = 0; i < m; i++)
-        f[i] = r->low_cutoff_hz * exp2((double)(j0 + (int)i) / SYNTH_PER_OCTAVE);
+        f[i] = r->low_cutoff_hz * exp2((double)(j0 + (int)i) / per_octave);
     rb_status st = rb_spectrum_alloc(&g->grid, f, m, r->damping);
     free(f);
     if (st == RB_OK)
