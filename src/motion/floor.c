@@ -48,6 +48,14 @@ static double sinc(double x)
 /* The free vibration's state at tau. */
 static void free_state(const segment *g, double tau, double *u, double *v)
 {
+    /* at the interval's start (a step from a sample, nearly every step)
+     * the state is the one it starts from: the exponential, sine and
+     * cosine below give it to the bit there, at the cost of a call each */
+    if (tau == 0.0) {
+        *u = g->uh;
+        *v = g->vh;
+        return;
+    }
     double e = exp(-g->xi * g->w * tau), c = cos(g->wd * tau);
     double sn = tau * sinc(g->wd * tau), xw = g->xi * g->w;
     *u = e * (g->uh * c + (g->vh + xw * g->uh) * sn);
