@@ -427,6 +427,26 @@ static int grazes(rb_solver *sv, const rb_rk_step *st, unsigned mask, double *ta
     return -1;
 }
 
+/* Whether a rocking Taylor step's angle keeps clear of every active
+ * guard's level over the whole step (the stage-2 guards are all angle
+ * levels: floor, bolt heads, overturning): its series' reach says so
+ * (rb_taylor_stays_off), and then no check point, turn or graze can read
+ * a crossing, so the step needs its guards at its end alone. The bound is
+ * taken over the step's span in time as well, since a turn's root is
+ * read at r - t0. */
+static int angle_clear(const rb_solver *sv, const rb_rk_step *st, unsigned mask)
+{
+    if (!st->is_taylor || !st->ts.rocking || !mask)
+        return 0;
+    double h = rb_fmax(st->h, st->t1 - st->t0) * (1 + 1e-12), level;
+    for (unsigned m = mask; m;) {
+        int k = rb_guard_next(&m);
+        if (!rb_guard_angle(sv, k, &level) || !rb_taylor_stays_off(&st->ts, RB_Y_TH, h, level))
+            return 0;
+    }
+    return 1;
+}
+
 /* Earliest guard crossing inside the accepted step, or -1. ys[j] is the
  * state at the end of check interval j of n_sub (ys[n_sub - 1] = y1).
  * Without a crossing, g_end holds the guards at the step's end, which the
@@ -436,6 +456,10 @@ static int find_event(rb_solver *sv, const rb_rk_step *st, const double *g0,
 {
     unsigned mask = rb_guard_mask(sv);
     double ga[G_COUNT], gb[G_COUNT];
+    if (angle_clear(sv, st, mask)) {
+        rb_guard_eval_x(sv, st->t1, ys[st->n_sub - 1], st->aux1.x, st->aux1.gz, g_end);
+        return -1;
+    }
     memcpy(ga, g0, sizeof ga);
     rb_guard_nudge(ga);
     int n = st->n_sub, turns = reads_turns(sv, st), force_turns = reads_force_turns(sv, st);

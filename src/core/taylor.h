@@ -83,6 +83,17 @@ double rb_taylor_rate_root(const rb_taylor *ts, int c, double a, double b, doubl
  * |k p_k| h^(k-1) over the series' terms. */
 double rb_taylor_rate_bound(const rb_taylor *ts, int c, double h);
 
+/* How far component c (RB_Y_*) can move from its start over [0, h]: the
+ * sum of |p_k| h^k, k >= 1, a rigorous bound of the series. */
+double rb_taylor_reach(const rb_taylor *ts, int c, double h);
+
+/* Whether component c stays strictly on its start's side of level at
+ * every instant of [0, h] as the Horner passes of the dense output read
+ * it (rb_taylor_one, _check, _state, _end): the reach plus the rounding
+ * of those passes and of the bound itself leave level outside. A guard
+ * that is c less a level then reads no crossing anywhere in the step. */
+int rb_taylor_stays_off(const rb_taylor *ts, int c, double h, double level);
+
 /* Where theta (physical) passes level in [a, b] (tau), theta - level
  * being fa and fb at the ends (either may be nudged off zero): Newton's
  * method on theta and theta', kept inside the bracket, to tol in tau. */

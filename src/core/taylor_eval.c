@@ -1,6 +1,7 @@
 /* Reading a Taylor step: its series at any instant of the step (the dense
  * output), what rb_dyn_rhs would give there, and roots of the rates and of
  * the angle by Newton's method on a series and its derivative series. */
+#include <float.h>
 #include <math.h>
 #include "bolt.h"
 #include "root.h"
@@ -40,6 +41,25 @@ double rb_taylor_rate_bound(const rb_taylor *ts, int c, double h)
     for (int k = ts->order; k >= 1; k--)
         b = b * h + k * fabs(ts->p[k][i]);
     return b;
+}
+
+double rb_taylor_reach(const rb_taylor *ts, int c, double h)
+{
+    int i = state_series[c];
+    double b = 0;
+    for (int k = ts->order; k >= 1; k--)
+        b = (b + fabs(ts->p[k][i])) * h;
+    return b;
+}
+
+int rb_taylor_stays_off(const rb_taylor *ts, int c, double h, double level)
+{
+    double p0 = ts->p[0][state_series[c]], reach = rb_taylor_reach(ts, c, h);
+    /* Horner's rounding is within n eps of sum |p_k| tau^k (Higham,
+     * Accuracy and Stability, 5.1), and the reach's own sum within as much
+     * of it: twice both, with the difference to the level rounded too */
+    double slop = (4.0 * ts->order + 8.0) * DBL_EPSILON * (fabs(p0) + reach + fabs(level));
+    return fabs(p0 - level) > reach + slop;
 }
 
 /* The still stages' angle, its rate and their trigonometry are constant,
