@@ -427,21 +427,28 @@ static int grazes(rb_solver *sv, const rb_rk_step *st, unsigned mask, double *ta
     return -1;
 }
 
-/* Whether a rocking Taylor step's angle keeps clear of every active
- * guard's level over the whole step (the stage-2 guards are all angle
- * levels: floor, bolt heads, overturning): its series' reach says so
- * (rb_taylor_stays_off), and then no check point, turn or graze can read
- * a crossing, so the step needs its guards at its end alone. The bound is
- * taken over the step's span in time as well, since a turn's root is
- * read at r - t0. */
+/* Whether a rocking Taylor step keeps clear of every active guard over
+ * the whole step: the guards of stage 2 and stage 5's overturning are
+ * angle levels (floor, bolt heads, overturning), stage 5's end of
+ * yielding is theta' at zero. Where the ranges of the step's series of
+ * theta and theta' (rb_taylor_range) say none can be reached, no check
+ * point, turn or graze can read a crossing, and the step reads its guards
+ * at its end alone. The ranges are taken over the step's span in time as
+ * well, since a turn's root is read at r - t0. */
 static int angle_clear(const rb_solver *sv, const rb_rk_step *st, unsigned mask)
 {
     if (!st->is_taylor || !st->ts.rocking || !mask)
         return 0;
-    double h = rb_fmax(st->h, st->t1 - st->t0) * (1 + 1e-12), level;
+    double h = rb_fmax(st->h, st->t1 - st->t0) * (1 + 1e-12), level, lo, hi;
+    rb_taylor_range(&st->ts, RB_Y_TH, h, &lo, &hi);
     for (unsigned m = mask; m;) {
         int k = rb_guard_next(&m);
-        if (!rb_guard_angle(sv, k, &level) || !rb_taylor_stays_off(&st->ts, RB_Y_TH, h, level))
+        if (k == G_UNLOAD) {
+            double rlo, rhi;
+            rb_taylor_range(&st->ts, RB_Y_THD, h, &rlo, &rhi);
+            if (!(rlo > 0 || rhi < 0))
+                return 0;
+        } else if (!rb_guard_angle(sv, k, &level) || !(level < lo || level > hi))
             return 0;
     }
     return 1;

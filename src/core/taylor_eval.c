@@ -52,14 +52,22 @@ double rb_taylor_reach(const rb_taylor *ts, int c, double h)
     return b;
 }
 
-int rb_taylor_stays_off(const rb_taylor *ts, int c, double h, double level)
+void rb_taylor_range(const rb_taylor *ts, int c, double h, double *lo, double *hi)
 {
     double p0 = ts->p[0][state_series[c]], reach = rb_taylor_reach(ts, c, h);
     /* Horner's rounding is within n eps of sum |p_k| tau^k (Higham,
-     * Accuracy and Stability, 5.1), and the reach's own sum within as much
-     * of it: twice both, with the difference to the level rounded too */
-    double slop = (4.0 * ts->order + 8.0) * DBL_EPSILON * (fabs(p0) + reach + fabs(level));
-    return fabs(p0 - level) > reach + slop;
+     * Accuracy and Stability, 5.1), the reach's own sum within as much of
+     * it, and the two ends' additions within eps each: twice all three */
+    double w = reach + (4.0 * ts->order + 12.0) * DBL_EPSILON * (fabs(p0) + reach);
+    *lo = p0 - w;
+    *hi = p0 + w;
+}
+
+int rb_taylor_stays_off(const rb_taylor *ts, int c, double h, double level)
+{
+    double lo, hi;
+    rb_taylor_range(ts, c, h, &lo, &hi);
+    return level < lo || level > hi;
 }
 
 /* The still stages' angle, its rate and their trigonometry are constant,
