@@ -43,6 +43,8 @@ typedef struct {
     double scan_end;
     double *passes;        /* every lo taken, increasing: where to go back to */
     size_t n_passes, cap_passes;
+    double bound_pass;     /* a pass the caller's bound decides, not a run
+                              (narrow_near); 0: none */
 } factor_search;
 
 /* Take level as the bracket's passing end, remembering the one before. */
@@ -215,6 +217,7 @@ static rb_status narrow_near(factor_search *s, double near, double res, rb_diag 
                      near);
             if ((st = take_pass(s, level, &run)) != RB_OK)
                 return st;
+            s->bound_pass = level;
             continue;
         }
         rb_design_motion_at(s->ctx, level * s->ctx->a_star_mps2, &m, &vertical);
@@ -360,7 +363,8 @@ static rb_status confirm_pass(factor_search *s, double res, rb_diag *diag)
     rb_design_factor_result *out = s->out;
     rb_design_ctx full = *s->ctx;
     full.defer_confirm = 0;
-    while (s->lo > 0) {
+    /* a pass the bound decides holds at any tolerance: it has no run */
+    while (s->lo > 0 && s->lo != s->bound_pass) {
         rb_motion m, vertical;
         rb_design_run run;
         rb_design_motion_at(&full, s->lo * full.a_star_mps2, &m, &vertical);
@@ -449,10 +453,14 @@ rb_status rb_design_factor_near(const rb_model *model, const rb_motion *motion,
         st = narrow_near(&s, near_astar, design->resolution, diag);
     if (st == RB_OK && !out->no_failure && hints && hints->secant && !(near_astar > 0))
         st = straddle(&s, design->resolution, diag);
+    /* Above a bound the levels run are below + k res, so a pass and the
+     * failure next to it are one resolution apart in exact arithmetic;
+     * the slack keeps a rounding of their difference from costing a run */
+    double res = near_astar > 0 ? design->resolution * (1 + 1e-9) : design->resolution;
     if (st == RB_OK && !out->no_failure)
-        st = bisect(&s, design->resolution, diag);
+        st = bisect(&s, res, diag);
     if (st == RB_OK)
-        st = confirm_pass(&s, design->resolution, diag);
+        st = confirm_pass(&s, res, diag);
     if (st == RB_OK)
         finish(&s, ctx.a_star_mps2, design->resolution);
     free(s.levels);
