@@ -87,13 +87,22 @@ int rb_fragility_governing(unsigned judged, const int fitted[RB_N_LIMITS],
 /* Each motion's capacity for each limit state: the lowest peak floor
  * acceleration found to reach it (the design factor's scan and bisection,
  * with the case's design: settings), or, censored, the top of the scan
- * that never reached it. */
+ * that never reached it. A motion whose vertical, scaled with the level,
+ * reaches -g below the state's crossing has the model's limit instead
+ * (model_limited): the level model_limit_mps2 at which it does, where the
+ * base would be thrown off the floor, which the model does not follow.
+ * The bolts' own capacity lies above it and is not measured; the fit
+ * counts it as reached there, so that its median is a lower bound
+ * (docs/fragility.md, "Capacities limited by the model"). */
 typedef struct {
     double capacity_mps2[RB_N_LIMITS];
     int censored[RB_N_LIMITS];
+    int model_limited[RB_N_LIMITS];
     long runs;
     double im_per_pfa;  /* the intensity over the peak floor acceleration:
                            1, or Sa(f0) / peak (linear in the level) */
+    double model_limit_mps2; /* where the vertical reaches -g (in the
+                                intensity); HUGE_VAL without one */
 } rb_motion_fragility;
 
 /* The intensity measure capacities and levels are given in. */
@@ -119,7 +128,9 @@ typedef struct {
     unsigned judged;
     int governing;
     /* the limit states whose capacities are confirmed at tighter
-     * tolerances: the governing state's (rb_run_fragility) */
+     * tolerances: the governing state's (rb_run_fragility); the others'
+     * are points of fitted curves, each searched at the run's own
+     * tolerance */
     unsigned confirmed;
     rb_fragility_intensity intensity;
     double im_freq_hz, im_damping;  /* RB_IM_SA: where Sa is taken */
@@ -140,6 +151,10 @@ typedef struct {
 } rb_case_fragility;
 
 void rb_case_fragility_free(rb_case_fragility *f);
+
+/* How many motions' capacities of limit state k are the model's limit
+ * (rb_motion_fragility.model_limited). */
+size_t rb_case_fragility_model_limited(const rb_case_fragility *f, int k);
 
 /* Whether f has limit state k (its present mask). */
 int rb_case_fragility_has(const rb_case_fragility *f, int k);

@@ -223,6 +223,14 @@ int rb_case_fragility_has(const rb_case_fragility *f, int k)
     return k >= 0 && k < RB_N_LIMITS && (f->present >> k) & 1u;
 }
 
+size_t rb_case_fragility_model_limited(const rb_case_fragility *f, int k)
+{
+    size_t n = 0;
+    for (size_t m = 0; rb_case_fragility_has(f, k) && m < f->n_motions; m++)
+        n += f->motions[m].model_limited[k] != 0;
+    return n;
+}
+
 void rb_limit_states_str(unsigned mask, char *buf, size_t n)
 {
     size_t len = 0;

@@ -52,19 +52,39 @@ static void x_range(const rb_case_fragility *f, double *lo, double *hi)
     *hi /= f->g_mps2;
 }
 
+/* A motion's capacity in g and whether it is the model's limit. */
+typedef struct {
+    double g;
+    int model_limited;
+} capacity_point;
+
+static int cmp_point(const void *a, const void *b)
+{
+    return cmp(&((const capacity_point *)a)->g, &((const capacity_point *)b)->g);
+}
+
 static void points(rb_strbuf *b, const rb_panel *p, const rb_case_fragility *f, int k,
-                   double *cap)
+                   capacity_point *cap)
 {
     size_t n = 0;
     for (size_t m = 0; m < f->n_motions; m++)
-        if (!f->motions[m].censored[k])
-            cap[n++] = f->motions[m].capacity_mps2[k] / f->g_mps2;
-    qsort(cap, n, sizeof *cap, cmp);
-    for (size_t i = 0; i < n; i++)
-        rb_strbuf_printf(b, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"3.5\" fill=\"%s\" "
-                         "data-limit-state=\"%s\"/>\n", rb_panel_x(p, cap[i]),
-                         rb_panel_y(p, (i + 0.5) / (double)f->n_motions), rb_plot_limit_colours[k],
-                         rb_enum_str(rb_limit_state_names, k));
+        if (!f->motions[m].censored[k]) {
+            cap[n].g = f->motions[m].capacity_mps2[k] / f->g_mps2;
+            cap[n++].model_limited = f->motions[m].model_limited[k];
+        }
+    qsort(cap, n, sizeof *cap, cmp_point);
+    for (size_t i = 0; i < n; i++) {
+        /* a capacity that is the model's limit, not the bolts', is drawn
+         * hollow: the bolts' own lies above it */
+        int limited = cap[i].model_limited;
+        rb_strbuf_printf(b, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"3.5\" fill=\"%s\" ",
+                         rb_panel_x(p, cap[i].g), rb_panel_y(p, (i + 0.5) / (double)f->n_motions),
+                         limited ? "#ffffff" : rb_plot_limit_colours[k]);
+        if (limited)
+            rb_strbuf_printf(b, "stroke=\"%s\" stroke-width=\"1.5\" data-model-limited=\"1\" ",
+                             rb_plot_limit_colours[k]);
+        rb_strbuf_printf(b, "data-limit-state=\"%s\"/>\n", rb_enum_str(rb_limit_state_names, k));
+    }
 }
 
 rb_status rb_plot_fragility_svg(const rb_case_fragility *f, const char *title,
@@ -75,9 +95,9 @@ rb_status rb_plot_fragility_svg(const rb_case_fragility *f, const char *title,
     memset(&p, 0, sizeof p);
     p.x0 = LEFT, p.y0 = TOP, p.w = FIG_W - LEFT - RIGHT, p.h = PANEL_H;
     double x[CURVE_POINTS], y[CURVE_POINTS];
-    double *cap = malloc((f->n_motions ? f->n_motions : 1) * sizeof *cap);
+    capacity_point *cap = malloc((f->n_motions ? f->n_motions : 1) * sizeof *cap);
     const char *names[RB_N_LIMITS];
-    char governs[48];
+    char label[RB_N_LIMITS][64];
     const char *cols[RB_N_LIMITS];
     char line[256];
     int n_leg = 0;
@@ -105,6 +125,17 @@ rb_status rb_plot_fragility_svg(const rb_case_fragility *f, const char *title,
              f->n_motions, f->level_mps2 / f->g_mps2, f->a_star_mps2 / f->g_mps2,
              f->governing >= 0 ? rb_enum_str(rb_limit_state_names, f->governing) : "none");
     rb_svg_text(&b, LEFT, 44, 11, "start", NULL, line);
+    unsigned limited = 0;
+    for (int k = 0; k < RB_N_LIMITS; k++)
+        if (f->fitted[k] && rb_case_fragility_model_limited(f, k))
+            limited |= 1u << k;
+    if (limited) {
+        char states[96];
+        rb_limit_states_str(limited, states, sizeof states);
+        snprintf(line, sizeof line, "hollow: the model's limit (the vertical reaches -g), "
+                 "not the bolts', counted as reached: %s are lower bounds", states);
+        rb_svg_text(&b, LEFT, 58, 11, "start", NULL, line);
+    }
     char im[96], x_title[140];
     rb_fragility_intensity_describe(f, im, sizeof im);
     snprintf(x_title, sizeof x_title, "%s (g)%s", im, p.xa.log ? ", log scale" : "");
@@ -126,9 +157,12 @@ rb_status rb_plot_fragility_svg(const rb_case_fragility *f, const char *title,
                        rb_enum_str(rb_limit_state_names, k));
         points(&b, &p, f, k, cap);
         names[n_leg] = rb_enum_str(rb_limit_state_names, k);
-        if (k == f->governing) {
-            snprintf(governs, sizeof governs, "%s (governs)", names[n_leg]);
-            names[n_leg] = governs;
+        if (k == f->governing || (limited >> k) & 1u) {
+            snprintf(label[k], sizeof label[k], "%s (%s%s%s)", names[n_leg],
+                     k == f->governing ? "governs" : "", k == f->governing
+                     && (limited >> k) & 1u ? ", " : "", (limited >> k) & 1u
+                     ? "model's limit" : "");
+            names[n_leg] = label[k];
         }
         cols[n_leg++] = rb_plot_limit_colours[k];
     }

@@ -42,6 +42,47 @@ static void governing_line(rb_strbuf *b, const rb_case_fragility *f)
                          "on, %s, none is reached by two motions)\n", judged);
 }
 
+/* Which limit states' capacities were confirmed at tighter tolerances
+ * and why the others were not (docs/fragility.md, "Fewer runs"). */
+static void confirmed_line(rb_strbuf *b, const rb_case_fragility *f)
+{
+    char yes[96], no[96];
+    rb_limit_states_str(f->confirmed & f->present, yes, sizeof yes);
+    rb_limit_states_str(~f->confirmed & f->present, no, sizeof no);
+    rb_strbuf_printf(b, "confirmed at tighter tolerances: %s (%s); not confirmed: %s (points "
+                     "of fitted curves, each within the resolution at the runs' own "
+                     "tolerance)\n", yes, f->confirmed ? "the governing state's, which signs "
+                     "the verdict" : "no state governs", no);
+}
+
+/* The limit states some of whose capacities are the model's limit, not
+ * the bolts' (rb_motion_fragility.model_limited), in one line. */
+static void model_limited_line(rb_strbuf *b, const rb_case_fragility *f)
+{
+    int first = 1;
+    for (int k = 0; k < RB_N_LIMITS; k++) {
+        size_t n = rb_case_fragility_model_limited(f, k);
+        if (!n)
+            continue;
+        rb_strbuf_printf(b, "%s%s %zu of %zu", first ? "limited by the model: " : ", ",
+                         rb_enum_str(rb_limit_state_names, k), n, f->n_motions);
+        first = 0;
+    }
+    if (!first)
+        rb_strbuf_puts(b, " capacities are the level where the vertical floor acceleration "
+                       "reaches -g (the base would be thrown off the floor, which the model "
+                       "does not follow), not the bolts': counted as reached there, so those "
+                       "fits are limited by the model and their medians are lower bounds\n");
+}
+
+static int any_model_limited(const rb_case_fragility *f)
+{
+    for (int k = 0; k < RB_N_LIMITS; k++)
+        if (rb_case_fragility_model_limited(f, k))
+            return 1;
+    return 0;
+}
+
 char *rb_fragility_render_text(const rb_case *c, const rb_case_fragility *f)
 {
     rb_strbuf b = {0};
@@ -73,7 +114,11 @@ char *rb_fragility_render_text(const rb_case *c, const rb_case_fragility *f)
         rb_strbuf_printf(&b, " %8zu %8zu\n", f->n_motions - cens, cens);
     }
     governing_line(&b, f);
-    rb_strbuf_puts(&b, "capacities (g; > : not reached up to the scan's end)\n");
+    confirmed_line(&b, f);
+    model_limited_line(&b, f);
+    rb_strbuf_printf(&b, "capacities (g; > : not reached up to the scan's end%s)\n",
+                     any_model_limited(f) ? "; ^ : the model's limit, the bolts' capacity "
+                     "lies above" : "");
     rb_strbuf_printf(&b, "%-28s", "motion");
     for (int k = 0; k < RB_N_LIMITS; k++)
         if (rb_case_fragility_has(f, k))
@@ -84,7 +129,8 @@ char *rb_fragility_render_text(const rb_case *c, const rb_case_fragility *f)
                                                            sizeof name));
         for (int k = 0; k < RB_N_LIMITS; k++)
             if (rb_case_fragility_has(f, k))
-                rb_strbuf_printf(&b, " %s%11.4f", f->motions[m].censored[k] ? ">" : " ",
+                rb_strbuf_printf(&b, " %s%11.4f", f->motions[m].censored[k] ? ">"
+                                 : f->motions[m].model_limited[k] ? "^" : " ",
                                  f->motions[m].capacity_mps2[k] / g);
         rb_strbuf_puts(&b, "\n");
     }
@@ -110,6 +156,8 @@ void rb_report_fragility_limit_json(rb_jctx *cx, cJSON *arr, const rb_case_fragi
         rb_j_num_or_null(cx, o, "level_p50_mps2", f->im50[k]);
         rb_j_num_or_null(cx, o, "loglik", f->fit[k].loglik);
     }
+    rb_j_bool(cx, o, "confirmed", (f->confirmed >> k) & 1u);
+    rb_j_int(cx, o, "model_limited", (long)rb_case_fragility_model_limited(f, k));
 }
 
 void rb_report_fragility_governing_json(rb_jctx *cx, cJSON *o, const rb_case_fragility *f)
@@ -173,6 +221,7 @@ static const rb_json_break fragility_breaks[] = {
     {0, "case", ",\n  ", NULL, NULL},
     {0, "intensity", ",\n  ", NULL, NULL},
     {0, "judged_limit_states", ",\n  ", NULL, NULL},
+    {0, "confirmed_limit_states", ",\n  ", NULL, NULL},
     {0, "limit_states", ",\n  ", "\n    ", "\n  "},
     {0, "motions", ",\n  ", "\n    ", "\n  "},
 };
@@ -196,6 +245,12 @@ static void motion_json(rb_jctx *cx, cJSON *arr, const rb_case *c,
         if (rb_case_fragility_has(f, k))
             rb_j_bool(cx, cens, rb_enum_str(rb_limit_state_names, k),
                       f->motions[m].censored[k]);
+    cJSON *lim = rb_j_obj(cx, o, "model_limited");
+    for (int k = 0; k < RB_N_LIMITS; k++)
+        if (rb_case_fragility_has(f, k))
+            rb_j_bool(cx, lim, rb_enum_str(rb_limit_state_names, k),
+                      f->motions[m].model_limited[k]);
+    rb_j_num_or_null(cx, o, "model_limit_mps2", f->motions[m].model_limit_mps2);
     rb_j_int(cx, o, "runs", f->motions[m].runs);
 }
 
@@ -206,6 +261,11 @@ char *rb_fragility_render_json(const rb_case *c, const rb_case_fragility *f)
     rb_report_fragility_bootstrap_json(&cx, root, f);
     rb_j_int(&cx, root, "runs", f->runs);
     rb_report_fragility_governing_json(&cx, root, f);
+    cJSON *confirmed = rb_j_arr(&cx, root, "confirmed_limit_states");
+    for (int k = 0; k < RB_N_LIMITS; k++)
+        if (rb_case_fragility_has(f, k) && (f->confirmed >> k) & 1u)
+            rb_j_append(&cx, confirmed,
+                        cJSON_CreateString(rb_enum_str(rb_limit_state_names, k)));
     cJSON *limits = rb_j_arr(&cx, root, "limit_states");
     for (int k = 0; k < RB_N_LIMITS; k++)
         if (rb_case_fragility_has(f, k))

@@ -109,7 +109,8 @@ rb_status rb_report_text_motion_anchor_modes(const rb_report *r, const rb_report
 cJSON *rb_report_file_json(rb_jctx *cx, const char *format, const rb_case *c);
 /* The file's text laid out by layout, root freed; NULL after any problem. */
 char *rb_report_file_print(rb_jctx *cx, cJSON *root, const rb_json_layout *layout);
-/* Limit state k of f as an object at the end of arr. */
+/* Limit state k of f as an object at the end of arr: its fit, whether its
+ * capacities are confirmed, how many are the model's limit. */
 void rb_report_fragility_limit_json(rb_jctx *cx, cJSON *arr, const rb_case_fragility *f,
                                     int k);
 /* "judged_limit_states": [...] and "governing_limit_state": its name or

@@ -105,9 +105,21 @@ size_t rb_run_fragility_searches(const rb_case *c)
     return n * c->n_motions;
 }
 
+/* The level of motion m at which its vertical, scaled with it, reaches
+ * -g (the searches' runs fail there: src/design/design_run.c); HUGE_VAL
+ * where none does. */
+static double model_limit(const rb_case *c, size_t m, double g_mps2)
+{
+    const rb_motion *mo = &c->motions[m].motion;
+    if (!mo->vertical)
+        return HUGE_VAL;
+    double own = rb_motion_peak(mo), least = rb_motion_least(mo->vertical, mo->duration_s);
+    return least < 0 && own > 0 ? own * g_mps2 / -least : HUGE_VAL;
+}
+
 static rb_status search(const rb_case *c, size_t m, rb_limit_state k, int confirm,
-                        double a_star_mps2, rb_design_memo *memo, rb_motion_fragility *out,
-                        rb_diag *diag)
+                        double a_star_mps2, double g_mps2, rb_design_memo *memo,
+                        rb_motion_fragility *out, rb_diag *diag)
 {
     rb_criteria cr;
     rb_solve_opts so;
@@ -143,6 +155,17 @@ static rb_status search(const rb_case *c, size_t m, rb_limit_state k, int confir
     out->censored[k] = f.no_failure;
     out->capacity_mps2[k] = f.no_failure ? f.level_mps2 : f.fail_mps2;
     out->runs = f.runs;
+    /* A failing end at or past the level where the vertical reaches -g
+     * failed there, whatever the bolts did: the capacity is the model's
+     * limit, that level. (A lift-off is reached there: the floor falls
+     * away from the base, which is what the state is.) The relative
+     * slack covers the scaling's rounding in the searches' runs. */
+    double limit = model_limit(c, m, g_mps2);
+    out->model_limit_mps2 = limit;
+    out->model_limited[k] = k != RB_LIMIT_LIFT_OFF && !f.no_failure && isfinite(limit)
+                            && f.fail_mps2 >= limit * (1 - 1e-9);
+    if (out->model_limited[k])
+        out->capacity_mps2[k] = limit;
     return RB_OK;
 }
 
@@ -178,14 +201,17 @@ static rb_status job(void *arg, size_t i)
     job_ctx *jc = arg;
     size_t n = jc->out->n_motions, m = i % n;
     int k = jc->confirming >= 0 ? jc->confirming : (int)jc->order[i / n];
-    rb_motion_fragility one = {{0}, {0}, 0, 1.0};
+    rb_motion_fragility one = {{0}, {0}, {0}, 0, 1.0, HUGE_VAL};
     rb_diag_clear(&jc->diags[i]);
     rb_status st = search(jc->c, m, (rb_limit_state)k, jc->confirming >= 0,
-                          jc->out->a_star_mps2, jc->memo, &one, &jc->diags[i]);
+                          jc->out->a_star_mps2, jc->out->g_mps2, jc->memo, &one,
+                          &jc->diags[i]);
     pthread_mutex_lock(&jc->lock);
     rb_motion_fragility *slot = &jc->out->motions[m];
     slot->capacity_mps2[k] = one.capacity_mps2[k];
     slot->censored[k] = one.censored[k];
+    slot->model_limited[k] = one.model_limited[k];
+    slot->model_limit_mps2 = one.model_limit_mps2;
     jc->runs[m * RB_N_LIMITS + (size_t)k] = one.runs;
     if (jc->progress && jc->confirming < 0) {
         char what[160];
@@ -273,8 +299,10 @@ rb_status rb_run_fragility(const rb_case *c, int n_threads, uint64_t seed, unsig
     out->a_star_mps2 = d.a_star_mps2;
     out->level_mps2 = rb_motion_peak(&c->motions[0].motion);
     out->intensity = RB_IM_PFA;
-    for (size_t m = 0; m < c->n_motions; m++)
+    for (size_t m = 0; m < c->n_motions; m++) {
         out->motions[m].im_per_pfa = 1.0;
+        out->motions[m].model_limit_mps2 = model_limit(c, m, d.g);
+    }
     out->seed = seed;
     out->n_boot = n_boot;
     size_t total = rb_run_fragility_searches(c);
@@ -377,6 +405,7 @@ rb_status rb_run_fragility_intensity(const rb_case *c, rb_fragility_intensity im
         f->motions[m].im_per_pfa = r;
         for (int k = 0; k < RB_N_LIMITS; k++)
             f->motions[m].capacity_mps2[k] *= r;
+        f->motions[m].model_limit_mps2 *= r;
     }
     f->level_mps2 *= f->motions[0].im_per_pfa;
     f->intensity = RB_IM_SA;

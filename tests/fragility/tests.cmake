@@ -20,3 +20,7 @@ rb_script_test(NAME fragility_lift_off SCRIPT tests/fragility/lift_off.py LABEL 
 # design's factors to the resolution, the governing state confirmed,
 # check at each capacity, one thread and two
 rb_script_test(NAME fragility_fewer_runs SCRIPT tests/fragility/fewer_runs.py LABEL fragility)
+# capacities the model limits (the vertical reaching -g), by hand, marked
+# in JSON, text and figure, counted as reached; the confirmed states named
+rb_script_test(NAME fragility_model_limit SCRIPT tests/fragility/model_limit.py
+               LABEL fragility)
