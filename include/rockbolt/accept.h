@@ -43,7 +43,8 @@ typedef struct {
 
 /* The rules of the target t: its damping, its check range as the cutoffs,
  * its lower band as `lower`, its upper band as the guide; 8.3 Hz split,
- * no max_ratio, the tail to 50 Hz for AC156 (none for a table). */
+ * no max_ratio, the tail to 50 Hz for AC156 and IEEE 693 (their rigid
+ * lines, A_RIG and the ZPA; none for a table). */
 void rb_accept_rules_init(rb_accept_rules *r, const rb_target *t);
 
 /* The laboratory's low cutoff for a unit whose lowest resonance is

@@ -21,7 +21,8 @@ void rb_accept_rules_init(rb_accept_rules *r, const rb_target *t)
     r->split_hz = AC156_SPLIT_HZ;
     r->lower = t->band_lower;
     r->guide = t->band_upper;
-    r->tail_to_hz = t->kind == RB_TARGET_AC156 ? RB_ACCEPT_GRID_TO_HZ : 0.0;
+    int rigid_line = t->kind == RB_TARGET_AC156 || t->kind == RB_TARGET_IEEE693;
+    r->tail_to_hz = rigid_line ? RB_ACCEPT_GRID_TO_HZ : 0.0;
 }
 
 double rb_accept_low_cutoff(double f_lowest_hz)

@@ -200,6 +200,7 @@ int rb_synth_opts_check(const rb_synth_opts *o, const char **key, char *why, siz
     }
     rb_spectrum_free(&probe);
     double top = r->tail_to_hz > r->high_cutoff_hz ? r->tail_to_hz : r->high_cutoff_hz;
+    *key = "dt";   /* dt is what is too coarse for the rigid end */
     if (!(top < 0.4 / o->dt_s)) {
         snprintf(why, n, "the motion is shaped up to %g Hz, which needs samples at most "
                  "%g s apart (dt is %g s)", top, 0.4 / top * 0.999, o->dt_s);
