@@ -81,6 +81,10 @@ typedef struct {
     double omega, xi; /* 0 without a building */
 } rb_floor_line;
 int rb_series_floor_line(const rb_series *s, double t0, rb_floor_line *fl);
+/* The same from sample i, t0 being the sample's time, t0_s + i dt_s
+ * (what rb_series_floor_line gives there, without finding the sample);
+ * 0 where no interval starts at sample i. */
+int rb_series_floor_line_at(const rb_series *s, long i, rb_floor_line *fl);
 
 /* The Arias intensity pi / (2 g) int a^2 dt of a series (over its samples,
  * linear between; a floor through a building is taken at its samples) and
@@ -155,6 +159,8 @@ int rb_motion_taylor(const rb_motion *m, double t0, int n, double *coef);
 /* rb_series_floor_line of a sampled motion, its scale and polarity
  * applied; 0 for the closed forms and outside the samples. */
 int rb_motion_floor_line(const rb_motion *m, double t0, rb_floor_line *fl);
+/* The same from the series' sample i (rb_series_floor_line_at). */
+int rb_motion_floor_line_at(const rb_motion *m, long i, rb_floor_line *fl);
 
 /* Largest |x''| the motion can reach (the peak floor acceleration 'a').
  * Non-finite samples are left out: the solver stops where it meets one. */

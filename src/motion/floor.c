@@ -156,28 +156,40 @@ int rb_series_taylor(const rb_series *s, double t0, int n, double *coef)
     return n;
 }
 
+int rb_series_floor_line_at(const rb_series *s, long i, rb_floor_line *fl)
+{
+    if (i < 0 || !(i < (long)s->n - 1))
+        return 0;
+    if (!s->bld.ground_mps2) {
+        sample_line(s, i, 0.0, &fl->g0, &fl->slope);
+        fl->u = fl->v = fl->omega = fl->xi = 0.0;
+        return 1;
+    }
+    /* the building's state is the table's, and no free vibration is
+     * formed */
+    const rb_series_building *b = &s->bld;
+    double slope = (b->ground_mps2[i + 1] - b->ground_mps2[i]) / s->dt_s;
+    fl->slope = slope;
+    fl->g0 = b->ground_mps2[i] + slope * 0.0;
+    fl->omega = b->omega_rps;
+    fl->xi = b->xi;
+    fl->u = b->u_m[i];
+    fl->v = b->v_mps[i];
+    return 1;
+}
+
 int rb_series_floor_line(const rb_series *s, double t0, rb_floor_line *fl)
 {
     double tau = 0;
     long i = step_interval(s, t0, &tau);
     if (i < 0)
         return 0;
-    if (!s->bld.ground_mps2) {
+    /* a step from a sample (nearly every step) */
+    if (tau == 0.0 || !s->bld.ground_mps2) {
+        if (tau == 0.0)
+            return rb_series_floor_line_at(s, i, fl);
         sample_line(s, i, tau, &fl->g0, &fl->slope);
         fl->u = fl->v = fl->omega = fl->xi = 0.0;
-        return 1;
-    }
-    const rb_series_building *b = &s->bld;
-    if (tau == 0.0) {
-        /* a step from a sample (nearly every step): the building's state
-         * is the table's, and no free vibration is formed */
-        double slope = (b->ground_mps2[i + 1] - b->ground_mps2[i]) / s->dt_s;
-        fl->slope = slope;
-        fl->g0 = b->ground_mps2[i] + slope * tau;
-        fl->omega = b->omega_rps;
-        fl->xi = b->xi;
-        fl->u = b->u_m[i];
-        fl->v = b->v_mps[i];
         return 1;
     }
     segment g;

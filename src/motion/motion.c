@@ -56,16 +56,26 @@ double rb_motion_accel(const rb_motion *m, double t, double theta_dot)
     return m->polarity < 0 ? -a : a;
 }
 
-int rb_motion_floor_line(const rb_motion *m, double t0, rb_floor_line *fl)
+static int floor_line_scaled(const rb_motion *m, rb_floor_line *fl)
 {
-    if (m->kind != RB_MOTION_SAMPLED || !rb_series_floor_line(m->series, t0, fl))
-        return 0;
     double f = m->polarity < 0 ? -m->scale : m->scale;
     fl->g0 *= f;
     fl->slope *= f;
     fl->u *= f;
     fl->v *= f;
     return 1;
+}
+
+int rb_motion_floor_line(const rb_motion *m, double t0, rb_floor_line *fl)
+{
+    return m->kind == RB_MOTION_SAMPLED && rb_series_floor_line(m->series, t0, fl)
+           && floor_line_scaled(m, fl);
+}
+
+int rb_motion_floor_line_at(const rb_motion *m, long i, rb_floor_line *fl)
+{
+    return m->kind == RB_MOTION_SAMPLED && m->series && rb_series_floor_line_at(m->series, i, fl)
+           && floor_line_scaled(m, fl);
 }
 
 static double own_break(const rb_motion *m, double t)
