@@ -461,16 +461,39 @@ static rb_status history(rb_solver *sv, double t0, const double *y0, double h, d
  * them either. */
 #define QUIET_MARGIN (1 + 1e-6)
 
+/* What a step's bounds are held to (step_quiet), constant over a run of
+ * quiet steps (they move no result): the guards' distance below zero and
+ * U's peak; the shear is held to rb_track_quiet_bound, whose conditions
+ * rise with it, so a bound at or below one it passed passes too. */
+typedef struct {
+    double up_pos, up_neg, u;
+    double shear_passed; /* the largest shear bound passed, -1 before */
+} quiet_limits;
+
+/* 0 where no step can be quiet (the forms of the other side, reactions
+ * checked at every point). */
+static int quiet_limits_of(const rb_solver *sv, quiet_limits *l)
+{
+    const rb_exact_cache *c = &sv->exact;
+    if (c->lin_side != sv->disc.side || sv->opts.check_reactions)
+        return 0;
+    /* the guards are lin0 (-W b) plus their bounded part */
+    l->up_pos = -c->lin0[Q_UP_POS];
+    l->up_neg = -c->lin0[Q_UP_NEG];
+    l->u = sv->res->max_u_m;
+    l->shear_passed = -1;
+    return 1;
+}
+
 /* Whether the step from z0 over table tab can be taken with no check
  * points: its bounds keep both uplift guards below zero and U and the
  * total shear (hence the friction demand, the floor's reaction being W)
  * and the anchors' demand at or below their running peaks, so that no
  * point or located peak inside it could move a result. */
-static int step_quiet(const rb_solver *sv, const rb_exact_table *tab, const double *z0)
+static int bounds_quiet(const rb_solver *sv, const rb_exact_table *tab, const double *z0,
+                        quiet_limits *l)
 {
-    const rb_exact_cache *c = &sv->exact;
-    const rb_result *r = sv->res;
-    if (!tab->bounded || c->lin_side != sv->disc.side || sv->opts.check_reactions)
+    if (!tab->bounded)
         return 0;
     double az[ZN], b[RB_EXACT_NQ];
     for (int j = 0; j < ZN; j++)
@@ -481,12 +504,20 @@ static int step_quiet(const rb_solver *sv, const rb_exact_table *tab, const doub
             v += tab->bound[q][j] * az[j];
         b[q] = v * QUIET_MARGIN;
     }
-    /* the guards are lin0 (-W b) plus their bounded part */
-    if (!(b[Q_UP_POS] < -c->lin0[Q_UP_POS] && b[Q_UP_NEG] < -c->lin0[Q_UP_NEG]))
+    if (!(b[Q_UP_POS] < l->up_pos && b[Q_UP_NEG] < l->up_neg && b[Q_U] <= l->u))
         return 0;
-    if (!(b[Q_U] <= r->max_u_m && b[Q_SHEAR] <= r->max_shear_total_n))
+    if (b[Q_SHEAR] <= l->shear_passed)
+        return 1;
+    if (!rb_track_quiet_bound(sv, b[Q_SHEAR]))
         return 0;
-    return rb_track_quiet_bound(sv, b[Q_SHEAR]);
+    l->shear_passed = b[Q_SHEAR];
+    return 1;
+}
+
+static int step_quiet(const rb_solver *sv, const rb_exact_table *tab, const double *z0)
+{
+    quiet_limits l;
+    return quiet_limits_of(sv, &l) && bounds_quiet(sv, tab, z0, &l);
 }
 
 /* The state at check point j (1..n) of the step from z0. */
@@ -525,13 +556,18 @@ static void work_forms(const rb_exact_table *tab, const double *z, double *wd, d
 
 /* Advance the run's time, state and works over a step taken from z0,
  * whose end point carries U and U' (u_end, v_end). */
-static void advance_step(rb_solver *sv, const rb_exact_table *tab, const double *z0, double t1,
-                         double u_end, double v_end)
+static void count_step(rb_solver *sv, double t1)
 {
     sv->res->steps++;
     sv->res->exact_steps++;
     sv->res->stage_steps[sv->disc.stage]++;
     sv->res->stage_time_s[sv->disc.stage] += t1 - sv->t;
+}
+
+static void advance_step(rb_solver *sv, const rb_exact_table *tab, const double *z0, double t1,
+                         double u_end, double v_end)
+{
+    count_step(sv, t1);
     double wd = sv->y[RB_Y_WDAMP], wi = sv->y[RB_Y_WIN];
     work_forms(tab, z0, &wd, &wi);
     sv->t = t1;
@@ -634,6 +670,96 @@ static int exact_quiet(rb_solver *sv, const rb_exact_table *tab, const rb_floor_
     return 1;
 }
 
+/* The table for steps of length h: a run's steps are mostly of one
+ * length, looked up once; NULL where the step is to be a Taylor step. */
+static const rb_exact_table *table_of_length(rb_solver *sv, double h)
+{
+    rb_exact_cache *c = &sv->exact;
+    if (c->last_tab && h == c->last_h)
+        return c->last_tab;
+    const rb_exact_table *tab = table_for(sv, h, rb_step_checks(sv, h));
+    if (tab) {
+        c->last_h = h;
+        c->last_tab = tab;
+    }
+    return tab;
+}
+
+/* The sample a step starts at: i where t is the sample's time to the
+ * bit (t0_s + i dt_s, as rb_motion_next_break puts the breaks), else -1. */
+static long sample_at(const rb_series *s, double t)
+{
+    double k = floor((t - s->t0_s) / s->dt_s + 0.5);
+    if (!(k >= 0 && k < (double)s->n - 1) || s->t0_s + k * s->dt_s != t)
+        return -1;
+    return (long)k;
+}
+
+/* A run of quiet steps from a sample (the first one's bounds passed by
+ * the caller), taken here as the run loop and exact_step would take them
+ * one by one: the same target (the next sample), length, floor line,
+ * table and bounds, the works added step by step in the same order, the
+ * end read once (rb_exact_settle). Nothing is read between them but the
+ * loop's own conditions (rb_run_goes_on); the first step that is not
+ * quiet, or that is not from a sample to the next, is left to the loop,
+ * nothing changed. Returns the steps taken. */
+static long quiet_run(rb_solver *sv)
+{
+    rb_exact_cache *c = &sv->exact;
+    const rb_motion *m = sv->sys.motion;
+    const rb_series *s = m->series;
+    quiet_limits lim;
+    long taken = 0, i = sample_at(s, sv->t);
+    if (i < 0 || !quiet_limits_of(sv, &lim))
+        return 0;
+    double z0[ZN], t0 = 0;
+    rb_floor_line fl = {0};
+    const rb_exact_table *tab = NULL;
+    for (; rb_run_goes_on(sv); i++) {
+        /* the run loop's target: the next sample (a later end is the
+         * loop's), its trial length and the step's */
+        double brk = s->t0_s + (double)(i + 1) * s->dt_s;
+        if (!(i + 1 <= (long)s->n - 1) || !(brk <= sv->t_end)
+            || !(rb_control_trial(sv, brk) > 1e-14 * (1 + sv->t)))
+            break;
+        int landing;
+        double h = rb_step_length(sv, brk, &landing);
+        const rb_exact_table *t = c->last_tab && h == c->last_h ? c->last_tab
+                                  : h > 0 ? table_of_length(sv, h) : NULL;
+        rb_floor_line f;
+        if (!t || !rb_motion_floor_line_at(m, i, &f))
+            break;
+        double z[ZN] = {sv->y[RB_Y_U], sv->y[RB_Y_UD], f.u, f.v, f.g0, f.slope};
+        if (!bounds_quiet(sv, t, z, &lim))
+            break;
+        const double *e = t->row[t->n - 1][0], *ed = t->row[t->n - 1][1];
+        double u = 0, v = 0, t1 = landing ? brk : sv->t + h;
+        for (int j = 0; j < ZN; j++) {
+            u += e[j] * z[j];
+            v += ed[j] * z[j];
+        }
+        if (!isfinite(u) || !isfinite(v))
+            break;
+        t0 = sv->t;
+        advance_step(sv, t, z, t1, u, v);
+        memcpy(z0, z, sizeof z0);
+        fl = f;
+        tab = t;
+        taken++;
+        if (!landing)
+            break;
+    }
+    if (taken) {
+        c->pending = 1;
+        c->pend_tab = tab;
+        memcpy(c->pend_z0, z0, sizeof c->pend_z0);
+        c->pend_t0 = t0;
+        c->pend_g0 = fl.g0;
+        c->pend_slope = fl.slope;
+    }
+    return taken;
+}
+
 /* An exact step of stage 1 towards target (the next break or the end):
  * 1 when taken, with the state, the guards g at its end and the tracked
  * quantities advanced as a Taylor step without an event would (*status
@@ -644,23 +770,11 @@ static int exact_step(rb_solver *sv, double target, double *g, rb_status *status
     rb_floor_line fl;
     int landing;
     double t0 = sv->t, h = rb_step_length(sv, target, &landing);
-    if (!(h > 0) || !rb_motion_floor_line(sv->sys.motion, t0, &fl))
-        return 0;
-    /* a run's steps are mostly of one length, looked up once */
-    rb_exact_cache *c = &sv->exact;
-    int n;
     const rb_exact_table *tab;
-    if (c->last_tab && h == c->last_h) {
-        n = c->last_n;
-        tab = c->last_tab;
-    } else {
-        n = rb_step_checks(sv, h);
-        if (!(tab = table_for(sv, h, n)))
-            return 0;
-        c->last_h = h;
-        c->last_n = n;
-        c->last_tab = tab;
-    }
+    if (!(h > 0) || !rb_motion_floor_line(sv->sys.motion, t0, &fl)
+        || !(tab = table_of_length(sv, h)))
+        return 0;
+    int n = tab->n;
     double t1 = landing ? target : t0 + h;
     double z0[ZN] = {sv->y[RB_Y_U], sv->y[RB_Y_UD], fl.u, fl.v, fl.g0, fl.slope};
     point p[RB_SUB_MAX + 1];
@@ -669,7 +783,9 @@ static int exact_step(rb_solver *sv, double target, double *g, rb_status *status
     unsigned mask = rb_guard_mask(sv);
     double dt_guard = h / n, dt_track = (t1 - t0) / n;
 
-    if (step_quiet(sv, tab, z0) && exact_quiet(sv, tab, &fl, z0, t1, g, status))
+    if (step_quiet(sv, tab, z0)
+        && ((!sv->res->history && quiet_run(sv))
+            || exact_quiet(sv, tab, &fl, z0, t1, g, status)))
         return 1;
     rb_exact_settle(sv, g);
 

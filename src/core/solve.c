@@ -538,12 +538,18 @@ static int find_event(rb_solver *sv, const rb_rk_step *st, const double *g0,
     return -1;
 }
 
-static rb_status check_work(rb_solver *sv, rb_diag *diag)
+/* The window of events per simulated second a step starts in. */
+static void event_window(rb_solver *sv)
 {
     if (sv->t - sv->window_start >= 1.0) {
         sv->window_start = sv->t;
         sv->window_events = 0;
     }
+}
+
+static rb_status check_work(rb_solver *sv, rb_diag *diag)
+{
+    event_window(sv);
     if (sv->window_events > sv->opts.max_events_per_s)
         return fail(sv, diag, RB_ERR_WORK_LIMIT, "more transitions per simulated second "
                     "than the work bound allows (chattering)");
@@ -679,6 +685,15 @@ static int stop_reached(const rb_solver *sv)
                                    >= r->fy_row_n)))
         return 1;
     return (stop & RB_STOP_LIFT_OFF) && r->min_vertical_reaction_n <= 0;
+}
+
+int rb_run_goes_on(rb_solver *sv)
+{
+    if (sv->done || !(sv->t < sv->t_end) || stop_reached(sv))
+        return 0;
+    event_window(sv);
+    return !(sv->window_events > sv->opts.max_events_per_s)
+           && sv->res->steps < sv->opts.max_steps;
 }
 
 static rb_status run(rb_solver *sv, rb_diag *diag)

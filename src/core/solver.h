@@ -107,7 +107,6 @@ typedef struct {
     const rb_exact_table *pend_tab;
     /* the last step length looked up, with its check points and table */
     double last_h;
-    int last_n;
     const rb_exact_table *last_tab;
     double pend_z0[RB_EXACT_DIM], pend_t0, pend_g0, pend_slope;
 } rb_exact_cache;

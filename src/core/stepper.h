@@ -40,6 +40,14 @@ extern const rb_stepper rb_stepper_exact;
 extern const rb_stepper rb_stepper_taylor;
 extern const rb_stepper rb_stepper_rk45;
 
+/* Whether the run loop (solve.c) would start another step from the run's
+ * current point with nothing to report first (not done, not at the end, no
+ * limit state to stop at, within the work bounds, the events' window
+ * moved on as the loop moves it): a stepper that takes several steps in
+ * one call (the quiet exact steps, exact.c) asks before each, and leaves
+ * the rest to the loop where it is 0. */
+int rb_run_goes_on(rb_solver *sv);
+
 /* The chain of steppers of the current stage, at most RB_STEPPERS_MAX
  * (solver.h), the last never declining; returns how many. */
 int rb_steppers_of_stage(const rb_solver *sv, const rb_stepper **chain);
