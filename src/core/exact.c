@@ -675,12 +675,16 @@ static int exact_quiet(rb_solver *sv, const rb_exact_table *tab, const rb_floor_
 static const rb_exact_table *table_of_length(rb_solver *sv, double h)
 {
     rb_exact_cache *c = &sv->exact;
-    if (c->last_tab && h == c->last_h)
-        return c->last_tab;
+    for (int k = 0; k < RB_EXACT_TABLES; k++)
+        if (c->memo_tab[k] && h == c->memo_h[k])
+            return c->memo_tab[k];
+    /* a length found once keeps its table (table_for finds the first
+     * that fits, and tables are only added after it) */
     const rb_exact_table *tab = table_for(sv, h, rb_step_checks(sv, h));
     if (tab) {
-        c->last_h = h;
-        c->last_tab = tab;
+        c->memo_h[c->memo_next] = h;
+        c->memo_tab[c->memo_next] = tab;
+        c->memo_next = (c->memo_next + 1) % RB_EXACT_TABLES;
     }
     return tab;
 }
@@ -702,30 +706,31 @@ static long sample_at(const rb_series *s, double t)
  * end read once (rb_exact_settle). Nothing is read between them but the
  * loop's own conditions (rb_run_goes_on); the first step that is not
  * quiet, or that is not from a sample to the next, is left to the loop,
- * nothing changed. Returns the steps taken. */
-static long quiet_run(rb_solver *sv)
+ * nothing changed. Returns whether it took one. */
+static int quiet_run(rb_solver *sv)
 {
     rb_exact_cache *c = &sv->exact;
     const rb_motion *m = sv->sys.motion;
     const rb_series *s = m->series;
     quiet_limits lim;
-    long taken = 0, i = sample_at(s, sv->t);
+    long last = -1, i = sample_at(s, sv->t);
     if (i < 0 || !quiet_limits_of(sv, &lim))
         return 0;
-    double z0[ZN], t0 = 0;
-    rb_floor_line fl = {0};
+    double u0 = 0, v0 = 0, t0 = 0;
     const rb_exact_table *tab = NULL;
+    /* the control's trial length short of any target (exact steps leave
+     * it as it is) */
+    double trial = rb_control_trial(sv, HUGE_VAL);
     for (; rb_run_goes_on(sv); i++) {
         /* the run loop's target: the next sample (a later end is the
          * loop's), its trial length and the step's */
         double brk = s->t0_s + (double)(i + 1) * s->dt_s;
         if (!(i + 1 <= (long)s->n - 1) || !(brk <= sv->t_end)
-            || !(rb_control_trial(sv, brk) > 1e-14 * (1 + sv->t)))
+            || !(rb_fmin(trial, brk - sv->t) > 1e-14 * (1 + sv->t)))
             break;
         int landing;
         double h = rb_step_length(sv, brk, &landing);
-        const rb_exact_table *t = c->last_tab && h == c->last_h ? c->last_tab
-                                  : h > 0 ? table_of_length(sv, h) : NULL;
+        const rb_exact_table *t = h > 0 ? table_of_length(sv, h) : NULL;
         rb_floor_line f;
         if (!t || !rb_motion_floor_line_at(m, i, &f))
             break;
@@ -742,22 +747,30 @@ static long quiet_run(rb_solver *sv)
             break;
         t0 = sv->t;
         advance_step(sv, t, z, t1, u, v);
-        memcpy(z0, z, sizeof z0);
-        fl = f;
+        /* the last step's start, for rb_exact_settle */
+        last = i;
+        u0 = z[ZU];
+        v0 = z[ZV];
         tab = t;
-        taken++;
         if (!landing)
             break;
     }
-    if (taken) {
-        c->pending = 1;
-        c->pend_tab = tab;
-        memcpy(c->pend_z0, z0, sizeof c->pend_z0);
-        c->pend_t0 = t0;
-        c->pend_g0 = fl.g0;
-        c->pend_slope = fl.slope;
-    }
-    return taken;
+    if (last < 0)
+        return 0;
+    double z[ZN] = {u0, v0};
+    rb_floor_line f;
+    rb_motion_floor_line_at(m, last, &f);
+    z[ZUB] = f.u;
+    z[ZVB] = f.v;
+    z[ZG] = f.g0;
+    z[ZS] = f.slope;
+    c->pending = 1;
+    c->pend_tab = tab;
+    memcpy(c->pend_z0, z, sizeof c->pend_z0);
+    c->pend_t0 = t0;
+    c->pend_g0 = f.g0;
+    c->pend_slope = f.slope;
+    return 1;
 }
 
 /* An exact step of stage 1 towards target (the next break or the end):

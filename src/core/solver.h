@@ -105,9 +105,11 @@ typedef struct {
      * start state, start time and the floor line's g0 and slope */
     int pending;
     const rb_exact_table *pend_tab;
-    /* the last step length looked up, with its check points and table */
-    double last_h;
-    const rb_exact_table *last_tab;
+    /* the step lengths last looked up, to the bit, and their tables (a
+     * sample interval's length comes in a few roundings) */
+    double memo_h[RB_EXACT_TABLES];
+    const rb_exact_table *memo_tab[RB_EXACT_TABLES];
+    int memo_next;
     double pend_z0[RB_EXACT_DIM], pend_t0, pend_g0, pend_slope;
 } rb_exact_cache;
 

@@ -61,6 +61,30 @@ static void check_building(double f_hz, double xi, double dt)
         worst = fmax(worst, fabs(rb_series_at(&s, (double)i * dt) - s.accel_mps2[i]));
     CHECK(worst < 1e-10);
 
+    /* the floor line from a sample by its index: what the line found
+     * from the sample's time gives, to the bit; its ground is the
+     * ground's sample and its building state gives the floor's sample */
+    int same = 1;
+    double line_worst = 0.0;
+    for (long i = 0; i + 1 < (long)s.n; i++) {
+        rb_floor_line a, b;
+        CHECK(rb_series_floor_line_at(&s, i, &a) == 1);
+        CHECK(rb_series_floor_line(&s, s.t0_s + (double)i * s.dt_s, &b) == 1);
+        same = same && a.g0 == b.g0 && a.slope == b.slope && a.u == b.u && a.v == b.v
+               && a.omega == b.omega && a.xi == b.xi;
+        double w = 2 * PI * f_hz;
+        line_worst = fmax(line_worst, fabs(a.g0 - g.accel_mps2[i]));
+        line_worst = fmax(line_worst, fabs(-(2 * xi * w * a.v + w * w * a.u) - s.accel_mps2[i]));
+        line_worst = fmax(line_worst, fabs(a.slope - (g.accel_mps2[i + 1] - g.accel_mps2[i]) / dt));
+    }
+    CHECK(same);
+    CHECK(line_worst < 1e-9);
+    {
+        rb_floor_line a;
+        CHECK(rb_series_floor_line_at(&s, (long)s.n - 1, &a) == 0);
+        CHECK(rb_series_floor_line_at(&s, -1, &a) == 0);
+    }
+
     /* between them: the same ground sampled 64 times finer through the
      * same building gives the floor at those points */
     upsample(&g, 64, &up);
@@ -159,6 +183,11 @@ int main(void)
     CHECK(rb_series_taylor(&g, 0.215, 3, coef) == 1);
     CHECK_NEAR(coef[0], rb_series_at(&g, 0.215), 1e-14);
     CHECK_NEAR(rb_series_at(&g, 0.21), 0.5 * (g.accel_mps2[10] + g.accel_mps2[11]), 1e-14);
+    rb_floor_line fl;
+    CHECK(rb_series_floor_line_at(&g, 10, &fl) == 1);
+    CHECK(fl.g0 == g.accel_mps2[10] && fl.u == 0 && fl.v == 0 && fl.omega == 0);
+    CHECK_NEAR(fl.slope, (g.accel_mps2[11] - g.accel_mps2[10]) / 0.02, 1e-9);
+    CHECK(rb_series_floor_line_at(&g, 49, &fl) == 0);
     rb_series_free(&g);
     TEST_MAIN_END();
 }

@@ -16,8 +16,9 @@
  *   table), agree to the tolerance.
  * - A time history changes nothing in the run: the same bits with and
  *   without one, on the floor and rocking (with one, the end of every
- *   quiet exact step is read at once; without, that of the last of a run
- *   of them alone, rb_exact_settle). */
+ *   quiet exact step is read at once and each is a step of the run loop;
+ *   without, a run of them is taken inside the stepper, quiet_run, and
+ *   the end of its last step alone is read, rb_exact_settle). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
