@@ -6,7 +6,9 @@
  * neither. */
 #include <math.h>
 #include "bolt.h"
+#include "minmax.h"
 #include "solver.h"
+#include "stepper.h"
 
 /* The highest frequency of the model and the excitation; the rows' own
  * (a stiff spring's) only where taut, so that a run with elastic rows
@@ -131,4 +133,36 @@ int rb_control_rk_accept(rb_solver *sv, double h, double err)
     }
     sv->h = fmax(h, 1e-14) * fmin(5, fmax(0.2, fac));
     return 1;
+}
+
+/* The window of events per simulated second a step starts in. */
+void rb_control_event_window(rb_solver *sv)
+{
+    if (sv->t - sv->window_start >= 1.0) {
+        sv->window_start = sv->t;
+        sv->window_events = 0;
+    }
+}
+
+/* The limit state a run was asked to stop at has been reached
+ * (rb_solve_opts.stop_at). */
+int rb_control_stop_reached(const rb_solver *sv)
+{
+    const rb_result *r = sv->res;
+    unsigned stop = sv->opts.stop_at;
+    if ((stop & RB_STOP_FIRST_YIELD)
+        && (r->yielded[0] || r->yielded[1]
+            || (r->fy_row_n > 0 && rb_fmax(r->max_bolt_force_n[0], r->max_bolt_force_n[1])
+                                   >= r->fy_row_n)))
+        return 1;
+    return (stop & RB_STOP_LIFT_OFF) && r->min_vertical_reaction_n <= 0;
+}
+
+int rb_run_goes_on(rb_solver *sv)
+{
+    if (sv->done || !(sv->t < sv->t_end) || rb_control_stop_reached(sv))
+        return 0;
+    rb_control_event_window(sv);
+    return !(sv->window_events > sv->opts.max_events_per_s)
+           && sv->res->steps < sv->opts.max_steps;
 }

@@ -538,18 +538,9 @@ static int find_event(rb_solver *sv, const rb_rk_step *st, const double *g0,
     return -1;
 }
 
-/* The window of events per simulated second a step starts in. */
-static void event_window(rb_solver *sv)
-{
-    if (sv->t - sv->window_start >= 1.0) {
-        sv->window_start = sv->t;
-        sv->window_events = 0;
-    }
-}
-
 static rb_status check_work(rb_solver *sv, rb_diag *diag)
 {
-    event_window(sv);
+    rb_control_event_window(sv);
     if (sv->window_events > sv->opts.max_events_per_s)
         return fail(sv, diag, RB_ERR_WORK_LIMIT, "more transitions per simulated second "
                     "than the work bound allows (chattering)");
@@ -673,29 +664,6 @@ static rb_status advance(rb_solver *sv, rb_rk_step *st, double *g, rb_diag *diag
     return restart(sv, g, diag);
 }
 
-/* The limit state a run was asked to stop at has been reached
- * (rb_solve_opts.stop_at). */
-static int stop_reached(const rb_solver *sv)
-{
-    const rb_result *r = sv->res;
-    unsigned stop = sv->opts.stop_at;
-    if ((stop & RB_STOP_FIRST_YIELD)
-        && (r->yielded[0] || r->yielded[1]
-            || (r->fy_row_n > 0 && rb_fmax(r->max_bolt_force_n[0], r->max_bolt_force_n[1])
-                                   >= r->fy_row_n)))
-        return 1;
-    return (stop & RB_STOP_LIFT_OFF) && r->min_vertical_reaction_n <= 0;
-}
-
-int rb_run_goes_on(rb_solver *sv)
-{
-    if (sv->done || !(sv->t < sv->t_end) || stop_reached(sv))
-        return 0;
-    event_window(sv);
-    return !(sv->window_events > sv->opts.max_events_per_s)
-           && sv->res->steps < sv->opts.max_steps;
-}
-
 static rb_status run(rb_solver *sv, rb_diag *diag)
 {
     rb_rk_step st;
@@ -704,7 +672,7 @@ static rb_status run(rb_solver *sv, rb_diag *diag)
     sv->hist_k = 1;
     if (s == RB_OK)
         s = restart(sv, g, diag);
-    while (s == RB_OK && !sv->done && sv->t < sv->t_end && !stop_reached(sv)) {
+    while (s == RB_OK && !sv->done && sv->t < sv->t_end && !rb_control_stop_reached(sv)) {
         if ((s = check_work(sv, diag)) != RB_OK)
             break;
         double brk = rb_motion_next_break(sv->sys.motion, sv->t);

@@ -214,6 +214,13 @@ double rb_absorbed_now(const rb_solver *sv, int row);
  * way. */
 void rb_control_init(rb_solver *sv);
 double rb_control_trial(const rb_solver *sv, double target);
+/* The run loop's conditions (solve.c), shared with a stepper that takes
+ * several steps in one call (stepper.h, rb_run_goes_on): the window of
+ * events per simulated second moved on to the current step; whether the
+ * limit state the run was asked to stop at (rb_solve_opts.stop_at) has
+ * been reached. */
+void rb_control_event_window(rb_solver *sv);
+int rb_control_stop_reached(const rb_solver *sv);
 double rb_step_length(const rb_solver *sv, double target, int *landing);
 int rb_step_checks(const rb_solver *sv, double h);
 int rb_step_checks_rk(const rb_solver *sv, double h);
