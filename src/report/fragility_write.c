@@ -104,10 +104,17 @@ char *rb_fragility_render_text(const rb_case *c, const rb_case_fragility *f)
         for (size_t m = 0; m < f->n_motions; m++)
             cens += (size_t)f->motions[m].censored[k];
         rb_strbuf_printf(&b, "%-12s ", rb_enum_str(rb_limit_state_names, k));
-        if (f->fitted[k])
-            rb_strbuf_printf(&b, "%9.4f %7.3f %9.4f to %8.4f %9.4f %9.4f", f->fit[k].median / g,
-                             f->fit[k].beta, f->median_lo[k] / g, f->median_hi[k] / g,
-                             f->im10[k] / g, f->p_at_level[k]);
+        if (f->fitted[k]) {
+            rb_strbuf_printf(&b, "%9.4f %7.3f ", f->fit[k].median / g, f->fit[k].beta);
+            /* too few motions to resample (two equal draws fit no spread):
+             * the interval is unknown, said so rather than printed as nan */
+            if (isfinite(f->median_lo[k]) && isfinite(f->median_hi[k]))
+                rb_strbuf_printf(&b, "%9.4f to %8.4f", f->median_lo[k] / g,
+                                 f->median_hi[k] / g);
+            else
+                rb_strbuf_printf(&b, "%21s", "n/a (too few)");
+            rb_strbuf_printf(&b, " %9.4f %9.4f", f->im10[k] / g, f->p_at_level[k]);
+        }
         else
             rb_strbuf_printf(&b, "%9s %7s %21s %9s %9s", "n/a", "n/a",
                              "(fewer than 2 reach it)", "n/a", "n/a");

@@ -97,6 +97,8 @@ if not re.search(r"^confirmed at tighter tolerances: usage .*not confirmed: firs
     fail("the text does not name the confirmed and unconfirmed states:\n" + text)
 if "limited by the model: first-yield 2 of 2, usage 2 of 2, overturn 2 of 2" not in text:
     fail("the text does not say which fits the model limits:\n" + text)
+if re.search(r"\bnan\b", text, re.I):
+    fail("the text prints nan (two motions are too few to resample):\n" + text)
 rows = [ln for ln in text.splitlines() if ln.startswith(("v90 ", "v75 "))]
 if len(rows) != 2 or any(ln.count("^") != 3 for ln in rows):
     fail(f"the capacities' rows do not mark the three limited ones with ^: {rows}")
