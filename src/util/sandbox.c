@@ -20,8 +20,12 @@ rb_status rb_sandbox_open(rb_sandbox *sb, const char *dir, rb_diag *diag)
     sb->root[0] = sb->shipped[0] = '\0';
     if (!dir)
         return RB_OK;
+    /* errno names the cause only when a call failed: a path that exists
+     * but is not a directory fails no call, and an earlier call's errno
+     * would name a cause that is not this one. */
+    errno = 0;
     if (!realpath(dir, sb->root) || stat(sb->root, &st) != 0
-        || !S_ISDIR(st.st_mode)) {
+        || (!S_ISDIR(st.st_mode) && (errno = ENOTDIR))) {
         if (diag) {
             rb_diag_clear(diag);
             rb_diag_set_file(diag, "%s", dir);

@@ -4,6 +4,7 @@
  * are refused, a missing file is left to the open, and NULL or a sandbox
  * opened without a directory allows everything. */
 #include <limits.h>
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -71,8 +72,14 @@ int main(void)
 
     /* not a directory: an error naming the option, and the value stays off */
     rb_sandbox bad;
+    errno = ENOENT; /* a cause left by an earlier call must not be named */
     CHECK(rb_sandbox_open(&bad, fa, &d) == RB_ERR_IO);
     CHECK(strcmp(d.key, "--sandbox") == 0);
+    CHECK(strstr(d.msg, strerror(ENOTDIR)) != NULL);
+    CHECK(strstr(d.msg, strerror(ENOENT)) == NULL);
+    errno = 0;
+    CHECK(rb_sandbox_open(&bad, missing, &d) == RB_ERR_IO);
+    CHECK(strstr(d.msg, strerror(ENOENT)) != NULL);
     CHECK(rb_sandbox_dir(&bad) == NULL);
     CHECK(rb_sandbox_allows(&bad, fb, why, sizeof why) == 1);
 
