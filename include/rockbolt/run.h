@@ -45,6 +45,10 @@ typedef enum {
  * case's usage limit when it is judged on no break, else the default) and
  * the case's own for the gap. Sets only those three fields of out. */
 void rb_run_design_criteria(const rb_case *c, rb_case_design *out);
+/* What the design command's factor searches ask of rb_design_factor_near:
+ * the margin's secant before the bisection (docs/design.md, "Design
+ * factor"), so that a probe of its brackets searches as it does. */
+rb_design_hints rb_run_design_factor_hints(void);
 
 /* The design of motion m of c, the part scope names, against the criteria
  * in cd (rb_run_design_criteria). checked is the motion's own run made

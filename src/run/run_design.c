@@ -71,6 +71,15 @@ typedef struct {
 /* jobs 0 to RB_N_CRITERIA - 1: the factor of that kind */
 enum { JOB_GAP = RB_N_CRITERIA, JOB_SWEEPS, N_JOBS };
 
+rb_design_hints rb_run_design_factor_hints(void)
+{
+    /* the bracket narrowed by the margin's secant where the criteria give
+     * one: fewer runs where the margin is near linear, the level found
+     * within the resolution of the bisection's */
+    rb_design_hints hints = {0, 1};
+    return hints;
+}
+
 /* The factor of criterion kind k (the case's own only, for the brief
  * design of a batch), under its kind's criteria. */
 static rb_status factor(searches *s, int k, rb_diag *diag)
@@ -83,10 +92,7 @@ static rb_status factor(searches *s, int k, rb_diag *diag)
     snprintf(what, sizeof what, "design factor (%s)",
              rb_enum_str_sep(rb_criterion_names, k, ' ', words, sizeof words));
     step(s->pg, s->cm->name, what);
-    /* the bracket narrowed by the margin's secant where the criteria give
-     * one (docs/design.md, "Design factor": about a tenth fewer runs, the
-     * level found within the resolution of the bisection's) */
-    rb_design_hints hints = {0, 1};
+    rb_design_hints hints = rb_run_design_factor_hints();
     rb_status st = rb_design_factor_near(&c->model, &s->cm->motion, &c->solve,
                                          &s->cd->factor_criteria[k], &c->design,
                                          s->n_threads, s->memo, &hints, &s->md->factor[k],

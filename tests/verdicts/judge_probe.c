@@ -132,8 +132,10 @@ static int probe_design(const char *path)
         for (int k = 0; k < RB_N_CRITERIA; k++) {
             rb_design_factor_result f;
             size_t n_pass = 0, n_fail = 0;
-            if (rb_design_factor(&c.model, &c.motions[i].motion, &c.solve, &crit[k],
-                                 &c.design, 2, NULL, &f, NULL) != RB_OK) {
+            /* the search the design command makes */
+            rb_design_hints hints = rb_run_design_factor_hints();
+            if (rb_design_factor_near(&c.model, &c.motions[i].motion, &c.solve, &crit[k],
+                                      &c.design, 2, NULL, &hints, &f, NULL) != RB_OK) {
                 printf("%s: motion %zu: the search fails\n", path, i + 1);
                 bad = 1;
                 continue;
