@@ -14,6 +14,7 @@
 #include "../motion/matexp.h"
 #include "exact.h"
 #include "minmax.h"
+#include "pair.h"
 #include "stepper.h"
 #include "taylor.h"
 
@@ -160,6 +161,8 @@ static void build_table(rb_solver *sv, double h, int n, rb_exact_table *t)
         rows_at(&r, (double)j / n, e);
         memcpy(t->row[j - 1], e, sizeof t->row[0]);
     }
+    for (int j = 0; j < ZN; j++)
+        t->end_uv[j] = rb_pair_make(t->row[n - 1][ZU][j], t->row[n - 1][ZV][j]);
     memset(t->gvv, 0, sizeof t->gvv);
     memset(t->gxv, 0, sizeof t->gxv);
     for (int q = 0; q < 8 * panels; q++) {
@@ -176,13 +179,16 @@ static void build_table(rb_solver *sv, double h, int n, rb_exact_table *t)
     }
     table_bounds(sv, &r, h, t);
     const double cw[2] = {sv->sys.d.Cstar, sv->sys.d.Nstar};
+    double pk[ZN * (ZN + 1) / 2][2];
     for (int w = 0; w < 2; w++) {
         double(*q)[ZN] = w == 0 ? t->gvv : t->gxv;
         int k = 0;
         for (int i = 0; i < ZN; i++)
             for (int j = i; j < ZN; j++)
-                t->work[w][k++] = cw[w] * (i == j ? q[i][i] : q[i][j] + q[j][i]);
+                pk[k++][w] = cw[w] * (i == j ? q[i][i] : q[i][j] + q[j][i]);
     }
+    for (int k = 0; k < ZN * (ZN + 1) / 2; k++)
+        t->work[k] = rb_pair_make(pk[k][0], pk[k][1]);
 }
 
 /* Step lengths repeat (a sample interval, or its share of steps capped at
@@ -425,6 +431,7 @@ static void table_bounds(rb_solver *sv, const rows *r, double h, rb_exact_table 
                 S[q][j] = rb_fmax(S[q][j], fabs(v));
             }
     }
+    double B[RB_EXACT_NQ][ZN] = {{0}};
     t->bounded = 1;
     for (int q = 0; q < RB_EXACT_NQ && t->bounded; q++) {
         double smax = 0;
@@ -433,8 +440,11 @@ static void table_bounds(rb_solver *sv, const rows *r, double h, rb_exact_table 
         /* above the rows' rounding, and positive (the proof's B > 0) */
         for (int j = 0; j < ZN; j++)
             S[q][j] = S[q][j] * (1 + 1e-12) + 1e-15 * smax + DBL_MIN;
-        t->bounded = supersolution(pa, S[q], t->bound[q]);
+        t->bounded = supersolution(pa, S[q], B[q]);
     }
+    for (int j = 0; j < ZN; j++)
+        for (int q = 0; q < RB_EXACT_NQ; q += 2)
+            t->bound[j][q / 2] = rb_pair_make(B[q][j], B[q + 1][j]);
 }
 
 /* A time history reads the state between check points: the step's
@@ -470,6 +480,22 @@ typedef struct {
     double shear_passed; /* the largest shear bound passed, -1 before */
 } quiet_limits;
 
+void rb_exact_bounds_of(const rb_exact_table *tab, const double *z0, double *b)
+{
+    /* each quantity summed over j in order, two quantities a vector */
+    _Static_assert(RB_EXACT_NQ == 4, "two pairs of quantities");
+    rb_pair lo = rb_pair_splat(0), hi = lo;
+    for (int j = 0; j < ZN; j++) {
+        rb_pair az = rb_pair_splat(fabs(z0[j]));
+        lo = rb_pair_madd(lo, tab->bound[j][0], az);
+        hi = rb_pair_madd(hi, tab->bound[j][1], az);
+    }
+    b[0] = rb_pair_lane(lo, 0);
+    b[1] = rb_pair_lane(lo, 1);
+    b[2] = rb_pair_lane(hi, 0);
+    b[3] = rb_pair_lane(hi, 1);
+}
+
 /* 0 where no step can be quiet (the forms of the other side, reactions
  * checked at every point). */
 static int quiet_limits_of(const rb_solver *sv, quiet_limits *l)
@@ -490,20 +516,15 @@ static int quiet_limits_of(const rb_solver *sv, quiet_limits *l)
  * total shear (hence the friction demand, the floor's reaction being W)
  * and the anchors' demand at or below their running peaks, so that no
  * point or located peak inside it could move a result. */
-static int bounds_quiet(const rb_solver *sv, const rb_exact_table *tab, const double *z0,
-                        quiet_limits *l)
+static inline int bounds_quiet(const rb_solver *sv, const rb_exact_table *tab,
+                               const double *z0, quiet_limits *l)
 {
     if (!tab->bounded)
         return 0;
-    double az[ZN], b[RB_EXACT_NQ];
-    for (int j = 0; j < ZN; j++)
-        az[j] = fabs(z0[j]);
-    for (int q = 0; q < RB_EXACT_NQ; q++) {
-        double v = 0;
-        for (int j = 0; j < ZN; j++)
-            v += tab->bound[q][j] * az[j];
-        b[q] = v * QUIET_MARGIN;
-    }
+    double b[RB_EXACT_NQ];
+    rb_exact_bounds_of(tab, z0, b);
+    for (int q = 0; q < RB_EXACT_NQ; q++)
+        b[q] *= QUIET_MARGIN;
     if (!(b[Q_UP_POS] < l->up_pos && b[Q_UP_NEG] < l->up_neg && b[Q_U] <= l->u))
         return 0;
     if (b[Q_SHEAR] <= l->shear_passed)
@@ -536,13 +557,16 @@ static void check_state(const rb_exact_table *tab, const rb_floor_line *fl, cons
 
 /* The works' quadratic forms of z added to *wd and *wi, written out
  * (the 21 pairs of a 6-state: a loop over the triangle is not unrolled,
- * and costs twice as many instructions). */
+ * and costs twice as many instructions), both sums a vector. */
 _Static_assert(ZN == 6, "work_forms writes out the pairs of a 6-state");
 static void work_forms(const rb_exact_table *tab, const double *z, double *wd, double *wi)
 {
-    const double *w = tab->work[0], *x = tab->work[1];
-    double zz, d = 0, e = 0;
-#define PAIR(i, j, k) (zz = z[i] * z[j], d += w[k] * zz, e += x[k] * zz)
+    const rb_pair *w = tab->work;
+    rb_pair s = rb_pair_splat(0), zs[ZN];
+    /* a product of two splats is the product's splat, to the bit */
+    for (int j = 0; j < ZN; j++)
+        zs[j] = rb_pair_splat(z[j]);
+#define PAIR(i, j, k) (s = rb_pair_madd(s, w[k], rb_pair_mul(zs[i], zs[j])))
     PAIR(0, 0, 0); PAIR(0, 1, 1); PAIR(0, 2, 2); PAIR(0, 3, 3); PAIR(0, 4, 4); PAIR(0, 5, 5);
     PAIR(1, 1, 6); PAIR(1, 2, 7); PAIR(1, 3, 8); PAIR(1, 4, 9); PAIR(1, 5, 10);
     PAIR(2, 2, 11); PAIR(2, 3, 12); PAIR(2, 4, 13); PAIR(2, 5, 14);
@@ -550,8 +574,18 @@ static void work_forms(const rb_exact_table *tab, const double *z, double *wd, d
     PAIR(4, 4, 18); PAIR(4, 5, 19);
     PAIR(5, 5, 20);
 #undef PAIR
-    *wd += d;
-    *wi += e;
+    *wd += rb_pair_lane(s, 0);
+    *wi += rb_pair_lane(s, 1);
+}
+
+/* U and U' at the end of the step from z0, both sums a vector. */
+static void end_state(const rb_exact_table *tab, const double *z0, double *u, double *v)
+{
+    rb_pair s = rb_pair_splat(0);
+    for (int j = 0; j < ZN; j++)
+        s = rb_pair_madd(s, tab->end_uv[j], rb_pair_splat(z0[j]));
+    *u = rb_pair_lane(s, 0);
+    *v = rb_pair_lane(s, 1);
 }
 
 /* Advance the run's time, state and works over a step taken from z0,
@@ -646,12 +680,8 @@ static int exact_quiet(rb_solver *sv, const rb_exact_table *tab, const rb_floor_
                        const double *z0, double t1, double *g, rb_status *status)
 {
     rb_exact_cache *c = &sv->exact;
-    const double *e = tab->row[tab->n - 1][0], *ed = tab->row[tab->n - 1][1];
-    double u = 0, v = 0, t0 = sv->t;
-    for (int j = 0; j < ZN; j++) {
-        u += e[j] * z0[j];
-        v += ed[j] * z0[j];
-    }
+    double u, v, t0 = sv->t;
+    end_state(tab, z0, &u, &v);
     if (!isfinite(u) || !isfinite(v))
         return 0;
     /* a quiet step before this one leaves nothing to read: this one's end
@@ -676,7 +706,7 @@ static const rb_exact_table *table_of_length(rb_solver *sv, double h)
 {
     rb_exact_cache *c = &sv->exact;
     for (int k = 0; k < RB_EXACT_TABLES; k++)
-        if (c->memo_tab[k] && h == c->memo_h[k])
+        if (h == c->memo_h[k] && c->memo_tab[k])
             return c->memo_tab[k];
     /* a length found once keeps its table (table_for finds the first
      * that fits, and tables are only added after it) */
@@ -737,12 +767,8 @@ static int quiet_run(rb_solver *sv)
         double z[ZN] = {sv->y[RB_Y_U], sv->y[RB_Y_UD], f.u, f.v, f.g0, f.slope};
         if (!bounds_quiet(sv, t, z, &lim))
             break;
-        const double *e = t->row[t->n - 1][0], *ed = t->row[t->n - 1][1];
-        double u = 0, v = 0, t1 = landing ? brk : sv->t + h;
-        for (int j = 0; j < ZN; j++) {
-            u += e[j] * z[j];
-            v += ed[j] * z[j];
-        }
+        double u, v, t1 = landing ? brk : sv->t + h;
+        end_state(t, z, &u, &v);
         if (!isfinite(u) || !isfinite(v))
             break;
         t0 = sv->t;

@@ -40,6 +40,9 @@ void rb_exact_settle(rb_solver *sv, double *g);
  * (t->bounded says whether they were proved); the system matrix A of
  * dz/dt = A z. */
 void rb_exact_table_build(rb_solver *sv, double h, int n, rb_exact_table *t);
+/* The bounds of the four quantities over a step of table tab from z0,
+ * less their value at z = 0: b[q] = sum_j bound[j][q] |z0_j|. */
+void rb_exact_bounds_of(const rb_exact_table *tab, const double *z0, double *b);
 void rb_exact_system(const rb_solver *sv, double a[RB_EXACT_DIM][RB_EXACT_DIM]);
 
 /* For tests (test_exact_bounds, exact_probe.c): the bounds a run's exact step forms for

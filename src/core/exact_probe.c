@@ -23,12 +23,7 @@ int rb_exact_probe(const rb_model *model, const rb_motion *motion, const rb_solv
     }
     if (ok) {
         double a[ZN][ZN], at[ZN][ZN], e[ZN][ZN];
-        for (int q = 0; q < RB_EXACT_NQ; q++) {
-            double v = 0;
-            for (int j = 0; j < ZN; j++)
-                v += sv->exact.tab[0].bound[q][j] * fabs(z0[j]);
-            bound[q] = v;
-        }
+        rb_exact_bounds_of(&sv->exact.tab[0], z0, bound);
         rb_exact_system(sv, a);
         for (int k = 0; k <= K; k++) {
             for (int i = 0; i < ZN; i++)

@@ -6,6 +6,7 @@
 #define RB_SOLVER_H
 
 #include "dynamics.h"
+#include "pair.h"
 #include "rk45.h"
 
 /* Tolerances the integrator accepts: below RB_RTOL_MIN rounding error
@@ -77,15 +78,21 @@ typedef struct {
     double h;
     int n;
     double row[RB_SUB_MAX][4][RB_EXACT_DIM];
+    /* the rows of U and U' at the step's end, side by side (exact.c,
+     * end_state) */
+    rb_pair end_uv[RB_EXACT_DIM];
     double gvv[RB_EXACT_DIM][RB_EXACT_DIM], gxv[RB_EXACT_DIM][RB_EXACT_DIM];
     /* the damping and input works over the step as symmetric quadratic
      * forms of its start state, their coefficients (C* gvv, N* gxv) packed
-     * by pairs i <= j */
-    double work[2][RB_EXACT_DIM * (RB_EXACT_DIM + 1) / 2];
-    /* bound[q][j]: the largest |row j| over the step of quantity q's row
-     * (exact.c, "Bounds over a step"); bounded 0 where none was proved */
+     * by pairs i <= j, work[k]'s lane 0 the damping's and lane 1 the input's
+     * side by side (both sums then take one vector product a pair) */
+    rb_pair work[RB_EXACT_DIM * (RB_EXACT_DIM + 1) / 2];
+    /* bound[j][q / 2] lane q % 2: the largest |row j| over the step of
+     * quantity q's row (exact.c, "Bounds over a step"), the four
+     * quantities of a component side by side; bounded 0 where none was
+     * proved */
     int bounded;
-    double bound[RB_EXACT_NQ][RB_EXACT_DIM];
+    rb_pair bound[RB_EXACT_DIM][RB_EXACT_NQ / 2];
 } rb_exact_table;
 
 typedef struct {
