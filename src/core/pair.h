@@ -6,7 +6,9 @@
 #ifndef RB_PAIR_H
 #define RB_PAIR_H
 
-#if defined(__GNUC__) || defined(__clang__)
+/* RB_PAIR_PLAIN asks for the plain form (test_pair holds both to the
+ * scalar sums) */
+#if (defined(__GNUC__) || defined(__clang__)) && !defined(RB_PAIR_PLAIN)
 typedef double rb_pair __attribute__((vector_size(2 * sizeof(double))));
 
 static inline rb_pair rb_pair_make(double a, double b)
