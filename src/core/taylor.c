@@ -120,12 +120,21 @@ static inline void times_x_cs(const series *s, int k, double *xc, double *xs)
 /* Order k of the right-hand side while rocking, the bolt's moment at that
  * order being m_bolt (0 in stage 2), after
  * theta'^2 at order k and cos, sin at order k + 1, which need theta' only up
- * to order k: one pass over theta' gives all three. */
+ * to order k: one pass over theta' gives all three. The floor's products
+ * with cos and sin (and the vertical's, under one) are sums over the same
+ * j in the same pass, each in the order times_x and times_g add it, so
+ * that no number moves. gs is the vertical's G sin (G theta when small),
+ * which the coupling work reads too. */
 static void rocking_order(const consts *K, series *s, int k, double m_bolt, double *udd,
-                          double *thdd)
+                          double *thdd, double *gs)
 {
     /* two sets of accumulators halve the chain of dependent additions */
     double a0[LANES + 1] = {0}, a1[LANES + 1] = {0};
+    /* the floor's and the vertical's products with cos and sin, where
+     * their series reach order k (times_x_cs and times_g then start at 0) */
+    int fuse_x = !K->small && s->xd > 1 && k <= s->xd;
+    int fuse_g = K->vert && !K->small && k <= s->gd;
+    double xc = 0, xs = 0, gc = 0, gsn = 0;
     int j = 0;
     for (; j + 1 <= k; j += 2) {
         double o0 = O_(s, j), o1 = O_(s, j + 1);
@@ -134,14 +143,36 @@ static void rocking_order(const consts *K, series *s, int k, double m_bolt, doub
             a0[i] += o0 * p0[i];
             a1[i] += o1 * p1[i];
         }
+        if (fuse_x) {
+            xc += s->CSO[j][LC] * s->X[k - j];
+            xs += s->CSO[j][LS] * s->X[k - j];
+            xc += s->CSO[j + 1][LC] * s->X[k - j - 1];
+            xs += s->CSO[j + 1][LS] * s->X[k - j - 1];
+        }
+        if (fuse_g) {
+            gsn += s->CSO[j][LS] * s->G[k - j];
+            gc += s->CSO[j][LC] * s->G[k - j];
+            gsn += s->CSO[j + 1][LS] * s->G[k - j - 1];
+            gc += s->CSO[j + 1][LC] * s->G[k - j - 1];
+        }
     }
-    if (j == k)
+    if (j == k) {
         for (int i = 0; i <= LANES; i++)
             a0[i] += O_(s, k) * s->CSO[0][i];
+        if (fuse_x) {
+            xc += s->CSO[k][LC] * s->X[0];
+            xs += s->CSO[k][LS] * s->X[0];
+        }
+        if (fuse_g) {
+            gsn += s->CSO[k][LS] * s->G[0];
+            gc += s->CSO[k][LC] * s->G[0];
+        }
+    }
     s->Q[k] = a0[LO] + a1[LO];
     S_(s, k + 1) = (a0[LC] + a1[LC]) * inv[k + 1];
     C_(s, k + 1) = -(a0[LS] + a1[LS]) * inv[k + 1];
     double RU, Rth;
+    *gs = 0;
     if (K->vert) {
         /* W = M G: every gravity term a product with G's series */
         double XC, XS, GS, GC;
@@ -151,10 +182,15 @@ static void rocking_order(const consts *K, series *s, int k, double m_bolt, doub
             GS = times_g(s->T, 1, s, k);
             GC = GS - K->alpha * s->G[k]; /* G (T - alpha) */
         } else {
-            times_x_cs(s, k, &XC, &XS);
-            GS = times_g(&s->CSO[0][LS], LANES + 1, s, k);
-            GC = times_g(&s->CSO[0][LC], LANES + 1, s, k);
+            if (fuse_x) {
+                XC = xc;
+                XS = xs;
+            } else
+                times_x_cs(s, k, &XC, &XS);
+            GS = fuse_g ? gsn : times_g(&s->CSO[0][LS], LANES + 1, s, k);
+            GC = fuse_g ? gc : times_g(&s->CSO[0][LC], LANES + 1, s, k);
         }
+        *gs = GS;
         RU = K->Ns * (XC + GS) - K->Ks * s->U[k] - K->Cs * s->V[k] - K->Ns * K->b * s->Q[k];
         Rth = K->small ? K->M * K->R * (XC + GC)
                        : K->M * (K->h * XC + K->b * XS) - K->M * (K->b * GC - K->h * GS);
@@ -164,7 +200,11 @@ static void rocking_order(const consts *K, series *s, int k, double m_bolt, doub
         Rth = K->M * K->R * s->X[k] + K->W * K->R * (s->T[k] - (k == 0 ? K->alpha : 0));
     } else {
         double XC, XS;
-        times_x_cs(s, k, &XC, &XS);
+        if (fuse_x) {
+            XC = xc;
+            XS = xs;
+        } else
+            times_x_cs(s, k, &XC, &XS);
         RU = K->Ns * (XC + K->g * S_(s, k)) - K->Ks * s->U[k] - K->Cs * s->V[k]
              - K->Ns * K->b * s->Q[k];
         Rth = K->M * (K->h * XC + K->b * XS) - K->W * (K->b * C_(s, k) - K->h * S_(s, k));
@@ -259,15 +299,17 @@ typedef struct {
     double DH[NT];
 } work_rows;
 
-static void work_order(const consts *K, const series *s, int rocking, int k, work_rows *r,
-                       double (*w)[3])
+static void work_order(const consts *K, const series *s, int rocking, int k, double gs,
+                       work_rows *r, double (*w)[3])
 {
     double *P = r->P[k];
     P[WV] = s->V[k];
     P[WC] = C_(s, k);
-    if (K->vert) /* the still stages' angle is constant, G is not */
-        P[WF] = K->Ns * ((K->small ? times_g(s->T, 1, s, k)
-                                   : times_g(&s->CSO[0][LS], LANES + 1, s, k))
+    if (K->vert) /* the still stages' angle is constant, G is not; rocking,
+                  * the product is rocking_order's */
+        P[WF] = K->Ns * ((rocking ? gs
+                          : K->small ? times_g(s->T, 1, s, k)
+                                     : times_g(&s->CSO[0][LS], LANES + 1, s, k))
                          - (rocking ? K->b * s->Q[k] : 0));
     else
         P[WF] = K->Ns * (K->g * (K->small ? s->T[k] : S_(s, k))
@@ -284,10 +326,18 @@ static void work_order(const consts *K, const series *s, int rocking, int k, wor
     } else
         r->DH[k] = 0;
     double acc[WL + 1] = {0};
+    /* the input power's product with the floor, where its series reaches
+     * order k: its terms up to k - 1 in the same pass, in times_x's order,
+     * the last once G[k] is formed */
+    int fuse_x = rocking && s->xd > 1 && k <= s->xd;
+    double gx = 0;
     if (rocking) {
-        for (int j = 0; j <= k; j++)
+        for (int j = 0; j <= k; j++) {
             for (int i = 0; i <= WL; i++)
                 acc[i] += s->V[j] * r->P[k - j][i];
+            if (fuse_x && j < k)
+                gx += r->G[j] * s->X[k - j];
+        }
     } else {
         /* the still stages' angle and its factors are constants */
         double vv = 0;
@@ -312,13 +362,14 @@ static void work_order(const consts *K, const series *s, int rocking, int k, wor
                   + (rocking ? K->M * (k + 1) * (K->h * S_(s, k + 1) - K->b * C_(s, k + 1))
                              : 0);
     w[k + 1][0] = K->Cs * acc[WV] * inv[k + 1];
+    double win = fuse_x ? gx + r->G[k] * s->X[0] : times_x(r->G, 1, s, k);
     if (K->vert) {
         double pv = 0;
         for (int j = 0; j <= k; j++)
             pv += s->Z[j] * r->DH[k - j];
-        w[k + 1][1] = (times_x(r->G, 1, s, k) - pv) * inv[k + 1];
+        w[k + 1][1] = (win - pv) * inv[k + 1];
     } else
-        w[k + 1][1] = times_x(r->G, 1, s, k) * inv[k + 1];
+        w[k + 1][1] = win * inv[k + 1];
     w[k + 1][2] = acc[WF] * inv[k + 1];
 }
 
@@ -405,12 +456,12 @@ double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double
     work_rows wr;
     int n = 0;
     for (int k = 0;; k++) {
-        double udd, thdd = 0;
+        double udd, thdd = 0, gs = 0;
         /* order k reads the floor to order k, and the step's end to n */
         if (k + 1 > xn)
             xn = floor_series(S->motion, t0, sgn, RB_TAYLOR_MAX + 1, &s);
         if (rocking)
-            rocking_order(&K, &s, k, bolt_order(&K, &B, &s, k), &udd, &thdd);
+            rocking_order(&K, &s, k, bolt_order(&K, &B, &s, k), &udd, &thdd, &gs);
         else {
             udd = still_order(&K, &s, k);
             C_(&s, k + 1) = S_(&s, k + 1) = s.Q[k] = 0;
@@ -420,7 +471,7 @@ double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double
         s.T[k + 1] = rocking ? O_(&s, k) * inv[k + 1] : 0;
         O_(&s, k + 1) = thdd * inv[k + 1];
         s.CSO[k + 1][LANES] = 0;
-        work_order(&K, &s, rocking, k, &wr, w);
+        work_order(&K, &s, rocking, k, gs, &wr, w);
         n = k + 1;
         hk *= h;
         double e = scaled(&s, n, hk, tol, tol_x);
