@@ -260,15 +260,24 @@ static double run_margin(const rb_design_ctx *ctx, const rb_design_run *run)
 /* Where the margin crosses 0 between the bracket's ends, by the secant of
  * the two runs nearest it on either side (or of the two highest passes,
  * where the failing end has no margin); NAN where they give none inside
- * the bracket. */
+ * the bracket. A line through two passes that crosses 0 at or above a
+ * failing end without a margin (a run stopped at its first yield: the
+ * row force, near linear below Fy, ends there) says the crossing lies just
+ * below that end, so the guess is half a resolution under it (half: the
+ * caller's own half resolution below the guess): one run there that
+ * passes closes the bracket, where halving it from a guess outside the
+ * bracket took four or five runs. */
 static double secant_guess(double lo, double m_lo, double lo2, double m_lo2, double hi,
-                           double m_hi)
+                           double m_hi, double half)
 {
     double x = NAN;
     if (isfinite(m_lo) && isfinite(m_hi) && m_hi > m_lo)
         x = lo + (hi - lo) * -m_lo / (m_hi - m_lo);
-    else if (isfinite(m_lo) && isfinite(m_lo2) && m_lo > m_lo2 && lo > lo2)
+    else if (isfinite(m_lo) && isfinite(m_lo2) && m_lo > m_lo2 && lo > lo2) {
         x = lo + (lo - lo2) * -m_lo / (m_lo - m_lo2);
+        if (!isfinite(m_hi) && x >= hi)
+            x = hi - half;
+    }
     return x > lo && x < hi ? x : (double)NAN;
 }
 
@@ -339,7 +348,8 @@ static rb_status straddle(factor_search *s, double res, rb_diag *diag)
     rb_status st = RB_OK;
     for (int round = 0; s->hi - s->lo > res && round < 8 && st == RB_OK; round++) {
         double width = s->hi - s->lo;
-        double x = halve ? (double)NAN : secant_guess(s->lo, g.m_lo, g.lo2, g.m_lo2, s->hi, g.m_hi);
+        double x = halve ? (double)NAN
+                         : secant_guess(s->lo, g.m_lo, g.lo2, g.m_lo2, s->hi, g.m_hi, half);
         if (!isfinite(x) || !(x - half > s->lo || x + half < s->hi)) {
             st = probe(s, 0.5 * (s->lo + s->hi), &g, diag);
             halve = 0;
