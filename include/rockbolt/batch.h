@@ -23,8 +23,9 @@
 /* Bumped when a field of the JSON summary is renamed, removed or changes
  * meaning, or when the reader needs one an older summary lacks: 2 added
  * each run's margin, governs and reason, and the fragility's anchorage
- * limit state and governing_limit_state (docs/report-format.md). */
-#define RB_BATCH_FORMAT_VERSION 2
+ * limit state and governing_limit_state; 3 each fragility limit state's
+ * confirmed and model_limited (docs/report-format.md). */
+#define RB_BATCH_FORMAT_VERSION 3
 
 /* ---- Work list ----------------------------------------------------------- */
 
@@ -122,6 +123,10 @@ typedef struct {
                              when too few resamples could be fitted */
     double p_at_level;    /* at the case's own level */
     size_t reached;       /* motions that reached it within the scan */
+    int confirmed;        /* its capacities confirmed at tighter tolerances
+                             (the governing state's) */
+    size_t model_limited; /* capacities that are the model's limit (the
+                             vertical reaching -g), counted as reached */
 } rb_batch_limit;
 
 /* A case's fragility over its motions (rockbolt/fragility.h). */

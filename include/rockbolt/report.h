@@ -128,12 +128,20 @@ typedef struct {
     int fitted[RB_P58_N_LS];  /* 0: the limit state could not be fitted */
     double median_g[RB_P58_N_LS];
     double beta[RB_P58_N_LS];
+    /* beyond P-58's columns: whether the limit state's capacities were
+     * confirmed at tighter tolerances (the governing state's), and how
+     * many of them are the model's limit (a lower bound), as the
+     * fragility's JSON says */
+    int confirmed[RB_P58_N_LS];
+    size_t model_limited[RB_P58_N_LS];
     const double *weights;    /* LS1's damage-state weights */
     size_t n_weights;         /* 0: the P-58 defaults */
 } rb_p58_row;
 
 /* The header line and one row of the SimCenter / pelicun fragility CSV
- * (ID, Incomplete, Demand-Type, ..., LS2-DamageStateWeights). New strings,
+ * (ID, Incomplete, Demand-Type, ..., LS2-DamageStateWeights, then
+ * LS1-Confirmed, LS1-ModelLimited, LS2-Confirmed, LS2-ModelLimited after
+ * P-58's own columns). New strings,
  * NULL when memory runs out. Numbers are the shortest that read back to
  * the same double. */
 char *rb_p58_render_head(void);

@@ -29,6 +29,8 @@ static void keep(const rb_case *c, const rb_case_fragility *f, rb_batch_fragilit
         l->median_hi_mps2 = f->median_hi[k];
         l->p_at_level = f->p_at_level[k];
         l->reached = 0;
+        l->confirmed = (f->confirmed >> k) & 1u;
+        l->model_limited = rb_case_fragility_model_limited(f, k);
         for (size_t m = 0; l->present && m < f->n_motions; m++)
             l->reached += f->motions[m].censored[k] == 0;
     }

@@ -132,7 +132,9 @@ static int add_fragility(cJSON *o, const rb_batch_fragility *f)
                 && rb_j_add_num(e, "median_lo_mps2", l->median_lo_mps2)
                 && rb_j_add_num(e, "median_hi_mps2", l->median_hi_mps2)
                 && rb_j_add_num(e, "p_at_level", l->p_at_level);
-        ok = ok && rb_j_add_num(e, "reached", (double)l->reached);
+        ok = ok && rb_j_add_num(e, "reached", (double)l->reached)
+            && cJSON_AddBoolToObject(e, "confirmed", l->confirmed) != NULL
+            && rb_j_add_num(e, "model_limited", (double)l->model_limited);
     }
     return ok;
 }
@@ -497,6 +499,13 @@ static void rd_limit(rd_ctx *r, const cJSON *e, int *last, rb_batch_fragility *f
         l->p_at_level = rd_num(r, e, "p_at_level");
     }
     l->reached = rd_size(r, e, "reached");
+    const cJSON *confirmed = cJSON_GetObjectItemCaseSensitive(e, "confirmed");
+    if (!cJSON_IsBool(confirmed)) {
+        rd_fail(r, "confirmed", "expected true or false");
+        return;
+    }
+    l->confirmed = cJSON_IsTrue(confirmed);
+    l->model_limited = rd_size(r, e, "model_limited");
 }
 
 static void rd_fragility(rd_ctx *r, const cJSON *o, rb_batch_case *c)

@@ -102,6 +102,8 @@ static void fragility_properties(rb_strbuf *b, const rb_batch_fragility *f)
             number(b, st, "p_at_level", l->p_at_level);
         }
         number(b, st, "reached", (double)l->reached);
+        number(b, st, "confirmed", l->confirmed != 0);
+        number(b, st, "model_limited", (double)l->model_limited);
     }
 }
 

@@ -45,6 +45,8 @@ void rb_batch_render_p58_case(rb_strbuf *b, const rb_batch_summary *s, const rb_
             r.fitted[k] = l->fitted;
             r.median_g[k] = l->median_mps2 / f->g_mps2;
             r.beta[k] = l->beta;
+            r.confirmed[k] = l->confirmed;
+            r.model_limited[k] = l->model_limited;
         }
     }
     char *row = rb_p58_render_row(&r);

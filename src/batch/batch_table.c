@@ -61,14 +61,23 @@ static void text_fragility(rb_strbuf *b, const rb_batch_case *c)
         /* in the spectral acceleration at the cabinet's f0, say so */
         if (l->fitted && f->im_freq_hz > 0)
             rb_strbuf_printf(b, " Sa(%.3g Hz)", f->im_freq_hz);
-        if (l->fitted)
-            rb_strbuf_printf(b, " median %.4g g, beta %.3f, 90%% %.4g to %.4g g; P %.3f "
-                             "at %.4g g;", l->median_mps2 / f->g_mps2, l->beta,
-                             l->median_lo_mps2 / f->g_mps2, l->median_hi_mps2 / f->g_mps2,
-                             l->p_at_level, f->level_mps2 / f->g_mps2);
-        else
+        if (l->fitted) {
+            rb_strbuf_printf(b, " median %.4g g, beta %.3f, 90%% ", l->median_mps2 / f->g_mps2,
+                             l->beta);
+            /* too few motions to resample (two equal draws fit no spread):
+             * no interval, as the fragility's own text says */
+            if (isfinite(l->median_lo_mps2) && isfinite(l->median_hi_mps2))
+                rb_strbuf_printf(b, "%.4g to %.4g g", l->median_lo_mps2 / f->g_mps2,
+                                 l->median_hi_mps2 / f->g_mps2);
+            else
+                rb_strbuf_puts(b, "n/a (too few)");
+            rb_strbuf_printf(b, "; P %.3f at %.4g g;", l->p_at_level, f->level_mps2 / f->g_mps2);
+        } else
             rb_strbuf_puts(b, " not fitted;");
-        rb_strbuf_printf(b, " reached by %zu of %zu%s\n", l->reached, c->n_runs,
+        rb_strbuf_printf(b, " reached by %zu of %zu", l->reached, c->n_runs);
+        if (l->model_limited)
+            rb_strbuf_printf(b, ", %zu at the model's limit (a lower bound)", l->model_limited);
+        rb_strbuf_printf(b, "; %s%s\n", l->confirmed ? "confirmed" : "not confirmed",
                          k == f->governing ? "; governs" : "");
     }
     if (f->governing < 0)
@@ -216,7 +225,7 @@ static void csv_columns(rb_strbuf *b, const rb_batch_result *r, int design)
 }
 
 /* The case's fragility, the same on each of its rows: its intensity
- * (with the frequency of a spectral acceleration), level, six columns per
+ * (with the frequency of a spectral acceleration), level, eight columns per
  * limit state, or why it has none. */
 static void csv_fragility(rb_strbuf *b, const rb_batch_fragility *f,
                          rb_fragility_intensity im)
@@ -229,7 +238,7 @@ static void csv_fragility(rb_strbuf *b, const rb_batch_fragility *f,
     if (f->error) {
         rb_strbuf_puts(b, ",");
         for (int k = 0; k < RB_N_LIMITS; k++)
-            rb_strbuf_puts(b, ",,,,,,");
+            rb_strbuf_puts(b, ",,,,,,,,");
         rb_strbuf_puts(b, ",,");
         csv_field(b, f->error);
         return;
@@ -239,8 +248,8 @@ static void csv_fragility(rb_strbuf *b, const rb_batch_fragility *f,
     for (int k = 0; k < RB_N_LIMITS; k++) {
         const rb_batch_limit *l = &f->limits[k];
         if (!l->present) {
-            /* a state the case does not have: no reached count either */
-            rb_strbuf_puts(b, ",,,,,,");
+            /* a state the case does not have: no reached count or flags */
+            rb_strbuf_puts(b, ",,,,,,,,");
             continue;
         }
         if (l->fitted) {
@@ -252,7 +261,7 @@ static void csv_fragility(rb_strbuf *b, const rb_batch_fragility *f,
         } else {
             rb_strbuf_puts(b, ",,,,,");
         }
-        rb_strbuf_printf(b, ",%zu", l->reached);
+        rb_strbuf_printf(b, ",%zu,%d,%zu", l->reached, l->confirmed != 0, l->model_limited);
     }
     char gov[32] = "";
     if (f->governing >= 0)
@@ -261,9 +270,9 @@ static void csv_fragility(rb_strbuf *b, const rb_batch_fragility *f,
 }
 
 /* The columns of --fragility after the design's: intensity and its
- * frequency, level, six per limit state, the governing one and the reason
+ * frequency, level, eight per limit state, the governing one and the reason
  * when there is none. */
-#define FRAGILITY_COLUMNS (2 + 1 + 6 * RB_N_LIMITS + 1 + 1)
+#define FRAGILITY_COLUMNS (2 + 1 + 8 * RB_N_LIMITS + 1 + 1)
 
 void rb_batch_render_csv_head(rb_strbuf *b, const rb_batch_summary *s, const rb_batch_counts *n)
 {
@@ -285,8 +294,9 @@ void rb_batch_render_csv_head(rb_strbuf *b, const rb_batch_summary *s, const rb_
             rb_enum_str_sep(rb_limit_state_names, k, '_', st, sizeof st);
             rb_strbuf_printf(b, ",fragility_%s_median_g,fragility_%s_beta,"
                              "fragility_%s_median_lo_g,fragility_%s_median_hi_g,"
-                             "fragility_%s_p_at_level,fragility_%s_reached", st, st, st, st,
-                             st, st);
+                             "fragility_%s_p_at_level,fragility_%s_reached,"
+                             "fragility_%s_confirmed,fragility_%s_model_limited", st, st, st,
+                             st, st, st, st, st);
         }
         rb_strbuf_puts(b, ",fragility_governing,fragility_error");
     }

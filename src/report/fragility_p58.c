@@ -35,6 +35,10 @@ char *rb_p58_render_head(void)
     for (int k = 1; k <= RB_P58_N_LS; k++)
         rb_strbuf_printf(&b, ",LS%d-Family,LS%d-Theta_0,LS%d-Theta_1,"
                          "LS%d-DamageStateWeights", k, k, k, k);
+    /* after P-58's own columns, which a loss tool reads by name: the
+     * fragility's flags of each limit state */
+    for (int k = 1; k <= RB_P58_N_LS; k++)
+        rb_strbuf_printf(&b, ",LS%d-Confirmed,LS%d-ModelLimited", k, k);
     rb_strbuf_puts(&b, "\n");
     return rb_strbuf_take(&b);
 }
@@ -80,6 +84,12 @@ char *rb_p58_render_row(const rb_p58_row *r)
             number(&b, w[i]);
         }
     }
+    for (int k = 0; k < RB_P58_N_LS; k++) {
+        if (r->fitted[k])
+            rb_strbuf_printf(&b, ",%d,%zu", r->confirmed[k] != 0, r->model_limited[k]);
+        else
+            rb_strbuf_puts(&b, ",,");
+    }
     rb_strbuf_puts(&b, "\n");
     return rb_strbuf_take(&b);
 }
@@ -98,6 +108,8 @@ char *rb_fragility_render_p58(const rb_case *c, const rb_case_fragility *f)
         r.fitted[k] = f->fitted[ls];
         r.median_g[k] = f->fit[ls].median / f->g_mps2;
         r.beta[k] = f->fit[ls].beta;
+        r.confirmed[k] = (f->confirmed >> ls) & 1u;
+        r.model_limited[k] = rb_case_fragility_model_limited(f, ls);
     }
     char *head = rb_p58_render_head(), *row = rb_p58_render_row(&r);
     rb_strbuf b = {0};

@@ -286,7 +286,8 @@ char *rb_fragility_render_json(const rb_case *c, const rb_case_fragility *f)
 char *rb_fragility_render_csv(const rb_case *c, const rb_case_fragility *f)
 {
     rb_strbuf b = {0};
-    rb_strbuf_puts(&b, "motion,limit_state,capacity_g,capacity_astar,censored,governing\n");
+    rb_strbuf_puts(&b, "motion,limit_state,capacity_g,capacity_astar,censored,governing,"
+                       "confirmed,model_limited\n");
     for (size_t m = 0; m < f->n_motions; m++)
         for (int k = 0; k < RB_N_LIMITS; k++) {
             if (!rb_case_fragility_has(f, k))
@@ -296,11 +297,13 @@ char *rb_fragility_render_csv(const rb_case *c, const rb_case_fragility *f)
                 b.oom = 1;
                 break;
             }
-            rb_strbuf_printf(&b, "%s,%s,%.6g,%.6g,%d,%d\n", field,
+            rb_strbuf_printf(&b, "%s,%s,%.6g,%.6g,%d,%d,%d,%d\n", field,
                              rb_enum_str(rb_limit_state_names, k),
                              f->motions[m].capacity_mps2[k] / f->g_mps2,
                              f->motions[m].capacity_mps2[k] / f->a_star_mps2,
-                             f->motions[m].censored[k], k == f->governing);
+                             f->motions[m].censored[k], k == f->governing,
+                             (int)((f->confirmed >> k) & 1u),
+                             f->motions[m].model_limited[k] != 0);
             free(field);
         }
     return rb_strbuf_take(&b);

@@ -202,6 +202,9 @@ for row in rows:
             fail(f"{row['tag']}: {name}: batch {got}, fragility fitted {ls['fitted']}, "
                  f"reached {reached}")
             continue
+        for key in ("confirmed", "model_limited"):
+            if got.get(key) != ls[key]:
+                fail(f"{row['tag']}: {name}: {key} {got.get(key)!r}, fragility {ls[key]!r}")
         for key in ("median_mps2", "beta", "median_lo_mps2", "median_hi_mps2",
                     "p_at_level"):
             if ls["fitted"] and got[key] != ls[key]:

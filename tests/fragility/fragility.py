@@ -117,11 +117,21 @@ for bad, msg in ((["--x-scale", "ln"], "option '--x-scale' needs log or linear (
         fail(f"{bad}: exit {r.returncode}, {r.stderr.strip()[:200]}")
 
 rows = open(csv).read().splitlines()
-if len(rows) != 1 + 2 * 4 or \
-        rows[0] != "motion,limit_state,capacity_g,capacity_astar,censored,governing":
+if len(rows) != 1 + 2 * 4 or rows[0] != ("motion,limit_state,capacity_g,capacity_astar,"
+                                         "censored,governing,confirmed,model_limited"):
     fail(f"the CSV has {len(rows)} lines: {rows[:2]}")
-elif {r.split(",")[1] for r in rows[1:] if r.endswith(",1")} != {fr["governing_limit_state"]}:
+elif {r.split(",")[1] for r in rows[1:] if r.split(",")[5] == "1"} != \
+        {fr["governing_limit_state"]}:
     fail(f"the CSV's governing rows are not the JSON's {fr['governing_limit_state']}")
+else:
+    # each row's flags: its state's confirmed, its motion's model_limited
+    by_name = {m["name"]: m for m in fr["motions"]}
+    confirmed = {s["limit_state"]: s["confirmed"] for s in fr["limit_states"]}
+    for r in rows[1:]:
+        f = r.split(",")
+        want = (str(int(confirmed[f[1]])), str(int(by_name[f[0]]["model_limited"][f[1]])))
+        if (f[6], f[7]) != want:
+            fail(f"the CSV row {r}: confirmed, model_limited {f[6:8]}, the JSON's {want}")
 
 # no concrete: no anchorage state; the governing state is the lowest fitted
 # median of those its criteria (no-break) fail on: usage and overturn

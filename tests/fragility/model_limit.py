@@ -21,8 +21,14 @@ reaches g. Asserts that
     likelihood, median sqrt(c1 c2) and beta |ln(c1 / c2)| / 2;
   - the JSON and the text name the confirmed limit states (the governing
     one) and the others as not confirmed;
-  - a motion without a vertical has no model limit (null, nothing marked)."""
-import json, math, os, re, sys
+  - a motion without a vertical has no model limit (null, nothing marked);
+  - the fragility CSV (--csv), the FEMA P-58 row (--p58) and batch
+    --fragility (CSV, JSON, table, JUnit) carry the same flags: each
+    capacity's or state's model_limited where the hand's limit is the
+    capacity, and confirmed for the governing state only (usage; overturn,
+    LS2 of the P-58 row, is not)."""
+import csv, json, math, os, re, sys
+import xml.etree.ElementTree as ET
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from e2e import fail, finish, run, src, start, write  # noqa: E402
@@ -105,6 +111,70 @@ if len(rows) != 2 or any(ln.count("^") != 3 for ln in rows):
 figure = open(svg).read()
 if figure.count('data-model-limited="1"') != 6 or "hollow: the model" not in figure:
     fail("the figure does not draw the six limited capacities hollow and say why")
+
+# the flags in the other outputs, against the hand's limit and the governing state
+gov = fr["governing_limit_state"]
+want_p58 = {"LS1-Confirmed": "1", "LS1-ModelLimited": "2",     # usage, governing
+            "LS2-Confirmed": "0", "LS2-ModelLimited": "2"}     # overturn
+cj, p58 = os.path.join(scratch, "f.csv"), os.path.join(scratch, "f.p58.csv")
+r = run("fragility", case, "-j", "2", "--csv", cj, "--p58", p58, "-q")
+if r.returncode != 0:
+    fail(f"fragility --csv --p58: exit {r.returncode}: {r.stderr.strip()[:300]}")
+else:
+    with open(cj, newline="") as f:
+        rows = list(csv.DictReader(f))
+    if len(rows) != 2 * 4:
+        fail(f"the fragility CSV has {len(rows)} rows, want 8")
+    for row in rows:
+        name, s = row["motion"], row["limit_state"]
+        hand = H / dict((n, v) for n, v, _ in MOTIONS)[name]
+        at_limit = abs(float(row["capacity_g"]) / hand - 1) < 1e-5   # %.6g
+        want = (str(int(s == gov)), str(int(s in LIMITED)))
+        if (row.get("confirmed"), row.get("model_limited")) != want or \
+                at_limit != (s in LIMITED):
+            fail(f"fragility CSV {name} {s}: confirmed {row.get('confirmed')}, "
+                 f"model_limited {row.get('model_limited')}, capacity "
+                 f"{row['capacity_g']} g against the hand's {hand!r}; want {want}")
+    with open(p58, newline="") as f:
+        prow = list(csv.DictReader(f))
+    if len(prow) != 1 or any(prow[0].get(k) != v for k, v in want_p58.items()):
+        fail(f"the P-58 row's flags {prow}, want {want_p58}")
+
+lst = write("list.csv", "tag,base\nV,vertical.yaml\n")
+bc, bj, bx = (os.path.join(scratch, "b." + e) for e in ("csv", "json", "xml"))
+bp = os.path.join(scratch, "b.p58.csv")
+r = run("batch", lst, "--fragility", "--csv", bc, "--json", bj, "--junit", bx, "--p58", bp)
+if r.returncode not in (0, 1):
+    fail(f"batch --fragility: exit {r.returncode}: {r.stderr.strip()[:300]}")
+else:
+    with open(bc, newline="") as f:
+        brow = list(csv.DictReader(f))[0]
+    props = {p.get("name"): p.get("value") for p in ET.parse(bx).iter("property")}
+    blim = {l["limit_state"]: l for l in json.load(open(bj))["cases"][0]["fragility"]
+            ["limit_states"]}
+    for s in ("first-yield", "usage", "overturn", "lift-off"):
+        col = s.replace("-", "_")
+        conf, lim = int(s == gov), 2 if s in LIMITED else 0
+        got = (brow.get(f"fragility_{col}_confirmed"), brow.get(f"fragility_{col}_model_limited"),
+               blim[s].get("confirmed"), blim[s].get("model_limited"),
+               props.get(f"fragility.{s}.confirmed"), props.get(f"fragility.{s}.model_limited"))
+        if got != (str(conf), str(lim), bool(conf), lim, str(conf), str(lim)):
+            fail(f"batch {s}: CSV, JSON, JUnit flags {got}; want confirmed {conf}, "
+                 f"model_limited {lim}")
+    lines = {m.group(1): m.group(2) for m in re.finditer(r"\[([a-z-]+)\]\s+(.*)", r.stdout)}
+    for s in ("first-yield", "usage", "overturn", "lift-off"):
+        ln = lines.get(s, "")
+        limited = "2 at the model's limit" in ln
+        confirmed = "; confirmed" in ln and "not confirmed" not in ln
+        if limited != (s in LIMITED) or confirmed != (s == gov) or \
+                (s != gov and "not confirmed" not in ln):
+            fail(f"batch table [{s}]: '{ln}'")
+        if re.search(r"\bnan\b", ln, re.I):
+            fail(f"batch table [{s}] prints nan (two motions are too few to resample): '{ln}'")
+    with open(bp, newline="") as f:
+        prow = list(csv.DictReader(f))
+    if len(prow) != 1 or any(prow[0].get(k) != v for k, v in want_p58.items()):
+        fail(f"batch --p58 row's flags {prow}, want {want_p58}")
 
 # the same horizontal without a vertical: no limit of the model
 plain = write("plain.yaml", f"extends: {BASE}\nname: plain\nmotions:\n"

@@ -31,6 +31,9 @@ COLUMNS = ["ID", "Incomplete", "Demand-Type", "Demand-Unit", "Demand-Offset",
 for k in (1, 2):
     COLUMNS += [f"LS{k}-Family", f"LS{k}-Theta_0", f"LS{k}-Theta_1",
                 f"LS{k}-DamageStateWeights"]
+# after P-58's own columns: the fragility's flags of each limit state
+for k in (1, 2):
+    COLUMNS += [f"LS{k}-Confirmed", f"LS{k}-ModelLimited"]
 
 # three 5 s windows of the records through buildings: a fragility in a
 # few seconds of CPU
@@ -63,7 +66,8 @@ def load(path):
 def limits(frag):
     """median (g) and beta of each fitted limit state of a fragility JSON."""
     g = frag["g_mps2"]
-    return {l["limit_state"]: (l["median_mps2"] / g, l["beta"]) if l["fitted"] else None
+    return {l["limit_state"]: (l["median_mps2"] / g, l["beta"], l["confirmed"],
+                               l["model_limited"]) if l["fitted"] else None
             for l in frag["limit_states"]}
 
 
@@ -78,6 +82,10 @@ def check_row(what, row, lim, weights):
         if got[0] != "lognormal" or float(got[1]) != want[0] or float(got[2]) != want[1]:
             fail(f"{what}: LS{k} {got}, the JSON's {state} has median {want[0]!r} g, "
                  f"beta {want[1]!r}")
+        flags = (row[f"LS{k}-Confirmed"], row[f"LS{k}-ModelLimited"])
+        if flags != (str(int(want[2])), str(want[3])):
+            fail(f"{what}: LS{k} flags {flags}, the JSON's {state} confirmed {want[2]}, "
+                 f"model_limited {want[3]}")
     w = row["LS1-DamageStateWeights"]
     if lim["usage"] is not None and [float(x) for x in w.split("|")] != weights:
         fail(f"{what}: LS1 weights '{w}', expected {weights}")
