@@ -19,6 +19,10 @@ no-break) and the same suite judged by no-yield, asserts that
   - each capacity fails where `check` judges it: at the usage capacity
     with the case's criterion, the usage reaches 1 (or the cabinet
     overturns); at the first-yield capacity, a row yields or reaches Fy;
+  - and is a crossing by `check` alone, not by another search: one
+    resolution below it the state is not reached (design's factors take
+    the same secant as the fragility's searches, so agreeing with them
+    does not prove the secant right; `check` at both ends does);
   - every capacity and the governing state are the same with one thread
     and with two (the confirmation's second round of searches included)."""
 import json, os, sys
@@ -74,24 +78,28 @@ for case, judged, governs in ((SUITE, ["usage", "overturn"], "usage"),
         line = [ln for ln in open(SUITE).read().splitlines()
                 if f"name: {fm['name']}," in ln][0]
         for state in ("usage", "first-yield"):
-            cap = fm["capacity_mps2"][state]
-            at = write(f"{fm['name']}-{state}.yaml", f"extends: {SUITE}\nname: at\nmotions:\n"
-                       + line.replace("peak: 0.4 A*", f"peak: {cap!r} m/s^2")
-                       .replace("file: records/", f"file: {src}/cases/records/") + "\n")
-            cj = at[:-5] + ".json"
-            r = run("check", at, "--json", cj, "-q")
-            if r.returncode not in (0, 1):
-                fail(f"{at}: check exit {r.returncode}: {r.stderr.strip()[:300]}")
-                continue
-            res_ = json.load(open(cj))["motions"][0]["result"]
-            bolts, out = res_["bolts"], res_["outcome"]
-            if state == "usage":
-                reached = max(bolts["usage"].values()) >= 1 or out["overturned"]
-            else:
-                fy = res_["constants"]["fy_row_n"]
-                reached = any(bolts["yielded"].values()) or \
-                    max(res_["peaks"]["max_bolt_force_n"].values()) >= fy
-            if not reached:
-                fail(f"{fm['name']}: check at its {state} capacity {cap / astar:.6f} A* does "
-                     f"not reach it: usage {bolts['usage']}, yielded {bolts['yielded']}")
+            for below in (0, 1):
+                level = fm["capacity_mps2"][state] - below * res * astar
+                at = write(f"{fm['name']}-{state}-{below}.yaml",
+                           f"extends: {SUITE}\nname: at\nmotions:\n"
+                           + line.replace("peak: 0.4 A*", f"peak: {level!r} m/s^2")
+                           .replace("file: records/", f"file: {src}/cases/records/") + "\n")
+                cj = at[:-5] + ".json"
+                r = run("check", at, "--json", cj, "-q")
+                if r.returncode not in (0, 1):
+                    fail(f"{at}: check exit {r.returncode}: {r.stderr.strip()[:300]}")
+                    continue
+                res_ = json.load(open(cj))["motions"][0]["result"]
+                bolts, out = res_["bolts"], res_["outcome"]
+                if state == "usage":
+                    reached = max(bolts["usage"].values()) >= 1 or out["overturned"]
+                else:
+                    fy = res_["constants"]["fy_row_n"]
+                    reached = any(bolts["yielded"].values()) or \
+                        max(res_["peaks"]["max_bolt_force_n"].values()) >= fy
+                if reached == bool(below):
+                    fail(f"{fm['name']}: check {below} resolution(s) below its {state} "
+                         f"capacity, at {level / astar:.6f} A*, "
+                         f"{'reaches' if below else 'does not reach'} it: usage "
+                         f"{bolts['usage']}, yielded {bolts['yielded']}")
 finish()
