@@ -557,23 +557,26 @@ static void check_state(const rb_exact_table *tab, const rb_floor_line *fl, cons
 
 /* The works' quadratic forms of z added to *wd and *wi, written out
  * (the 21 pairs of a 6-state: a loop over the triangle is not unrolled,
- * and costs twice as many instructions), both sums a vector. */
+ * and costs twice as many instructions), both sums a vector, and the
+ * products z_i z_j two at a time (z_i times z_j and z_j+1). */
 _Static_assert(ZN == 6, "work_forms writes out the pairs of a 6-state");
 static void work_forms(const rb_exact_table *tab, const double *z, double *wd, double *wi)
 {
     const rb_pair *w = tab->work;
-    rb_pair s = rb_pair_splat(0), zs[ZN];
-    /* a product of two splats is the product's splat, to the bit */
-    for (int j = 0; j < ZN; j++)
-        zs[j] = rb_pair_splat(z[j]);
-#define PAIR(i, j, k) (s = rb_pair_madd(s, w[k], rb_pair_mul(zs[i], zs[j])))
-    PAIR(0, 0, 0); PAIR(0, 1, 1); PAIR(0, 2, 2); PAIR(0, 3, 3); PAIR(0, 4, 4); PAIR(0, 5, 5);
-    PAIR(1, 1, 6); PAIR(1, 2, 7); PAIR(1, 3, 8); PAIR(1, 4, 9); PAIR(1, 5, 10);
-    PAIR(2, 2, 11); PAIR(2, 3, 12); PAIR(2, 4, 13); PAIR(2, 5, 14);
-    PAIR(3, 3, 15); PAIR(3, 4, 16); PAIR(3, 5, 17);
-    PAIR(4, 4, 18); PAIR(4, 5, 19);
-    PAIR(5, 5, 20);
-#undef PAIR
+    rb_pair s = rb_pair_splat(0), p;
+#define TWO(i, j, k)                                                    \
+    (p = rb_pair_mul(rb_pair_splat(z[i]), rb_pair_load(z + (j))),       \
+     s = rb_pair_madd(s, w[k], rb_pair_dup(p, 0)),                      \
+     s = rb_pair_madd(s, w[(k) + 1], rb_pair_dup(p, 1)))
+#define ONE(i, j, k) (s = rb_pair_madd(s, w[k], rb_pair_splat(z[i] * z[j])))
+    TWO(0, 0, 0); TWO(0, 2, 2); TWO(0, 4, 4);
+    TWO(1, 1, 6); TWO(1, 3, 8); ONE(1, 5, 10);
+    TWO(2, 2, 11); TWO(2, 4, 13);
+    TWO(3, 3, 15); ONE(3, 5, 17);
+    TWO(4, 4, 18);
+    ONE(5, 5, 20);
+#undef TWO
+#undef ONE
     *wd += rb_pair_lane(s, 0);
     *wi += rb_pair_lane(s, 1);
 }

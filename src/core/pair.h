@@ -26,6 +26,18 @@ static inline rb_pair rb_pair_mul(rb_pair a, rb_pair b)
     return a * b;
 }
 
+/* p[0] and p[1] */
+static inline rb_pair rb_pair_load(const double *p)
+{
+    return (rb_pair){p[0], p[1]};
+}
+
+/* a lane in both lanes */
+static inline rb_pair rb_pair_dup(rb_pair v, int i)
+{
+    return (rb_pair){v[i], v[i]};
+}
+
 /* a + b x, both lanes */
 static inline rb_pair rb_pair_madd(rb_pair a, rb_pair b, rb_pair x)
 {
@@ -55,6 +67,16 @@ static inline rb_pair rb_pair_splat(double x)
 static inline rb_pair rb_pair_mul(rb_pair a, rb_pair b)
 {
     return rb_pair_make(a.v[0] * b.v[0], a.v[1] * b.v[1]);
+}
+
+static inline rb_pair rb_pair_load(const double *p)
+{
+    return rb_pair_make(p[0], p[1]);
+}
+
+static inline rb_pair rb_pair_dup(rb_pair v, int i)
+{
+    return rb_pair_make(v.v[i], v.v[i]);
 }
 
 static inline rb_pair rb_pair_madd(rb_pair a, rb_pair b, rb_pair x)

@@ -20,6 +20,8 @@
 #define rb_pair_mul plain_mul
 #define rb_pair_madd plain_madd
 #define rb_pair_lane plain_lane
+#define rb_pair_load plain_load
+#define rb_pair_dup plain_dup
 #include "../../src/core/pair.h"
 #undef rb_pair
 #undef rb_pair_make
@@ -27,6 +29,8 @@
 #undef rb_pair_mul
 #undef rb_pair_madd
 #undef rb_pair_lane
+#undef rb_pair_load
+#undef rb_pair_dup
 
 static uint64_t rng = 0x9E3779B97F4A7C15ULL;
 
@@ -88,6 +92,26 @@ int main(void)
         }
         differ_vec += !same_bits(rb_pair_lane(v, 0), s0) || !same_bits(rb_pair_lane(v, 1), s1);
         differ_plain += !same_bits(plain_lane(p, 0), s0) || !same_bits(plain_lane(p, 1), s1);
+        /* the products two at a time (x_k y_k and x_k y_k+1 from one
+         * product of x_k with y's pair), as the works take them: the sums
+         * of w x_k y_k over k and of w x_k y_k+1 */
+        double t0 = 0, t1 = 0;
+        for (int k = 0; k + 1 < N; k++) {
+            t0 += w0[k] * (x[k] * y[k]);
+            t1 += w1[k] * (x[k] * y[k + 1]);
+        }
+        rb_pair tv = rb_pair_splat(0), uv = tv;
+        plain_pair tp = plain_splat(0), up = tp;
+        for (int k = 0; k + 1 < N; k++) {
+            rb_pair q = rb_pair_mul(rb_pair_splat(x[k]), rb_pair_load(y + k));
+            tv = rb_pair_madd(tv, rb_pair_splat(w0[k]), rb_pair_dup(q, 0));
+            uv = rb_pair_madd(uv, rb_pair_splat(w1[k]), rb_pair_dup(q, 1));
+            plain_pair r = plain_mul(plain_splat(x[k]), plain_load(y + k));
+            tp = plain_madd(tp, plain_splat(w0[k]), plain_dup(r, 0));
+            up = plain_madd(up, plain_splat(w1[k]), plain_dup(r, 1));
+        }
+        differ_vec += !same_bits(rb_pair_lane(tv, 1), t0) || !same_bits(rb_pair_lane(uv, 0), t1);
+        differ_plain += !same_bits(plain_lane(tp, 1), t0) || !same_bits(plain_lane(up, 0), t1);
         cases++;
     }
     printf("%d sums of %d terms: %d differ (vectors), %d differ (plain)\n", cases, N,
