@@ -427,14 +427,6 @@ static int grazes(rb_solver *sv, const rb_rk_step *st, unsigned mask, double *ta
     return -1;
 }
 
-/* The span in tau that a step's series is read over: its length, or its
- * span in time where that rounds longer (a turn's root is read at
- * r - t0). */
-static double angle_span(const rb_rk_step *st)
-{
-    return rb_fmax(st->h, st->t1 - st->t0) * (1 + 1e-12);
-}
-
 /* Whether a rocking Taylor step keeps clear of every active guard over
  * the whole step: the guards of stage 2 and stage 5's overturning are
  * angle levels (floor, bolt heads, overturning), stage 5's end of
@@ -447,7 +439,7 @@ static int angle_clear(const rb_solver *sv, const rb_rk_step *st, unsigned mask)
 {
     if (!st->is_taylor || !st->ts.rocking || !mask)
         return 0;
-    double h = angle_span(st), level, lo, hi;
+    double h = rb_fmax(st->h, st->t1 - st->t0) * (1 + 1e-12), level, lo, hi;
     rb_taylor_range(&st->ts, RB_Y_TH, h, &lo, &hi);
     for (unsigned m = mask; m;) {
         int k = rb_guard_next(&m);
@@ -465,16 +457,13 @@ static int angle_clear(const rb_solver *sv, const rb_rk_step *st, unsigned mask)
 /* Earliest guard crossing inside the accepted step, or -1. ys[j] is the
  * state at the end of check interval j of n_sub (ys[n_sub - 1] = y1).
  * Without a crossing, g_end holds the guards at the step's end, which the
- * next step starts from. clear: whether the step is clear of its guards
- * (angle_clear), -1 where not yet known. */
+ * next step starts from. */
 static int find_event(rb_solver *sv, const rb_rk_step *st, const double *g0,
-                      double (*ys)[RB_NY], int clear, double *t_event, double *g_end)
+                      double (*ys)[RB_NY], double *t_event, double *g_end)
 {
     unsigned mask = rb_guard_mask(sv);
     double ga[G_COUNT], gb[G_COUNT];
-    if (clear < 0)
-        clear = angle_clear(sv, st, mask);
-    if (clear) {
+    if (angle_clear(sv, st, mask)) {
         rb_guard_eval_x(sv, st->t1, ys[st->n_sub - 1], st->aux1.x, st->aux1.gz, g_end);
         return -1;
     }
@@ -638,17 +627,7 @@ static rb_status advance(rb_solver *sv, rb_rk_step *st, double *g, rb_diag *diag
     double ys[RB_SUB_MAX][RB_NY];
     int n = st->n_sub;
     double dt = st->h / n;
-    /* a rocking step clear of its guards (angle_clear) whose bounds keep
-     * every tracked quantity short of its peak and the reaction clear of
-     * its levels reads its last check point and its end alone. Only steps
-     * clear of the guards are bounded: the others are those near an
-     * impact, where the reaction dips (under El Centro at 0.4 A* the
-     * bounds of the others passed too seldom to pay for themselves) */
-    int clear = -1; /* not known */
-    if (st->is_taylor && n >= 2 && sv->disc.stage == RB_STAGE_UPLIFT)
-        clear = angle_clear(sv, st, rb_guard_mask(sv));
-    int quiet = clear == 1 && rb_track_rocking_clear(sv, &st->ts, angle_span(st));
-    for (int j = quiet ? n - 1 : 1; j < n; j++) {
+    for (int j = 1; j < n; j++) {
         if (st->is_taylor) {
             /* guards read the state, tracking the rest */
             rb_taylor_check(&st->ts, dt * j, st->vcheck[j - 1]);
@@ -661,16 +640,11 @@ static rb_status advance(rb_solver *sv, rb_rk_step *st, double *g, rb_diag *diag
     if (!state_finite(st->y1) || !state_finite(st->k[6]))
         return nonfinite(sv, diag, st->t1, st->y1);
     double g_end[G_COUNT];
-    int ev = find_event(sv, st, g, ys, clear, &t_event, g_end);
+    int ev = find_event(sv, st, g, ys, &t_event, g_end);
     if (ev >= 0)
         tb = t_event;
     rb_track_span(sv, st, st->t0, tb);
-    if (quiet && ev < 0) {
-        /* the last check point's time as rb_track_interval reads it */
-        double t_cp = st->t0 + (tb - st->t0) / n * (n - 1);
-        rb_track_rocking_quiet(sv, &st->ts, t_cp, st->vcheck[n - 2], st->t1, st->y1, &st->aux1);
-    } else
-        rb_track_interval(sv, st, st->t0, tb, ev < 0 ? (const double (*)[RB_NY])ys : NULL);
+    rb_track_interval(sv, st, st->t0, tb, ev < 0 ? (const double (*)[RB_NY])ys : NULL);
     if (rb_history_sample(sv, st, st->t0, tb) != RB_OK)
         return RB_ERR_NOMEM;
     sv->res->stage_time_s[sv->disc.stage] += tb - st->t0;
@@ -679,8 +653,7 @@ static rb_status advance(rb_solver *sv, rb_rk_step *st, double *g, rb_diag *diag
         memcpy(sv->y, st->y1, sizeof sv->y);
         memcpy(sv->f, st->k[6], sizeof sv->f);
         memcpy(g, g_end, sizeof g_end);
-        if (!quiet)
-            rb_track_aux(sv, sv->t, sv->y, &st->aux1);
+        rb_track_aux(sv, sv->t, sv->y, &st->aux1);
         rb_track_span_none(sv);
         return RB_OK;
     }

@@ -261,26 +261,6 @@ int rb_track_quiet_bound(const rb_solver *sv, double shear_bound);
  * hold the two points and nothing else moves but what they pass. */
 void rb_track_quiet_points(rb_solver *sv, const double *t, const double *u, const double *H,
                            double x_last);
-/* track_bound.c: bounds over [0, h] of a rocking Taylor step (stage 2)
- * of |U|, |theta| and the total shear, and the least the floor's vertical
- * reaction can read there, as the dense output's points read them. 0
- * where they are not finite. */
-typedef struct {
-    double u, theta, shear, floor_lo;
-} rb_track_bounds;
-int rb_track_step_bounds(const rb_solver *sv, const rb_taylor *ts, double h,
-                         rb_track_bounds *b);
-/* Whether a rocking Taylor step (series ts, read over [0, h]) can move no
- * tracked result: its bounds keep every quantity short of its running
- * peak and the floor's reaction above the friction floor, zero and its
- * least so far, and the last point tracked is above them too. Such a step
- * is tracked by rb_track_rocking_quiet: its last check point (time t_cp,
- * the series' values v_cp there) and its end (t1, y1, a1) tracked as a
- * step with check points leaves them (the peaks' windows hold those
- * two). */
-int rb_track_rocking_clear(const rb_solver *sv, const rb_taylor *ts, double h);
-void rb_track_rocking_quiet(rb_solver *sv, const rb_taylor *ts, double t_cp, const double *v_cp,
-                            double t1, const double *y1, const rb_aux *a1);
 /* The points tracked next lie on st's dense output between t0 and t1, or
  * on the Taylor series from (t0, y0) over h (an exact step); none: on no
  * step (a transition's point). */

@@ -558,30 +558,21 @@ static void note_anchor(rb_solver *sv, double t, const sample *s)
     }
 }
 
-/* Whether a stretch with the bolts slack, a total shear within
- * shear_bound and a floor reaction of at least V (above the friction
- * floor) keeps the shear, the friction demand and the anchors' demand at
- * or below their running peaks. */
-static int slack_demands_stay(const rb_solver *sv, double shear_bound, double V)
+int rb_track_quiet_bound(const rb_solver *sv, double shear_bound)
 {
     const rb_result *r = sv->res;
-    if (!(shear_bound <= r->max_shear_total_n) || !(shear_bound / V <= r->max_friction_demand))
+    double W = sv->sys.d.W;
+    /* the friction demand is |H| / W there, the least reaction W */
+    if (!(W > sv->friction_floor) || !(r->min_vertical_reaction_n <= W)
+        || !(shear_bound <= r->max_shear_total_n) || !(shear_bound / W <= r->max_friction_demand))
         return 0;
     if (sv->opts.anchor_phi_nn_n > 0 && sv->opts.anchor_phi_vn_n > 0) {
         /* the interaction rises with the shear at a given tension (none) */
-        sample s = {shear_bound, V, V, 0, 0};
+        sample s = {shear_bound, W, W, 0, 0};
         if (!(anchor_ratio(sv, &s, &(int){0}) <= r->anchor_max_ratio))
             return 0;
     }
     return 1;
-}
-
-int rb_track_quiet_bound(const rb_solver *sv, double shear_bound)
-{
-    double W = sv->sys.d.W;
-    /* the friction demand is |H| / W there, the least reaction W */
-    return W > sv->friction_floor && sv->res->min_vertical_reaction_n <= W
-           && slack_demands_stay(sv, shear_bound, W);
 }
 
 static void window_of_two(rb_peak_window *w, const double *t, double v0, double v1)
@@ -632,81 +623,6 @@ void rb_track_quiet_points(rb_solver *sv, const double *t, const double *u, cons
                 anchor_record(r, t[k], uu[k], which, &s);
         }
         window_of_two(&sv->win_anchor, t, uu[0], uu[1]);
-    }
-}
-
-/* A rocking step's bounds are held a per mille of a per mille short of
- * the peaks, as an exact step's (exact.c), far more than the rounding of
- * the points read against them. */
-#define ROCKING_MARGIN 1e-6
-
-int rb_track_rocking_clear(const rb_solver *sv, const rb_taylor *ts, double h)
-{
-    const rb_result *r = sv->res;
-    double floor = sv->friction_floor;
-    if (sv->disc.stage != RB_STAGE_UPLIFT || !ts->rocking || sv->opts.check_reactions)
-        return 0;
-    /* the last point's reaction above the friction floor and zero (a step
-     * with check points reads the interval from it into this step's
-     * first for crossings): nothing to bound otherwise */
-    if (!sv->fric_have || !sv->lift_have
-        || !(sv->fric_v > floor && sv->lift_v > 0 && sv->lift_v > floor))
-        return 0;
-    rb_track_bounds bd, *b = &bd;
-    if (!rb_track_step_bounds(sv, ts, h, b))
-        return 0;
-    double H = b->shear * (1 + ROCKING_MARGIN);
-    double V = b->floor_lo - ROCKING_MARGIN * fabs(b->floor_lo);
-    /* the reaction clear of the friction floor and of zero over the step,
-     * and above the least so far, so that no dip is located */
-    return b->u * (1 + ROCKING_MARGIN) <= r->max_u_m
-           && b->theta * (1 + ROCKING_MARGIN) <= r->max_theta_rad
-           && V > floor && V > 0 && V > r->min_vertical_reaction_n
-           && slack_demands_stay(sv, H, V);
-}
-
-void rb_track_rocking_quiet(rb_solver *sv, const rb_taylor *ts, double t_cp, const double *v_cp,
-                            double t1, const double *y1, const rb_aux *a1)
-{
-    rb_result *r = sv->res;
-    double y[RB_NY] = {0}, t[2] = {t_cp, t1};
-    rb_aux a;
-    sample p[2];
-    memcpy(y, v_cp, 4 * sizeof *y);
-    rb_taylor_aux(&sv->sys, &sv->disc, ts, v_cp, &a);
-    sample_of(sv, y, &a, &p[0]);
-    sample_of(sv, y1, a1, &p[1]);
-    sv->track_have = 1;
-    sv->track_t = t1;
-    sv->track_x = a1->x;
-    note_displacements(sv, y);
-    note_displacements(sv, y1);
-    double hs[2] = {fabs(p[0].H), fabs(p[1].H)};
-    r->max_shear_total_n = rb_fmax(r->max_shear_total_n, rb_fmax(hs[0], hs[1]));
-    window_of_two(&sv->win_shear, t, hs[0], hs[1]);
-    r->min_vertical_reaction_n = rb_fmin(r->min_vertical_reaction_n,
-                                         rb_fmin(p[0].floor_v, p[1].floor_v));
-    window_of_two(&sv->win_vertical, t, -p[0].floor_v, -p[1].floor_v);
-    sv->lift_have = 1;
-    sv->lift_t = t1;
-    sv->lift_v = p[1].floor_v;
-    sv->fric_have = 1;
-    sv->fric_t = t1;
-    sv->fric_h = p[1].H;
-    sv->fric_v = p[1].floor_v;
-    double f[2] = {hs[0] / p[0].floor_v, hs[1] / p[1].floor_v};
-    r->max_friction_demand = rb_fmax(r->max_friction_demand, rb_fmax(f[0], f[1]));
-    window_of_two(&sv->win_friction, t, f[0], f[1]);
-    if (sv->opts.anchor_phi_nn_n > 0 && sv->opts.anchor_phi_vn_n > 0) {
-        double u[2];
-        r->anchor_checked = 1;
-        for (int k = 0; k < 2; k++) {
-            int which;
-            u[k] = anchor_ratio(sv, &p[k], &which);
-            if (u[k] > r->anchor_max_ratio)
-                anchor_record(r, t[k], u[k], which, &p[k]);
-        }
-        window_of_two(&sv->win_anchor, t, u[0], u[1]);
     }
 }
 
