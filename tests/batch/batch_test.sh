@@ -183,9 +183,9 @@ fragility)
     has "$s/out" "^ *\[first-yield\] *median [0-9.]* g, beta [0-9.]*, 90% [0-9.]* to [0-9.]* g; P [0-9.]* at [0-9.]* g; reached by 3 of 3"
     has "$s/out" "^ *\[overturn\] *not fitted; reached by 0 of 3"
     has "$s/out" "d-broken .*UNREADABLE"
-    has "$s/f.csv" ",theta_over_alpha,fragility_intensity,fragility_intensity_freq_hz,fragility_level_g,fragility_first_yield_median_g,fragility_first_yield_beta,fragility_first_yield_median_lo_g,fragility_first_yield_median_hi_g,fragility_first_yield_p_at_level,fragility_first_yield_reached,fragility_usage_median_g,"
-    has "$s/f.csv" ",fragility_lift_off_reached,fragility_anchorage_median_g,"
-    has "$s/f.csv" ",fragility_anchorage_reached,fragility_governing,fragility_error,validity_warnings,"
+    has "$s/f.csv" ",theta_over_alpha,fragility_intensity,fragility_intensity_freq_hz,fragility_level_g,fragility_first_yield_median_g,fragility_first_yield_beta,fragility_first_yield_median_lo_g,fragility_first_yield_median_hi_g,fragility_first_yield_p_at_level,fragility_first_yield_reached,fragility_first_yield_confirmed,fragility_first_yield_model_limited,fragility_usage_median_g,"
+    has "$s/f.csv" ",fragility_lift_off_reached,fragility_lift_off_confirmed,fragility_lift_off_model_limited,fragility_anchorage_median_g,"
+    has "$s/f.csv" ",fragility_anchorage_reached,fragility_anchorage_confirmed,fragility_anchorage_model_limited,fragility_governing,fragility_error,validity_warnings,"
     has "$s/f.json" '"seed":	"5"'
     has "$s/f.json" '"intensity":	"peak_floor_acceleration"'
     has "$s/f.json" '"limit_state":	"lift-off"'
