@@ -204,6 +204,12 @@ const char *rb_governs_name(rb_governs_limit k);
 /* rb_verdict_margin, and which limit gives it (limit may be NULL). */
 double rb_verdict_margin_of(const rb_criteria *c, const rb_result *r, rb_governs_limit *limit);
 
+/* Each limit's own margin in r under c, in rb_governs_limit's order: as
+ * rb_verdict_margin measures it (0 once reached), NaN for a limit that
+ * does not apply; rb_verdict_margin is the least of them. A run that
+ * overturned or broke a row has 0 at that limit and NaN elsewhere. */
+void rb_verdict_margins(const rb_criteria *c, const rb_result *r, double m[RB_N_GOVERNS]);
+
 /* The one "governs" rule of every command and report: a run's margin is
  * rb_verdict_margin_of r under c, and 0 for a run whose verdict v fails
  * (then with the limit that failed it); the motion that governs a case is
@@ -257,6 +263,7 @@ typedef struct {
     double usage;          /* the larger row's */
     double max_bolt_force_over_fy, max_theta_over_alpha;
     double margin;         /* rb_verdict_margin of the run */
+    double limit_margins[RB_N_GOVERNS];  /* rb_verdict_margins of the run */
 } rb_confirm_run;
 
 /* How a confirmation solves a run: rb_solve_run, or a caller's cache of
@@ -281,17 +288,19 @@ void rb_judge_decide(const rb_criteria *c, const rb_model *model, const rb_motio
                      void *ctx, rb_verdict *v);
 
 /* Fold the confirming runs into v (a pass of rb_judge of a run whose
- * rb_verdict_margin is margin, solved at tolerance rtol, judged with the
- * confirm band band): the convergence check is ok when every run passes
- * too and the runs agree, else a warning, and the verdict fails with the
- * first failing run's reason (a run the solver could not finish fails as
- * well). Runs that all pass but whose margins lie more than
- * RB_CONFIRM_SPREAD apart have not converged, and the next tolerance is
- * another draw from their scatter: the verdict fails too unless every run
- * has at least band to spare and more than the spread. n = 0 leaves v as
- * it is, with the check not checked. */
-void rb_verdict_confirm(rb_verdict *v, double margin, double band, double rtol,
-                        const rb_confirm_run *runs, size_t n);
+ * rb_verdict_margin is margin and rb_verdict_margins limit_margins,
+ * solved at tolerance rtol, judged with the confirm band band): the
+ * convergence check is ok when every run passes too and the runs agree,
+ * else a warning, and the verdict fails with the first failing run's
+ * reason (a run the solver could not finish fails as well). Runs that all
+ * pass but whose margins lie more than RB_CONFIRM_SPREAD apart have not
+ * converged, and the next tolerance is another draw from their scatter:
+ * the verdict fails too unless every run has at least band to spare and
+ * more than the spread. The same holds for each limit's own margin
+ * (runs' limit_margins), not only the least: limit_margins NULL checks
+ * the least alone. n = 0 leaves v as it is, with the check not checked. */
+void rb_verdict_confirm(rb_verdict *v, double margin, const double *limit_margins, double band,
+                        double rtol, const rb_confirm_run *runs, size_t n);
 
 /* A check's name for people ("lift-off") and its JSON key ("lift_off"). */
 const char *rb_check_name(rb_check k);

@@ -48,6 +48,7 @@ static void confirm_one(const rb_criteria *c, const rb_model *model, const rb_mo
         out->max_bolt_force_over_fy = g.force_over_fy;
         out->max_theta_over_alpha = r.max_theta_over_alpha;
         out->margin = rb_verdict_margin(c, &r);
+        rb_verdict_margins(c, &r, out->limit_margins);
     }
     rb_result_free(&r);
 }
@@ -71,7 +72,9 @@ static void judge_run(const rb_criteria *c, const rb_model *model, const rb_moti
         if (decide_only && !(runs[k].solved && runs[k].verdict.pass))
             break;
     }
-    rb_verdict_confirm(v, rb_verdict_margin(c, r), band, opts->rtol, runs, *n_runs);
+    double each[RB_N_GOVERNS];
+    rb_verdict_margins(c, r, each);
+    rb_verdict_confirm(v, rb_verdict_margin(c, r), each, band, opts->rtol, runs, *n_runs);
 }
 
 void rb_judge_run(const rb_criteria *c, const rb_model *model, const rb_motion *motion,

@@ -1,6 +1,8 @@
 /* The one judge (rb_judge) on results made by hand: the criteria in their
  * order, the validity checks and their mode, and messages that never
  * contradict their own numbers. */
+#include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "harness.h"
@@ -219,7 +221,7 @@ static void scatter(const rb_verdict *v, rb_confirm_run *runs)
     const double band = RB_CONFIRM_BAND_DEFAULT;
     scatter_runs(runs, v, 1 - 0.795, 1 - 0.957);
     rb_verdict v2 = *v;
-    rb_verdict_confirm(&v2, 1 - 0.765, band, 1e-7, runs, RB_CONFIRM_RUNS);
+    rb_verdict_confirm(&v2, 1 - 0.765, NULL, band, 1e-7, runs, RB_CONFIRM_RUNS);
     printf("scatter: %s\n", v2.reason);
     CHECK(!v2.pass && v2.criteria_pass);
     CHECK(v2.check[RB_CHECK_CONVERGENCE] == RB_CHECK_WARNING);
@@ -231,32 +233,32 @@ static void scatter(const rb_verdict *v, rb_confirm_run *runs)
      * toughness and broke a row under rk45 at 1e-7 */
     scatter_runs(runs, v, 1 - 0.821, 1 - 0.821);
     v2 = *v;
-    rb_verdict_confirm(&v2, 1 - 0.845, band, 1e-7, runs, RB_CONFIRM_RUNS);
+    rb_verdict_confirm(&v2, 1 - 0.845, NULL, band, 1e-7, runs, RB_CONFIRM_RUNS);
     CHECK(!v2.pass && v2.check[RB_CHECK_CONVERGENCE] == RB_CHECK_WARNING);
     CHECK(strstr(v2.reason, "0.155 to spare") && strstr(v2.reason, "0.179 at 1e-08"));
     /* the same with the band to spare in every run stands */
     v2 = *v;
-    rb_verdict_confirm(&v2, 1 - 0.845, 0.15, 1e-7, runs, RB_CONFIRM_RUNS);
+    rb_verdict_confirm(&v2, 1 - 0.845, NULL, 0.15, 1e-7, runs, RB_CONFIRM_RUNS);
     CHECK(v2.pass && v2.check[RB_CHECK_CONVERGENCE] == RB_CHECK_OK && !v2.warnings);
     /* runs within RB_CONFIRM_SPREAD of each other have converged, however
      * near the limit */
     scatter_runs(runs, v, 0.0505, 0.0509);
     v2 = *v;
-    rb_verdict_confirm(&v2, 0.05, band, 1e-7, runs, RB_CONFIRM_RUNS);
+    rb_verdict_confirm(&v2, 0.05, NULL, band, 1e-7, runs, RB_CONFIRM_RUNS);
     CHECK(v2.pass && v2.check[RB_CHECK_CONVERGENCE] == RB_CHECK_OK && !v2.warnings);
     runs[1].margin = 0.05 + 1.01 * RB_CONFIRM_SPREAD;
     v2 = *v;
-    rb_verdict_confirm(&v2, 0.05, band, 1e-7, runs, RB_CONFIRM_RUNS);
+    rb_verdict_confirm(&v2, 0.05, NULL, band, 1e-7, runs, RB_CONFIRM_RUNS);
     CHECK(!v2.pass && strstr(v2.reason, "0.05 to spare"));
     /* beyond the band, a spread as large as the least margin fails,
      * whichever run has it */
     scatter_runs(runs, v, 0.5, 0.9);
     v2 = *v;
-    rb_verdict_confirm(&v2, 0.7, band, 1e-7, runs, RB_CONFIRM_RUNS);
+    rb_verdict_confirm(&v2, 0.7, NULL, band, 1e-7, runs, RB_CONFIRM_RUNS);
     CHECK(v2.pass);
     runs[1].margin = 1.0;
     v2 = *v;
-    rb_verdict_confirm(&v2, 0.7, band, 1e-7, runs, RB_CONFIRM_RUNS);
+    rb_verdict_confirm(&v2, 0.7, NULL, band, 1e-7, runs, RB_CONFIRM_RUNS);
     CHECK(!v2.pass && strstr(v2.reason, "0.5 to spare") && strstr(v2.reason, "1 at 1e-09"));
 }
 
@@ -348,9 +350,9 @@ static void confirmation(void)
         runs[k].margin = m0;
     }
     rb_verdict v2 = v;
-    rb_verdict_confirm(&v2, m0, c.confirm_band, 1e-7, runs, 0);
+    rb_verdict_confirm(&v2, m0, NULL, c.confirm_band, 1e-7, runs, 0);
     CHECK(v2.pass && v2.check[RB_CHECK_CONVERGENCE] == RB_CHECK_NOT_CHECKED);
-    rb_verdict_confirm(&v2, m0, c.confirm_band, 1e-7, runs, RB_CONFIRM_RUNS);
+    rb_verdict_confirm(&v2, m0, NULL, c.confirm_band, 1e-7, runs, RB_CONFIRM_RUNS);
     CHECK(v2.pass && v2.check[RB_CHECK_CONVERGENCE] == RB_CHECK_OK && !v2.warnings);
     CHECK(strcmp(v2.reason, reason) == 0);
     /* the second fails: the verdict fails with its reason */
@@ -358,7 +360,7 @@ static void confirmation(void)
     r2.usage[0] = 1.05;
     rb_judge(&c, &r2, &runs[1].verdict);
     v2 = v;
-    rb_verdict_confirm(&v2, m0, c.confirm_band, 1e-7, runs, RB_CONFIRM_RUNS);
+    rb_verdict_confirm(&v2, m0, NULL, c.confirm_band, 1e-7, runs, RB_CONFIRM_RUNS);
     CHECK(!v2.pass && v2.criteria_pass);
     CHECK(v2.check[RB_CHECK_CONVERGENCE] == RB_CHECK_WARNING);
     CHECK(v2.warnings == 1u << RB_CHECK_CONVERGENCE);
@@ -369,7 +371,7 @@ static void confirmation(void)
     runs[0].solved = 0;
     runs[0].status = RB_ERR_WORK_LIMIT;
     v2 = v;
-    rb_verdict_confirm(&v2, m0, c.confirm_band, 1e-7, runs, RB_CONFIRM_RUNS);
+    rb_verdict_confirm(&v2, m0, NULL, c.confirm_band, 1e-7, runs, RB_CONFIRM_RUNS);
     CHECK(!v2.pass && strstr(v2.reason, "stopped") != NULL);
     CHECK(strstr(v2.reason, "1e-08") != NULL);
     scatter(&v, runs);
@@ -413,17 +415,17 @@ static void harmonic_band(void)
     scatter_runs(runs, &v, 0.9359, 0.9343);
     /* every run keeps the record band to spare, and more than the spread */
     rb_verdict v2 = v;
-    rb_verdict_confirm(&v2, m, rb_confirm_band(&c, &record), 1e-7, runs, RB_CONFIRM_RUNS);
+    rb_verdict_confirm(&v2, m, NULL, rb_confirm_band(&c, &record), 1e-7, runs, RB_CONFIRM_RUNS);
     CHECK(v2.pass);
     /* no run keeps the whole range to spare: the runs must converge */
     v2 = v;
-    rb_verdict_confirm(&v2, m, rb_confirm_band(&c, &harmonic), 1e-7, runs, RB_CONFIRM_RUNS);
+    rb_verdict_confirm(&v2, m, NULL, rb_confirm_band(&c, &harmonic), 1e-7, runs, RB_CONFIRM_RUNS);
     CHECK(!v2.pass && strstr(v2.reason, "does not converge"));
     CHECK(v2.check[RB_CHECK_CONVERGENCE] == RB_CHECK_WARNING);
     /* runs that converge stand */
     scatter_runs(runs, &v, m + 2e-4, m - 3e-4);
     v2 = v;
-    rb_verdict_confirm(&v2, m, rb_confirm_band(&c, &harmonic), 1e-7, runs, RB_CONFIRM_RUNS);
+    rb_verdict_confirm(&v2, m, NULL, rb_confirm_band(&c, &harmonic), 1e-7, runs, RB_CONFIRM_RUNS);
     CHECK(v2.pass && v2.check[RB_CHECK_CONVERGENCE] == RB_CHECK_OK);
     /* a run that never moved has the whole range to spare: nothing to confirm */
     base_result(&r);
@@ -504,6 +506,129 @@ static void seismic_routes(void)
     CHECK(v.pass && v.anchor_route == RB_ROUTE_APPLIED_NONE);
 }
 
+/* One truth: rb_verdict_margin is the least of rb_verdict_margins, over
+ * random runs and criteria (every limit on or off, numbers on both sides
+ * of their limits, NaNs where a number can be missing). */
+static double draw(unsigned *seed, double lo, double hi)
+{
+    *seed = *seed * 1103515245u + 12345u;
+    return lo + (hi - lo) * (double)((*seed >> 8) & 0xffffu) / 65535.0;
+}
+
+static void margins_property(void)
+{
+    unsigned seed = 7;
+    int disagree = 0, tried = 0;
+    for (int i = 0; i < 20000; i++) {
+        rb_criteria c;
+        rb_result r;
+        rb_criteria_init(&c);
+        base_result(&r);
+        c.kind = draw(&seed, 0, 1) < 0.5 ? RB_CRIT_NO_YIELD : RB_CRIT_NO_BREAK;
+        c.usage_limit = draw(&seed, 0.5, 2);
+        c.max_shear_over_w = draw(&seed, 0, 1) < 0.3 ? draw(&seed, 0.1, 2) : 0;
+        c.max_theta_over_alpha = draw(&seed, 0, 1) < 0.3 ? draw(&seed, 0.1, 1) : 0;
+        c.friction_coefficient = draw(&seed, 0, 1) < 0.3 ? draw(&seed, 0.2, 0.8) : 0;
+        if (draw(&seed, 0, 1) < 0.3) {
+            c.validity = RB_VALIDITY_FAIL;
+            c.validity_mask = (1u << RB_CHECK_LIFT_OFF) | (1u << RB_CHECK_BOLT_IMPACT);
+        }
+        r.usage[0] = draw(&seed, 0, 1.5);
+        r.usage[1] = draw(&seed, 0, 1.5);
+        r.max_theta_over_alpha = draw(&seed, 0, 1.2);
+        r.max_bolt_force_n[0] = draw(&seed, 0, 1.2) * r.fy_row_n;
+        r.max_bolt_impact_n = draw(&seed, 0, 1.2) * r.fy_row_n;
+        r.max_friction_demand = draw(&seed, 0, 1);
+        r.min_vertical_reaction_n = draw(&seed, -0.2, 1) * r.weight_n;
+        r.yielded[1] = draw(&seed, 0, 1) < 0.1;
+        r.overturned = draw(&seed, 0, 1) < 0.03;
+        r.broken[0] = draw(&seed, 0, 1) < 0.03;
+        if (draw(&seed, 0, 1) < 0.05)
+            r.usage[1] = NAN;
+        if (draw(&seed, 0, 1) < 0.05)
+            r.max_theta_over_alpha = NAN;
+        double each[RB_N_GOVERNS], least = NAN;
+        rb_verdict_margins(&c, &r, each);
+        for (int k = 0; k < RB_N_GOVERNS; k++)
+            if (each[k] < least || (isnan(least) && !isnan(each[k])))
+                least = each[k];
+        if (!(least > 0))
+            least = 0;
+        tried++;
+        disagree += rb_verdict_margin(&c, &r) != least;
+    }
+    printf("margins: %d of %d runs disagree\n", disagree, tried);
+    CHECK(disagree == 0);
+}
+
+/* The least margin agreeing is not enough: the harmonic of
+ * harmonic_band's cabinet kept 0.937 of its rotation over three runs
+ * within the spread when the series' rounding moved, while its usage went
+ * 0.026, 0.038, 0.054 (and a broken row with Dormand-Prince at 1e-7). */
+static void limit_scatter(void)
+{
+    rb_verdict v;
+    memset(&v, 0, sizeof v);
+    v.pass = v.criteria_pass = 1;
+    double each[RB_N_GOVERNS];
+    rb_confirm_run runs[RB_CONFIRM_RUNS];
+    for (int k = 0; k < RB_N_GOVERNS; k++)
+        each[k] = NAN;
+    each[RB_GOVERNS_OVERTURN] = 0.937;
+    each[RB_GOVERNS_USAGE] = 1 - 0.026;
+    const double rotation[] = {0.9368, 0.9371}, usage[] = {0.038, 0.054};
+    for (int i = 0; i < RB_CONFIRM_RUNS; i++) {
+        memset(&runs[i], 0, sizeof runs[i]);
+        runs[i].solved = 1;
+        runs[i].rtol = i ? 1e-9 : 1e-8;
+        runs[i].verdict = v;
+        runs[i].margin = rotation[i];
+        for (int k = 0; k < RB_N_GOVERNS; k++)
+            runs[i].limit_margins[k] = NAN;
+        runs[i].limit_margins[RB_GOVERNS_OVERTURN] = rotation[i];
+        runs[i].limit_margins[RB_GOVERNS_USAGE] = 1 - usage[i];
+    }
+    /* under the harmonic's band of 1: the usage's scatter fails it */
+    rb_verdict v2 = v;
+    rb_verdict_confirm(&v2, 0.937, each, 1, 1e-7, runs, RB_CONFIRM_RUNS);
+    printf("limit scatter: %s\n", v2.reason);
+    CHECK(!v2.pass && v2.check[RB_CHECK_CONVERGENCE] == RB_CHECK_WARNING);
+    CHECK(strstr(v2.reason, "not confirmed: 0.946 to spare of the toughness usage at "
+                 "tolerance 1e-09 but 0.974 at 1e-07 (auto)") == v2.reason);
+    /* the least margin alone (NULL) lets it pass: what the rule adds */
+    v2 = v;
+    rb_verdict_confirm(&v2, 0.937, NULL, 1, 1e-7, runs, RB_CONFIRM_RUNS);
+    CHECK(v2.pass);
+    /* a usage that converges passes */
+    runs[0].limit_margins[RB_GOVERNS_USAGE] = 1 - 0.0262;
+    runs[1].limit_margins[RB_GOVERNS_USAGE] = 1 - 0.0259;
+    v2 = v;
+    rb_verdict_confirm(&v2, 0.937, each, 1, 1e-7, runs, RB_CONFIRM_RUNS);
+    CHECK(v2.pass && v2.check[RB_CHECK_CONVERGENCE] == RB_CHECK_OK && !v2.warnings);
+    /* under a record's band of 0.5, a far limit may scatter within what
+     * every run keeps to spare; one inside the band may not */
+    runs[0].limit_margins[RB_GOVERNS_USAGE] = 1 - usage[0];
+    runs[1].limit_margins[RB_GOVERNS_USAGE] = 1 - usage[1];
+    v2 = v;
+    rb_verdict_confirm(&v2, 0.937, each, RB_CONFIRM_BAND_DEFAULT, 1e-7, runs,
+                       RB_CONFIRM_RUNS);
+    CHECK(v2.pass);
+    each[RB_GOVERNS_SHEAR] = 0.45;
+    runs[0].limit_margins[RB_GOVERNS_SHEAR] = 0.44;
+    runs[1].limit_margins[RB_GOVERNS_SHEAR] = 0.40;
+    v2 = v;
+    rb_verdict_confirm(&v2, 0.40, each, RB_CONFIRM_BAND_DEFAULT, 1e-7, runs,
+                       RB_CONFIRM_RUNS);
+    CHECK(!v2.pass && strstr(v2.reason, "of the nearest limit") != NULL);
+    /* a limit that applies in no run (NaN) never scatters */
+    each[RB_GOVERNS_SHEAR] = NAN;
+    runs[0].limit_margins[RB_GOVERNS_SHEAR] = runs[1].limit_margins[RB_GOVERNS_SHEAR] = NAN;
+    v2 = v;
+    rb_verdict_confirm(&v2, 0.937, each, RB_CONFIRM_BAND_DEFAULT, 1e-7, runs,
+                       RB_CONFIRM_RUNS);
+    CHECK(v2.pass);
+}
+
 int main(void)
 {
     seismic_routes();
@@ -515,5 +640,7 @@ int main(void)
     near_contact();
     confirmation();
     harmonic_band();
+    margins_property();
+    limit_scatter();
     TEST_MAIN_END();
 }
