@@ -525,38 +525,37 @@ static const char *run_where(char *buf, size_t n, const rb_confirm_run *runs,
     return buf;
 }
 
-/* The first limit whose own margins, over the run confirmed (each) and
- * its confirming runs, scatter as the least margin may not
- * (rb_verdict_confirm); RB_N_GOVERNS if none. *lo and *hi are that
- * limit's least and largest margin and *run_lo, *run_hi the runs giving
- * them (NULL: the run confirmed). */
-static int limit_scattered(const double each[RB_N_GOVERNS], double band,
-                           const rb_confirm_run *runs, size_t n, double *lo, double *hi,
-                           const rb_confirm_run **run_lo, const rb_confirm_run **run_hi)
+/* One margin's range over the run confirmed (first) and its confirming
+ * runs: the least margin's (k == RB_N_GOVERNS) or limit k's own. A run
+ * with a number replaces a NaN, so that a limit no run reaches stays NaN
+ * while one that some run reaches is judged by those runs. */
+typedef struct {
+    double lo, hi;
+    const rb_confirm_run *run_lo, *run_hi;   /* NULL: the run confirmed */
+} margin_range;
+
+static margin_range range_over(double first, int k, const rb_confirm_run *runs, size_t n)
 {
-    for (int k = 0; k < RB_N_GOVERNS; k++) {
-        double l = each[k], h = each[k];
-        const rb_confirm_run *rl = NULL, *rh = NULL;
-        for (size_t i = 0; i < n; i++) {
-            double x = runs[i].limit_margins[k];
-            if (x < l || (isnan(l) && !isnan(x))) {
-                l = x;
-                rl = &runs[i];
-            }
-            if (x > h || (isnan(h) && !isnan(x))) {
-                h = x;
-                rh = &runs[i];
-            }
+    margin_range r = {first, first, NULL, NULL};
+    for (size_t i = 0; i < n; i++) {
+        double x = k == RB_N_GOVERNS ? runs[i].margin : runs[i].limit_margins[k];
+        if (x < r.lo || (isnan(r.lo) && !isnan(x))) {
+            r.lo = x;
+            r.run_lo = &runs[i];
         }
-        if (!(h - l > RB_CONFIRM_SPREAD) || (l >= band && h - l < l))
-            continue;
-        *lo = l;
-        *hi = h;
-        *run_lo = rl;
-        *run_hi = rh;
-        return k;
+        if (x > r.hi || (isnan(r.hi) && !isnan(x))) {
+            r.hi = x;
+            r.run_hi = &runs[i];
+        }
     }
-    return RB_N_GOVERNS;
+    return r;
+}
+
+/* Converged: the runs agree within RB_CONFIRM_SPREAD, or every run keeps
+ * the band to spare and more than the scatter seen. NaN is not converged. */
+static int range_converged(margin_range r, double band)
+{
+    return r.hi - r.lo <= RB_CONFIRM_SPREAD || (r.lo >= band && r.hi - r.lo < r.lo);
 }
 
 void rb_verdict_confirm(rb_verdict *v, double margin, const double *limit_margins, double band,
@@ -596,27 +595,17 @@ void rb_verdict_confirm(rb_verdict *v, double margin, const double *limit_margin
      * more. A pass whose runs agree within RB_CONFIRM_SPREAD has
      * converged; one whose runs do not stands only where every run keeps
      * the band to spare, and more than the scatter seen. */
-    double lo = margin, hi = margin;
-    const rb_confirm_run *run_lo = NULL, *run_hi = NULL;   /* NULL: the run confirmed */
-    for (size_t i = 0; i < n; i++) {
-        if (runs[i].margin < lo) {
-            lo = runs[i].margin;
-            run_lo = &runs[i];
-        }
-        if (runs[i].margin > hi) {
-            hi = runs[i].margin;
-            run_hi = &runs[i];
-        }
-    }
+    margin_range r = range_over(margin, RB_N_GOVERNS, runs, n);
     char at_lo[40], at_hi[40];
-    if (!(hi - lo <= RB_CONFIRM_SPREAD || (lo >= band && hi - lo < lo))) {
+    /* a NaN least margin signs nothing, whatever the other runs give */
+    if (isnan(margin) || !range_converged(r, band)) {
         v->check[RB_CHECK_CONVERGENCE] = RB_CHECK_WARNING;
         v->warnings |= 1u << RB_CHECK_CONVERGENCE;
         snprintf(v->reason, sizeof v->reason, "not confirmed: %.3g to spare of the nearest "
                  "limit at tolerance %s but %.3g at %s (%s); the run does not converge, and "
-                 "a further one can take more than that", lo,
-                 run_where(at_lo, sizeof at_lo, runs, run_lo, rtol), hi,
-                 run_where(at_hi, sizeof at_hi, runs, run_hi, rtol),
+                 "a further one can take more than that", r.lo,
+                 run_where(at_lo, sizeof at_lo, runs, r.run_lo, rtol), r.hi,
+                 run_where(at_hi, sizeof at_hi, runs, r.run_hi, rtol),
                  rb_enum_str(rb_integrator_names, runs[0].integrator));
         v->pass = 0;
         return;
@@ -630,16 +619,22 @@ void rb_verdict_confirm(rb_verdict *v, double margin, const double *limit_margin
      * into a pass), so every limit's own margin is held to the same rule. */
     if (!limit_margins)
         return;
-    int k = limit_scattered(limit_margins, band, runs, n, &lo, &hi, &run_lo, &run_hi);
+    /* a limit no run reaches (NaN in every run) does not scatter */
+    int k = 0;
+    for (; k < RB_N_GOVERNS; k++) {
+        r = range_over(limit_margins[k], k, runs, n);
+        if (!isnan(r.hi - r.lo) && !range_converged(r, band))
+            break;
+    }
     if (k == RB_N_GOVERNS)
         return;
     v->check[RB_CHECK_CONVERGENCE] = RB_CHECK_WARNING;
     v->warnings |= 1u << RB_CHECK_CONVERGENCE;
     snprintf(v->reason, sizeof v->reason, "not confirmed: %.3g to spare of the %s at "
              "tolerance %s but %.3g at %s (%s); the run does not converge, and a further "
-             "one can take more than that", lo, rb_governs_name((rb_governs_limit)k),
-             run_where(at_lo, sizeof at_lo, runs, run_lo, rtol), hi,
-             run_where(at_hi, sizeof at_hi, runs, run_hi, rtol),
+             "one can take more than that", r.lo, rb_governs_name((rb_governs_limit)k),
+             run_where(at_lo, sizeof at_lo, runs, r.run_lo, rtol), r.hi,
+             run_where(at_hi, sizeof at_hi, runs, r.run_hi, rtol),
              rb_enum_str(rb_integrator_names, runs[0].integrator));
     v->pass = 0;
 }
