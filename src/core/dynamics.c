@@ -206,6 +206,20 @@ static void mirror(const rb_disc *D, const double *y, double *m)
     m[3] = s * y[RB_Y_THD];
 }
 
+void rb_dyn_deriv(const rb_sys *S, const rb_disc *D, const double *y, const rb_aux *a,
+                  double *dy)
+{
+    double s = D->side < 0 ? -1.0 : 1.0;
+    int moving = rb_dyn_rocking(S, D);
+    dy[RB_Y_U] = y[RB_Y_UD];
+    dy[RB_Y_UD] = s * a->udd;
+    dy[RB_Y_TH] = moving ? y[RB_Y_THD] : 0;
+    dy[RB_Y_THD] = moving ? s * a->thdd : 0;
+    dy[RB_Y_WDAMP] = S->d.Cstar * y[RB_Y_UD] * y[RB_Y_UD];
+    dy[RB_Y_WIN] = a->p_input;
+    dy[RB_Y_WCPL] = a->p_coupling;
+}
+
 void rb_dyn_rhs(const rb_sys *S, const rb_disc *D, double t, const double *y,
                 double *dy, rb_aux *aux)
 {
@@ -220,16 +234,8 @@ void rb_dyn_rhs(const rb_sys *S, const rb_disc *D, double t, const double *y,
         solve_rocking(S, D, s * a.x, m, &a);
     else
         solve_still(S, D, s * a.x, m, &a);
-    if (dy) {
-        int moving = rb_dyn_rocking(S, D);
-        dy[RB_Y_U] = y[RB_Y_UD];
-        dy[RB_Y_UD] = s * a.udd;
-        dy[RB_Y_TH] = moving ? y[RB_Y_THD] : 0;
-        dy[RB_Y_THD] = moving ? s * a.thdd : 0;
-        dy[RB_Y_WDAMP] = S->d.Cstar * y[RB_Y_UD] * y[RB_Y_UD];
-        dy[RB_Y_WIN] = a.p_input;
-        dy[RB_Y_WCPL] = a.p_coupling;
-    }
+    if (dy)
+        rb_dyn_deriv(S, D, y, &a, dy);
     if (aux)
         *aux = a;
 }

@@ -66,6 +66,11 @@ int rb_dyn_rocking(const rb_sys *S, const rb_disc *D);
 /* Derivatives for the current stage; dy may be NULL when only aux is wanted. */
 void rb_dyn_rhs(const rb_sys *S, const rb_disc *D, double t, const double *y,
                 double *dy, rb_aux *aux);
+/* The derivatives that rb_dyn_rhs gives with the evaluation a at the
+ * state y (the same bits): a restart that has read the aux already, for
+ * its guards and tracked point, forms them without a second evaluation. */
+void rb_dyn_deriv(const rb_sys *S, const rb_disc *D, const double *y, const rb_aux *a,
+                  double *dy);
 
 /* Uplift guard of stage 1 for side s: > 0 when the plate would lift about
  * that edge (eq. 5.3d written through the stage-2 moment equation so that it

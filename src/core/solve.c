@@ -589,18 +589,30 @@ static rb_status nonfinite_ahead(rb_solver *sv, rb_diag *diag, double h)
 /* After a transition: settle immediate follow-ups, refresh f and guards. */
 static rb_status restart(rb_solver *sv, double *g, rb_diag *diag)
 {
-    for (int n = 0; !sv->done && rb_transition_immediate(sv); n++)
+    /* one evaluation of the equations at the restart serves the
+     * derivative, the guards and the tracked point: the last test for an
+     * immediate transition made it in the stage the run goes on in */
+    rb_aux a;
+    int have = 0;
+    for (int n = 0; !sv->done; n++) {
+        if (!rb_transition_immediate(sv, &a)) {
+            have = 1;
+            break;
+        }
         if (n > 16)
             return fail(sv, diag, RB_ERR_WORK_LIMIT, "stage transitions do not settle");
-    rb_dyn_rhs(&sv->sys, &sv->disc, sv->t, sv->y, sv->f, NULL);
+    }
+    if (!have)
+        rb_dyn_rhs(&sv->sys, &sv->disc, sv->t, sv->y, NULL, &a);
+    rb_dyn_deriv(&sv->sys, &sv->disc, sv->y, &a, sv->f);
     if (!state_finite(sv->y) || !state_finite(sv->f))
         return nonfinite(sv, diag, sv->t, sv->y);
-    rb_guard_eval(sv, sv->t, sv->y, g);
+    rb_guard_eval_aux(sv, sv->t, sv->y, &a, g);
     /* the stage's steppers, once for the stage */
     sv->n_steppers = rb_steppers_of_stage(sv, sv->steppers);
     rb_track_reset(sv);
     rb_track_span_none(sv);
-    rb_track_point(sv, sv->t, sv->y);
+    rb_track_aux(sv, sv->t, sv->y, &a);
     return RB_OK;
 }
 

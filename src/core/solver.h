@@ -181,6 +181,11 @@ void rb_guard_eval(const rb_solver *sv, double t, const double *y, double *g);
  * evaluate both. */
 void rb_guard_eval_x(const rb_solver *sv, double t, const double *y, double x, double ge,
                      double *g);
+/* The same where the equations have been evaluated at (t, y) in the
+ * current stage (a is rb_dyn_rhs's aux there): the floor and a row's
+ * force are read from a, the same bits as evaluated anew. */
+void rb_guard_eval_aux(const rb_solver *sv, double t, const double *y, const rb_aux *a,
+                       double *g);
 /* One guard; what locating its root needs. */
 double rb_guard_one(const rb_solver *sv, int guard, double t, const double *y);
 int rb_guard_crossed(int guard, double before, double after);
@@ -198,8 +203,10 @@ void rb_guard_nudge(double *g);
 /* Apply the transition of 'guard' at the current (t, y). */
 void rb_transition(rb_solver *sv, int guard);
 /* Transitions that hold the moment a stage starts (a bolt impact that
- * leaves the bolt slack or beyond yield, a jump in the excitation). */
-int rb_transition_immediate(rb_solver *sv);
+ * leaves the bolt slack or beyond yield, a jump in the excitation). a is
+ * the evaluation of the equations at the run's (t, y) in the stage it
+ * tested: where none holds (0), the stage the run goes on in. */
+int rb_transition_immediate(rb_solver *sv, rb_aux *a);
 /* A row's absorbed energy at the state y of the current stage (a yielding
  * row's grows with the chord), and at the run's own state. */
 double rb_absorbed_at(const rb_solver *sv, int row, const double *y);

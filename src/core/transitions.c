@@ -138,6 +138,12 @@ double rb_absorbed_now(const rb_solver *sv, int row)
     return rb_absorbed_at(sv, row, sv->y);
 }
 
+/* A row's force as a guard, from an evaluation of the equations. */
+static double bolt_guard(const rb_solver *sv, int guard, const rb_aux *a)
+{
+    return guard == G_YIELD ? a->bolt_force - sv->sys.d.fy_row_n : a->bolt_force;
+}
+
 double rb_guard_one(const rb_solver *sv, int guard, double t, const double *y)
 {
     const rb_sys *S = &sv->sys;
@@ -159,7 +165,7 @@ double rb_guard_one(const rb_solver *sv, int guard, double t, const double *y)
         if (guard == G_SLACK && !S->bolt->rigid_stop)
             return S->bolt->taut(S, D, th);
         rb_dyn_rhs(S, D, t, y, NULL, &a);
-        return guard == G_YIELD ? a.bolt_force - S->d.fy_row_n : a.bolt_force;
+        return bolt_guard(sv, guard, &a);
     }
     default:
         return 0;
@@ -185,31 +191,54 @@ void rb_guard_eval(const rb_solver *sv, double t, const double *y, double *g)
     rb_guard_eval_x(sv, t, y, NAN, NAN, g);
 }
 
-void rb_guard_eval_x(const rb_solver *sv, double t, const double *y, double x, double ge,
-                     double *g)
+/* The guards at (t, y), with the floor x and ge given (x NAN: read
+ * here), and where a is given, the evaluation of the equations there. */
+static void guard_eval(const rb_solver *sv, double t, const double *y, double x, double ge,
+                       const rb_aux *a, double *g)
 {
     unsigned mask = rb_guard_mask(sv);
     for (int k = 0; k < G_COUNT; k++)
         g[k] = 0; /* inactive guards are never read as crossings, but are copied */
     /* the rigid bolt's force serves both of stage 4's guards */
     if ((mask & 1u << G_YIELD) && sv->sys.bolt->rigid_stop) {
-        rb_aux a;
-        rb_dyn_rhs(&sv->sys, &sv->disc, t, y, NULL, &a);
-        g[G_SLACK] = a.bolt_force;
-        g[G_YIELD] = a.bolt_force - sv->sys.d.fy_row_n;
+        rb_aux b;
+        if (!a) {
+            rb_dyn_rhs(&sv->sys, &sv->disc, t, y, NULL, &b);
+            a = &b;
+        }
+        g[G_SLACK] = bolt_guard(sv, G_SLACK, a);
+        g[G_YIELD] = bolt_guard(sv, G_YIELD, a);
         mask &= ~(1u << G_SLACK | 1u << G_YIELD);
     }
     if (mask & 1u << G_UP_POS) {
-        if (isnan(x))
+        if (a)
+            rb_dyn_uplift_guards_x(&sv->sys, a->x, a->gz, y, g + G_UP_POS);
+        else if (isnan(x))
             rb_dyn_uplift_guards(&sv->sys, t, y, g + G_UP_POS);
         else
             rb_dyn_uplift_guards_x(&sv->sys, x, ge, y, g + G_UP_POS);
         mask &= ~(1u << G_UP_POS | 1u << G_UP_NEG);
     }
+    if (a && (mask & 1u << G_YIELD)) {
+        g[G_YIELD] = bolt_guard(sv, G_YIELD, a);
+        mask &= ~(1u << G_YIELD);
+    }
     for (unsigned m = mask; m;) {
         int k = rb_guard_next(&m);
         g[k] = rb_guard_one(sv, k, t, y);
     }
+}
+
+void rb_guard_eval_x(const rb_solver *sv, double t, const double *y, double x, double ge,
+                     double *g)
+{
+    guard_eval(sv, t, y, x, ge, NULL, g);
+}
+
+void rb_guard_eval_aux(const rb_solver *sv, double t, const double *y, const rb_aux *a,
+                       double *g)
+{
+    guard_eval(sv, t, y, NAN, NAN, a, g);
 }
 
 static void count_event(rb_solver *sv)
@@ -411,13 +440,14 @@ void rb_transition(rb_solver *sv, int guard)
     }
 }
 
-int rb_transition_immediate(rb_solver *sv)
+int rb_transition_immediate(rb_solver *sv, rb_aux *a)
 {
     const rb_sys *S = &sv->sys;
     rb_disc *D = &sv->disc;
+    rb_dyn_rhs(S, D, sv->t, sv->y, NULL, a);
     if (D->stage == RB_STAGE_FIXED) {
         double g[2];
-        rb_dyn_uplift_guards(S, sv->t, sv->y, g);
+        rb_dyn_uplift_guards_x(S, a->x, a->gz, sv->y, g);
         if (g[0] > 0 || g[1] > 0) {
             rb_transition(sv, g[0] > 0 ? G_UP_POS : G_UP_NEG);
             return 1;
@@ -425,13 +455,11 @@ int rb_transition_immediate(rb_solver *sv)
         return 0;
     }
     if (D->stage == RB_STAGE_HELD && S->bolt->rigid_stop) {
-        rb_aux a;
-        rb_dyn_rhs(S, D, sv->t, sv->y, NULL, &a);
-        if (a.bolt_force <= 0) {
+        if (a->bolt_force <= 0) {
             rb_transition(sv, G_SLACK);
             return 1;
         }
-        if (S->bolt->yields && a.bolt_force >= S->d.fy_row_n) {
+        if (S->bolt->yields && a->bolt_force >= S->d.fy_row_n) {
             rb_transition(sv, G_YIELD);
             return 1;
         }
