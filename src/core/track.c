@@ -16,6 +16,13 @@
 #include "root.h"
 #include "solver.h"
 
+/* out of line: the rare branch of a path that runs at every point */
+#if defined(__GNUC__) || defined(__clang__)
+#define RB_COLD __attribute__((noinline, cold))
+#else
+#define RB_COLD
+#endif
+
 static void note_displacements(rb_solver *sv, const double *y)
 {
     rb_result *r = sv->res;
@@ -287,6 +294,42 @@ static double refine(rb_solver *sv, int q, const double *t, const double *v, int
     return rb_max_brent(refine_at, &c, ts, vs, m, 3e-5 * (ts[m - 1] - ts[0]), at);
 }
 
+/* The two searches of peak_push, out of line: most points push and
+ * return (a point is the window's crest about once a half period, and a
+ * step's end or a transition's first interval once a step), and the
+ * push then costs less than a call's saved registers. */
+static RB_COLD double peak_edge(rb_solver *sv, rb_peak_window *w, int q, double v,
+                                double best, double *at)
+{
+    int k = w->n - 2;
+    double vk = w->v[k], tr, vr;
+    double hi = v > vk ? v : vk, reach = v > vk ? v - vk : vk - v;
+    /* two ends alike say nothing of a crest between them: the
+     * window's other interval bounds the slope there */
+    if (w->n == 3)
+        reach = rb_fmax(reach, fabs(w->v[1] - w->v[0]));
+    if (hi + 0.5 * reach > best && (vr = refine(sv, q, w->t + k, w->v + k, 2, &tr)) > v) {
+        *at = tr;
+        return vr;
+    }
+    return v;
+}
+
+static RB_COLD double peak_crest(rb_solver *sv, rb_peak_window *w, int q, double t, double v,
+                                 double best, double *at)
+{
+    double tr, vr;
+    double up = w->v[1] - w->v[0], down = w->v[1] - w->v[2], reach = up > down ? up : down;
+    if (!(reach > 0) || !(w->v[1] + 0.5 * reach > best))
+        return w->v[1];
+    if ((vr = refine(sv, q, w->t, w->v, 3, &tr)) > -HUGE_VAL) {
+        *at = vr > v ? tr : t;
+        return rb_fmax(v, vr);
+    }
+    double tv, vv;
+    return parabola_vertex(w->t, w->v, &tv, &vv) ? rb_fmax(v, vv) : rb_fmax(v, w->v[1]);
+}
+
 /* Shift (t, v) into the window and return the largest value of the
  * quantity since the window's last point, and where it is (*at). The
  * points are check points of a step (a few per period of the fastest
@@ -302,8 +345,8 @@ static double refine(rb_solver *sv, int q, const double *t, const double *v, int
  * where the larger point and half the difference pass the running peak. Where
  * the span has no dense output, the vertex of the parabola through the
  * three points takes the peak to third order in their spacing. */
-static double peak_push(rb_solver *sv, rb_peak_window *w, int q, double t, double v,
-                        double best, double *at)
+static inline double peak_push(rb_solver *sv, rb_peak_window *w, int q, double t, double v,
+                               double best, double *at)
 {
     if (w->n == 3) {
         w->t[0] = w->t[1]; w->v[0] = w->v[1];
@@ -314,36 +357,17 @@ static double peak_push(rb_solver *sv, rb_peak_window *w, int q, double t, doubl
     w->v[w->n] = v;
     w->n++;
     *at = t;
-    double tr, vr;
     if (w->n < 3 || !(w->v[1] >= w->v[0] && w->v[1] >= w->v[2])) {
         if (w->n < 2)
             return v;
-        int k = w->n - 2;
-        double vk = w->v[k];
+        double vk = w->v[w->n - 2];
         /* a window's first interval, after a transition, falling; or a
          * step's last, rising */
         if (!((w->n == 2 && v < vk) || (v > vk && t == sv->span.t1)))
             return v;
-        double hi = v > vk ? v : vk, reach = v > vk ? v - vk : vk - v;
-        /* two ends alike say nothing of a crest between them: the
-         * window's other interval bounds the slope there */
-        if (w->n == 3)
-            reach = rb_fmax(reach, fabs(w->v[1] - w->v[0]));
-        if (hi + 0.5 * reach > best && (vr = refine(sv, q, w->t + k, w->v + k, 2, &tr)) > v) {
-            *at = tr;
-            return vr;
-        }
-        return v;
+        return peak_edge(sv, w, q, v, best, at);
     }
-    double up = w->v[1] - w->v[0], down = w->v[1] - w->v[2], reach = up > down ? up : down;
-    if (!(reach > 0) || !(w->v[1] + 0.5 * reach > best))
-        return w->v[1];
-    if ((vr = refine(sv, q, w->t, w->v, 3, &tr)) > -HUGE_VAL) {
-        *at = vr > v ? tr : t;
-        return rb_fmax(v, vr);
-    }
-    double tv, vv;
-    return parabola_vertex(w->t, w->v, &tv, &vv) ? rb_fmax(v, vv) : rb_fmax(v, w->v[1]);
+    return peak_crest(sv, w, q, t, v, best, at);
 }
 
 /* Whether the span's dense output covers [t0, t]. */
