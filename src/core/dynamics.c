@@ -341,23 +341,6 @@ double rb_dyn_strain(const rb_sys *S, const rb_disc *D, const double *y)
     return 0.5 * S->d.Kstar * y[RB_Y_U] * y[RB_Y_U];
 }
 
-void rb_dyn_reactions(const rb_sys *S, const rb_disc *D, const double *y,
-                      const rb_aux *a, double *horizontal, double *vertical)
-{
-    const rb_derived *d = &S->d;
-    double s = D->side < 0 ? -1.0 : 1.0, m[4];
-    mirror(D, y, m);
-    /* the angle's cosine and sine come with aux, from the same evaluation */
-    double thd = m[3], c = a->cos_th, sn = a->sin_th;
-    /* Newton's law on the deformed body whatever the formulation: a mass
-     * point moved by u along the base's axis rises by u sin theta */
-    double Mb = S->M * S->b - d->Nstar * m[0];
-    double Ad = d->Nstar * a->udd + S->M * S->h * a->thdd + Mb * thd * thd;
-    double A2 = -S->M * S->h * thd * thd - 2 * d->Nstar * m[1] * thd + Mb * a->thdd;
-    *horizontal = s * (-S->M * s * a->x + c * Ad + sn * A2);
-    *vertical = (a->gz == d->g ? d->W : S->M * a->gz) - sn * Ad + c * A2;
-}
-
 /* The same reactions as rb_dyn_reactions, summed over the frame's mass
  * points instead of through the mode's integrals N*, M h and M b: a point
  * at height y sits at p = b - U phi(y) along the base from the pivot, and

@@ -66,6 +66,10 @@ void rb_taylor_check(const rb_taylor *ts, double tau, double *v);
  * RB_TS_CHECK series at one instant (no trigonometry). */
 void rb_taylor_aux(const rb_sys *S, const rb_disc *D, const rb_taylor *ts, const double *v,
                    rb_aux *a);
+/* The same without the works' powers (p_input and p_coupling NaN): what
+ * the tracking reads at a point inside a step. */
+void rb_taylor_aux_point(const rb_sys *S, const rb_disc *D, const rb_taylor *ts,
+                         const double *v, rb_aux *a);
 
 /* The same from values v laid out as the series are, for a plate that
  * rocks or not, held (stage 4) with the lever arm lever_hold: the exact

@@ -150,14 +150,12 @@ void rb_taylor_all(const rb_taylor *ts, double tau, double *y)
         y[i] = v[state_series[i]];
 }
 
-void rb_taylor_aux(const rb_sys *S, const rb_disc *D, const rb_taylor *ts, const double *v,
-                   rb_aux *a)
-{
-    rb_aux_of_values(S, D, ts->rocking, ts->lever_hold, v, a);
-}
-
-void rb_aux_of_values(const rb_sys *S, const rb_disc *D, int rocking, double lever_hold,
-                      const double *v, rb_aux *a)
+/* What rb_dyn_rhs gives as aux, from the series' values; the powers of
+ * the works only where asked (the derivative at a step's end): a check
+ * point's tracking reads the floor, the accelerations, the angle's
+ * trigonometry and the bolt force alone. */
+static inline void aux_values(const rb_sys *S, const rb_disc *D, int rocking, double lever_hold,
+                              const double *v, rb_aux *a, int powers)
 {
     const rb_derived *d = &S->d;
     double sgn = D->side < 0 ? -1.0 : 1.0;
@@ -173,15 +171,18 @@ void rb_aux_of_values(const rb_sys *S, const rb_disc *D, int rocking, double lev
     double thd = rocking ? sgn * v[RB_TS_THD] : 0;
     double c = a->cos_th, sn = a->sin_th;
     int small = S->form == RB_FORM_SMALL;
-    double in_U = small ? d->Nstar : d->Nstar * c;
     double in_th = small ? S->M * d->R : S->M * (S->h * c + S->b * sn);
-    a->p_input = xm * (in_U * ud + in_th * thd);
-    /* the gravity terms with W = M gz (dynamics.c's loads) */
-    double kh = small ? d->R * (d->alpha - th) : S->b * c - S->h * sn;
     double W = vert ? S->M * a->gz : d->W;
-    if (vert) /* the vertical floor's power, -z'' M kh theta' */
-        a->p_input -= v[RB_TS_Z] * S->M * kh * thd;
-    a->p_coupling = d->Nstar * (a->gz * (small ? th : sn) - S->b * thd * thd) * ud;
+    if (powers) {
+        double in_U = small ? d->Nstar : d->Nstar * c;
+        a->p_input = xm * (in_U * ud + in_th * thd);
+        /* the gravity terms with W = M gz (dynamics.c's loads) */
+        double kh = small ? d->R * (d->alpha - th) : S->b * c - S->h * sn;
+        if (vert) /* the vertical floor's power, -z'' M kh theta' */
+            a->p_input -= v[RB_TS_Z] * S->M * kh * thd;
+        a->p_coupling = d->Nstar * (a->gz * (small ? th : sn) - S->b * thd * thd) * ud;
+    } else
+        a->p_input = a->p_coupling = NAN;
     a->bolt_force = 0;
     if (D->stage == RB_STAGE_YIELD)
         a->bolt_force = d->fy_row_n;
@@ -192,6 +193,24 @@ void rb_aux_of_values(const rb_sys *S, const rb_disc *D, int rocking, double lev
                            : xm * in_th - W * (S->b * c - S->h * sn);
         a->bolt_force = (Qth - d->Fstar * a->udd) / lever_hold;
     }
+}
+
+void rb_taylor_aux(const rb_sys *S, const rb_disc *D, const rb_taylor *ts, const double *v,
+                   rb_aux *a)
+{
+    aux_values(S, D, ts->rocking, ts->lever_hold, v, a, 1);
+}
+
+void rb_taylor_aux_point(const rb_sys *S, const rb_disc *D, const rb_taylor *ts,
+                         const double *v, rb_aux *a)
+{
+    aux_values(S, D, ts->rocking, ts->lever_hold, v, a, 0);
+}
+
+void rb_aux_of_values(const rb_sys *S, const rb_disc *D, int rocking, double lever_hold,
+                      const double *v, rb_aux *a)
+{
+    aux_values(S, D, rocking, lever_hold, v, a, 1);
 }
 
 void rb_taylor_end(const rb_sys *S, const rb_disc *D, const rb_taylor *ts, double h,

@@ -55,7 +55,7 @@ static int span_state(rb_solver *sv, double t, double *y, rb_aux *a)
         double v[RB_TS_CHECK];
         rb_taylor_check(&st->ts, t - st->t0, v);
         memcpy(y, v, 4 * sizeof *y);
-        rb_taylor_aux(&sv->sys, &sv->disc, &st->ts, v, a);
+        rb_taylor_aux_point(&sv->sys, &sv->disc, &st->ts, v, a);
     } else {
         rb_rk_dense_state(st, t, y);
         rb_dyn_rhs(&sv->sys, &sv->disc, t, y, NULL, a);
@@ -782,7 +782,7 @@ void rb_track_interval(rb_solver *sv, const rb_rk_step *st, double ta, double tb
                 memcpy(v, st->vcheck[j - 1], sizeof v);
             else
                 rb_taylor_check(&st->ts, t1 - st->t0, v);
-            rb_taylor_aux(&sv->sys, &sv->disc, &st->ts, v, &a);
+            rb_taylor_aux_point(&sv->sys, &sv->disc, &st->ts, v, &a);
             rb_track_aux(sv, t1, cur, &a);
         } else if (j < n && sv->disc.stage == RB_STAGE_HELD)
             rb_track_point(sv, t1, cur);
