@@ -69,7 +69,17 @@ static void loads(const rb_sys *S, double x, double ge, double U, double Ud, dou
     /* d->W to the bit without a vertical */
     double W = ge == d->g ? d->W : M * ge;
     double c, sn;
-    cos_sin(th, &c, &sn);
+    rb_eval_memo *memo = S->memo;
+    if (!memo)
+        cos_sin(th, &c, &sn);
+    else {
+        if (memo->th != th) {
+            cos_sin(th, &memo->c, &memo->sn);
+            memo->th = th;
+        }
+        c = memo->c;
+        sn = memo->sn;
+    }
     L->c = c;
     L->sn = sn;
     L->H_U = 0;
@@ -128,7 +138,14 @@ static double vertical_power(const rb_sys *S, double ge, const rb_loads *L, doub
 static double floor_accel(const rb_sys *S, double t, const double *y)
 {
     double thd = y[RB_Y_THD] != 0 ? y[RB_Y_THD] : -y[RB_Y_TH];
-    return rb_motion_accel(S->motion, t, thd);
+    rb_eval_memo *memo = S->memo;
+    if (!memo || S->motion->kind == RB_MOTION_CRITICAL)
+        return rb_motion_accel(S->motion, t, thd);
+    if (memo->t != t) {
+        memo->x = rb_motion_accel(S->motion, t, thd);
+        memo->t = t;
+    }
+    return memo->x;
 }
 
 int rb_dyn_rocking(const rb_sys *S, const rb_disc *D)

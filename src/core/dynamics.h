@@ -17,9 +17,23 @@ enum { RB_Y_U, RB_Y_UD, RB_Y_TH, RB_Y_THD, RB_Y_WDAMP, RB_Y_WIN, RB_Y_WCPL, RB_N
 
 typedef struct rb_bolt_ops rb_bolt_ops; /* bolt.h */
 
+/* The closed forms an evaluation of the equations reads, at the last
+ * argument each was read at (NAN: none): the floor at t, which through a
+ * building is an exponential, a sine and a cosine, and cos and sin of the
+ * angle. After an event the tracked point, the test for an immediate
+ * transition and the restart read the floor at one instant, and a rigid
+ * row holds the angle through stage 4, whose guards read the equations
+ * at every check point. Not the critical excitation's floor, which
+ * follows the state. */
+typedef struct {
+    double t, x;
+    double th, c, sn;
+} rb_eval_memo;
+
 typedef struct {
     const rb_model *model;
     rb_derived d;
+    rb_eval_memo *memo; /* the run's own, or NULL */
     rb_formulation form;
     const rb_motion *motion;
     const rb_bolt_ops *bolt;    /* the bolt model's operations (bolt.h) */

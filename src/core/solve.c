@@ -114,6 +114,8 @@ rb_status rb_solver_setup(rb_solver *sv, const rb_model *model, const rb_motion 
         return st;
     S->model = model;
     S->motion = motion;
+    sv->memo.t = sv->memo.th = NAN;
+    S->memo = &sv->memo;
     S->form = sv->opts.formulation;
     S->bolt = rb_bolt_ops_of(model->bolt_model);
     S->l = model->lever_arm_m;

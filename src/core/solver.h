@@ -169,6 +169,7 @@ typedef struct {
     const struct rb_stepper *steppers[RB_STEPPERS_MAX];
     int n_steppers;
     rb_exact_cache exact;
+    rb_eval_memo memo;
 } rb_solver;
 
 /* transitions.c */
