@@ -18,7 +18,6 @@
 #include "stepper.h"
 #include "taylor.h"
 
-enum { ZU, ZV, ZUB, ZVB, ZG, ZS, ZN = RB_EXACT_DIM };
 /* the quantities bounded over a step ("Bounds over a step") */
 enum { Q_U, Q_SHEAR, Q_UP_POS, Q_UP_NEG };
 
@@ -142,6 +141,42 @@ static void rows_at(const rows *r, double F, double out[NROW][ZN])
 
 static void table_bounds(rb_solver *sv, const rows *r, double h, rb_exact_table *t);
 
+/* Peaks on the step's own polynomial. A table of one panel keeps the rows
+ * of U, U', u_b, v_b and of the total shear (its form lin[Q_SHEAR], the
+ * line's g and s rows included) of E(f h) as polynomials in f, unscaled:
+ * a step's quantities between its check points are then these rows times
+ * its z0, a polynomial in f with one coefficient a term, and a peak of the
+ * shear is a root of that polynomial's derivative (rb_exact_span_shear_turns).
+ * Terms past the last one above 1e-17 of the scaled series' order-one
+ * entries are left out (the series of a short step falls off fast). A
+ * table of several panels keeps none (nterm 0): its peaks are located on
+ * the step's Taylor series as before. */
+static void table_poly(const rb_solver *sv, const rows *r, rb_exact_table *t)
+{
+    const rb_exact_cache *c = &sv->exact;
+    t->nterm = 0;
+    if (r->m != 1)
+        return;
+    int nt = 1;
+    for (int k = 0; k < NTERM; k++) {
+        double l[ZN] = {0};
+        for (int i = 0; i < NROW; i++)
+            for (int j = 0; j < ZN; j++) {
+                double e = r->d[row_of[i]] * r->pw[i][k][j] / r->d[j];
+                if (i < 4)
+                    t->poly[k][i][j] = e;
+                l[j] += c->lin[Q_SHEAR][row_of[i]] * e;
+                if (fabs(r->pw[i][k][j]) > 1e-17)
+                    nt = k + 1;
+            }
+        /* the line's slope s is constant: its row of E is e_s */
+        if (k == 0)
+            l[ZS] += c->lin[Q_SHEAR][ZS];
+        memcpy(t->poly[k][4], l, sizeof l);
+    }
+    t->nterm = nt;
+}
+
 static void build_table(rb_solver *sv, double h, int n, rb_exact_table *t)
 {
     const rb_exact_cache *c = &sv->exact;
@@ -178,6 +213,7 @@ static void build_table(rb_solver *sv, double h, int n, rb_exact_table *t)
             }
     }
     table_bounds(sv, &r, h, t);
+    table_poly(sv, &r, t);
     const double cw[2] = {sv->sys.d.Cstar, sv->sys.d.Nstar};
     double pk[ZN * (ZN + 1) / 2][2];
     for (int w = 0; w < 2; w++) {
@@ -248,55 +284,13 @@ void rb_exact_setup(rb_solver *sv)
     c->in_th = sv->sys.form == RB_FORM_SMALL ? sv->sys.M * d->R : sv->sys.M * sv->sys.h;
 }
 
-/* One check point: the state, the floor, U'' and the rate of the uplift
- * moment M h x' - F* U''' (as rb_taylor_held_force_rate on the floor). */
-typedef struct {
-    double y[RB_NY], x, udd, rate;
-} point;
-
-static void point_at(const rb_solver *sv, const double *z, point *p)
-{
-    const rb_derived *d = &sv->sys.d;
-    const rb_exact_cache *c = &sv->exact;
-    double xd;
-    if (c->wb > 0) {
-        double w2 = c->wb * c->wb, cb = 2 * c->xib * c->wb;
-        double vbd = -w2 * z[ZUB] - cb * z[ZVB] - z[ZG];
-        p->x = -(cb * z[ZVB] + w2 * z[ZUB]);
-        xd = -(cb * vbd + w2 * z[ZVB]);
-    } else {
-        p->x = z[ZG];
-        xd = z[ZS];
-    }
-    p->udd = (d->Nstar * p->x - d->Kstar * z[ZU] - d->Cstar * z[ZV]) * c->inv_ms;
-    double uddd = (d->Nstar * xd - d->Kstar * z[ZV] - d->Cstar * p->udd) * c->inv_ms;
-    p->rate = c->in_th * xd - d->Fstar * uddd;
-    /* the angle stays as the floor stage keeps it (as a Taylor step) */
-    memcpy(p->y, sv->y, sizeof p->y);
-    p->y[RB_Y_U] = z[ZU];
-    p->y[RB_Y_UD] = z[ZV];
-}
-
-/* What rb_dyn_rhs gives besides the derivatives on the floor, from the
- * point laid out as a still Taylor step's series are. */
-static void aux_of(const rb_solver *sv, const point *p, rb_aux *a)
-{
-    double v[RB_TS_N] = {0};
-    v[RB_TS_U] = p->y[RB_Y_U];
-    v[RB_TS_UD] = p->y[RB_Y_UD];
-    v[RB_TS_X] = p->x;
-    v[RB_TS_UDD] = p->udd;
-    v[RB_TS_COS] = 1;
-    rb_aux_of_values(&sv->sys, &sv->disc, 0, 0, v, a);
-}
-
 static void quantities_at(const rb_solver *sv, const double *z, double *q)
 {
-    point p;
+    rb_exact_point p;
     rb_aux a;
     double g[G_COUNT], V;
-    point_at(sv, z, &p);
-    aux_of(sv, &p, &a);
+    rb_exact_point_at(sv, z, &p);
+    rb_exact_aux_of(sv, &p, &a);
     rb_guard_eval_x(sv, sv->t, p.y, p.x, sv->sys.d.g, g);
     q[Q_U] = p.y[RB_Y_U];
     rb_dyn_reactions(&sv->sys, &sv->disc, p.y, &a, &q[Q_SHEAR], &V);
@@ -304,7 +298,7 @@ static void quantities_at(const rb_solver *sv, const double *z, double *q)
     q[Q_UP_NEG] = g[G_UP_NEG];
 }
 
-static int point_finite(const point *p)
+static int point_finite(const rb_exact_point *p)
 {
     return isfinite(p->y[RB_Y_U]) && isfinite(p->y[RB_Y_UD]) && isfinite(p->x)
            && isfinite(p->udd) && isfinite(p->rate);
@@ -616,9 +610,9 @@ static void advance_step(rb_solver *sv, const rb_exact_table *tab, const double 
 
 /* The rates at the end point p of the step just advanced over, and the
  * guards there (g_end, read by the caller) into g. */
-static void end_rates(rb_solver *sv, const point *p, const double *g_end, double *g, rb_aux *a)
+static void end_rates(rb_solver *sv, const rb_exact_point *p, const double *g_end, double *g, rb_aux *a)
 {
-    aux_of(sv, p, a);
+    rb_exact_aux_of(sv, p, a);
     sv->f[RB_Y_U] = p->y[RB_Y_UD];
     sv->f[RB_Y_UD] = p->udd;
     sv->f[RB_Y_TH] = sv->f[RB_Y_THD] = 0;
@@ -633,7 +627,7 @@ static void end_rates(rb_solver *sv, const point *p, const double *g_end, double
  * state, its rates and the guards at the end point p (tracked there by
  * the caller). */
 static void finish_step(rb_solver *sv, const rb_exact_table *tab, const double *z0,
-                        double t1, const point *p, const double *g_end, double *g, rb_aux *a)
+                        double t1, const rb_exact_point *p, const double *g_end, double *g, rb_aux *a)
 {
     advance_step(sv, tab, z0, t1, p->y[RB_Y_U], p->y[RB_Y_UD]);
     end_rates(sv, p, g_end, g, a);
@@ -658,10 +652,10 @@ void rb_exact_settle(rb_solver *sv, double *g)
     const rb_floor_line fl = {.g0 = c->pend_g0, .slope = c->pend_slope};
     int n = tab->n;
     double z[ZN], gs[G_COUNT], u[2], H[2], t0 = c->pend_t0, t1 = sv->t;
-    point p[2];
+    rb_exact_point p[2];
     for (int k = 0; k < 2; k++) {
         check_state(tab, &fl, c->pend_z0, n - 1 + k, z);
-        point_at(sv, z, &p[k]);
+        rb_exact_point_at(sv, z, &p[k]);
         /* the shear's form is the reactions' own (linear_forms) */
         u[k] = p[k].y[RB_Y_U];
         H[k] = c->lin0[Q_SHEAR];
@@ -819,7 +813,7 @@ static int exact_step(rb_solver *sv, double target, double *g, rb_status *status
     int n = tab->n;
     double t1 = landing ? target : t0 + h;
     double z0[ZN] = {sv->y[RB_Y_U], sv->y[RB_Y_UD], fl.u, fl.v, fl.g0, fl.slope};
-    point p[RB_SUB_MAX + 1];
+    rb_exact_point p[RB_SUB_MAX + 1];
     *status = RB_OK;
     double gs[RB_SUB_MAX + 1][G_COUNT];
     unsigned mask = rb_guard_mask(sv);
@@ -832,13 +826,13 @@ static int exact_step(rb_solver *sv, double target, double *g, rb_status *status
     rb_exact_settle(sv, g);
 
     /* the start as the step before left it */
-    point_at(sv, z0, &p[0]);
+    rb_exact_point_at(sv, z0, &p[0]);
     memcpy(gs[0], g, sizeof gs[0]);
     rb_guard_nudge(gs[0]);
     for (int j = 1; j <= n; j++) {
         double z[ZN];
         check_state(tab, &fl, z0, j, z);
-        point_at(sv, z, &p[j]);
+        rb_exact_point_at(sv, z, &p[j]);
         if (!point_finite(&p[j]))
             return 0;
         double tj = j == n ? t1 : t0 + dt_guard * j;
@@ -865,9 +859,9 @@ static int exact_step(rb_solver *sv, double target, double *g, rb_status *status
     /* taken: what advance and rb_track_interval do with a step that has no
      * event and no peak to locate */
     rb_aux a;
-    rb_track_span_series(sv, t0, sv->y, h, t1);
+    rb_track_span_exact(sv, t0, sv->y, h, t1, (int)(tab - sv->exact.tab), z0);
     for (int j = 1; j < n; j++) {
-        aux_of(sv, &p[j], &a);
+        rb_exact_aux_of(sv, &p[j], &a);
         rb_track_aux(sv, t0 + dt_track * j, p[j].y, &a);
     }
     if ((*status = history(sv, t0, sv->y, h, t1)) != RB_OK)
@@ -901,3 +895,4 @@ void rb_exact_system(const rb_solver *sv, double a[RB_EXACT_DIM][RB_EXACT_DIM])
 {
     system_matrix(sv, a);
 }
+

@@ -20,6 +20,20 @@
 
 #include "solver.h"
 
+/* The components of z. */
+enum { ZU, ZV, ZUB, ZVB, ZG, ZS, ZN = RB_EXACT_DIM };
+
+/* One point of an exact step (exact_point.c): the state, the floor, U''
+ * and the rate of the uplift moment M h x' - F* U''' (as
+ * rb_taylor_held_force_rate on the floor), from z at its instant; and what
+ * rb_dyn_rhs gives besides the derivatives there. The check points, the
+ * bounds' forms and the peaks located between points all read these. */
+typedef struct {
+    double y[RB_NY], x, udd, rate;
+} rb_exact_point;
+void rb_exact_point_at(const rb_solver *sv, const double *z, rb_exact_point *p);
+void rb_exact_aux_of(const rb_solver *sv, const rb_exact_point *p, rb_aux *a);
+
 /* Decide whether the run's floor stage steps exactly (a sampled motion, a
  * flexible frame, the Taylor steps in use) and keep what every step reads:
  * the building and the run's constants. */

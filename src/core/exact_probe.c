@@ -6,8 +6,6 @@
 #include "../motion/matexp.h"
 #include "exact.h"
 
-enum { ZN = RB_EXACT_DIM };
-
 int rb_exact_probe(const rb_model *model, const rb_motion *motion, const rb_solve_opts *opts,
                    double h, const double *z0, int K, double *bound,
                    double (*z_at)[RB_EXACT_DIM])

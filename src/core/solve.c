@@ -101,6 +101,7 @@ rb_status rb_solver_setup(rb_solver *sv, const rb_model *model, const rb_motion 
     memset(sv, 0, sizeof *sv);
     memset(out, 0, sizeof *out);
     sv->res = out;
+    rb_track_span_none(sv);
     if (opts)
         sv->opts = *opts;
     else

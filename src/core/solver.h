@@ -47,6 +47,11 @@ static inline int rb_guard_next(unsigned *m)
     return k;
 }
 
+/* the exact steps' state (exact.c) and the terms of their transition's
+ * series in the step's fraction kept for a one-panel table */
+#define RB_EXACT_DIM 6
+#define RB_EXACT_POLY 30
+
 /* The last three points of a tracked quantity, which bracket a peak
  * between them. */
 typedef struct {
@@ -64,12 +69,23 @@ typedef struct {
     int lazy;                   /* 1: to build, 2: built, -1: failed */
     double h, y0[RB_NY];
     rb_rk_step series;
+    /* an exact step on the floor (rb_track_span_exact): its table (an
+     * index into the run's tables, -1 for none), start state z0, and the
+     * polynomials in f = (t - t0) / (t1 - t0) of U, U', u_b, v_b and the
+     * total shear less its constant, formed from z0 on first use
+     * (exact_formed: bit i for polynomial i, bit 5 for the turns) */
+    int exact_tab, exact_formed;
+    double exact_z0[RB_EXACT_DIM];
+    double exact_poly[5][RB_EXACT_POLY];
+    /* the shear's turns last found, between turns_ta and turns_tb */
+    double turns_ta, turns_tb, turns[8];
+    int n_turns;
 } rb_span;
 
 /* The exact steps' transitions for one step length (exact.c): the rows
  * U, U', u_b, v_b of the transition to each check point, and the
  * Gramians of U'^2 and of the floor times U' over the whole step. */
-#define RB_EXACT_DIM 6
+
 #define RB_EXACT_TABLES 4
 /* the quantities bounded over a step: U, the total shear and the two
  * uplift guards (exact.c) */
@@ -93,6 +109,13 @@ typedef struct {
      * proved */
     int bounded;
     rb_pair bound[RB_EXACT_DIM][RB_EXACT_NQ / 2];
+    /* a table of one panel: the rows of U, U', u_b, v_b (0-3) and of the
+     * total shear less its constant (4) of E(f h) as polynomials in f,
+     * poly[k][i][j] the coefficient of f^k, nterm of them; nterm 0 where
+     * the table has several panels (exact.c, "Peaks on the step's own
+     * polynomial") */
+    int nterm;
+    double poly[RB_EXACT_POLY][5][RB_EXACT_DIM];
 } rb_exact_table;
 
 typedef struct {
@@ -275,6 +298,21 @@ void rb_track_quiet_points(rb_solver *sv, const double *t, const double *u, cons
 void rb_track_span(rb_solver *sv, const rb_rk_step *st, double t0, double t1);
 void rb_track_span_series(rb_solver *sv, double t0, const double *y0, double h, double t1);
 void rb_track_span_none(rb_solver *sv);
+/* The points tracked next lie on an exact step of table tab (an index into
+ * sv->exact.tab) from z0 over [t0, t1]: the state between them is the
+ * step's own polynomial where the table has one panel
+ * (rb_exact_span_state), else the Taylor series from (t0, y0) over h. */
+void rb_track_span_exact(rb_solver *sv, double t0, const double *y0, double h, double t1,
+                         int tab, const double *z0);
+/* exact.c: the state y (RB_NY) and what the equations give besides it at
+ * t on the span's exact step, from the step's polynomial; 0 where the span
+ * has none. */
+int rb_exact_span_state(rb_solver *sv, double t, double *y, rb_aux *a);
+/* exact.c: the instants in (ta, tb) where the total shear turns on the
+ * span's exact step (roots of its derivative, Newton on the step's
+ * polynomial kept inside a bracket), into at[], at most max of them;
+ * -1 where the span has no polynomial. */
+int rb_exact_span_shear_turns(rb_solver *sv, double ta, double tb, double *at, int max);
 /* An exact step's dense output: the Taylor series from (t0, y0) over h, to
  * RB_DENSE_TOL_FACTOR of the tolerances, not below RB_RTOL_MIN (the step
  * itself is exact to rounding; its peaks and history rows are read from

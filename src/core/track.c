@@ -38,6 +38,8 @@ static int span_state(rb_solver *sv, double t, double *y, rb_aux *a)
 {
     rb_span *sp = &sv->span;
     const rb_rk_step *st = sp->st;
+    if (!st && sp->exact_tab >= 0 && rb_exact_span_state(sv, t, y, a))
+        return 1;
     if (!st && sp->lazy == 1) {
         rb_rk_step *s = &sp->series;
         double h = rb_exact_dense(sv, sp->t0, sp->y0, sp->h, &s->ts);
@@ -68,6 +70,7 @@ static void set_span(rb_solver *sv, const rb_rk_step *st, double t0, double t1)
 {
     sv->span.st = st;
     sv->span.lazy = 0;
+    sv->span.exact_tab = -1;
     sv->span.t0 = t0;
     sv->span.t1 = t1;
 }
@@ -98,6 +101,15 @@ void rb_track_span_series(rb_solver *sv, double t0, const double *y0, double h, 
     sv->span.lazy = 1;
     sv->span.h = h;
     memcpy(sv->span.y0, y0, sizeof sv->span.y0);
+}
+
+void rb_track_span_exact(rb_solver *sv, double t0, const double *y0, double h, double t1,
+                         int tab, const double *z0)
+{
+    rb_track_span_series(sv, t0, y0, h, t1);
+    sv->span.exact_tab = tab;
+    sv->span.exact_formed = 0;
+    memcpy(sv->span.exact_z0, z0, sizeof sv->span.exact_z0);
 }
 
 void rb_track_span_none(rb_solver *sv)
@@ -268,6 +280,36 @@ static double edge_peak(const refine_ctx *c, double *ts, double *vs, double *at)
     return rb_max_brent(refine_at, c, ts + k - 1, vs + k - 1, 3, tol, at);
 }
 
+/* On an exact step of the floor (a one-panel table) the shear, the
+ * friction demand |H| / W and the anchors' interaction at no tension all
+ * peak where the total shear turns: the largest of the quantity at those
+ * turns (rb_exact_span_shear_turns, Newton on the step's own polynomial)
+ * and at the m points (t, v) given, and where it is; -HUGE_VAL where the
+ * span has no polynomial. */
+static double exact_turns_peak(const refine_ctx *c, const double *ts, const double *vs, int m,
+                               double *at)
+{
+    double tr[8];
+    int k = rb_exact_span_shear_turns(c->sv, ts[0], ts[m - 1], tr, 8);
+    if (k < 0)
+        return -HUGE_VAL;
+    double best = vs[0];
+    *at = ts[0];
+    for (int i = 1; i < m; i++)
+        if (vs[i] > best) {
+            best = vs[i];
+            *at = ts[i];
+        }
+    for (int i = 0; i < k; i++) {
+        double v = refine_at(c, tr[i]);
+        if (v > best) {
+            best = v;
+            *at = tr[i];
+        }
+    }
+    return best;
+}
+
 /* The largest value of quantity q between the first and the last of the
  * n points (t, v) on the span's dense output, and where it is; -HUGE_VAL
  * where there is none. A tenth of a per mille of the interval puts the
@@ -289,6 +331,11 @@ static double refine(rb_solver *sv, int q, const double *t, const double *v, int
     if (m < 2 || !(ts[m - 1] > ts[0]) || (!sp->st && sp->lazy <= 0))
         return -HUGE_VAL;
     refine_ctx c = {sv, q, 0};
+    if (q == Q_SHEAR || q == Q_FRICTION || q == Q_ANCHOR) {
+        double ve = exact_turns_peak(&c, ts, vs, m, at);
+        if (ve > -HUGE_VAL)
+            return ve;
+    }
     if (m == 2)
         return edge_peak(&c, ts, vs, at);
     return rb_max_brent(refine_at, &c, ts, vs, m, 3e-5 * (ts[m - 1] - ts[0]), at);
