@@ -70,4 +70,14 @@ int rb_exact_probe(const rb_model *model, const rb_motion *motion, const rb_solv
                    double h, const double *z0, int K, double *bound,
                    double (*z_at)[RB_EXACT_DIM]);
 
+/* For tests (test_exact_turns): the instants tau in (0, h) where the total
+ * shear turns on the step of length h from z0, as an exact step locates
+ * its peaks (rb_exact_span_shear_turns, up to 8), into tau_turn, and the
+ * state at each from the system's exponential (rb_matexp, not the
+ * step's polynomial) into z_turn; the count, -1 where the run takes no
+ * exact steps or the step's table keeps no polynomial. */
+int rb_exact_probe_turns(const rb_model *model, const rb_motion *motion,
+                         const rb_solve_opts *opts, double h, const double *z0,
+                         double *tau_turn, double (*z_turn)[RB_EXACT_DIM]);
+
 #endif
