@@ -7,6 +7,7 @@
 #include <string.h>
 #include "bolt.h"
 #include "minmax.h"
+#include "pair.h"
 #include "taylor.h"
 
 enum { NT = RB_TAYLOR_MAX + 2 };
@@ -55,169 +56,36 @@ static void load_consts(const rb_sys *S, consts *k)
     k->vert = S->motion->vertical != NULL;
 }
 
-/* The mirrored series: U, V = U', T = theta, the floor acceleration X
- * (polynomial of degree xd), Q = theta'^2, and cos theta, sin theta and
- * theta' side by side (CSO[k] = {C, S, O, 0}): the three convolutions with
- * theta' that each order needs are then one pass of independent lanes. */
-enum { LC, LS, LO, LANES };
+/* The mirrored series: U, T = theta, the floor acceleration X (polynomial
+ * of degree xd), Q = theta'^2, and per order one row of what the order's
+ * products read, so that every product of an order is a lane of one pass
+ * over j (rb_taylor_step's order loop). */
 typedef struct {
-    double U[NT], V[NT], T[NT], X[NT], Q[NT];
-    double CSO[NT][LANES + 1];
-    /* cos and sin of half the angle, for a row's lever arm l cos(theta/2)
-     * (stages 4 and 5 of the large formulation) */
-    double C2[NT], S2[NT];
+    double cs[2]; /* cos theta, sin theta */
+    double ov[2]; /* theta', U' */
+    double h[2];  /* cos and sin of half the angle (a row's lever) */
+    /* the coupling power per unit U' and the input power per unit floor
+     * acceleration (order k's formed late, from order k's sums) */
+    double fg[2];
+} orow;
+typedef struct {
+    double U[NT], T[NT], X[NT], Q[NT];
+    orow R[NT];
     int xd;
     /* under a vertical: z'' (Z) and the apparent gravity g + z'' (G), of
      * degree gd, zeros past it */
     double Z[NT], G[NT];
     int gd;
+    /* the vertical floor's power -z'' dH/dt (dynamics.c's vertical_power):
+     * dH/dt is M (b cos + h sin)' rocking (large), M R (alpha - theta)
+     * theta' (small), 0 with the plate still */
+    double DH[NT];
 } series;
 
-#define C_(s, k) ((s)->CSO[k][LC])
-#define S_(s, k) ((s)->CSO[k][LS])
-#define O_(s, k) ((s)->CSO[k][LO])
-
-/* sum_j a[j] X[k - j], a read with a stride of 'stride' doubles: X has
- * nothing past degree xd (1 for a record) */
-static inline double times_x(const double *a, int stride, const series *s, int k)
-{
-    if (s->xd <= 1)
-        return a[k * stride] * s->X[0] + (k > 0 ? a[(k - 1) * stride] * s->X[1] : 0);
-    double sum = 0;
-    for (int j = k > s->xd ? k - s->xd : 0; j <= k; j++)
-        sum += a[j * stride] * s->X[k - j];
-    return sum;
-}
-
-/* sum_j G[j] a[k - j], as times_x: the apparent gravity's product */
-static inline double times_g(const double *a, int stride, const series *s, int k)
-{
-    double sum = 0;
-    for (int j = k > s->gd ? k - s->gd : 0; j <= k; j++)
-        sum += a[j * stride] * s->G[k - j];
-    return sum;
-}
-
-/* times_x of cos and sin at once: the two sums in one pass, each in the
- * order times_x adds it, so that their additions overlap instead of each
- * waiting on the last (the floor through a building has a full series) */
-static inline void times_x_cs(const series *s, int k, double *xc, double *xs)
-{
-    if (s->xd <= 1) {
-        *xc = times_x(&s->CSO[0][LC], LANES + 1, s, k);
-        *xs = times_x(&s->CSO[0][LS], LANES + 1, s, k);
-        return;
-    }
-    double c = 0, sn = 0;
-    for (int j = k > s->xd ? k - s->xd : 0; j <= k; j++) {
-        c += s->CSO[j][LC] * s->X[k - j];
-        sn += s->CSO[j][LS] * s->X[k - j];
-    }
-    *xc = c;
-    *xs = sn;
-}
-
-/* Order k of the right-hand side while rocking, the bolt's moment at that
- * order being m_bolt (0 in stage 2), after
- * theta'^2 at order k and cos, sin at order k + 1, which need theta' only up
- * to order k: one pass over theta' gives all three. The floor's products
- * with cos and sin (and the vertical's, under one) are sums over the same
- * j in the same pass, each in the order times_x and times_g add it, so
- * that no number moves. gs is the vertical's G sin (G theta when small),
- * which the coupling work reads too. */
-static void rocking_order(const consts *K, series *s, int k, double m_bolt, double *udd,
-                          double *thdd, double *gs)
-{
-    /* two sets of accumulators halve the chain of dependent additions */
-    double a0[LANES + 1] = {0}, a1[LANES + 1] = {0};
-    /* the floor's and the vertical's products with cos and sin, where
-     * their series reach order k (times_x_cs and times_g then start at 0) */
-    int fuse_x = !K->small && s->xd > 1 && k <= s->xd;
-    int fuse_g = K->vert && !K->small && k <= s->gd;
-    double xc = 0, xs = 0, gc = 0, gsn = 0;
-    int j = 0;
-    for (; j + 1 <= k; j += 2) {
-        double o0 = O_(s, j), o1 = O_(s, j + 1);
-        const double *p0 = s->CSO[k - j], *p1 = s->CSO[k - j - 1];
-        for (int i = 0; i <= LANES; i++) {
-            a0[i] += o0 * p0[i];
-            a1[i] += o1 * p1[i];
-        }
-        if (fuse_x) {
-            xc += s->CSO[j][LC] * s->X[k - j];
-            xs += s->CSO[j][LS] * s->X[k - j];
-            xc += s->CSO[j + 1][LC] * s->X[k - j - 1];
-            xs += s->CSO[j + 1][LS] * s->X[k - j - 1];
-        }
-        if (fuse_g) {
-            gsn += s->CSO[j][LS] * s->G[k - j];
-            gc += s->CSO[j][LC] * s->G[k - j];
-            gsn += s->CSO[j + 1][LS] * s->G[k - j - 1];
-            gc += s->CSO[j + 1][LC] * s->G[k - j - 1];
-        }
-    }
-    if (j == k) {
-        for (int i = 0; i <= LANES; i++)
-            a0[i] += O_(s, k) * s->CSO[0][i];
-        if (fuse_x) {
-            xc += s->CSO[k][LC] * s->X[0];
-            xs += s->CSO[k][LS] * s->X[0];
-        }
-        if (fuse_g) {
-            gsn += s->CSO[k][LS] * s->G[0];
-            gc += s->CSO[k][LC] * s->G[0];
-        }
-    }
-    s->Q[k] = a0[LO] + a1[LO];
-    S_(s, k + 1) = (a0[LC] + a1[LC]) * inv[k + 1];
-    C_(s, k + 1) = -(a0[LS] + a1[LS]) * inv[k + 1];
-    double RU, Rth;
-    *gs = 0;
-    if (K->vert) {
-        /* W = M G: every gravity term a product with G's series */
-        double XC, XS, GS, GC;
-        if (K->small) {
-            XC = s->X[k];
-            XS = 0;
-            GS = times_g(s->T, 1, s, k);
-            GC = GS - K->alpha * s->G[k]; /* G (T - alpha) */
-        } else {
-            if (fuse_x) {
-                XC = xc;
-                XS = xs;
-            } else
-                times_x_cs(s, k, &XC, &XS);
-            GS = fuse_g ? gsn : times_g(&s->CSO[0][LS], LANES + 1, s, k);
-            GC = fuse_g ? gc : times_g(&s->CSO[0][LC], LANES + 1, s, k);
-        }
-        *gs = GS;
-        RU = K->Ns * (XC + GS) - K->Ks * s->U[k] - K->Cs * s->V[k] - K->Ns * K->b * s->Q[k];
-        Rth = K->small ? K->M * K->R * (XC + GC)
-                       : K->M * (K->h * XC + K->b * XS) - K->M * (K->b * GC - K->h * GS);
-    } else if (K->small) {
-        RU = K->Ns * (s->X[k] + K->g * s->T[k]) - K->Ks * s->U[k] - K->Cs * s->V[k]
-             - K->Ns * K->b * s->Q[k];
-        Rth = K->M * K->R * s->X[k] + K->W * K->R * (s->T[k] - (k == 0 ? K->alpha : 0));
-    } else {
-        double XC, XS;
-        if (fuse_x) {
-            XC = xc;
-            XS = xs;
-        } else
-            times_x_cs(s, k, &XC, &XS);
-        RU = K->Ns * (XC + K->g * S_(s, k)) - K->Ks * s->U[k] - K->Cs * s->V[k]
-             - K->Ns * K->b * s->Q[k];
-        Rth = K->M * (K->h * XC + K->b * XS) - K->W * (K->b * C_(s, k) - K->h * S_(s, k));
-    }
-    Rth -= m_bolt;
-    if (K->rigid) {
-        *udd = 0;
-        *thdd = Rth * K->inv_Io;
-    } else {
-        *udd = (K->Io * RU - K->Fs * Rth) * K->inv_det;
-        *thdd = (K->Ms * Rth - K->Fs * RU) * K->inv_det;
-    }
-}
+#define C_(s, k) ((s)->R[k].cs[0])
+#define S_(s, k) ((s)->R[k].cs[1])
+#define O_(s, k) ((s)->R[k].ov[0])
+#define V_(s, k) ((s)->R[k].ov[1])
 
 /* What a row holds the plate with, for the order-k moment about the pivot. */
 typedef struct {
@@ -228,9 +96,8 @@ enum { BOLT_SLACK, BOLT_SPRING, BOLT_YIELD };
 
 /* Order k of the bolt's moment: the tension times the lever l cos(theta/2)
  * (l when small). A spring's k (2 l sin(theta/2) - gap) l cos(theta/2) is
- * k l (l sin theta - gap cos(theta/2)). cos and sin of the half angle at
- * order k + 1 are formed here, from theta' up to order k. */
-static double bolt_order(const consts *K, const bolt_law *B, series *s, int k)
+ * k l (l sin theta - gap cos(theta/2)). */
+static double bolt_moment(const consts *K, const bolt_law *B, const series *s, int k)
 {
     if (B->kind == BOLT_SLACK)
         return 0;
@@ -239,16 +106,9 @@ static double bolt_order(const consts *K, const bolt_law *B, series *s, int k)
             return k == 0 ? B->fy * B->l : 0;
         return B->k_row * B->l * (B->l * s->T[k] - (k == 0 ? B->gap : 0));
     }
-    double ac = 0, as = 0;
-    for (int j = 0; j <= k; j++) {
-        ac += O_(s, j) * s->C2[k - j];
-        as += O_(s, j) * s->S2[k - j];
-    }
-    s->S2[k + 1] = 0.5 * ac * inv[k + 1];
-    s->C2[k + 1] = -0.5 * as * inv[k + 1];
     if (B->kind == BOLT_YIELD)
-        return B->fy * B->l * s->C2[k];
-    return B->k_row * B->l * (B->l * S_(s, k) - B->gap * s->C2[k]);
+        return B->fy * B->l * s->R[k].h[0];
+    return B->k_row * B->l * (B->l * S_(s, k) - B->gap * s->R[k].h[0]);
 }
 
 static void bolt_law_of(const rb_sys *S, const rb_disc *D, double th0, bolt_law *B,
@@ -261,116 +121,172 @@ static void bolt_law_of(const rb_sys *S, const rb_disc *D, double th0, bolt_law 
     B->fy = S->d.fy_row_n;
     B->k_row = B->kind == BOLT_SPRING ? S->bolt->spring_npm(S) : 0;
     B->gap = D->gap[rb_row_of_side(D->side)];
-    if (B->kind != BOLT_SLACK) {
-        s->C2[0] = cos(0.5 * th0);
-        s->S2[0] = sin(0.5 * th0);
-    }
+    s->R[0].h[0] = B->kind != BOLT_SLACK ? cos(0.5 * th0) : 1;
+    s->R[0].h[1] = B->kind != BOLT_SLACK ? sin(0.5 * th0) : 0;
 }
 
-/* Order k of U'' with the plate still at an angle whose cos and sin are
- * C[0], S[0] (stages 1 and 4). */
-static double still_order(const consts *K, const series *s, int k)
-{
-    if (K->rigid)
-        return 0;
-    if (K->vert) {
-        double QU = K->Ns * (K->small ? s->X[k] + s->G[k] * s->T[0]
-                                      : s->X[k] * C_(s, 0) + s->G[k] * S_(s, 0));
-        return (QU - K->Ks * s->U[k] - K->Cs * s->V[k]) * K->inv_Ms;
-    }
-    double QU = K->small ? K->Ns * (s->X[k] + (k == 0 ? K->g * s->T[0] : 0))
-                         : K->Ns * (s->X[k] * C_(s, 0) + (k == 0 ? K->g * S_(s, 0) : 0));
-    return (QU - K->Ks * s->U[k] - K->Cs * s->V[k]) * K->inv_Ms;
-}
-
-/* The work integrals' series, one order at a time: these do not feed back
- * into the motion, so order k + 1 is formed as soon as the motion's order
- * k is (inside the order loop, one pass per order). w[k][0..2] = damping,
- * input, coupling. */
-enum { WV, WC, WF, WL };
+/* The sums of order k, each sum_j a[j] b[k - j] over one pass of j. The
+ * lanes of order k that are formed from this order's own sums (fg: the
+ * coupling factor and the input power) are still 0 in row k, and their
+ * j = 0 terms are added by the caller. */
 typedef struct {
-    /* U' side by side with what it multiplies: itself (damping), cos theta
-     * (input) and the coupling factor N* (g sin - b theta'^2) per unit U',
-     * so one pass of independent lanes forms the three products */
-    double P[NT][WL + 1], G[NT];
-    /* the vertical floor's power -z'' dH/dt (dynamics.c's vertical_power):
-     * dH/dt is M (b cos + h sin)' rocking (large), M R (alpha - theta)
-     * theta' (small), 0 with the plate still */
-    double DH[NT];
-} work_rows;
+    double oc, os;     /* theta' cos, theta' sin: sin' and -cos' */
+    double oo, vv;     /* theta'^2, U'^2 (damping power) */
+    double xc, xs;     /* the floor's products with cos, sin */
+    double vc;         /* U' cos (input power) */
+    double vf, xg;     /* U' times the coupling factor, the floor times GI */
+    double gc, gs;     /* the apparent gravity's products with cos, sin */
+    double hc, hs;     /* theta' cos, sin of the half angle */
+} order_sums;
 
-static void work_order(const consts *K, const series *s, int rocking, int k, double gs,
-                       work_rows *r, double (*w)[3])
+/* The row's neighbours are pairs (pair.h): the pass is seven packed
+ * products a j instead of a dozen scalar ones. */
+static inline void fused_pass(const series *s, int k, int half, int vert, order_sums *p)
 {
-    double *P = r->P[k];
-    P[WV] = s->V[k];
-    P[WC] = C_(s, k);
-    if (K->vert) /* the still stages' angle is constant, G is not; rocking,
-                  * the product is rocking_order's */
-        P[WF] = K->Ns * ((rocking ? gs
-                          : K->small ? times_g(s->T, 1, s, k)
-                                     : times_g(&s->CSO[0][LS], LANES + 1, s, k))
-                         - (rocking ? K->b * s->Q[k] : 0));
+    rb_pair ocs = rb_pair_splat(0), xcs = ocs, vcs = ocs, oov = ocs, fg = ocs, gcs = ocs,
+            h2 = ocs;
+    for (int j = 0; j <= k; j++) {
+        const orow *a = &s->R[j], *b = &s->R[k - j];
+        double x = s->X[j];
+        rb_pair cs = rb_pair_load(b->cs);
+        ocs = rb_pair_madd(ocs, rb_pair_splat(a->ov[0]), cs);
+        xcs = rb_pair_madd(xcs, rb_pair_splat(x), cs);
+        vcs = rb_pair_madd(vcs, rb_pair_splat(a->ov[1]), cs);
+        oov = rb_pair_madd(oov, rb_pair_load(a->ov), rb_pair_load(b->ov));
+        fg = rb_pair_madd(fg, rb_pair_make(a->ov[1], x), rb_pair_load(b->fg));
+        if (vert)
+            gcs = rb_pair_madd(gcs, rb_pair_splat(s->G[j]), cs);
+        if (half)
+            h2 = rb_pair_madd(h2, rb_pair_splat(a->ov[0]), rb_pair_load(b->h));
+    }
+    *p = (order_sums){rb_pair_lane(ocs, 0), rb_pair_lane(ocs, 1), rb_pair_lane(oov, 0),
+                      rb_pair_lane(oov, 1), rb_pair_lane(xcs, 0), rb_pair_lane(xcs, 1),
+                      rb_pair_lane(vcs, 0), rb_pair_lane(fg, 0), rb_pair_lane(fg, 1),
+                      rb_pair_lane(gcs, 0), rb_pair_lane(gcs, 1), rb_pair_lane(h2, 0),
+                      rb_pair_lane(h2, 1)};
+}
+
+/* fused_pass with the plate still (stage 1, stage 4 against a rigid row):
+ * theta' is 0 and cos and sin are constants, so only U''s and the floor's
+ * products with the work rows are sums; the others are single terms,
+ * the values fused_pass adds up (its other terms are exact zeros). */
+static inline void still_pass(const series *s, int k, int vert, order_sums *p)
+{
+    double vv = 0;
+    rb_pair fg = rb_pair_splat(0);
+    for (int j = 0; j <= k; j++) {
+        const orow *a = &s->R[j], *b = &s->R[k - j];
+        vv += a->ov[1] * b->ov[1];
+        fg = rb_pair_madd(fg, rb_pair_make(a->ov[1], s->X[j]), rb_pair_load(b->fg));
+    }
+    double c = C_(s, 0), sn = S_(s, 0), x = s->X[k], g = vert ? s->G[k] : 0;
+    *p = (order_sums){0, 0, 0, vv, x * c, x * sn, V_(s, k) * c, rb_pair_lane(fg, 0),
+                      rb_pair_lane(fg, 1), g * c, g * sn, 0, 0};
+}
+
+/* Order k of the motion and of the work integrals (damping, input,
+ * coupling: w[k + 1]); they read the motion only up to order k and do not
+ * feed back. The cos and sin of theta (and of its half) at order k + 1
+ * come from s' = c theta', c' = -s theta' with theta' up to order k. With
+ * the plate still (stages 1 and 4) theta' is 0, so the same sums hold
+ * with only U'' left to the equation of motion. */
+static void series_order(const consts *K, const bolt_law *B, int rocking, series *s, int k,
+                         double (*w)[3])
+{
+    int half = rocking && !K->small && B->kind != BOLT_SLACK;
+    order_sums p;
+    if (!rocking)
+        still_pass(s, k, K->vert, &p);
+    else if (K->vert)
+        fused_pass(s, k, half, 1, &p);
+    else if (half)
+        fused_pass(s, k, 1, 0, &p);
     else
-        P[WF] = K->Ns * (K->g * (K->small ? s->T[k] : S_(s, k))
-                         - (rocking ? K->b * s->Q[k] : 0));
-    P[WL] = 0;
-    if (K->vert && rocking) {
-        if (K->small) {
+        fused_pass(s, k, 0, 0, &p);
+    double ik = inv[k + 1];
+    orow *r = &s->R[k], *n = &s->R[k + 1];
+    s->Q[k] = p.oo;
+    n->cs[1] = p.oc * ik;
+    n->cs[0] = -p.os * ik;
+    if (half) {
+        n->h[1] = 0.5 * p.hc * ik;
+        n->h[0] = -0.5 * p.hs * ik;
+    }
+    /* the floor's and gravity's terms: X cos and X sin, G sin and G cos (G
+     * theta and G (theta - alpha) when small) */
+    double XC, XS, GS, GC;
+    if (K->small) {
+        XC = s->X[k];
+        XS = 0;
+        if (K->vert) {
+            double tg = 0;
+            for (int j = 0; j <= k; j++)
+                tg += s->T[j] * s->G[k - j];
+            GS = tg;
+            GC = GS - K->alpha * s->G[k];
+        } else {
+            GS = K->g * s->T[k];
+            GC = 0; /* the moment's gravity term is W R (theta - alpha) */
+        }
+    } else {
+        XC = p.xc;
+        XS = p.xs;
+        GS = K->vert ? p.gs : K->g * S_(s, k);
+        GC = p.gc; /* read under a vertical only */
+    }
+    double RU = K->Ns * (XC + GS) - K->Ks * s->U[k] - K->Cs * r->ov[1] - K->Ns * K->b * p.oo;
+    double udd, thdd = 0;
+    if (rocking) {
+        double Rth;
+        if (K->vert) /* W = M G: every gravity term a product with G's series */
+            Rth = K->small ? K->M * K->R * (XC + GC)
+                           : K->M * (K->h * XC + K->b * XS) - K->M * (K->b * GC - K->h * GS);
+        else if (K->small)
+            Rth = K->M * K->R * XC + K->W * K->R * (s->T[k] - (k == 0 ? K->alpha : 0));
+        else
+            Rth = K->M * (K->h * XC + K->b * XS) - K->W * (K->b * C_(s, k) - K->h * S_(s, k));
+        Rth -= bolt_moment(K, B, s, k);
+        if (K->rigid) {
+            udd = 0;
+            thdd = Rth * K->inv_Io;
+        } else {
+            udd = (K->Io * RU - K->Fs * Rth) * K->inv_det;
+            thdd = (K->Ms * Rth - K->Fs * RU) * K->inv_det;
+        }
+    } else
+        udd = K->rigid ? 0 : RU * K->inv_Ms;
+    s->U[k + 1] = r->ov[1] * ik;
+    n->ov[1] = udd * ik;
+    s->T[k + 1] = r->ov[0] * ik;
+    n->ov[0] = thdd * ik;
+    n->fg[0] = n->fg[1] = 0;
+
+    /* the work integrals: the coupling factor N* (G sin - b theta'^2) and
+     * the input power per unit floor acceleration, N* cos U' + M (h cos +
+     * b sin) theta' (the second the derivative of M (h sin - b cos)), at
+     * order k, then their j = 0 terms */
+    r->fg[0] = K->Ns * (GS - K->b * p.oo);
+    r->fg[1] = K->small ? K->Ns * r->ov[1] + K->M * K->R * r->ov[0]
+                     : K->Ns * p.vc + K->M * (k + 1) * (K->h * n->cs[1] - K->b * n->cs[0]);
+    double vf = p.vf + V_(s, 0) * r->fg[0], xg = p.xg + s->X[0] * r->fg[1];
+    w[k + 1][0] = K->Cs * p.vv * ik;
+    w[k + 1][2] = vf * ik;
+    if (K->vert) {
+        if (!rocking)
+            s->DH[k] = 0;
+        else if (K->small) {
             double to = 0;
             for (int j = 0; j <= k; j++)
                 to += s->T[j] * O_(s, k - j);
-            r->DH[k] = K->M * K->R * (K->alpha * O_(s, k) - to);
+            s->DH[k] = K->M * K->R * (K->alpha * r->ov[0] - to);
         } else
-            r->DH[k] = K->M * (k + 1) * (K->b * S_(s, k + 1) + K->h * C_(s, k + 1));
-    } else
-        r->DH[k] = 0;
-    double acc[WL + 1] = {0};
-    /* the input power's product with the floor, where its series reaches
-     * order k: its terms up to k - 1 in the same pass, in times_x's order,
-     * the last once G[k] is formed */
-    int fuse_x = rocking && s->xd > 1 && k <= s->xd;
-    double gx = 0;
-    if (rocking) {
-        for (int j = 0; j <= k; j++) {
-            for (int i = 0; i <= WL; i++)
-                acc[i] += s->V[j] * r->P[k - j][i];
-            if (fuse_x && j < k)
-                gx += r->G[j] * s->X[k - j];
-        }
-    } else {
-        /* the still stages' angle and its factors are constants */
-        double vv = 0;
-        for (int j = 0; j <= k; j++)
-            vv += s->V[j] * s->V[k - j];
-        acc[WV] = vv;
-        acc[WC] = s->V[k] * r->P[0][WC];
-        if (K->vert) {
-            double f = 0;
-            for (int j = 0; j <= k; j++)
-                f += s->V[j] * r->P[k - j][WF];
-            acc[WF] = f;
-        } else
-            acc[WF] = s->V[k] * r->P[0][WF];
-    }
-    /* input power per unit floor acceleration: N* cos U' + M (h cos +
-     * b sin) theta'; the second is the derivative of M (h sin - b cos) */
-    if (K->small)
-        r->G[k] = K->Ns * s->V[k] + (rocking ? K->M * K->R * O_(s, k) : 0);
-    else
-        r->G[k] = K->Ns * acc[WC]
-                  + (rocking ? K->M * (k + 1) * (K->h * S_(s, k + 1) - K->b * C_(s, k + 1))
-                             : 0);
-    w[k + 1][0] = K->Cs * acc[WV] * inv[k + 1];
-    double win = fuse_x ? gx + r->G[k] * s->X[0] : times_x(r->G, 1, s, k);
-    if (K->vert) {
+            s->DH[k] = K->M * (k + 1) * (K->b * n->cs[1] + K->h * n->cs[0]);
         double pv = 0;
         for (int j = 0; j <= k; j++)
-            pv += s->Z[j] * r->DH[k - j];
-        w[k + 1][1] = (win - pv) * inv[k + 1];
-    } else
-        w[k + 1][1] = win * inv[k + 1];
-    w[k + 1][2] = acc[WF] * inv[k + 1];
+            pv += s->Z[j] * s->DH[k - j];
+        xg -= pv;
+    }
+    w[k + 1][1] = xg * ik;
 }
 
 /* Largest scaled size of the order-k coefficients over a step of hk = h^k.
@@ -378,7 +294,7 @@ static void work_order(const consts *K, const series *s, int rocking, int k, dou
  * 0 * sum keeps a NaN or an infinity, so a non-finite series is caught. */
 static double scaled(const series *s, int k, double hk, const double *tol, double tol_x)
 {
-    double a = fabs(s->U[k]) * tol[RB_Y_U], b = fabs(s->V[k]) * tol[RB_Y_UD];
+    double a = fabs(s->U[k]) * tol[RB_Y_U], b = fabs(V_(s, k)) * tol[RB_Y_UD];
     double c = fabs(s->T[k]) * tol[RB_Y_TH], d = fabs(O_(s, k)) * tol[RB_Y_THD];
     double x = fabs(s->X[k]) * tol_x;
     double ab = a > b ? a : b, cd = c > d ? c : d, abcd = ab > cd ? ab : cd;
@@ -435,12 +351,12 @@ double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double
     if (K.vert)
         gravity_series(S->motion->vertical, K.g, t0, &s);
     s.U[0] = sgn * y0[RB_Y_U];
-    s.V[0] = sgn * y0[RB_Y_UD];
+    V_(&s, 0) = sgn * y0[RB_Y_UD];
     s.T[0] = rocking ? sgn * y0[RB_Y_TH] : D->stage == RB_STAGE_HELD ? D->theta_hold : 0;
     O_(&s, 0) = rocking ? sgn * y0[RB_Y_THD] : 0;
     C_(&s, 0) = s.T[0] == 0 ? 1 : cos(s.T[0]);
     S_(&s, 0) = s.T[0] == 0 ? 0 : sin(s.T[0]);
-    s.CSO[0][LANES] = 0;
+    s.R[0].fg[0] = s.R[0].fg[1] = 0;
     bolt_law_of(S, D, s.T[0], &B, &s);
     /* reciprocals: the test runs once per order */
     for (int i = RB_Y_U; i <= RB_Y_THD; i++)
@@ -453,25 +369,12 @@ double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double
 
     double h = h_want, hk = 1, e_prev = HUGE_VAL;
     double w[NT][3];
-    work_rows wr;
     int n = 0;
     for (int k = 0;; k++) {
-        double udd, thdd = 0, gs = 0;
         /* order k reads the floor to order k, and the step's end to n */
         if (k + 1 > xn)
             xn = floor_series(S->motion, t0, sgn, RB_TAYLOR_MAX + 1, &s);
-        if (rocking)
-            rocking_order(&K, &s, k, bolt_order(&K, &B, &s, k), &udd, &thdd, &gs);
-        else {
-            udd = still_order(&K, &s, k);
-            C_(&s, k + 1) = S_(&s, k + 1) = s.Q[k] = 0;
-        }
-        s.U[k + 1] = s.V[k] * inv[k + 1];
-        s.V[k + 1] = udd * inv[k + 1];
-        s.T[k + 1] = rocking ? O_(&s, k) * inv[k + 1] : 0;
-        O_(&s, k + 1) = thdd * inv[k + 1];
-        s.CSO[k + 1][LANES] = 0;
-        work_order(&K, &s, rocking, k, gs, &wr, w);
+        series_order(&K, &B, rocking, &s, k, w);
         n = k + 1;
         hk *= h;
         double e = scaled(&s, n, hk, tol, tol_x);
@@ -498,9 +401,9 @@ double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double
     for (int k = 0; k <= n; k++) {
         double *p = ts->p[k];
         p[RB_TS_U] = sgn * s.U[k];
-        p[RB_TS_UD] = sgn * s.V[k];
+        p[RB_TS_UD] = sgn * V_(&s, k);
         p[RB_TS_X] = sgn * s.X[k];
-        p[RB_TS_UDD] = k < n ? sgn * (k + 1) * s.V[k + 1] : 0;
+        p[RB_TS_UDD] = k < n ? sgn * (k + 1) * V_(&s, k + 1) : 0;
         p[RB_TS_WDAMP] = w[k][0];
         p[RB_TS_WIN] = w[k][1];
         p[RB_TS_WCPL] = w[k][2];

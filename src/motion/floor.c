@@ -30,7 +30,10 @@ static void segment_at(const rb_series *s, size_t i, segment *g)
     double w = b->omega_rps, w2 = w * w;
     g->w = w;
     g->xi = b->xi;
-    g->wd = w * sqrt(fmax(0.0, 1.0 - b->xi * b->xi));
+    /* fmax(0, q) inline (it is called out of libm, once per step); a NaN
+     * gives 0 as fmax does */
+    double q = 1.0 - b->xi * b->xi;
+    g->wd = w * sqrt(q > 0 ? q : 0.0);
     g->g0 = b->ground_mps2[i];
     g->slope = (b->ground_mps2[i + 1] - b->ground_mps2[i]) / s->dt_s;
     g->uh = b->u_m[i] + g->g0 / w2 - 2.0 * b->xi * g->slope / (w2 * w);
