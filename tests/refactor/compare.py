@@ -10,7 +10,8 @@ Run from the source root. Prints each case whose exit code or verdict
 differs (and exits 1 if any does), then the largest relative change of
 every report key over all cases, largest first, with the case it is
 from. Relative changes are |new - old| / max(|old|, |new|, 1e-300)."""
-import json, os, subprocess, sys
+import os, sys
+from report_json import check_report, flat
 
 old_rb, new_rb, scratch = (os.path.abspath(a) for a in sys.argv[1:4])
 cases = sys.argv[4:]
@@ -25,28 +26,7 @@ os.makedirs(scratch, exist_ok=True)
 
 
 def run(rb, case, tag):
-    out = os.path.join(scratch, tag + ".json")
-    if os.path.exists(out):
-        os.remove(out)
-    try:
-        r = subprocess.run([rb, "check", case, "--json", out, "--quiet"],
-                           capture_output=True, timeout=60)
-        rc = r.returncode
-    except subprocess.TimeoutExpired:
-        rc = "timeout"
-    rep = json.load(open(out)) if os.path.exists(out) else None
-    return rc, rep
-
-
-def flat(o, p=""):
-    if isinstance(o, dict):
-        for k, v in o.items():
-            yield from flat(v, f"{p}.{k}" if p else k)
-    elif isinstance(o, list):
-        for i, v in enumerate(o):
-            yield from flat(v, f"{p}[{i}]")
-    else:
-        yield p, o
+    return check_report(rb, case, os.path.join(scratch, tag + ".json"), 60)
 
 
 def generic(key):

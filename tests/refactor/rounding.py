@@ -15,7 +15,8 @@ scatter. Exit codes and verdicts of the two builds are printed beside.
 Relative changes are |b - a| / max(|a|, |b|, 1e-300), over every numeric
 key of the JSON report but the solver's settings and step counts (which
 say how the run was made, not what it found)."""
-import json, os, subprocess, sys
+import os, sys
+from report_json import check_report, flat
 
 old_rb, new_rb, scratch = (os.path.abspath(a) for a in sys.argv[1:4])
 cases = sys.argv[4:]
@@ -23,26 +24,7 @@ os.makedirs(scratch, exist_ok=True)
 
 
 def run(rb, case, tag):
-    out = os.path.join(scratch, tag + ".json")
-    if os.path.exists(out):
-        os.remove(out)
-    try:
-        rc = subprocess.run([rb, "check", case, "--json", out, "--quiet"],
-                            capture_output=True, timeout=300).returncode
-    except subprocess.TimeoutExpired:
-        rc = "timeout"
-    return rc, (json.load(open(out)) if os.path.exists(out) else None)
-
-
-def flat(o, p=""):
-    if isinstance(o, dict):
-        for k, v in o.items():
-            yield from flat(v, f"{p}.{k}" if p else k)
-    elif isinstance(o, list):
-        for i, v in enumerate(o):
-            yield from flat(v, f"{p}[{i}]")
-    else:
-        yield p, o
+    return check_report(rb, case, os.path.join(scratch, tag + ".json"), 300)
 
 
 def numbers(rep):
