@@ -16,17 +16,9 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include "harness.h"
-#include "rockbolt/record.h"
-#include "rockbolt/solve.h"
-#include "../../src/core/exact.h"
+#include "floor_step_draw.h"
 
 static unsigned long long rng_state = 20261127;
-static double uniform(double lo, double hi)
-{
-    rng_state = rng_state * 6364136223846793005ULL + 1442695040888963407ULL;
-    return lo + (hi - lo) * (double)(rng_state >> 11) / 9007199254740992.0;
-}
 
 enum { K = 4000, CASES = 400 };
 
@@ -51,62 +43,31 @@ int main(void)
     int n_ratio = 0, probed = 0;
     double worst = 0;
     for (int c = 0; c < CASES; c++) {
-        rb_series s = {0};
-        rb_model m;
-        rb_derived d;
-        rb_motion mo;
-        rb_solve_opts o;
-        double wb = 0, xib = 0;
-        if (rb_series_alloc(&s, raw.n, raw.dt_s) != RB_OK) {
+        floor_draw f;
+        if (!floor_draw_case(c, &raw, &rng_state, &f)) {
             CHECK(0);
             break;
         }
-        for (size_t i = 0; i < raw.n; i++)
-            s.accel_mps2[i] = raw.accel_mps2[i];
-        if (c % 4) {
-            double f = exp(uniform(log(0.5), log(60)));
-            xib = c % 8 == 1 ? 0 : uniform(0, 0.5);
-            wb = 2 * M_PI * f;
-            CHECK(rb_series_building_filter(&s, f, xib) == RB_OK);
-        }
-        rb_model_reference(&m);
-        m.mass_kg = uniform(50, 5000);
-        m.freq_hz = exp(uniform(log(0.5), log(50)));
-        m.damping = uniform(0, 0.5);
-        CHECK(rb_model_derive(&m, &d, NULL) == RB_OK);
-        rb_motion_init(&mo);
-        mo.kind = RB_MOTION_SAMPLED;
-        mo.series = &s;
-        mo.scale = 1;
-        mo.duration_s = 10;
-        rb_solve_opts_init(&o);
-        o.formulation = c % 3 == 2 ? RB_FORM_SMALL : RB_FORM_LARGE;
-        double h = exp(uniform(log(5e-4), log(0.04)));
-        /* each component of the start state over a wide range, some of
-         * them zero (a building at rest, a line with no slope) */
-        double z0[RB_EXACT_DIM] = {
-            uniform(-1, 1) * 1e-3, uniform(-1, 1) * 5e-2, uniform(-1, 1) * 5e-2,
-            uniform(-1, 1), uniform(-1, 1) * 8, uniform(-1, 1) * 400};
-        for (int j = 0; j < RB_EXACT_DIM; j++)
-            if (uniform(0, 1) < 0.15)
-                z0[j] = 0;
+        double h = exp(draw_uniform(&rng_state, log(5e-4), log(0.04)));
+        double z0[RB_EXACT_DIM];
+        floor_draw_state(&rng_state, z0);
         double bound[4];
-        if (!rb_exact_probe(&m, &mo, &o, h, z0, K, bound, z_at)) {
-            rb_series_free(&s);
+        if (!rb_exact_probe(&f.m, &f.mo, &f.o, h, z0, K, bound, z_at)) {
+            rb_series_free(&f.s);
             continue;
         }
         probed++;
-        int small = o.formulation == RB_FORM_SMALL;
+        int small = f.o.formulation == RB_FORM_SMALL;
         /* the uplift moment's floor lever at theta = 0 (the weight's
          * moment, W b or W R alpha, is the part the bound leaves out) */
-        double lever = small ? m.mass_kg * d.R : m.mass_kg * m.cm_height_m;
+        double lever = small ? f.m.mass_kg * f.d.R : f.m.mass_kg * f.m.cm_height_m;
         double most[4] = {0};
         for (int k = 0; k <= K; k++) {
             const double *z = z_at[k];
-            double x = wb > 0 ? -(2 * xib * wb * z[3] + wb * wb * z[2]) : z[4];
-            double udd = (d.Nstar * x - d.Kstar * z[0] - d.Cstar * z[1]) / d.Mstar;
-            double q[4] = {z[0], -m.mass_kg * x + d.Nstar * udd,
-                           lever * x - d.Fstar * udd, -lever * x + d.Fstar * udd};
+            double x, udd;
+            floor_draw_accels(&f, z, &x, &udd);
+            double q[4] = {z[0], -f.m.mass_kg * x + f.d.Nstar * udd,
+                           lever * x - f.d.Fstar * udd, -lever * x + f.d.Fstar * udd};
             for (int i = 0; i < 4; i++) {
                 most[i] = fmax(most[i], fabs(q[i]));
                 /* relative to the bound, beyond the state's rounding */
@@ -125,7 +86,7 @@ int main(void)
         for (int i = 0; i < 4; i++)
             ratio[n_ratio][i] = most[i] > 0 ? bound[i] / most[i] : 1;
         n_ratio++;
-        rb_series_free(&s);
+        rb_series_free(&f.s);
     }
     rb_series_free(&raw);
     printf("%d of %d random steps bounded; the largest ratio of a quantity to its bound: "
