@@ -4,10 +4,10 @@
  * edge), with the same equations as rb_dyn_rhs, and the series are stored
  * in the physical frame, so that the mirror of a run is exact. */
 #include <math.h>
-#include <string.h>
 #include "bolt.h"
 #include "minmax.h"
 #include "pair.h"
+#include "simd.h"
 #include "taylor.h"
 
 enum { NT = RB_TAYLOR_MAX + 2 };
@@ -42,7 +42,7 @@ typedef struct {
     int vert; /* a vertical floor acceleration: gravity is the series G */
 } consts;
 
-static void load_consts(const rb_sys *S, consts *k)
+RB_INLINE void load_consts(const rb_sys *S, consts *k)
 {
     const rb_derived *d = &S->d;
     k->Ns = d->Nstar; k->Ks = d->Kstar; k->Cs = d->Cstar; k->Ms = d->Mstar;
@@ -97,7 +97,7 @@ enum { BOLT_SLACK, BOLT_SPRING, BOLT_YIELD };
 /* Order k of the bolt's moment: the tension times the lever l cos(theta/2)
  * (l when small). A spring's k (2 l sin(theta/2) - gap) l cos(theta/2) is
  * k l (l sin theta - gap cos(theta/2)). */
-static double bolt_moment(const consts *K, const bolt_law *B, const series *s, int k)
+RB_INLINE double bolt_moment(const consts *K, const bolt_law *B, const series *s, int k)
 {
     if (B->kind == BOLT_SLACK)
         return 0;
@@ -111,7 +111,7 @@ static double bolt_moment(const consts *K, const bolt_law *B, const series *s, i
     return B->k_row * B->l * (B->l * S_(s, k) - B->gap * s->R[k].h[0]);
 }
 
-static void bolt_law_of(const rb_sys *S, const rb_disc *D, double th0, bolt_law *B,
+RB_INLINE void bolt_law_of(const rb_sys *S, const rb_disc *D, double th0, bolt_law *B,
                         series *s)
 {
     B->kind = D->stage == RB_STAGE_YIELD ? BOLT_YIELD
@@ -141,7 +141,7 @@ typedef struct {
 
 /* The row's neighbours are pairs (pair.h): the pass is seven packed
  * products a j instead of a dozen scalar ones. */
-static inline void fused_pass(const series *s, int k, int half, int vert, order_sums *p)
+RB_INLINE void fused_pass(const series *s, int k, int half, int vert, order_sums *p)
 {
     rb_pair ocs = rb_pair_splat(0), xcs = ocs, vcs = ocs, oov = ocs, fg = ocs, gcs = ocs,
             h2 = ocs;
@@ -170,7 +170,7 @@ static inline void fused_pass(const series *s, int k, int half, int vert, order_
  * theta' is 0 and cos and sin are constants, so only U''s and the floor's
  * products with the work rows are sums; the others are single terms,
  * the values fused_pass adds up (its other terms are exact zeros). */
-static inline void still_pass(const series *s, int k, int vert, order_sums *p)
+RB_INLINE void still_pass(const series *s, int k, int vert, order_sums *p)
 {
     double vv = 0;
     rb_pair fg = rb_pair_splat(0);
@@ -190,7 +190,7 @@ static inline void still_pass(const series *s, int k, int vert, order_sums *p)
  * come from s' = c theta', c' = -s theta' with theta' up to order k. With
  * the plate still (stages 1 and 4) theta' is 0, so the same sums hold
  * with only U'' left to the equation of motion. */
-static void series_order(const consts *K, const bolt_law *B, int rocking, series *s, int k,
+RB_INLINE void series_order(const consts *K, const bolt_law *B, int rocking, series *s, int k,
                          double (*w)[3])
 {
     int half = rocking && !K->small && B->kind != BOLT_SLACK;
@@ -292,7 +292,7 @@ static void series_order(const consts *K, const bolt_law *B, int rocking, series
 /* Largest scaled size of the order-k coefficients over a step of hk = h^k.
  * Plain comparisons make branch-free maxima, which drop a NaN; the product
  * 0 * sum keeps a NaN or an infinity, so a non-finite series is caught. */
-static double scaled(const series *s, int k, double hk, const double *tol, double tol_x)
+RB_INLINE double scaled(const series *s, int k, double hk, const double *tol, double tol_x)
 {
     double a = fabs(s->U[k]) * tol[RB_Y_U], b = fabs(V_(s, k)) * tol[RB_Y_UD];
     double c = fabs(s->T[k]) * tol[RB_Y_TH], d = fabs(O_(s, k)) * tol[RB_Y_THD];
@@ -310,7 +310,7 @@ static double scaled(const series *s, int k, double hk, const double *tol, doubl
 /* The mirrored floor's series to order n into s->X, zeros past a
  * polynomial's degree; returns the order up to which s->X holds the
  * motion (all of it for a polynomial). */
-static int floor_series(const rb_motion *m, double t0, double sgn, int n, series *s)
+RB_INLINE int floor_series(const rb_motion *m, double t0, double sgn, int n, series *s)
 {
     s->xd = rb_motion_taylor(m, t0, n, s->X);
     for (int k = 0; k <= s->xd; k++)
@@ -322,7 +322,7 @@ static int floor_series(const rb_motion *m, double t0, double sgn, int n, series
 
 /* The vertical's series z'' and g + z'' to the largest order at once: a
  * sine or a line, no building. */
-static void gravity_series(const rb_motion *v, double g, double t0, series *s)
+RB_INLINE void gravity_series(const rb_motion *v, double g, double t0, series *s)
 {
     s->gd = rb_motion_taylor(v, t0, RB_TAYLOR_MAX + 1, s->Z);
     for (int k = RB_TAYLOR_MAX + 2; k < NT; k++)
@@ -332,17 +332,15 @@ static void gravity_series(const rb_motion *v, double g, double t0, series *s)
     s->G[0] += g;
 }
 
-double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double *y0,
-                      double h_want, const double *atol, double atol_x, double rtol,
-                      rb_taylor *ts)
+RB_INLINE double taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double *y0,
+                             double h_want, const double *atol, double atol_x, double rtol,
+                             rb_taylor *ts)
 {
     consts K;
     series s;
     bolt_law B;
-    /* the vertical's series are read only where there is one, but a
-     * vectorised pass over a row may load them: keep them defined */
-    memset(s.Z, 0, sizeof s.Z);
-    memset(s.G, 0, sizeof s.G);
+    /* the vertical's series are read only where there is one
+     * (gravity_series then writes all of them): not cleared here */
     s.gd = 0;
     double sgn = D->side < 0 ? -1.0 : 1.0, tol[RB_NY];
     int rocking = rb_dyn_rocking(S, D);
@@ -428,4 +426,26 @@ double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double
     ts->order = n;
     ts->lever_hold = D->stage == RB_STAGE_HELD ? rb_dyn_lever(S, D->theta_hold) : 0;
     return h;
+}
+
+double rb_taylor_step_plain(const rb_sys *S, const rb_disc *D, double t0, const double *y0,
+                            double h_want, const double *atol, double atol_x, double rtol,
+                            rb_taylor *ts)
+{
+    return taylor_step(S, D, t0, y0, h_want, atol, atol_x, rtol, ts);
+}
+
+RB_SIMD_AVX double rb_taylor_step_avx(const rb_sys *S, const rb_disc *D, double t0,
+                                      const double *y0, double h_want, const double *atol,
+                                      double atol_x, double rtol, rb_taylor *ts)
+{
+    return taylor_step(S, D, t0, y0, h_want, atol, atol_x, rtol, ts);
+}
+
+double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double *y0,
+                      double h_want, const double *atol, double atol_x, double rtol,
+                      rb_taylor *ts)
+{
+    return rb_simd_avx() ? rb_taylor_step_avx(S, D, t0, y0, h_want, atol, atol_x, rtol, ts)
+                         : rb_taylor_step_plain(S, D, t0, y0, h_want, atol, atol_x, rtol, ts);
 }

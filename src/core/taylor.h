@@ -54,6 +54,15 @@ int rb_taylor_applies(const rb_sys *S, const rb_disc *D);
 double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double *y0,
                       double h_want, const double *atol, double atol_x, double rtol,
                       rb_taylor *ts);
+/* The same step compiled for the baseline instruction set and for AVX
+ * (src/core/simd.h; the plain one where there is no AVX variant), which
+ * rb_taylor_step chooses between: the same bits either way. */
+double rb_taylor_step_plain(const rb_sys *S, const rb_disc *D, double t0, const double *y0,
+                            double h_want, const double *atol, double atol_x, double rtol,
+                            rb_taylor *ts);
+double rb_taylor_step_avx(const rb_sys *S, const rb_disc *D, double t0, const double *y0,
+                          double h_want, const double *atol, double atol_x, double rtol,
+                          rb_taylor *ts);
 
 /* Component c (RB_Y_*) of the state tau after t0; the four mechanical
  * components; the whole state; the first RB_TS_CHECK series. */

@@ -5,21 +5,30 @@
 #include <math.h>
 #include "bolt.h"
 #include "root.h"
+#include "simd.h"
 #include "taylor.h"
 
-/* Horner on components [0, m) side by side: independent chains in local
- * accumulators (an output that might alias the series would force a reload
- * per term), which the compiler keeps in vector registers. */
-#define HORNER(ts, tau, m, out) do { \
-        const double (*p_)[RB_TS_N] = (const double (*)[RB_TS_N])(ts)->p; \
-        double v_[m]; \
-        int n_ = (ts)->order; \
-        for (int i_ = 0; i_ < (m); i_++) v_[i_] = p_[n_][i_]; \
-        for (int k_ = n_ - 1; k_ >= 0; k_--) \
-            for (int i_ = 0; i_ < (m); i_++) \
-                v_[i_] = v_[i_] * (tau) + p_[k_][i_]; \
-        for (int i_ = 0; i_ < (m); i_++) (out)[i_] = v_[i_]; \
-    } while (0)
+/* Horner on every component (RB_TS_N) side by side, four to a vector
+ * (src/core/simd.h): each lane is the scalar chain v = v tau + p_k. */
+_Static_assert(RB_TS_N == 13, "horner_all reads three quads and one scalar");
+RB_INLINE void horner_all(const rb_taylor *ts, double tau, double *out)
+{
+    const double (*p)[RB_TS_N] = (const double (*)[RB_TS_N])ts->p;
+    int n = ts->order;
+    rb_quad t = rb_quad_splat(tau), a = rb_quad_load(p[n]), b = rb_quad_load(p[n] + 4),
+            c = rb_quad_load(p[n] + 8);
+    double d = p[n][12];
+    for (int k = n - 1; k >= 0; k--) {
+        a = rb_quad_horner(a, t, rb_quad_load(p[k]));
+        b = rb_quad_horner(b, t, rb_quad_load(p[k] + 4));
+        c = rb_quad_horner(c, t, rb_quad_load(p[k] + 8));
+        d = d * tau + p[k][12];
+    }
+    rb_quad_store(out, a);
+    rb_quad_store(out + 4, b);
+    rb_quad_store(out + 8, c);
+    out[12] = d;
+}
 
 static const int state_series[RB_NY] = {
     RB_TS_U, RB_TS_UD, RB_TS_TH, RB_TS_THD, RB_TS_WDAMP, RB_TS_WIN, RB_TS_WCPL,
@@ -90,44 +99,35 @@ void rb_taylor_state(const rb_taylor *ts, double tau, double *y)
     y[RB_Y_THD] = thd;
 }
 
-void rb_taylor_check(const rb_taylor *ts, double tau, double *v)
+/* The first eight components are two quads; theta'' and z'' are read
+ * where they move. A still stage's angle, rate and trigonometry are its
+ * start's, taken as they are (the chains would give them too, but a -0
+ * start would come out +0). */
+_Static_assert(RB_TS_U == 0 && RB_TS_UD == 1 && RB_TS_TH == 2 && RB_TS_THD == 3
+                   && RB_TS_X == 4 && RB_TS_COS == 5 && RB_TS_SIN == 6 && RB_TS_UDD == 7,
+               "rb_taylor_check reads the first eight components as two quads");
+RB_INLINE void check_values(const rb_taylor *ts, double tau, double *v)
 {
     const double (*p)[RB_TS_N] = (const double (*)[RB_TS_N])ts->p;
     int n = ts->order;
-    double u = p[n][RB_TS_U], ud = p[n][RB_TS_UD], x = p[n][RB_TS_X],
-           udd = p[n][RB_TS_UDD];
-    if (!ts->rocking) {
-        for (int k = n - 1; k >= 0; k--) {
-            u = u * tau + p[k][RB_TS_U];
-            ud = ud * tau + p[k][RB_TS_UD];
-            x = x * tau + p[k][RB_TS_X];
-            udd = udd * tau + p[k][RB_TS_UDD];
-        }
+    rb_quad t = rb_quad_splat(tau), a = rb_quad_load(p[n]), b = rb_quad_load(p[n] + 4);
+    for (int k = n - 1; k >= 0; k--) {
+        a = rb_quad_horner(a, t, rb_quad_load(p[k]));
+        b = rb_quad_horner(b, t, rb_quad_load(p[k] + 4));
+    }
+    rb_quad_store(v, a);
+    rb_quad_store(v + 4, b);
+    if (ts->rocking) {
+        double thdd = p[n][RB_TS_THDD];
+        for (int k = n - 1; k >= 0; k--)
+            thdd = thdd * tau + p[k][RB_TS_THDD];
+        v[RB_TS_THDD] = thdd;
+    } else {
         v[RB_TS_TH] = p[0][RB_TS_TH];
         v[RB_TS_THD] = p[0][RB_TS_THD];
         v[RB_TS_COS] = p[0][RB_TS_COS];
         v[RB_TS_SIN] = p[0][RB_TS_SIN];
         v[RB_TS_THDD] = 0;
-    } else {
-        double th = p[n][RB_TS_TH], thd = p[n][RB_TS_THD], c = p[n][RB_TS_COS],
-               sn = p[n][RB_TS_SIN], thdd = p[n][RB_TS_THDD];
-        for (int k = n - 1; k >= 0; k--) {
-            const double *q = p[k];
-            u = u * tau + q[RB_TS_U];
-            ud = ud * tau + q[RB_TS_UD];
-            th = th * tau + q[RB_TS_TH];
-            thd = thd * tau + q[RB_TS_THD];
-            x = x * tau + q[RB_TS_X];
-            c = c * tau + q[RB_TS_COS];
-            sn = sn * tau + q[RB_TS_SIN];
-            udd = udd * tau + q[RB_TS_UDD];
-            thdd = thdd * tau + q[RB_TS_THDD];
-        }
-        v[RB_TS_TH] = th;
-        v[RB_TS_THD] = thd;
-        v[RB_TS_COS] = c;
-        v[RB_TS_SIN] = sn;
-        v[RB_TS_THDD] = thdd;
     }
     v[RB_TS_Z] = 0;
     if (ts->vertical) {
@@ -136,16 +136,49 @@ void rb_taylor_check(const rb_taylor *ts, double tau, double *v)
             z = z * tau + p[k][RB_TS_Z];
         v[RB_TS_Z] = z;
     }
-    v[RB_TS_U] = u;
-    v[RB_TS_UD] = ud;
-    v[RB_TS_X] = x;
-    v[RB_TS_UDD] = udd;
+}
+
+static void check_plain(const rb_taylor *ts, double tau, double *v)
+{
+    check_values(ts, tau, v);
+}
+
+RB_SIMD_AVX static void check_avx(const rb_taylor *ts, double tau, double *v)
+{
+    check_values(ts, tau, v);
+}
+
+void rb_taylor_check(const rb_taylor *ts, double tau, double *v)
+{
+    if (rb_simd_avx())
+        check_avx(ts, tau, v);
+    else
+        check_plain(ts, tau, v);
+}
+
+static void all_plain(const rb_taylor *ts, double tau, double *v)
+{
+    horner_all(ts, tau, v);
+}
+
+RB_SIMD_AVX static void all_avx(const rb_taylor *ts, double tau, double *v)
+{
+    horner_all(ts, tau, v);
+}
+
+/* Every component at tau (RB_TS_N values). */
+static void all_values(const rb_taylor *ts, double tau, double *v)
+{
+    if (rb_simd_avx())
+        all_avx(ts, tau, v);
+    else
+        all_plain(ts, tau, v);
 }
 
 void rb_taylor_all(const rb_taylor *ts, double tau, double *y)
 {
     double v[RB_TS_N];
-    HORNER(ts, tau, RB_TS_N, v);
+    all_values(ts, tau, v);
     for (int i = 0; i < RB_NY; i++)
         y[i] = v[state_series[i]];
 }
@@ -217,7 +250,7 @@ void rb_taylor_end(const rb_sys *S, const rb_disc *D, const rb_taylor *ts, doubl
                    double *y1, double *f1, rb_aux *a)
 {
     double v[RB_TS_N];
-    HORNER(ts, h, RB_TS_N, v);
+    all_values(ts, h, v);
     for (int i = 0; i < RB_NY; i++)
         y1[i] = v[state_series[i]];
     rb_taylor_aux(S, D, ts, v, a);

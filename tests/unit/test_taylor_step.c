@@ -16,13 +16,18 @@
  * the step (the work integrals, which the order test does not read, to
  * 1e-4). A term formed wrongly at any order above the first moves the
  * derivative by its own size times the step's powers: about 1e-3 of the
- * rate for a 13 Hz swing over a 0.01 s step at the third order. */
+ * rate for a 13 Hz swing over a 0.01 s step at the third order.
+ *
+ * Where the processor has AVX, every step is also formed by the baseline
+ * variant and the AVX variant of the step (src/core/simd.h) and the two
+ * must agree to the bit: the same series, order and step length. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "harness.h"
 #include "stress_cabinet.h"
+#include "../../src/core/simd.h"
 #include "../../src/core/solver.h"
 #include "../../src/core/taylor.h"
 
@@ -46,7 +51,57 @@ static const int series_of[RB_NY] = {
 };
 
 static double worst = 0, worst_work = 0;
-static int steps_checked = 0, capped = 0, per_stage[6];
+static int steps_checked = 0, capped = 0, per_stage[6], variants_same = 0;
+
+/* rb_taylor_check and rb_taylor_all, which read components side by side
+ * in vectors, against each component's own scalar Horner chain, bit for
+ * bit (a still stage's angle terms are its start's, as they are). */
+static int readings_same = 0;
+static void check_readings(const rb_taylor *ts, double tau)
+{
+    double v[RB_TS_N], all[RB_NY], chain[RB_TS_N];
+    rb_taylor_check(ts, tau, v);
+    rb_taylor_all(ts, tau, all);
+    for (int i = 0; i < RB_TS_N; i++) {
+        chain[i] = ts->p[ts->order][i];
+        for (int k = ts->order - 1; k >= 0; k--)
+            chain[i] = chain[i] * tau + ts->p[k][i];
+    }
+    int same = 1;
+    for (int i = 0; i < RB_TS_CHECK; i++) {
+        int held = !ts->rocking && (i == RB_TS_TH || i == RB_TS_THD || i == RB_TS_COS
+                                    || i == RB_TS_SIN || i == RB_TS_THDD);
+        double want = held ? (i == RB_TS_THDD ? 0 : ts->p[0][i])
+                           : i == RB_TS_Z && !ts->vertical ? 0 : chain[i];
+        same &= memcmp(&v[i], &want, sizeof want) == 0;
+    }
+    for (int c = 0; c < RB_NY; c++)
+        same &= memcmp(&all[c], &chain[series_of[c]], sizeof all[c]) == 0;
+    if (!same)
+        printf("tau %.6e: a vector reading differs from its scalar chain\n", tau);
+    CHECK(same);
+    readings_same += same;
+}
+
+/* The baseline and AVX variants of one step, compared bit for bit. */
+static void check_variants(const rb_solver *sv, double t0, const double *y0, double h_want)
+{
+    if (!rb_simd_avx())
+        return;
+    static rb_taylor a, b;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    double ha = rb_taylor_step_plain(&sv->sys, &sv->disc, t0, y0, h_want, sv->atol, sv->atol_x,
+                                     sv->opts.rtol, &a);
+    double hb = rb_taylor_step_avx(&sv->sys, &sv->disc, t0, y0, h_want, sv->atol, sv->atol_x,
+                                   sv->opts.rtol, &b);
+    int same = memcmp(&ha, &hb, sizeof ha) == 0 && memcmp(&a, &b, sizeof a) == 0;
+    if (!same)
+        printf("t0 %.6f stage %d: the AVX step differs from the baseline's (orders %d, %d)\n",
+               t0, sv->disc.stage, a.order, b.order);
+    CHECK(same);
+    variants_same += same;
+}
 
 /* One random step of sv's system from t0: its series against rb_dyn_rhs. */
 static void check_step(rb_solver *sv, double t0, unsigned *st, const char *what)
@@ -72,6 +127,7 @@ static void check_step(rb_solver *sv, double t0, unsigned *st, const char *what)
     y0[RB_Y_WCPL] = urand(st, -10, 10);
     double brk = rb_motion_next_break(S->motion, t0);
     double h_want = fmin(brk - t0, 0.02);
+    check_variants(sv, t0, y0, h_want);
     rb_taylor ts;
     double h = rb_taylor_step(S, D, t0, y0, h_want, sv->atol, sv->atol_x, sv->opts.rtol, &ts);
     if (!(h > 0)) {
@@ -91,6 +147,7 @@ static void check_step(rb_solver *sv, double t0, unsigned *st, const char *what)
     int valid[4];
     for (int q = 0; q < 4; q++) {
         double y[RB_NY];
+        check_readings(&ts, taus[q]);
         rb_taylor_all(&ts, taus[q], y);
         /* a spring pulls only while taut: past its slack guard the series
          * goes on pulling, the equations do not (the run stops there) */
@@ -205,7 +262,12 @@ int main(void)
            "largest difference %.2e of the rate's scale (state), %.2e (work integrals)\n",
            steps_checked, per_stage[1], per_stage[2], per_stage[4], per_stage[5], capped,
            worst, worst_work);
+    printf("AVX: %s; %d steps the same to the bit in both variants; %d readings the same "
+           "as their scalar chains\n", rb_simd_avx() ? "yes" : "no", variants_same,
+           readings_same);
+    CHECK(readings_same == 4 * steps_checked);
     CHECK(steps_checked > 800);
+    CHECK(!rb_simd_avx() || variants_same > steps_checked);
     CHECK(per_stage[1] > 100 && per_stage[2] > 100 && per_stage[4] > 100
           && per_stage[5] > 100);
     rb_series_free(&taft);
