@@ -80,23 +80,38 @@ int rb_taylor_stays_off(const rb_taylor *ts, int c, double h, double level)
 }
 
 /* The still stages' angle, its rate and their trigonometry are constant,
- * and only four series need the Horner pass. */
-void rb_taylor_state(const rb_taylor *ts, double tau, double *y)
+ * and only four series need the Horner pass: U, U', theta and theta',
+ * side by side in one quad. */
+_Static_assert(RB_TS_U == 0 && RB_TS_UD == 1 && RB_TS_TH == 2 && RB_TS_THD == 3,
+               "the four mechanical series are one quad of a row");
+RB_INLINE void state_values(const rb_taylor *ts, double tau, double *y)
 {
     const double (*p)[RB_TS_N] = (const double (*)[RB_TS_N])ts->p;
     int n = ts->order;
-    double u = p[n][RB_TS_U], ud = p[n][RB_TS_UD], th = p[n][RB_TS_TH],
-           thd = p[n][RB_TS_THD];
-    for (int k = n - 1; k >= 0; k--) {
-        u = u * tau + p[k][RB_TS_U];
-        ud = ud * tau + p[k][RB_TS_UD];
-        th = th * tau + p[k][RB_TS_TH];
-        thd = thd * tau + p[k][RB_TS_THD];
-    }
-    y[RB_Y_U] = u;
-    y[RB_Y_UD] = ud;
-    y[RB_Y_TH] = th;
-    y[RB_Y_THD] = thd;
+    rb_quad t = rb_quad_splat(tau), v = rb_quad_load(p[n]);
+    for (int k = n - 1; k >= 0; k--)
+        v = rb_quad_horner(v, t, rb_quad_load(p[k]));
+    rb_quad_store(y, v);
+}
+
+static void state_plain(const rb_taylor *ts, double tau, double *y)
+{
+    state_values(ts, tau, y);
+}
+
+RB_SIMD_AVX static void state_avx(const rb_taylor *ts, double tau, double *y)
+{
+    state_values(ts, tau, y);
+}
+
+_Static_assert(RB_Y_U == 0 && RB_Y_UD == 1 && RB_Y_TH == 2 && RB_Y_THD == 3,
+               "rb_taylor_state writes the four mechanical components as one quad");
+void rb_taylor_state(const rb_taylor *ts, double tau, double *y)
+{
+    if (rb_simd_avx())
+        state_avx(ts, tau, y);
+    else
+        state_plain(ts, tau, y);
 }
 
 /* The first eight components are two quads; theta'' and z'' are read

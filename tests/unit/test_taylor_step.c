@@ -53,9 +53,10 @@ static const int series_of[RB_NY] = {
 static double worst = 0, worst_work = 0;
 static int steps_checked = 0, capped = 0, per_stage[6], variants_same = 0;
 
-/* rb_taylor_check and rb_taylor_all, which read components side by side
- * in vectors, against each component's own scalar Horner chain, bit for
- * bit (a still stage's angle terms are its start's, as they are). */
+/* rb_taylor_check, rb_taylor_all and rb_taylor_state, which read
+ * components side by side in vectors, against each component's own
+ * scalar Horner chain, bit for bit (a still stage's angle terms are its
+ * start's, as they are). */
 static int readings_same = 0;
 static void check_readings(const rb_taylor *ts, double tau)
 {
@@ -77,6 +78,10 @@ static void check_readings(const rb_taylor *ts, double tau)
     }
     for (int c = 0; c < RB_NY; c++)
         same &= memcmp(&all[c], &chain[series_of[c]], sizeof all[c]) == 0;
+    double mech[RB_NY];
+    rb_taylor_state(ts, tau, mech);
+    for (int c = RB_Y_U; c <= RB_Y_THD; c++)
+        same &= memcmp(&mech[c], &chain[series_of[c]], sizeof mech[c]) == 0;
     if (!same)
         printf("tau %.6e: a vector reading differs from its scalar chain\n", tau);
     CHECK(same);
