@@ -37,41 +37,16 @@ static inline int rb_simd_avx(void)
  * baseline variant): lanes round as scalars do. Loads and stores may be
  * unaligned. */
 #if defined(__GNUC__) || defined(__clang__)
-/* quads live in always-inlined helpers and locals: none crosses a call
- * between objects, so GCC's note that passing one changes the ABI with
- * AVX (reported where they are used, too) does not apply to a file that
- * includes this one */
-#if defined(__clang__)
-#if __has_warning("-Wpsabi")
-#pragma clang diagnostic ignored "-Wpsabi"
-#endif
-#else
-#pragma GCC diagnostic ignored "-Wpsabi"
-#endif
+/* macros, not functions: a quad passed to or returned from a function is
+ * where GCC and Clang note that the ABI changes with AVX */
 typedef double rb_quad __attribute__((vector_size(4 * sizeof(double))));
-
-RB_INLINE rb_quad rb_quad_splat(double x)
-{
-    return (rb_quad){x, x, x, x};
-}
-
-RB_INLINE rb_quad rb_quad_load(const double *p)
-{
-    rb_quad v;
-    memcpy(&v, p, sizeof v);
-    return v;
-}
-
-RB_INLINE void rb_quad_store(double *p, rb_quad v)
-{
-    memcpy(p, &v, sizeof v);
-}
-
+typedef double rb_quad_unaligned
+    __attribute__((vector_size(4 * sizeof(double)), aligned(sizeof(double)), may_alias));
+#define rb_quad_splat(x) ((rb_quad){(x), (x), (x), (x)})
+#define rb_quad_load(p) (*(const rb_quad_unaligned *)(p))
+#define rb_quad_store(p, q) (*(rb_quad_unaligned *)(p) = (q))
 /* a x + b, lane by lane */
-RB_INLINE rb_quad rb_quad_horner(rb_quad a, rb_quad x, rb_quad b)
-{
-    return a * x + b;
-}
+#define rb_quad_horner(a, x, b) ((a) * (x) + (b))
 #else
 typedef struct {
     double v[4];
