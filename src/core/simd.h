@@ -36,7 +36,9 @@ static inline int rb_simd_avx(void)
 /* Four doubles side by side (one AVX register, two SSE2 ones in the
  * baseline variant): lanes round as scalars do. Loads and stores may be
  * unaligned. */
-#if defined(__GNUC__) || defined(__clang__)
+/* RB_PAIR_PLAIN asks for the plain form, as in pair.h (test_quad holds
+ * both to the scalar chains) */
+#if (defined(__GNUC__) || defined(__clang__)) && !defined(RB_PAIR_PLAIN)
 /* macros, not functions: a quad passed to or returned from a function is
  * where GCC and Clang note that the ABI changes with AVX */
 typedef double rb_quad __attribute__((vector_size(4 * sizeof(double))));
