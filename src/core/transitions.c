@@ -162,8 +162,12 @@ double rb_guard_one(const rb_solver *sv, int guard, double t, const double *y)
     case G_SLACK:
     case G_YIELD: {
         rb_aux a;
-        if (guard == G_SLACK && !S->bolt->rigid_stop)
-            return S->bolt->taut(S, D, th);
+        /* a spring's tension is a function of the angle alone: the same
+         * call the equations make (bolt_moment), without their floor,
+         * loads and solve, some 870 instructions a reading */
+        if (!S->bolt->rigid_stop)
+            return guard == G_SLACK ? S->bolt->taut(S, D, th)
+                                    : S->bolt->tension(S, D, th) - S->d.fy_row_n;
         rb_dyn_rhs(S, D, t, y, NULL, &a);
         return bolt_guard(sv, guard, &a);
     }
