@@ -32,34 +32,8 @@
 #undef rb_pair_load
 #undef rb_pair_dup
 
-static uint64_t rng = 0x9E3779B97F4A7C15ULL;
-
-static double uniform(void)
-{
-    rng ^= rng << 13;
-    rng ^= rng >> 7;
-    rng ^= rng << 17;
-    return (double)(rng >> 11) / 9007199254740992.0;
-}
-
-/* a term of either sign over 40 decades, now and then 0, a subnormal or
- * an infinity */
-static double term(int specials)
-{
-    double r = uniform();
-    if (specials && r < 0.02)
-        return 0.0;
-    if (specials && r < 0.03)
-        return (uniform() < 0.5 ? -1 : 1) * 4.9e-324 * (1 + floor(1e6 * uniform()));
-    if (specials && r < 0.035)
-        return uniform() < 0.5 ? -INFINITY : INFINITY;
-    return (uniform() < 0.5 ? -1 : 1) * pow(10.0, 40 * uniform() - 20);
-}
-
-static int same_bits(double a, double b)
-{
-    return memcmp(&a, &b, sizeof a) == 0 || (isnan(a) && isnan(b));
-}
+#define LANE_SEED 0x9E3779B97F4A7C15ULL
+#include "lane_terms.h"
 
 enum { N = 21 };
 

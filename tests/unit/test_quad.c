@@ -49,34 +49,8 @@ static void chains_plain(const double (*p)[WIDTH], int n, int c, double tau, dou
     plain_store(out, v);
 }
 
-static uint64_t rng = 0x2545F4914F6CDD1DULL;
-
-static double uniform(void)
-{
-    rng ^= rng << 13;
-    rng ^= rng >> 7;
-    rng ^= rng << 17;
-    return (double)(rng >> 11) / 9007199254740992.0;
-}
-
-/* a coefficient of either sign over 40 decades, now and then 0, a
- * subnormal or an infinity */
-static double coefficient(int specials)
-{
-    double r = uniform();
-    if (specials && r < 0.02)
-        return 0.0;
-    if (specials && r < 0.03)
-        return (uniform() < 0.5 ? -1 : 1) * 4.9e-324 * (1 + floor(1e6 * uniform()));
-    if (specials && r < 0.035)
-        return uniform() < 0.5 ? -INFINITY : INFINITY;
-    return (uniform() < 0.5 ? -1 : 1) * pow(10.0, 40 * uniform() - 20);
-}
-
-static int same_bits(double a, double b)
-{
-    return memcmp(&a, &b, sizeof a) == 0 || (isnan(a) && isnan(b));
-}
+#define LANE_SEED 0x2545F4914F6CDD1DULL
+#include "lane_terms.h"
 
 int main(void)
 {
@@ -89,7 +63,7 @@ int main(void)
         double tau = (uniform() < 0.5 ? -1 : 1) * pow(10.0, 6 * uniform() - 5);
         for (int k = 0; k <= n; k++)
             for (int i = 0; i < WIDTH; i++)
-                p[k][i] = coefficient(specials);
+                p[k][i] = term(specials);
         double vec[4], plain[4];
         chains_vec((const double (*)[WIDTH])p, n, col, tau, vec);
         chains_plain((const double (*)[WIDTH])p, n, col, tau, plain);
