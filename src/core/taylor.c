@@ -59,14 +59,20 @@ RB_INLINE void load_consts(const rb_sys *S, consts *k)
 /* The mirrored series: U, T = theta, the floor acceleration X (polynomial
  * of degree xd), Q = theta'^2, and per order one row of what the order's
  * products read, so that every product of an order is a lane of one pass
- * over j (rb_taylor_step's order loop). */
+ * over j (rb_taylor_step's order loop). A row is read from both ends of
+ * the pass: as the later factor b (fg, cs, ov side by side, so that two
+ * overlapping quads are (fg, cs) and (cs, ov)), and as the earlier factor
+ * a, whose lanes ta are laid out to match: theta' three times and U' (a
+ * quad against (cs, ov)), then U' and the floor three times (against (fg,
+ * cs)). */
 typedef struct {
-    double cs[2]; /* cos theta, sin theta */
-    double ov[2]; /* theta', U' */
-    double h[2];  /* cos and sin of half the angle (a row's lever) */
     /* the coupling power per unit U' and the input power per unit floor
      * acceleration (order k's formed late, from order k's sums) */
     double fg[2];
+    double cs[2]; /* cos theta, sin theta */
+    double ov[2]; /* theta', U' */
+    double h[2];  /* cos and sin of half the angle (a row's lever) */
+    double ta[8]; /* theta' theta' theta' U' X X X, and one spare */
 } orow;
 typedef struct {
     double U[NT], T[NT], X[NT], Q[NT];
@@ -139,31 +145,46 @@ typedef struct {
     double hc, hs;     /* theta' cos, sin of the half angle */
 } order_sums;
 
-/* The row's neighbours are pairs (pair.h): the pass is seven packed
- * products a j instead of a dozen scalar ones. */
+/* Each j is two quads and a scalar (the lanes' products laid out as
+ * orow's ta against the row's fg, cs, ov), and a pair each for the
+ * vertical and the half angle: a lane's sum is added in the order of j
+ * as a scalar sum is, so it has the same bits. */
 RB_INLINE void fused_pass(const series *s, int k, int half, int vert, order_sums *p)
 {
-    rb_pair ocs = rb_pair_splat(0), xcs = ocs, vcs = ocs, oov = ocs, fg = ocs, gcs = ocs,
-            h2 = ocs;
+    rb_quad q1 = rb_quad_splat(0), q2 = q1; /* (oc, os, oo, vv), (vf, xg, xc, xs) */
+    double vc = 0;
+    rb_pair gcs = rb_pair_splat(0), h2 = gcs;
     for (int j = 0; j <= k; j++) {
         const orow *a = &s->R[j], *b = &s->R[k - j];
-        double x = s->X[j];
-        rb_pair cs = rb_pair_load(b->cs);
-        ocs = rb_pair_madd(ocs, rb_pair_splat(a->ov[0]), cs);
-        xcs = rb_pair_madd(xcs, rb_pair_splat(x), cs);
-        vcs = rb_pair_madd(vcs, rb_pair_splat(a->ov[1]), cs);
-        oov = rb_pair_madd(oov, rb_pair_load(a->ov), rb_pair_load(b->ov));
-        fg = rb_pair_madd(fg, rb_pair_make(a->ov[1], x), rb_pair_load(b->fg));
+        q1 = rb_quad_horner(rb_quad_load(a->ta), rb_quad_load(b->cs), q1);
+        q2 = rb_quad_horner(rb_quad_load(a->ta + 3), rb_quad_load(b->fg), q2);
+        vc += a->ta[3] * b->cs[0];
         if (vert)
-            gcs = rb_pair_madd(gcs, rb_pair_splat(s->G[j]), cs);
+            gcs = rb_pair_madd(gcs, rb_pair_splat(s->G[j]), rb_pair_load(b->cs));
         if (half)
             h2 = rb_pair_madd(h2, rb_pair_splat(a->ov[0]), rb_pair_load(b->h));
     }
-    *p = (order_sums){rb_pair_lane(ocs, 0), rb_pair_lane(ocs, 1), rb_pair_lane(oov, 0),
-                      rb_pair_lane(oov, 1), rb_pair_lane(xcs, 0), rb_pair_lane(xcs, 1),
-                      rb_pair_lane(vcs, 0), rb_pair_lane(fg, 0), rb_pair_lane(fg, 1),
+    double l1[4], l2[4];
+    rb_quad_store(l1, q1);
+    rb_quad_store(l2, q2);
+    *p = (order_sums){l1[0], l1[1], l1[2], l1[3], l2[2], l2[3], vc, l2[0], l2[1],
                       rb_pair_lane(gcs, 0), rb_pair_lane(gcs, 1), rb_pair_lane(h2, 0),
                       rb_pair_lane(h2, 1)};
+}
+
+/* Row k's lanes of fused_pass: theta' and U' (set_rates) as the order
+ * before forms them, the floor (set_floor) as the order reads it. */
+RB_INLINE void set_rates(orow *r, double o, double v)
+{
+    r->ov[0] = o;
+    r->ov[1] = v;
+    r->ta[0] = r->ta[1] = r->ta[2] = o;
+    r->ta[3] = v;
+}
+
+RB_INLINE void set_floor(orow *r, double x)
+{
+    r->ta[4] = r->ta[5] = r->ta[6] = x;
 }
 
 /* fused_pass with the plate still (stage 1, stage 4 against a rigid row):
@@ -195,6 +216,7 @@ RB_INLINE void series_order(const consts *K, const bolt_law *B, int rocking, ser
 {
     int half = rocking && !K->small && B->kind != BOLT_SLACK;
     order_sums p;
+    set_floor(&s->R[k], s->X[k]);
     if (!rocking)
         still_pass(s, k, K->vert, &p);
     else if (K->vert)
@@ -256,9 +278,8 @@ RB_INLINE void series_order(const consts *K, const bolt_law *B, int rocking, ser
     } else
         udd = K->rigid ? 0 : RU * K->inv_Ms;
     s->U[k + 1] = r->ov[1] * ik;
-    n->ov[1] = udd * ik;
     s->T[k + 1] = r->ov[0] * ik;
-    n->ov[0] = thdd * ik;
+    set_rates(n, thdd * ik, udd * ik);
     n->fg[0] = n->fg[1] = 0;
 
     /* the work integrals: the coupling factor N* (G sin - b theta'^2) and
@@ -349,9 +370,8 @@ RB_INLINE double taylor_step(const rb_sys *S, const rb_disc *D, double t0, const
     if (K.vert)
         gravity_series(S->motion->vertical, K.g, t0, &s);
     s.U[0] = sgn * y0[RB_Y_U];
-    V_(&s, 0) = sgn * y0[RB_Y_UD];
     s.T[0] = rocking ? sgn * y0[RB_Y_TH] : D->stage == RB_STAGE_HELD ? D->theta_hold : 0;
-    O_(&s, 0) = rocking ? sgn * y0[RB_Y_THD] : 0;
+    set_rates(&s.R[0], rocking ? sgn * y0[RB_Y_THD] : 0, sgn * y0[RB_Y_UD]);
     C_(&s, 0) = s.T[0] == 0 ? 1 : cos(s.T[0]);
     S_(&s, 0) = s.T[0] == 0 ? 0 : sin(s.T[0]);
     s.R[0].fg[0] = s.R[0].fg[1] = 0;
@@ -370,8 +390,12 @@ RB_INLINE double taylor_step(const rb_sys *S, const rb_disc *D, double t0, const
     int n = 0;
     for (int k = 0;; k++) {
         /* order k reads the floor to order k, and the step's end to n */
-        if (k + 1 > xn)
+        if (k + 1 > xn) {
             xn = floor_series(S->motion, t0, sgn, RB_TAYLOR_MAX + 1, &s);
+            /* the rows' copies of the floor, so that they are these terms */
+            for (int j = 0; j < k; j++)
+                set_floor(&s.R[j], s.X[j]);
+        }
         series_order(&K, &B, rocking, &s, k, w);
         n = k + 1;
         hk *= h;
