@@ -206,13 +206,13 @@ RB_INLINE void still_pass(const series *s, int k, int vert, order_sums *p)
 }
 
 /* Order k of the motion and of the work integrals (damping, input,
- * coupling: w[k + 1]); they read the motion only up to order k and do not
+ * coupling: w, row k + 1's); they read the motion only up to order k and do not
  * feed back. The cos and sin of theta (and of its half) at order k + 1
  * come from s' = c theta', c' = -s theta' with theta' up to order k. With
  * the plate still (stages 1 and 4) theta' is 0, so the same sums hold
  * with only U'' left to the equation of motion. */
 RB_INLINE void series_order(const consts *K, const bolt_law *B, int rocking, series *s, int k,
-                         double (*w)[3])
+                         double *w)
 {
     int half = rocking && !K->small && B->kind != BOLT_SLACK;
     order_sums p;
@@ -290,8 +290,8 @@ RB_INLINE void series_order(const consts *K, const bolt_law *B, int rocking, ser
     r->fg[1] = K->small ? K->Ns * r->ov[1] + K->M * K->R * r->ov[0]
                      : K->Ns * p.vc + K->M * (k + 1) * (K->h * n->cs[1] - K->b * n->cs[0]);
     double vf = p.vf + V_(s, 0) * r->fg[0], xg = p.xg + s->X[0] * r->fg[1];
-    w[k + 1][0] = K->Cs * p.vv * ik;
-    w[k + 1][2] = vf * ik;
+    w[0] = K->Cs * p.vv * ik;
+    w[2] = vf * ik;
     if (K->vert) {
         if (!rocking)
             s->DH[k] = 0;
@@ -307,7 +307,7 @@ RB_INLINE void series_order(const consts *K, const bolt_law *B, int rocking, ser
             pv += s->Z[j] * s->DH[k - j];
         xg -= pv;
     }
-    w[k + 1][1] = xg * ik;
+    w[1] = xg * ik;
 }
 
 /* Largest scaled size of the order-k coefficients over a step of hk = h^k.
@@ -353,6 +353,46 @@ RB_INLINE void gravity_series(const rb_motion *v, double g, double t0, series *s
     s->G[0] += g;
 }
 
+/* The physical frame's series as the orders form them: row k + 1's state,
+ * cos and sin, and row k's floor and accelerations (the derivatives of
+ * the rates' series, row k + 1's). The still stages keep theta as it
+ * was: their angle's rows past the first are zeros. */
+RB_INLINE void physical_rows(double (*p)[RB_TS_N], const series *s, int k, double sgn,
+                             int rocking, int vert)
+{
+    double *q = p[k], *r = p[k + 1];
+    q[RB_TS_X] = sgn * s->X[k];
+    q[RB_TS_UDD] = sgn * (k + 1) * V_(s, k + 1);
+    q[RB_TS_Z] = vert ? s->Z[k] : 0;
+    r[RB_TS_U] = sgn * s->U[k + 1];
+    r[RB_TS_UD] = sgn * V_(s, k + 1);
+    if (rocking) {
+        q[RB_TS_THDD] = sgn * (k + 1) * O_(s, k + 1);
+        r[RB_TS_TH] = sgn * s->T[k + 1];
+        r[RB_TS_THD] = sgn * O_(s, k + 1);
+        r[RB_TS_COS] = C_(s, k + 1);
+        r[RB_TS_SIN] = S_(s, k + 1);
+    } else {
+        q[RB_TS_THDD] = 0;
+        r[RB_TS_TH] = r[RB_TS_THD] = r[RB_TS_COS] = r[RB_TS_SIN] = 0;
+    }
+}
+
+/* Row 0 in the physical frame, less what physical_rows writes. */
+RB_INLINE void physical_start(double *q, const series *s, double sgn, int rocking,
+                              const double *y0)
+{
+    q[RB_TS_U] = sgn * s->U[0];
+    q[RB_TS_UD] = sgn * V_(s, 0);
+    q[RB_TS_TH] = rocking ? sgn * s->T[0] : y0[RB_Y_TH];
+    q[RB_TS_THD] = rocking ? sgn * O_(s, 0) : y0[RB_Y_THD];
+    q[RB_TS_COS] = C_(s, 0);
+    q[RB_TS_SIN] = S_(s, 0);
+    q[RB_TS_WDAMP] = y0[RB_Y_WDAMP];
+    q[RB_TS_WIN] = y0[RB_Y_WIN];
+    q[RB_TS_WCPL] = y0[RB_Y_WCPL];
+}
+
 RB_INLINE double taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double *y0,
                              double h_want, const double *atol, double atol_x, double rtol,
                              rb_taylor *ts)
@@ -386,7 +426,10 @@ RB_INLINE double taylor_step(const rb_sys *S, const rb_disc *D, double t0, const
     double tol_x = 1 / (atol_x + rtol * fabs(s.X[0]));
 
     double h = h_want, hk = 1, e_prev = HUGE_VAL;
-    double w[NT][3];
+    /* written as the orders are formed: a step that returns 0 leaves them
+     * half written, and no one reads them */
+    double (*p)[RB_TS_N] = ts->p;
+    physical_start(p[0], &s, sgn, rocking, y0);
     int n = 0;
     for (int k = 0;; k++) {
         /* order k reads the floor to order k, and the step's end to n */
@@ -396,7 +439,8 @@ RB_INLINE double taylor_step(const rb_sys *S, const rb_disc *D, double t0, const
             for (int j = 0; j < k; j++)
                 set_floor(&s.R[j], s.X[j]);
         }
-        series_order(&K, &B, rocking, &s, k, w);
+        series_order(&K, &B, rocking, &s, k, p[k + 1] + RB_TS_WDAMP);
+        physical_rows(p, &s, k, sgn, rocking, K.vert);
         n = k + 1;
         hk *= h;
         double e = scaled(&s, n, hk, tol, tol_x);
@@ -414,37 +458,10 @@ RB_INLINE double taylor_step(const rb_sys *S, const rb_disc *D, double t0, const
         }
         e_prev = e;
     }
-    w[0][0] = y0[RB_Y_WDAMP];
-    w[0][1] = y0[RB_Y_WIN];
-    w[0][2] = y0[RB_Y_WCPL];
-    /* back to the physical frame, every component of every order written
-     * (the still stages keep theta as it was); the accelerations are the
-     * derivatives of the rates' series */
-    for (int k = 0; k <= n; k++) {
-        double *p = ts->p[k];
-        p[RB_TS_U] = sgn * s.U[k];
-        p[RB_TS_UD] = sgn * V_(&s, k);
-        p[RB_TS_X] = sgn * s.X[k];
-        p[RB_TS_UDD] = k < n ? sgn * (k + 1) * V_(&s, k + 1) : 0;
-        p[RB_TS_WDAMP] = w[k][0];
-        p[RB_TS_WIN] = w[k][1];
-        p[RB_TS_WCPL] = w[k][2];
-        p[RB_TS_Z] = K.vert ? s.Z[k] : 0;
-        if (rocking) {
-            p[RB_TS_TH] = sgn * s.T[k];
-            p[RB_TS_THD] = sgn * O_(&s, k);
-            p[RB_TS_COS] = C_(&s, k);
-            p[RB_TS_SIN] = S_(&s, k);
-            p[RB_TS_THDD] = k < n ? sgn * (k + 1) * O_(&s, k + 1) : 0;
-        } else if (k == 0) {
-            p[RB_TS_TH] = y0[RB_Y_TH];
-            p[RB_TS_THD] = y0[RB_Y_THD];
-            p[RB_TS_COS] = C_(&s, 0);
-            p[RB_TS_SIN] = S_(&s, 0);
-            p[RB_TS_THDD] = 0;
-        } else
-            p[RB_TS_TH] = p[RB_TS_THD] = p[RB_TS_COS] = p[RB_TS_SIN] = p[RB_TS_THDD] = 0;
-    }
+    /* the last row's floor, and its accelerations past the series */
+    p[n][RB_TS_X] = sgn * s.X[n];
+    p[n][RB_TS_UDD] = p[n][RB_TS_THDD] = 0;
+    p[n][RB_TS_Z] = K.vert ? s.Z[n] : 0;
     ts->rocking = rocking;
     ts->vertical = K.vert;
     ts->order = n;

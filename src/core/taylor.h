@@ -50,7 +50,7 @@ int rb_taylor_applies(const rb_sys *S, const rb_disc *D);
  * the excitation), to the absolute tolerances atol of the state and atol_x
  * of the floor acceleration, and rtol. Returns the step taken, h_want or
  * less when the order bound is met first, or 0 when the series is not
- * finite. */
+ * finite (ts then holds no series). */
 double rb_taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double *y0,
                       double h_want, const double *atol, double atol_x, double rtol,
                       rb_taylor *ts);
