@@ -205,21 +205,30 @@ RB_INLINE void still_pass(const series *s, int k, int vert, order_sums *p)
                       rb_pair_lane(fg, 1), g * c, g * sn, 0, 0};
 }
 
+/* What the branches of an order read that a step holds constant: the
+ * plate rocks, the motion has a vertical, the small formulation, the
+ * half angle's series (a row that holds the rocking plate, large). The
+ * usual shapes are compiled as order loops of their own (taylor_step),
+ * with these branches out of them. */
+typedef struct {
+    int rocking, vert, small, half;
+} shape;
+
 /* Order k of the motion and of the work integrals (damping, input,
  * coupling: w, row k + 1's); they read the motion only up to order k and do not
  * feed back. The cos and sin of theta (and of its half) at order k + 1
  * come from s' = c theta', c' = -s theta' with theta' up to order k. With
  * the plate still (stages 1 and 4) theta' is 0, so the same sums hold
  * with only U'' left to the equation of motion. */
-RB_INLINE void series_order(const consts *K, const bolt_law *B, int rocking, series *s, int k,
-                         double *w)
+RB_INLINE void series_order(const consts *K, const bolt_law *B, shape f, series *s, int k,
+                             double *w)
 {
-    int half = rocking && !K->small && B->kind != BOLT_SLACK;
+    int rocking = f.rocking, half = f.half;
     order_sums p;
     set_floor(&s->R[k], s->X[k]);
     if (!rocking)
-        still_pass(s, k, K->vert, &p);
-    else if (K->vert)
+        still_pass(s, k, f.vert, &p);
+    else if (f.vert)
         fused_pass(s, k, half, 1, &p);
     else if (half)
         fused_pass(s, k, 1, 0, &p);
@@ -237,10 +246,10 @@ RB_INLINE void series_order(const consts *K, const bolt_law *B, int rocking, ser
     /* the floor's and gravity's terms: X cos and X sin, G sin and G cos (G
      * theta and G (theta - alpha) when small) */
     double XC, XS, GS, GC;
-    if (K->small) {
+    if (f.small) {
         XC = s->X[k];
         XS = 0;
-        if (K->vert) {
+        if (f.vert) {
             double tg = 0;
             for (int j = 0; j <= k; j++)
                 tg += s->T[j] * s->G[k - j];
@@ -253,17 +262,17 @@ RB_INLINE void series_order(const consts *K, const bolt_law *B, int rocking, ser
     } else {
         XC = p.xc;
         XS = p.xs;
-        GS = K->vert ? p.gs : K->g * S_(s, k);
+        GS = f.vert ? p.gs : K->g * S_(s, k);
         GC = p.gc; /* read under a vertical only */
     }
     double RU = K->Ns * (XC + GS) - K->Ks * s->U[k] - K->Cs * r->ov[1] - K->Ns * K->b * p.oo;
     double udd, thdd = 0;
     if (rocking) {
         double Rth;
-        if (K->vert) /* W = M G: every gravity term a product with G's series */
-            Rth = K->small ? K->M * K->R * (XC + GC)
+        if (f.vert) /* W = M G: every gravity term a product with G's series */
+            Rth = f.small ? K->M * K->R * (XC + GC)
                            : K->M * (K->h * XC + K->b * XS) - K->M * (K->b * GC - K->h * GS);
-        else if (K->small)
+        else if (f.small)
             Rth = K->M * K->R * XC + K->W * K->R * (s->T[k] - (k == 0 ? K->alpha : 0));
         else
             Rth = K->M * (K->h * XC + K->b * XS) - K->W * (K->b * C_(s, k) - K->h * S_(s, k));
@@ -287,15 +296,15 @@ RB_INLINE void series_order(const consts *K, const bolt_law *B, int rocking, ser
      * b sin) theta' (the second the derivative of M (h sin - b cos)), at
      * order k, then their j = 0 terms */
     r->fg[0] = K->Ns * (GS - K->b * p.oo);
-    r->fg[1] = K->small ? K->Ns * r->ov[1] + K->M * K->R * r->ov[0]
+    r->fg[1] = f.small ? K->Ns * r->ov[1] + K->M * K->R * r->ov[0]
                      : K->Ns * p.vc + K->M * (k + 1) * (K->h * n->cs[1] - K->b * n->cs[0]);
     double vf = p.vf + V_(s, 0) * r->fg[0], xg = p.xg + s->X[0] * r->fg[1];
     w[0] = K->Cs * p.vv * ik;
     w[2] = vf * ik;
-    if (K->vert) {
+    if (f.vert) {
         if (!rocking)
             s->DH[k] = 0;
-        else if (K->small) {
+        else if (f.small) {
             double to = 0;
             for (int j = 0; j <= k; j++)
                 to += s->T[j] * O_(s, k - j);
@@ -393,6 +402,43 @@ RB_INLINE void physical_start(double *q, const series *s, double sgn, int rockin
     q[RB_TS_WCPL] = y0[RB_Y_WCPL];
 }
 
+/* The orders of a step from its row 0, until two terms in a row are
+ * within the tolerance (tol, tol_x) over h or the order bound is met,
+ * which cuts h. Returns the order, 0 where the series is not finite. */
+RB_INLINE int orders(const rb_motion *m, const consts *K, const bolt_law *B, shape f,
+                     series *s, double t0, double sgn, int xn, const double *tol,
+                     double tol_x, double *h_io, double (*p)[RB_TS_N])
+{
+    double h = *h_io, hk = 1, e_prev = HUGE_VAL;
+    for (int k = 0;; k++) {
+        /* order k reads the floor to order k, and the step's end to n */
+        if (k + 1 > xn) {
+            xn = floor_series(m, t0, sgn, RB_TAYLOR_MAX + 1, s);
+            /* the rows' copies of the floor, so that they are these terms */
+            for (int j = 0; j < k; j++)
+                set_floor(&s->R[j], s->X[j]);
+        }
+        series_order(K, B, f, s, k, p[k + 1] + RB_TS_WDAMP);
+        physical_rows(p, s, k, sgn, f.rocking, f.vert);
+        int n = k + 1;
+        hk *= h;
+        double e = scaled(s, n, hk, tol, tol_x);
+        if (f.vert) /* the vertical's own series, on the floor's scale */
+            e = rb_fmax(e, fabs(s->Z[n]) * tol_x * hk + 0.0 * s->Z[n]);
+        if (!isfinite(e))
+            return 0;
+        /* two terms in a row, since a series can have a vanishing term */
+        if (n >= 3 && e <= 1 && e_prev <= 1)
+            return n;
+        if (n == RB_TAYLOR_MAX) {
+            double g = rb_fmin(pow(0.5 / e, 1.0 / n), pow(0.5 / e_prev, 1.0 / (n - 1)));
+            *h_io = h * rb_fmin(g, 1.0);
+            return n;
+        }
+        e_prev = e;
+    }
+}
+
 RB_INLINE double taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double *y0,
                              double h_want, const double *atol, double atol_x, double rtol,
                              rb_taylor *ts)
@@ -425,39 +471,27 @@ RB_INLINE double taylor_step(const rb_sys *S, const rb_disc *D, double t0, const
      * slowly than the state's */
     double tol_x = 1 / (atol_x + rtol * fabs(s.X[0]));
 
-    double h = h_want, hk = 1, e_prev = HUGE_VAL;
+    double h = h_want;
     /* written as the orders are formed: a step that returns 0 leaves them
      * half written, and no one reads them */
     double (*p)[RB_TS_N] = ts->p;
     physical_start(p[0], &s, sgn, rocking, y0);
-    int n = 0;
-    for (int k = 0;; k++) {
-        /* order k reads the floor to order k, and the step's end to n */
-        if (k + 1 > xn) {
-            xn = floor_series(S->motion, t0, sgn, RB_TAYLOR_MAX + 1, &s);
-            /* the rows' copies of the floor, so that they are these terms */
-            for (int j = 0; j < k; j++)
-                set_floor(&s.R[j], s.X[j]);
-        }
-        series_order(&K, &B, rocking, &s, k, p[k + 1] + RB_TS_WDAMP);
-        physical_rows(p, &s, k, sgn, rocking, K.vert);
-        n = k + 1;
-        hk *= h;
-        double e = scaled(&s, n, hk, tol, tol_x);
-        if (K.vert) /* the vertical's own series, on the floor's scale */
-            e = rb_fmax(e, fabs(s.Z[n]) * tol_x * hk + 0.0 * s.Z[n]);
-        if (!isfinite(e))
-            return 0;
-        /* two terms in a row, since a series can have a vanishing term */
-        if (n >= 3 && e <= 1 && e_prev <= 1)
-            break;
-        if (n == RB_TAYLOR_MAX) {
-            double f = rb_fmin(pow(0.5 / e, 1.0 / n), pow(0.5 / e_prev, 1.0 / (n - 1)));
-            h *= rb_fmin(f, 1.0);
-            break;
-        }
-        e_prev = e;
-    }
+    shape f = {rocking, K.vert, K.small, rocking && !K.small && B.kind != BOLT_SLACK};
+    int n;
+    if (f.vert || f.half)
+        n = orders(S->motion, &K, &B, f, &s, t0, sgn, xn, tol, tol_x, &h, p);
+    else if (f.rocking)
+        n = f.small ? orders(S->motion, &K, &B, (shape){1, 0, 1, 0}, &s, t0, sgn, xn, tol,
+                             tol_x, &h, p)
+                    : orders(S->motion, &K, &B, (shape){1, 0, 0, 0}, &s, t0, sgn, xn, tol,
+                             tol_x, &h, p);
+    else
+        n = f.small ? orders(S->motion, &K, &B, (shape){0, 0, 1, 0}, &s, t0, sgn, xn, tol,
+                             tol_x, &h, p)
+                    : orders(S->motion, &K, &B, (shape){0, 0, 0, 0}, &s, t0, sgn, xn, tol,
+                             tol_x, &h, p);
+    if (n == 0)
+        return 0;
     /* the last row's floor, and its accelerations past the series */
     p[n][RB_TS_X] = sgn * s.X[n];
     p[n][RB_TS_UDD] = p[n][RB_TS_THDD] = 0;
