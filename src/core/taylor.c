@@ -478,8 +478,11 @@ RB_INLINE double taylor_step(const rb_sys *S, const rb_disc *D, double t0, const
     physical_start(p[0], &s, sgn, rocking, y0);
     shape f = {rocking, K.vert, K.small, rocking && !K.small && B.kind != BOLT_SLACK};
     int n;
-    if (f.vert || f.half)
+    if (f.vert)
         n = orders(S->motion, &K, &B, f, &s, t0, sgn, xn, tol, tol_x, &h, p);
+    else if (f.half)
+        n = orders(S->motion, &K, &B, (shape){1, 0, 0, 1}, &s, t0, sgn, xn, tol, tol_x, &h,
+                   p);
     else if (f.rocking)
         n = f.small ? orders(S->motion, &K, &B, (shape){1, 0, 1, 0}, &s, t0, sgn, xn, tol,
                              tol_x, &h, p)
