@@ -1,6 +1,8 @@
-/* What the benchmarks share: a monotonic clock and the El Centro floor
- * motion of the thesis (record through a 5 Hz, 5 % building). Header-only
- * because CMake builds each benchmark source as its own program. */
+/* What the benchmarks and studies share: a monotonic clock, the El Centro
+ * floor motion of the thesis (record through a 5 Hz, 5 % building), the
+ * shipped El Centro and Taft records, and the studies' random draws.
+ * Header-only because CMake builds each benchmark source as its own
+ * program. */
 #ifndef RB_BENCH_COMMON_H
 #define RB_BENCH_COMMON_H
 
@@ -31,6 +33,29 @@ static inline int rb_bench_floor_motion(const char *path, rb_series *s)
         return -1;
     }
     return 0;
+}
+
+/* A draw in [lo, hi) from the 64-bit LCG state *s (a study's fixed seed
+ * gives the same cabinets on every machine). */
+static inline double rb_bench_uniform(unsigned long long *s, double lo, double hi)
+{
+    *s = *s * 6364136223846793005ULL + 1442695040888963407ULL;
+    return lo + (hi - lo) * (double)(*s >> 11) / 9007199254740992.0;
+}
+
+/* One of the shipped records as it is read: El Centro's AT2 file, or
+ * (taft) Taft's one column in g at 0.01 s. 0, or -1. */
+static inline int rb_bench_read_record(const char *path, int taft, rb_series *s)
+{
+    rb_record_opts ro;
+    rb_diag diag;
+    rb_record_opts_init(&ro);
+    if (taft) {
+        ro.format = RB_REC_ONE_COLUMN;
+        ro.dt_s = 0.01;
+        ro.units_to_mps2 = 9.80665;
+    }
+    return rb_record_read(path, &ro, s, &diag) == RB_OK ? 0 : -1;
 }
 
 /* The physical floor a solve is measured against: a plain linear SDOF

@@ -19,6 +19,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "bench_common.h"
 #include "rockbolt/case.h"
 #include "rockbolt/record.h"
 #include "rockbolt/run.h"
@@ -96,39 +97,23 @@ static void study_case(const char *path)
     rb_case_free(&c);
 }
 
-static double uniform(unsigned long long *s, double lo, double hi)
-{
-    *s = *s * 6364136223846793005ULL + 1442695040888963407ULL;
-    return lo + (hi - lo) * (double)(*s >> 11) / 9007199254740992.0;
-}
-
-static int read_record(const char *path, int taft, rb_series *s)
-{
-    rb_record_opts ro;
-    rb_diag diag;
-    rb_record_opts_init(&ro);
-    if (taft) {
-        ro.format = RB_REC_ONE_COLUMN;
-        ro.dt_s = 0.01;
-        ro.units_to_mps2 = 9.80665;
-    }
-    return rb_record_read(path, &ro, s, &diag) == RB_OK ? 0 : -1;
-}
-
 static void study_random(int n)
 {
     unsigned long long seed = 20261127;
     rb_series rec[2] = {{0}, {0}};
-    if (read_record("cases/records/elcentro_1940_ns.at2", 0, &rec[0]) != 0
-        || read_record("cases/records/taft_1952_s69e.txt", 1, &rec[1]) != 0) {
+    if (rb_bench_read_record("cases/records/elcentro_1940_ns.at2", 0, &rec[0]) != 0
+        || rb_bench_read_record("cases/records/taft_1952_s69e.txt", 1, &rec[1]) != 0) {
         fprintf(stderr, "cannot read the records\n");
         return;
     }
     for (int i = 0; i < n; i++) {
-        int which = uniform(&seed, 0, 1) < 0.5;
-        double mass = uniform(&seed, 200, 900), f = uniform(&seed, 3, 15);
-        double dia = uniform(&seed, 0.010, 0.016), gr = uniform(&seed, 0.002, 0.03);
-        double level = uniform(&seed, 0.1, 0.6), fb = uniform(&seed, 3, 10);
+        int which = rb_bench_uniform(&seed, 0, 1) < 0.5;
+        double mass = rb_bench_uniform(&seed, 200, 900);
+        double f = rb_bench_uniform(&seed, 3, 15);
+        double dia = rb_bench_uniform(&seed, 0.010, 0.016);
+        double gr = rb_bench_uniform(&seed, 0.002, 0.03);
+        double level = rb_bench_uniform(&seed, 0.1, 0.6);
+        double fb = rb_bench_uniform(&seed, 3, 10);
         rb_series s = {0};
         if (rb_series_copy(&rec[which], &s) != RB_OK
             || rb_series_building_filter(&s, fb, 0.05) != RB_OK) {
