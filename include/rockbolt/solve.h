@@ -68,9 +68,9 @@ typedef struct {
      * frame and the building (docs/solver.md); 0: by Taylor series, the
      * cross-check of the tests */
     int exact_floor;
-    /* the least check points of a Taylor or exact step (default 4, at least
-     * 2): fewer are the tests' way to widen the intervals the guards must
-     * see into */
+    /* the least check points of a Taylor or exact step (default 2, at
+     * least 2; more where an eighth of the fastest mode's period asks for
+     * them): more are the tests' way to read a run at finer points */
     int min_checks;
     /* RB_STOP_* bits (default 0: every run goes to the end). A search that
      * decides one limit state (a fragility's first yield or lift-off) ends

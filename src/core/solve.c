@@ -28,7 +28,7 @@ void rb_solve_opts_init(rb_solve_opts *o)
     o->max_events_per_s = 20000;
     o->max_steps = 50000000;
     o->exact_floor = 1;
-    o->min_checks = RB_SUB;
+    o->min_checks = RB_MIN_CHECKS;
 }
 
 void rb_result_free(rb_result *r)

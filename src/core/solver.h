@@ -237,10 +237,14 @@ double rb_absorbed_at(const rb_solver *sv, int row, const double *y);
 double rb_absorbed_now(const rb_solver *sv, int row);
 
 /* Guards and peaks are checked at n_sub equally spaced points of a step,
- * as many as the check spacing asks for: at least the option min_checks
- * (default RB_SUB) for a Taylor or exact step, at least two and at most
- * RB_SUB for a Runge-Kutta step, whose steps are short. */
+ * as many as the check spacing (an eighth of the fastest mode's period)
+ * asks for: at least the option min_checks (default RB_MIN_CHECKS) for a
+ * Taylor or exact step, at least two and at most RB_SUB for a Runge-Kutta
+ * step, whose steps are short. Two is the least a step's peak windows
+ * and turn searches were built for (docs/solver.md, "Check points a
+ * step"). */
 #define RB_SUB 4
+#define RB_MIN_CHECKS 2
 
 /* control.c (step control, apart from the steps): the tolerances, the
  * longest steps and the check spacing of a run; the control's trial

@@ -21,3 +21,9 @@ rb_script_test(NAME validation_convergence SCRIPT tests/validation/convergence.p
 # the Taylor steps against Dormand-Prince at 1e-9 on every shipped case
 rb_script_test(NAME validation_integrators SCRIPT tests/validation/integrators.py
                LABEL validation)
+# Two check points a step (the default) held to 4, 8 and 16 over 120
+# random cabinets, where those agree among themselves (docs/solver.md,
+# "Check points a step"); the program is a benchmark study as well.
+add_test(NAME validation_check_points COMMAND check_points_study 120 2 2e-5)
+set_tests_properties(validation_check_points PROPERTIES LABELS validation
+    WORKING_DIRECTORY ${PROJECT_SOURCE_DIR} TIMEOUT 600)
