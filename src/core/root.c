@@ -15,19 +15,7 @@ double rb_root_illinois(double (*f)(const void *ctx, double x), const void *ctx,
         double fm = f(ctx, m);
         if (fm == 0)
             return m;
-        if ((fm < 0) == (fa < 0)) {
-            a = m;
-            fa = fm;
-            if (last == 1)
-                fb *= 0.5;
-            last = 1;
-        } else {
-            b = m;
-            fb = fm;
-            if (last == -1)
-                fa *= 0.5;
-            last = -1;
-        }
+        rb_illinois_narrow(&a, &fa, &b, &fb, &last, m, fm);
     }
     return 0.5 * (a + b);
 }

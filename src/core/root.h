@@ -12,6 +12,30 @@
 double rb_root_illinois(double (*f)(const void *ctx, double x), const void *ctx, double a,
                         double b, double fa, double fb, double tol);
 
+/* One Illinois narrowing of the bracket [*a, *b] (f is *fa and *fb there,
+ * of opposite signs) by m, where f is fm (not 0): m replaces the end on
+ * its side, and where the same end was replaced the step before (*last),
+ * the other end's value is halved, so that the secant does not keep
+ * hugging it. Shared by rb_root_illinois and the callers that stop on
+ * their own rule (track.c's crossings of zero). */
+static inline void rb_illinois_narrow(double *a, double *fa, double *b, double *fb, int *last,
+                                      double m, double fm)
+{
+    if ((fm < 0) == (*fa < 0)) {
+        *a = m;
+        *fa = fm;
+        if (*last == 1)
+            *fb *= 0.5;
+        *last = 1;
+    } else {
+        *b = m;
+        *fb = fm;
+        if (*last == -1)
+            *fa *= 0.5;
+        *last = -1;
+    }
+}
+
 /* The largest value of f inside [t[0], t[n-1]] (a local maximum; the ends
  * are not evaluated, callers know them) and where it is (*at): Brent's
  * method (golden sections and parabolic steps) on -f, seeded with the n

@@ -470,19 +470,7 @@ static double falsi_crossing(rb_solver *sv, double t0, double v0, double t, doub
         double fx = -refine_at(&c, x);
         if (!isfinite(fx) || fx == 0)
             return x;
-        if ((fx > 0) == (fa > 0)) {
-            a = x;
-            fa = fx;
-            if (last == 1)
-                fb *= 0.5;
-            last = 1;
-        } else {
-            b = x;
-            fb = fx;
-            if (last == -1)
-                fa *= 0.5;
-            last = -1;
-        }
+        rb_illinois_narrow(&a, &fa, &b, &fb, &last, x, fx);
         double next = a + (b - a) * fa / (fa - fb);
         if (!(fabs(next - x) > tol))
             return next;
