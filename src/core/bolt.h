@@ -20,10 +20,10 @@ struct rb_bolt_ops {
     int rigid_stop;   /* the row is a rigid stop (see above) */
     /* For rows that are not rigid stops (NULL otherwise), at the mirrored
      * angle th of the loaded row's side: */
-    /* the row's tension in stage 4 */
+    /* the row's tension in stage 4: a function of the chord's stretch
+     * past the gap that grows with it, so that the row goes slack at the
+     * contact angle and reaches Fy at yield_stretch (rb_disc's yield_at) */
     double (*tension)(const rb_sys *S, const rb_disc *D, double th);
-    /* > 0 while the row is taut, crossing 0 where it goes slack */
-    double (*taut)(const rb_sys *S, const rb_disc *D, double th);
     /* the elastic energy the row holds, in stages 2, 4 and 5 */
     double (*stored)(const rb_sys *S, const rb_disc *D, double th);
     /* the elastic stretch at Fy, which a row unloading from yield gives back */

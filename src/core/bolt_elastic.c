@@ -42,7 +42,7 @@ static double frequency_hz(const rb_sys *S)
 
 const rb_bolt_ops rb_bolt_elastic_plastic = {
     .rows = 1, .yields = 1, .rigid_stop = 0,
-    .tension = tension, .taut = stretch, .stored = stored,
+    .tension = tension, .stored = stored,
     .yield_stretch = yield_stretch, .frequency_hz = frequency_hz,
     .spring_npm = spring_npm,
 };

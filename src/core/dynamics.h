@@ -49,6 +49,10 @@ typedef struct {
     double contact[2];    /* contact angle of each row: chord(contact) = gap,
                              kept with the gap so that stage 2 watches an
                              angle instead of a chord (no sine per check) */
+    double yield_at[2];   /* a row that is a force law (not a rigid stop):
+                             the angle at which it reaches Fy, chord(yield_at)
+                             = gap + its elastic stretch at Fy, so that stage
+                             4's guards are angles too (transitions.c) */
     double absorbed[2];   /* plastic work of each row */
     int broken[2];
     double chord_entry;   /* stage 5: chord and absorbed energy on entry */

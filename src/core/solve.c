@@ -125,6 +125,7 @@ rb_status rb_solver_setup(rb_solver *sv, const rb_model *model, const rb_motion 
     S->M = model->mass_kg;
     sv->disc.gap[0] = sv->disc.gap[1] = model->gap_m;
     sv->disc.contact[0] = sv->disc.contact[1] = rb_dyn_contact_angle(S, model->gap_m);
+    rb_disc_yield_angles(S, &sv->disc);
     sv->disc.stage = RB_STAGE_FIXED;
     fill_constants(sv, motion);
     if (!isfinite(out->peak_floor_mps2)) {

@@ -224,6 +224,8 @@ int rb_guard_stays(int guard, double ga, double reach_a, double gb, double reach
  * the physical angle where it does: such a root is found on theta alone. */
 int rb_guard_angle(const rb_solver *sv, int guard, double *level);
 void rb_guard_nudge(double *g);
+/* D's yield_at from its gaps, for rows that are force laws. */
+void rb_disc_yield_angles(const rb_sys *S, rb_disc *D);
 /* Apply the transition of 'guard' at the current (t, y). */
 void rb_transition(rb_solver *sv, int guard);
 /* Transitions that hold the moment a stage starts (a bolt impact that

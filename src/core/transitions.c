@@ -162,12 +162,12 @@ double rb_guard_one(const rb_solver *sv, int guard, double t, const double *y)
     case G_SLACK:
     case G_YIELD: {
         rb_aux a;
-        /* a spring's tension is a function of the angle alone: the same
-         * call the equations make (bolt_moment), without their floor,
-         * loads and solve, some 870 instructions a reading */
+        /* a force law's tension grows with the chord, a function of the
+         * angle alone: the row goes slack at the contact angle and
+         * reaches Fy at yield_at, and its guards are those angles
+         * (rb_guard_angle), found on theta's series like stage 2's */
         if (!S->bolt->rigid_stop)
-            return guard == G_SLACK ? S->bolt->taut(S, D, th)
-                                    : S->bolt->tension(S, D, th) - S->d.fy_row_n;
+            return th - (guard == G_SLACK ? D->contact : D->yield_at)[rb_row_of_side(D->side)];
         rb_dyn_rhs(S, D, t, y, NULL, &a);
         return bolt_guard(sv, guard, &a);
     }
@@ -184,10 +184,29 @@ int rb_guard_angle(const rb_solver *sv, int guard, double *level)
     case G_FLOOR: th = -RB_FLOOR_SLACK * sv->rest_theta; break;
     case G_CONTACT: th = D->contact[rb_row_of_side(D->side)]; break;
     case G_OVERTURN: th = sv->sys.d.alpha; break;
+    case G_SLACK:
+    case G_YIELD:
+        if (sv->sys.bolt->rigid_stop)
+            return 0;
+        th = (guard == G_SLACK ? D->contact : D->yield_at)[rb_row_of_side(D->side)];
+        break;
     default: return 0;
     }
     *level = D->side * th;
     return 1;
+}
+
+void rb_disc_yield_angles(const rb_sys *S, rb_disc *D)
+{
+    for (int row = 0; row < 2; row++) {
+        D->yield_at[row] = 0;
+        if (S->bolt->rigid_stop || !S->bolt->yields)
+            continue;
+        double chord = D->gap[row] + S->bolt->yield_stretch(S);
+        /* a chord past the diameter is never reached */
+        D->yield_at[row] = S->form != RB_FORM_SMALL && !(chord < 2 * S->l)
+                               ? HUGE_VAL : rb_dyn_contact_angle(S, chord);
+    }
 }
 
 void rb_guard_eval(const rb_solver *sv, double t, const double *y, double *g)
@@ -222,10 +241,6 @@ static void guard_eval(const rb_solver *sv, double t, const double *y, double x,
         else
             rb_dyn_uplift_guards_x(&sv->sys, x, ge, y, g + G_UP_POS);
         mask &= ~(1u << G_UP_POS | 1u << G_UP_NEG);
-    }
-    if (a && (mask & 1u << G_YIELD)) {
-        g[G_YIELD] = bolt_guard(sv, G_YIELD, a);
-        mask &= ~(1u << G_YIELD);
     }
     for (unsigned m = mask; m;) {
         int k = rb_guard_next(&m);
@@ -397,6 +412,7 @@ static void stop_yield(rb_solver *sv)
     if (!S->bolt->rigid_stop) {
         D->gap[row] -= S->bolt->yield_stretch(S);
         D->contact[row] = rb_dyn_contact_angle(S, D->gap[row]);
+        rb_disc_yield_angles(S, D);
     }
     D->theta_hold = th;
     D->stage = RB_STAGE_HELD;
