@@ -101,9 +101,10 @@ double rb_taylor_rate_bound(const rb_taylor *ts, int c, double h);
 double rb_taylor_reach(const rb_taylor *ts, int c, double h);
 
 /* Where component c can read over [0, h] as the Horner passes of the
- * dense output read it (rb_taylor_one, _check, _state, _end): its start
- * less and plus the reach and the rounding of those passes and of the
- * bound itself. NaN ends where the series is not finite. */
+ * dense output read it (rb_taylor_one, _check, _state, _end): the range
+ * of its first three terms over [0, h] (ends and vertex), widened by the
+ * reach of the rest and the rounding of those passes and of the bound
+ * itself. NaN ends where the series is not finite. */
 void rb_taylor_range(const rb_taylor *ts, int c, double h, double *lo, double *hi);
 
 /* Whether component c stays strictly on its start's side of level at

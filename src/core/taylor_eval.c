@@ -63,13 +63,35 @@ double rb_taylor_reach(const rb_taylor *ts, int c, double h)
 
 void rb_taylor_range(const rb_taylor *ts, int c, double h, double *lo, double *hi)
 {
-    double p0 = ts->p[0][state_series[c]], reach = rb_taylor_reach(ts, c, h);
+    /* The series' first three terms, a parabola whose range over [0, h]
+     * is its ends and its vertex, and the rest bounded by sum |p_k| h^k
+     * (k >= 3). The reach alone (every term's full size added both ways)
+     * would spread a step that moves one way over both sides of its
+     * start: a step that leaves the floor or the bolt head would read its
+     * own guard's level as reachable behind it, and read every check
+     * point for a crossing that cannot be there. */
+    int i = state_series[c], n = ts->order;
+    double p0 = ts->p[0][i], p1 = n >= 1 ? ts->p[1][i] : 0, p2 = n >= 2 ? ts->p[2][i] : 0;
+    double tail = 0;
+    for (int k = n; k >= 3; k--)
+        tail = (tail + fabs(ts->p[k][i])) * h;
+    tail *= h * h;
+    double at_h = p1 * h + p2 * h * h, qlo = at_h < 0 ? at_h : 0, qhi = at_h > 0 ? at_h : 0;
+    double tv = p2 != 0 ? -p1 / (2 * p2) : -1;
+    if (tv > 0 && tv < h) {
+        double qv = (p1 + p2 * tv) * tv;
+        qlo = qv < qlo ? qv : qlo;
+        qhi = qv > qhi ? qv : qhi;
+    }
     /* Horner's rounding is within n eps of sum |p_k| tau^k (Higham,
-     * Accuracy and Stability, 5.1), the reach's own sum within as much of
-     * it, and the two ends' additions within eps each: twice all three */
-    double w = reach + (4.0 * ts->order + 12.0) * DBL_EPSILON * (fabs(p0) + reach);
-    *lo = p0 - w;
-    *hi = p0 + w;
+     * Accuracy and Stability, 5.1); the parabola's ends and vertex, the
+     * tail's sum and the additions below are within a few eps more of the
+     * same sum: twice all of it. A NaN term gives NaN ends through the
+     * sizes summed here. */
+    double size = fabs(p0) + fabs(p1) * h + fabs(p2) * h * h + tail;
+    double w = tail + (4.0 * n + 16.0) * DBL_EPSILON * size;
+    *lo = p0 + qlo - w;
+    *hi = p0 + qhi + w;
 }
 
 int rb_taylor_stays_off(const rb_taylor *ts, int c, double h, double level)

@@ -1,12 +1,15 @@
 /* The bound a rocking Taylor step uses to read its guards at its end
  * alone (solve.c, angle_clear): rb_taylor_reach, the sum of |p_k| h^k, and
  * rb_taylor_stays_off, which says a component cannot reach a level at any
- * instant of the step as the dense output's Horner passes read it. A level
- * it wrongly called clear would be a missed floor impact, bolt contact or
- * overturning, so every "clear" is held against dense sampling of the
- * same series: random series of every order, signs and scales, with
- * levels placed around the reach, and series whose terms all have one
- * sign, which reach their bound at the step's end. */
+ * instant of the step as the dense output's Horner passes read it (the
+ * range of the first three terms, widened by the reach of the rest). A
+ * level it wrongly called clear would be a missed floor impact, bolt
+ * contact or overturning, so every "clear" is held against dense sampling
+ * of the same series: random series of every order, signs and scales,
+ * with levels placed around the reach and a hair outside the range's
+ * ends; series whose terms all have one sign, which reach their bound at
+ * the step's end; and parabolas that turn inside the step, whose vertex
+ * is the range's end. */
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
@@ -54,7 +57,7 @@ static double sample_side(const rb_taylor *ts, int comp, double h, double level,
 
 static void random_series(void)
 {
-    int clear = 0, wrong = 0, tight = 0;
+    int clear = 0, wrong = 0, tight = 0, edge_clear = 0;
     double worst_ratio = 0, worst_sum = 0;
     for (int trial = 0; trial < 2000; trial++) {
         rb_taylor ts;
@@ -88,12 +91,24 @@ static void random_series(void)
                 worst_ratio = fmax(worst_ratio, seen / reach);
             tight += f < 1.01;
         }
+        /* a hair outside the range's ends: the parabola's ends and vertex
+         * are the extremes a step reaches, up to the tail and rounding */
+        double lo, hi;
+        rb_taylor_range(&ts, comps[lane], h, &lo, &hi);
+        for (int j = 0; j < 2; j++) {
+            double end = j ? hi : lo, level = end + (j ? 1 : -1) * 1e-9 * fabs(end);
+            if (!rb_taylor_stays_off(&ts, comps[lane], h, level))
+                continue;
+            edge_clear++;
+            sample_side(&ts, comps[lane], h, level, &wrong);
+        }
     }
-    printf("random series: %d levels called clear (%d within 1 %% of the reach), "
-           "%d readings on the wrong side; largest sampled move / reach 1 %+.2e; "
-           "reach against the sum by terms %.2e\n",
-           clear, tight, wrong, worst_ratio - 1, worst_sum);
+    printf("random series: %d levels called clear (%d within 1 %% of the reach, %d a "
+           "hair outside the range), %d readings on the wrong side; largest sampled "
+           "move / reach 1 %+.2e; reach against the sum by terms %.2e\n",
+           clear, tight, edge_clear, wrong, worst_ratio - 1, worst_sum);
     CHECK(clear > 1000);
+    CHECK(edge_clear > 3000);
     CHECK(wrong == 0);
     /* the sampled readings carry their own rounding */
     CHECK(worst_ratio <= 1 + 1e-12);
@@ -130,6 +145,34 @@ static void one_sign(void)
     CHECK(wrong == 0);
 }
 
+/* Parabolas (order 2, no tail) that turn inside the step: the range's
+ * end is the vertex, p0 - p1^2 / (4 p2), so a level a hair past it is
+ * clear and one a hair short of it is crossed (the sampling reads the
+ * vertex itself, at h / 2). */
+static void turning(void)
+{
+    int wrong = 0;
+    for (int sign = -1; sign <= 1; sign += 2) {
+        rb_taylor ts;
+        memset(&ts, 0, sizeof ts);
+        ts.order = 2;
+        ts.rocking = 1;
+        double h = 0.01, p0 = 1e-3, p1 = sign * 0.1, p2 = -sign * 10.0;
+        ts.p[0][RB_TS_TH] = p0;
+        ts.p[1][RB_TS_TH] = p1;
+        ts.p[2][RB_TS_TH] = p2;
+        double vertex = p0 - p1 * p1 / (4 * p2);
+        double past = vertex + sign * 1e-9 * vertex, short_of = vertex - sign * 1e-9 * vertex;
+        CHECK(rb_taylor_stays_off(&ts, RB_Y_TH, h, past));
+        CHECK(!rb_taylor_stays_off(&ts, RB_Y_TH, h, short_of));
+        sample_side(&ts, RB_Y_TH, h, past, &wrong);
+        CHECK(sign * (rb_taylor_one(&ts, 0.5 * h, RB_Y_TH) - short_of) > 0);
+        /* the reach alone would have called the start's own side reachable */
+        CHECK(rb_taylor_stays_off(&ts, RB_Y_TH, h, p0 - sign * 0.6 * rb_taylor_reach(&ts, RB_Y_TH, h)));
+    }
+    CHECK(wrong == 0);
+}
+
 /* A series that starts on its level is never clear (a guard a transition
  * left on its boundary), nor is any level when the step is not finite. */
 static void edges(void)
@@ -142,6 +185,11 @@ static void edges(void)
     ts.p[1][RB_TS_TH] = 0.5;
     CHECK(!rb_taylor_stays_off(&ts, RB_Y_TH, 0.01, 0.01));
     CHECK(rb_taylor_stays_off(&ts, RB_Y_TH, 0.01, 0.0));
+    /* a step that leaves its level (the floor, a bolt head) is clear of
+     * it behind: its start is closer to it than the reach */
+    ts.p[0][RB_TS_TH] = 1e-4;
+    CHECK(rb_taylor_reach(&ts, RB_Y_TH, 0.01) > 1e-4);
+    CHECK(rb_taylor_stays_off(&ts, RB_Y_TH, 0.01, 0.0));
     ts.p[2][RB_TS_TH] = NAN;
     CHECK(!rb_taylor_stays_off(&ts, RB_Y_TH, 0.01, 0.0));
     ts.p[2][RB_TS_TH] = INFINITY;
@@ -152,6 +200,7 @@ int main(void)
 {
     random_series();
     one_sign();
+    turning();
     edges();
     TEST_MAIN_END();
 }
