@@ -82,7 +82,7 @@ void rb_control_init(rb_solver *sv)
 
 double rb_control_trial(const rb_solver *sv, double target)
 {
-    return fmin(fmin(sv->h, sv->h_max), target - sv->t);
+    return rb_fmin(rb_fmin(sv->h, sv->h_max), target - sv->t);
 }
 
 /* A Taylor step towards the next break or the end, which it lands on
