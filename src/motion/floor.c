@@ -125,12 +125,13 @@ static void sample_line(const rb_series *s, long i, double tau, double *value,
 int rb_series_taylor(const rb_series *s, double t0, int n, double *coef)
 {
     double tau = 0;
-    for (int k = 0; k <= n; k++)
-        coef[k] = 0.0;
     long i = n < 1 ? -1 : step_interval(s, t0, &tau);
-    if (i < 0)
-        return 0;
-    if (!s->bld.ground_mps2) {
+    if (i < 0 || !s->bld.ground_mps2) {
+        /* a building's series writes every term below */
+        for (int k = 0; k <= n; k++)
+            coef[k] = 0.0;
+        if (i < 0)
+            return 0;
         sample_line(s, i, tau, &coef[0], &coef[1]);
         return 1;
     }

@@ -225,6 +225,16 @@ static void times_linear(double e0, double e1, int n, double *coef)
 int rb_motion_taylor(const rb_motion *m, double t0, int n, double *coef)
 {
     int deg = 0;
+    if (m->kind == RB_MOTION_SAMPLED) {
+        /* a record's series is a step's every time (rb_series_taylor
+         * clears coef itself); the scale carries the polarity's sign,
+         * since -(c s) and c (-s) are the same double */
+        double f = m->polarity < 0 ? -m->scale : m->scale;
+        deg = rb_series_taylor(m->series, t0, n, coef);
+        for (int k = 0; k <= deg; k++)
+            coef[k] *= f;
+        return deg;
+    }
     for (int k = 0; k <= n; k++)
         coef[k] = 0.0;
     switch (m->kind) {
@@ -246,10 +256,7 @@ int rb_motion_taylor(const rb_motion *m, double t0, int n, double *coef)
         }
         break;
     }
-    case RB_MOTION_SAMPLED:
-        deg = rb_series_taylor(m->series, t0, n, coef);
-        for (int k = 0; k <= deg; k++)
-            coef[k] *= m->scale;
+    case RB_MOTION_SAMPLED: /* above */
         break;
     case RB_MOTION_CRITICAL:
         return -1;
