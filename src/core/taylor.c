@@ -402,6 +402,13 @@ RB_INLINE void physical_start(double *q, const series *s, double sgn, int rockin
     q[RB_TS_WCPL] = y0[RB_Y_WCPL];
 }
 
+/* Every order is compiled on its own, each pass over j at its own fixed
+ * length: a loop whose length changed every order ended in a mispredicted
+ * branch an order, and the unrolled orders' tests are branches of their
+ * own. */
+#define RB_PRAGMA(x) _Pragma(#x)
+#define RB_UNROLL(n) RB_PRAGMA(GCC unroll n)
+
 /* The orders of a step from its row 0, until two terms in a row are
  * within the tolerance (tol, tol_x) over h or the order bound is met,
  * which cuts h. Returns the order, 0 where the series is not finite. */
@@ -410,7 +417,8 @@ RB_INLINE int orders(const rb_motion *m, const consts *K, const bolt_law *B, sha
                      double tol_x, double *h_io, double (*p)[RB_TS_N])
 {
     double h = *h_io, hk = 1, e_prev = HUGE_VAL;
-    for (int k = 0;; k++) {
+    RB_UNROLL(RB_TAYLOR_MAX)
+    for (int k = 0; k < RB_TAYLOR_MAX; k++) {
         /* order k reads the floor to order k, and the step's end to n */
         if (k + 1 > xn) {
             xn = floor_series(m, t0, sgn, RB_TAYLOR_MAX + 1, s);
@@ -437,6 +445,7 @@ RB_INLINE int orders(const rb_motion *m, const consts *K, const bolt_law *B, sha
         }
         e_prev = e;
     }
+    return 0; /* not reached: order RB_TAYLOR_MAX returns above */
 }
 
 RB_INLINE double taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double *y0,
