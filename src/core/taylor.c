@@ -9,6 +9,7 @@
 #include "pair.h"
 #include "simd.h"
 #include "taylor.h"
+#include "unroll.h"
 
 enum { NT = RB_TAYLOR_MAX + 2 };
 
@@ -402,13 +403,6 @@ RB_INLINE void physical_start(double *q, const series *s, double sgn, int rockin
     q[RB_TS_WCPL] = y0[RB_Y_WCPL];
 }
 
-/* Every order is compiled on its own, each pass over j at its own fixed
- * length: a loop whose length changed every order ended in a mispredicted
- * branch an order, and the unrolled orders' tests are branches of their
- * own. */
-#define RB_PRAGMA(x) _Pragma(#x)
-#define RB_UNROLL(n) RB_PRAGMA(GCC unroll n)
-
 /* The orders of a step from its row 0, until two terms in a row are
  * within the tolerance (tol, tol_x) over h or the order bound is met,
  * which cuts h. Returns the order, 0 where the series is not finite. */
@@ -417,6 +411,8 @@ RB_INLINE int orders(const rb_motion *m, const consts *K, const bolt_law *B, sha
                      double tol_x, double *h_io, double (*p)[RB_TS_N])
 {
     double h = *h_io, hk = 1, e_prev = HUGE_VAL;
+    /* every order compiled on its own, each pass over j of a fixed length,
+     * so that the orders' tests are the step's only branches on them */
     RB_UNROLL(RB_TAYLOR_MAX)
     for (int k = 0; k < RB_TAYLOR_MAX; k++) {
         /* order k reads the floor to order k, and the step's end to n */

@@ -7,6 +7,7 @@
 #include "root.h"
 #include "simd.h"
 #include "taylor.h"
+#include "unroll.h"
 
 /* Horner on every component (RB_TS_N) side by side, four to a vector
  * (src/core/simd.h): each lane is the scalar chain v = v tau + p_k. */
@@ -18,12 +19,15 @@ RB_INLINE void horner_all(const rb_taylor *ts, double tau, double *out)
     rb_quad t = rb_quad_splat(tau), a = rb_quad_load(p[n]), b = rb_quad_load(p[n] + 4),
             c = rb_quad_load(p[n] + 8);
     double d = p[n][12];
-    for (int k = n - 1; k >= 0; k--) {
-        a = rb_quad_horner(a, t, rb_quad_load(p[k]));
-        b = rb_quad_horner(b, t, rb_quad_load(p[k] + 4));
-        c = rb_quad_horner(c, t, rb_quad_load(p[k] + 8));
-        d = d * tau + p[k][12];
-    }
+#define ALL_STEP(k)                                                              \
+    do {                                                                         \
+        a = rb_quad_horner(a, t, rb_quad_load(p[k]));                            \
+        b = rb_quad_horner(b, t, rb_quad_load(p[k] + 4));                        \
+        c = rb_quad_horner(c, t, rb_quad_load(p[k] + 8));                        \
+        d = d * tau + p[k][12];                                                  \
+    } while (0)
+    RB_DOWN_FROM(n, ALL_STEP)
+#undef ALL_STEP
     rb_quad_store(out, a);
     rb_quad_store(out + 4, b);
     rb_quad_store(out + 8, c);
@@ -38,8 +42,9 @@ double rb_taylor_one(const rb_taylor *ts, double tau, int c)
 {
     int i = state_series[c];
     double v = ts->p[ts->order][i];
-    for (int k = ts->order - 1; k >= 0; k--)
-        v = v * tau + ts->p[k][i];
+#define ONE_STEP(k) (v = v * tau + ts->p[k][i])
+    RB_DOWN_FROM(ts->order, ONE_STEP)
+#undef ONE_STEP
     return v;
 }
 
@@ -47,8 +52,9 @@ double rb_taylor_rate_bound(const rb_taylor *ts, int c, double h)
 {
     int i = state_series[c];
     double b = 0;
-    for (int k = ts->order; k >= 1; k--)
-        b = b * h + k * fabs(ts->p[k][i]);
+#define BOUND_STEP(j) (b = b * h + ((j) + 1) * fabs(ts->p[(j) + 1][i]))
+    RB_DOWN_FROM(ts->order, BOUND_STEP)
+#undef BOUND_STEP
     return b;
 }
 
@@ -73,8 +79,14 @@ void rb_taylor_range(const rb_taylor *ts, int c, double h, double *lo, double *h
     int i = state_series[c], n = ts->order;
     double p0 = ts->p[0][i], p1 = n >= 1 ? ts->p[1][i] : 0, p2 = n >= 2 ? ts->p[2][i] : 0;
     double tail = 0;
-    for (int k = n; k >= 3; k--)
-        tail = (tail + fabs(ts->p[k][i])) * h;
+    /* k = j + 1 from n down to 3 */
+#define TAIL_STEP(j)                                                             \
+    do {                                                                         \
+        if ((j) >= 2)                                                            \
+            tail = (tail + fabs(ts->p[(j) + 1][i])) * h;                         \
+    } while (0)
+    RB_DOWN_FROM(n, TAIL_STEP)
+#undef TAIL_STEP
     tail *= h * h;
     double at_h = p1 * h + p2 * h * h, qlo = at_h < 0 ? at_h : 0, qhi = at_h > 0 ? at_h : 0;
     double tv = p2 != 0 ? -p1 / (2 * p2) : -1;
@@ -111,8 +123,9 @@ RB_INLINE void state_values(const rb_taylor *ts, double tau, double *y)
     const double (*p)[RB_TS_N] = (const double (*)[RB_TS_N])ts->p;
     int n = ts->order;
     rb_quad t = rb_quad_splat(tau), v = rb_quad_load(p[n]);
-    for (int k = n - 1; k >= 0; k--)
-        v = rb_quad_horner(v, t, rb_quad_load(p[k]));
+#define STATE_STEP(k) (v = rb_quad_horner(v, t, rb_quad_load(p[k])))
+    RB_DOWN_FROM(n, STATE_STEP)
+#undef STATE_STEP
     rb_quad_store(y, v);
 }
 
@@ -148,18 +161,30 @@ RB_INLINE void check_values(const rb_taylor *ts, double tau, double *v)
     const double (*p)[RB_TS_N] = (const double (*)[RB_TS_N])ts->p;
     int n = ts->order;
     rb_quad t = rb_quad_splat(tau), a = rb_quad_load(p[n]), b = rb_quad_load(p[n] + 4);
-    for (int k = n - 1; k >= 0; k--) {
-        a = rb_quad_horner(a, t, rb_quad_load(p[k]));
-        b = rb_quad_horner(b, t, rb_quad_load(p[k] + 4));
-    }
-    rb_quad_store(v, a);
-    rb_quad_store(v + 4, b);
     if (ts->rocking) {
+        /* theta'''s chain in the same pass: one loop a reading */
         double thdd = p[n][RB_TS_THDD];
-        for (int k = n - 1; k >= 0; k--)
-            thdd = thdd * tau + p[k][RB_TS_THDD];
+#define ROCKING_STEP(k)                                                          \
+    do {                                                                         \
+        a = rb_quad_horner(a, t, rb_quad_load(p[k]));                            \
+        b = rb_quad_horner(b, t, rb_quad_load(p[k] + 4));                        \
+        thdd = thdd * tau + p[k][RB_TS_THDD];                                    \
+    } while (0)
+        RB_DOWN_FROM(n, ROCKING_STEP)
+#undef ROCKING_STEP
+        rb_quad_store(v, a);
+        rb_quad_store(v + 4, b);
         v[RB_TS_THDD] = thdd;
     } else {
+#define STILL_STEP(k)                                                            \
+    do {                                                                         \
+        a = rb_quad_horner(a, t, rb_quad_load(p[k]));                            \
+        b = rb_quad_horner(b, t, rb_quad_load(p[k] + 4));                        \
+    } while (0)
+        RB_DOWN_FROM(n, STILL_STEP)
+#undef STILL_STEP
+        rb_quad_store(v, a);
+        rb_quad_store(v + 4, b);
         v[RB_TS_TH] = p[0][RB_TS_TH];
         v[RB_TS_THD] = p[0][RB_TS_THD];
         v[RB_TS_COS] = p[0][RB_TS_COS];
@@ -169,8 +194,9 @@ RB_INLINE void check_values(const rb_taylor *ts, double tau, double *v)
     v[RB_TS_Z] = 0;
     if (ts->vertical) {
         double z = p[n][RB_TS_Z];
-        for (int k = n - 1; k >= 0; k--)
-            z = z * tau + p[k][RB_TS_Z];
+#define Z_STEP(k) (z = z * tau + p[k][RB_TS_Z])
+        RB_DOWN_FROM(n, Z_STEP)
+#undef Z_STEP
         v[RB_TS_Z] = z;
     }
 }
@@ -316,10 +342,13 @@ static double newton_root(const rb_taylor *ts, int i, int di, double level, doub
     int n = ts->order, b_positive = fb != 0 ? fb > 0 : !(fa > 0), kept = 0;
     for (int it = 0; it < 60; it++) {
         double f = p[n][i], df = p[n][di];
-        for (int k = n - 1; k >= 0; k--) {
-            f = f * x + p[k][i];
-            df = df * x + p[k][di];
-        }
+#define NEWTON_STEP(k)                                                           \
+    do {                                                                         \
+        f = f * x + p[k][i];                                                     \
+        df = df * x + p[k][di];                                                  \
+    } while (0)
+        RB_DOWN_FROM(n, NEWTON_STEP)
+#undef NEWTON_STEP
         f -= level;
         if (f == 0)
             return x;
