@@ -344,11 +344,18 @@ RB_INLINE double scaled(const series *s, int k, double hk, const double *tol, do
 RB_INLINE int floor_series(const rb_motion *m, double t0, double sgn, int n, series *s)
 {
     s->xd = rb_motion_taylor(m, t0, n, s->X);
-    for (int k = 0; k <= s->xd; k++)
-        s->X[k] *= sgn;
-    for (int k = n + 1; k < NT; k++)
-        s->X[k] = 0;
-    return s->xd < n ? NT : n;
+    /* the mirror's sign: X (-1) is -X, and X 1 is X */
+    if (sgn < 0)
+        for (int k = 0; k <= s->xd; k++)
+            s->X[k] = -s->X[k];
+    /* a polynomial's series is its terms and zeros to the last order; a
+     * series of n terms is formed again before an order reads past them */
+    if (s->xd < n) {
+        for (int k = n + 1; k < NT; k++)
+            s->X[k] = 0;
+        return NT;
+    }
+    return n;
 }
 
 /* The vertical's series z'' and g + z'' to the largest order at once: a
