@@ -9,7 +9,6 @@
 #include "pair.h"
 #include "simd.h"
 #include "taylor.h"
-#include "unroll.h"
 
 enum { NT = RB_TAYLOR_MAX + 2 };
 
@@ -418,10 +417,7 @@ RB_INLINE int orders(const rb_motion *m, const consts *K, const bolt_law *B, sha
                      double tol_x, double *h_io, double (*p)[RB_TS_N])
 {
     double h = *h_io, hk = 1, e_prev = HUGE_VAL;
-    /* every order compiled on its own, each pass over j of a fixed length,
-     * so that the orders' tests are the step's only branches on them */
-    RB_UNROLL(RB_TAYLOR_MAX)
-    for (int k = 0; k < RB_TAYLOR_MAX; k++) {
+    for (int k = 0;; k++) {
         /* order k reads the floor to order k, and the step's end to n */
         if (k + 1 > xn) {
             xn = floor_series(m, t0, sgn, RB_TAYLOR_MAX + 1, s);
@@ -448,7 +444,6 @@ RB_INLINE int orders(const rb_motion *m, const consts *K, const bolt_law *B, sha
         }
         e_prev = e;
     }
-    return 0; /* not reached: order RB_TAYLOR_MAX returns above */
 }
 
 RB_INLINE double taylor_step(const rb_sys *S, const rb_disc *D, double t0, const double *y0,

@@ -1,16 +1,12 @@
-/* Internal: loops of the Taylor step compiled as straight runs. A step's
- * order n changes from step to step, and a loop over the orders ends in a
- * branch that a processor mispredicts about once a pass when its length
- * changes; a straight run has no such branch (docs/solver.md, "The Taylor
- * step's order loop"). Both keep the loop's operations in its order, so
- * the doubles are the loop's. */
+/* Internal: a Horner pass over a Taylor step's series as a straight run.
+ * A step's order n changes from step to step, and a loop over it ends in
+ * a branch that a processor mispredicts about once a pass when its length
+ * changes; a run entered at n has no such branch (docs/solver.md, "The
+ * Taylor step's order loop"). It keeps the loop's operations in the
+ * loop's order, so the doubles are the loop's. */
 #ifndef RB_UNROLL_H
 #define RB_UNROLL_H
 #include "taylor.h"
-
-/* A loop of a constant count unrolled whole. */
-#define RB_PRAGMA(x) _Pragma(#x)
-#define RB_UNROLL(n) RB_PRAGMA(GCC unroll n)
 
 #if defined(__GNUC__) || defined(__clang__)
 #define RB_FALLTHROUGH __attribute__((fallthrough))
