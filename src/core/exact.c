@@ -19,7 +19,7 @@
 #include "taylor.h"
 
 /* the quantities bounded over a step ("Bounds over a step") */
-enum { Q_U, Q_SHEAR, Q_UP_POS, Q_UP_NEG };
+enum { Q_U = RB_XQ_U, Q_SHEAR = RB_XQ_SHEAR, Q_UP_POS = RB_XQ_UP_POS, Q_UP_NEG = RB_XQ_UP_NEG };
 
 /* Gauss-Legendre, 8 points on [-1, 1]: exact for polynomials of degree
  * 15; the integrands (products of the frame's and the building's
@@ -177,18 +177,22 @@ static void table_poly(const rb_solver *sv, const rows *r, rb_exact_table *t)
     t->nterm = nt;
 }
 
+/* panels of at most 1.5 rad of the fastest oscillation, whose squares
+ * the 8 points integrate to rounding (a stiff building under a coarse
+ * record turns several times in one step) */
+static int panels_of(const rb_solver *sv, double h)
+{
+    int panels = (int)ceil(rb_fmax(sv->sys.d.omega, sv->exact.wb) * h / 1.5);
+    return panels < 1 ? 1 : panels;
+}
+
 static void build_table(rb_solver *sv, double h, int n, rb_exact_table *t)
 {
     const rb_exact_cache *c = &sv->exact;
     double e[NROW][ZN], x[ZN];
     rows r;
     floor_row(c, x);
-    /* panels of at most 1.5 rad of the fastest oscillation, whose squares
-     * the 8 points integrate to rounding (a stiff building under a coarse
-     * record turns several times in one step) */
-    int panels = (int)ceil(rb_fmax(sv->sys.d.omega, c->wb) * h / 1.5);
-    if (panels < 1)
-        panels = 1;
+    int panels = panels_of(sv, h);
     rows_init(sv, h, panels, &r);
     t->h = h;
     t->n = n;
@@ -344,17 +348,29 @@ static void linear_forms(rb_solver *sv)
 {
     rb_exact_cache *c = &sv->exact;
     double z[ZN] = {0}, q0[RB_EXACT_NQ], q[RB_EXACT_NQ];
+    rb_exact_point p0, p;
+    /* the floor stage's forms, whichever stage builds the first table (a
+     * plate held by a row reads them too): its guards are the uplift
+     * guards, with the side of a plate on the floor */
+    rb_disc held = sv->disc;
+    sv->disc.stage = RB_STAGE_FIXED;
+    sv->disc.side = 0;
     quantities_at(sv, z, q0);
+    rb_exact_point_at(sv, z, &p0);
     for (int j = 0; j < ZN; j++) {
         z[j] = 1;
         quantities_at(sv, z, q);
+        rb_exact_point_at(sv, z, &p);
         z[j] = 0;
         for (int k = 0; k < RB_EXACT_NQ; k++)
             c->lin[k][j] = q[k] - q0[k];
+        c->lin_x[j] = p.x - p0.x;
+        c->lin_a[j] = p.udd - p0.udd;
     }
     memcpy(c->lin0, q0, sizeof q0);
     c->lin_ready = 1;
     c->lin_side = sv->disc.side;
+    sv->disc = held;
 }
 
 /* B from S: (I - d |A|^T) B = S by elimination, then checked to satisfy
@@ -403,6 +419,72 @@ static int supersolution(double pa[ZN][ZN], const double *S, double *B)
     return 1;
 }
 
+/* B for one quantity from its samples' largest sizes S (taken above the
+ * rows' rounding, and positive: the proof's B > 0); 0 where none. */
+static int bound_of_samples(double pa[ZN][ZN], double *S, double *B)
+{
+    double smax = 0;
+    for (int j = 0; j < ZN; j++)
+        smax = rb_fmax(smax, S[j]);
+    for (int j = 0; j < ZN; j++)
+        S[j] = S[j] * (1 + 1e-12) + 1e-15 * smax + DBL_MIN;
+    return supersolution(pa, S, B);
+}
+
+/* How far U, the total shear, the uplift moment, the floor acceleration
+ * and U'' (lin_x, lin_a) can move from their start over a step, which the
+ * held stage's force and reactions are formed from (exact_held.c): with
+ * D(tau) = r(tau) - r(0) sampled to S_D, and r' = r A bounded through
+ * the row's own bound B (above), |D_j| <= S_D[j] + d sum_l |A_lj| B[l]
+ * between samples. */
+enum { NV = 5 };
+static void held_bounds(rb_solver *sv, const rows *r, double pa[ZN][ZN], int K,
+                        rb_exact_table *t)
+{
+    double B4[RB_EXACT_NQ][ZN];
+    for (int j = 0; j < ZN; j++)
+        for (int q = 0; q < RB_EXACT_NQ; q++)
+            B4[q][j] = rb_pair_lane(t->bound[j][q / 2], q % 2);
+    const rb_exact_cache *c = &sv->exact;
+    double S[2][ZN] = {{0}}, B[NV][ZN] = {{0}}, SD[NV][ZN] = {{0}}, r0[NV][ZN], e[NROW][ZN];
+    const double *form[NV] = {c->lin[Q_U], c->lin[Q_SHEAR], c->lin[Q_UP_POS], c->lin_x,
+                              c->lin_a};
+    for (int k = 0; k <= K; k++) {
+        rows_at(r, (double)k / K, e);
+        for (int q = 0; q < NV; q++)
+            for (int j = 0; j < ZN; j++) {
+                double v = j == ZS ? form[q][ZS] : 0;
+                for (int i = 0; i < NROW; i++)
+                    v += form[q][row_of[i]] * e[i][j];
+                if (k == 0)
+                    r0[q][j] = v;
+                if (q >= 3)
+                    S[q - 3][j] = rb_fmax(S[q - 3][j], fabs(v));
+                SD[q][j] = rb_fmax(SD[q][j], fabs(v - r0[q][j]));
+            }
+    }
+    t->held_bounded = t->bounded && bound_of_samples(pa, S[0], B[3])
+                      && bound_of_samples(pa, S[1], B[4]);
+    memcpy(B[0], B4[Q_U], sizeof B[0]);
+    memcpy(B[1], B4[Q_SHEAR], sizeof B[1]);
+    memcpy(B[2], B4[Q_UP_POS], sizeof B[2]);
+    double D[NV + 1][ZN] = {{0}};
+    for (int q = 0; q < NV; q++) {
+        double smax = 0;
+        for (int j = 0; j < ZN; j++)
+            smax = rb_fmax(smax, SD[q][j]);
+        for (int j = 0; j < ZN; j++) {
+            double v = SD[q][j] * (1 + 1e-12) + 1e-15 * smax + DBL_MIN;
+            for (int l = 0; l < ZN; l++)
+                v += pa[l][j] * B[q][l];
+            D[q][j] = v * (1 + 1e-12);
+        }
+    }
+    for (int j = 0; j < ZN; j++)
+        for (int q = 0; q < 3; q++)
+            t->vary[j][q] = rb_pair_make(D[2 * q][j], D[2 * q + 1][j]);
+}
+
 static void table_bounds(rb_solver *sv, const rows *r, double h, rb_exact_table *t)
 {
     rb_exact_cache *c = &sv->exact;
@@ -427,24 +509,19 @@ static void table_bounds(rb_solver *sv, const rows *r, double h, rb_exact_table 
     }
     double B[RB_EXACT_NQ][ZN] = {{0}};
     t->bounded = 1;
-    for (int q = 0; q < RB_EXACT_NQ && t->bounded; q++) {
-        double smax = 0;
-        for (int j = 0; j < ZN; j++)
-            smax = rb_fmax(smax, S[q][j]);
-        /* above the rows' rounding, and positive (the proof's B > 0) */
-        for (int j = 0; j < ZN; j++)
-            S[q][j] = S[q][j] * (1 + 1e-12) + 1e-15 * smax + DBL_MIN;
-        t->bounded = supersolution(pa, S[q], B[q]);
-    }
+    for (int q = 0; q < RB_EXACT_NQ && t->bounded; q++)
+        t->bounded = bound_of_samples(pa, S[q], B[q]);
     for (int j = 0; j < ZN; j++)
         for (int q = 0; q < RB_EXACT_NQ; q += 2)
             t->bound[j][q / 2] = rb_pair_make(B[q][j], B[q + 1][j]);
+    /* formed when a held plate first asks (rb_exact_table_held) */
+    t->held_bounded = -1;
 }
 
 /* A time history reads the state between check points: the step's
  * Taylor series serves it there, so that asking for a history does not
  * change how the run is integrated. */
-static rb_status history(rb_solver *sv, double t0, const double *y0, double h, double t1)
+rb_status rb_exact_history(rb_solver *sv, double t0, const double *y0, double h, double t1)
 {
     if (!rb_history_due(sv, t1))
         return RB_OK;
@@ -536,8 +613,8 @@ static int step_quiet(const rb_solver *sv, const rb_exact_table *tab, const doub
 }
 
 /* The state at check point j (1..n) of the step from z0. */
-static void check_state(const rb_exact_table *tab, const rb_floor_line *fl, const double *z0,
-                        int j, double *z)
+void rb_exact_check_state(const rb_exact_table *tab, const rb_floor_line *fl, const double *z0,
+                          int j, double *z)
 {
     for (int i = 0; i < 4; i++) {
         double r = 0;
@@ -554,7 +631,7 @@ static void check_state(const rb_exact_table *tab, const rb_floor_line *fl, cons
  * and costs twice as many instructions), both sums a vector, and the
  * products z_i z_j two at a time (z_i times z_j and z_j+1). */
 _Static_assert(ZN == 6, "work_forms writes out the pairs of a 6-state");
-static void work_forms(const rb_exact_table *tab, const double *z, double *wd, double *wi)
+void rb_exact_work_forms(const rb_exact_table *tab, const double *z, double *wd, double *wi)
 {
     const rb_pair *w = tab->work;
     rb_pair s = rb_pair_splat(0), p;
@@ -576,7 +653,7 @@ static void work_forms(const rb_exact_table *tab, const double *z, double *wd, d
 }
 
 /* U and U' at the end of the step from z0, both sums a vector. */
-static void end_state(const rb_exact_table *tab, const double *z0, double *u, double *v)
+void rb_exact_end_state(const rb_exact_table *tab, const double *z0, double *u, double *v)
 {
     rb_pair s = rb_pair_splat(0);
     for (int j = 0; j < ZN; j++)
@@ -587,7 +664,7 @@ static void end_state(const rb_exact_table *tab, const double *z0, double *u, do
 
 /* Advance the run's time, state and works over a step taken from z0,
  * whose end point carries U and U' (u_end, v_end). */
-static void count_step(rb_solver *sv, double t1)
+void rb_exact_count_step(rb_solver *sv, double t1)
 {
     sv->res->steps++;
     sv->res->exact_steps++;
@@ -598,9 +675,9 @@ static void count_step(rb_solver *sv, double t1)
 static void advance_step(rb_solver *sv, const rb_exact_table *tab, const double *z0, double t1,
                          double u_end, double v_end)
 {
-    count_step(sv, t1);
+    rb_exact_count_step(sv, t1);
     double wd = sv->y[RB_Y_WDAMP], wi = sv->y[RB_Y_WIN];
-    work_forms(tab, z0, &wd, &wi);
+    rb_exact_work_forms(tab, z0, &wd, &wi);
     sv->t = t1;
     sv->y[RB_Y_U] = u_end;
     sv->y[RB_Y_UD] = v_end;
@@ -648,13 +725,17 @@ void rb_exact_settle(rb_solver *sv, double *g)
     if (!c->pending)
         return;
     c->pending = 0;
+    if (c->pend_settle) {
+        c->pend_settle(sv, g);
+        return;
+    }
     const rb_exact_table *tab = c->pend_tab;
     const rb_floor_line fl = {.g0 = c->pend_g0, .slope = c->pend_slope};
     int n = tab->n;
     double z[ZN], gs[G_COUNT], u[2], H[2], t0 = c->pend_t0, t1 = sv->t;
     rb_exact_point p[2];
     for (int k = 0; k < 2; k++) {
-        check_state(tab, &fl, c->pend_z0, n - 1 + k, z);
+        rb_exact_check_state(tab, &fl, c->pend_z0, n - 1 + k, z);
         rb_exact_point_at(sv, z, &p[k]);
         /* the shear's form is the reactions' own (linear_forms) */
         u[k] = p[k].y[RB_Y_U];
@@ -678,15 +759,16 @@ static int exact_quiet(rb_solver *sv, const rb_exact_table *tab, const rb_floor_
 {
     rb_exact_cache *c = &sv->exact;
     double u, v, t0 = sv->t;
-    end_state(tab, z0, &u, &v);
+    rb_exact_end_state(tab, z0, &u, &v);
     if (!isfinite(u) || !isfinite(v))
         return 0;
     /* a quiet step before this one leaves nothing to read: this one's end
      * takes its place */
-    if ((*status = history(sv, t0, sv->y, tab->h, t1)) != RB_OK)
+    if ((*status = rb_exact_history(sv, t0, sv->y, tab->h, t1)) != RB_OK)
         return 1;
     advance_step(sv, tab, z0, t1, u, v);
     c->pending = 1;
+    c->pend_settle = NULL;
     c->pend_tab = tab;
     memcpy(c->pend_z0, z0, sizeof c->pend_z0);
     c->pend_t0 = t0;
@@ -699,7 +781,7 @@ static int exact_quiet(rb_solver *sv, const rb_exact_table *tab, const rb_floor_
 
 /* The table for steps of length h: a run's steps are mostly of one
  * length, looked up once; NULL where the step is to be a Taylor step. */
-static const rb_exact_table *table_of_length(rb_solver *sv, double h)
+const rb_exact_table *rb_exact_table_of_length(rb_solver *sv, double h)
 {
     rb_exact_cache *c = &sv->exact;
     for (int k = 0; k < RB_EXACT_TABLES; k++)
@@ -757,7 +839,7 @@ static int quiet_run(rb_solver *sv)
             break;
         int landing;
         double h = rb_step_length(sv, brk, &landing);
-        const rb_exact_table *t = h > 0 ? table_of_length(sv, h) : NULL;
+        const rb_exact_table *t = h > 0 ? rb_exact_table_of_length(sv, h) : NULL;
         rb_floor_line f;
         if (!t || !rb_motion_floor_line_at(m, i, &f))
             break;
@@ -765,7 +847,7 @@ static int quiet_run(rb_solver *sv)
         if (!bounds_quiet(sv, t, z, &lim))
             break;
         double u, v, t1 = landing ? brk : sv->t + h;
-        end_state(t, z, &u, &v);
+        rb_exact_end_state(t, z, &u, &v);
         if (!isfinite(u) || !isfinite(v))
             break;
         t0 = sv->t;
@@ -788,6 +870,7 @@ static int quiet_run(rb_solver *sv)
     z[ZG] = f.g0;
     z[ZS] = f.slope;
     c->pending = 1;
+    c->pend_settle = NULL;
     c->pend_tab = tab;
     memcpy(c->pend_z0, z, sizeof c->pend_z0);
     c->pend_t0 = t0;
@@ -808,7 +891,7 @@ static int exact_step(rb_solver *sv, double target, double *g, rb_status *status
     double t0 = sv->t, h = rb_step_length(sv, target, &landing);
     const rb_exact_table *tab;
     if (!(h > 0) || !rb_motion_floor_line(sv->sys.motion, t0, &fl)
-        || !(tab = table_of_length(sv, h)))
+        || !(tab = rb_exact_table_of_length(sv, h)))
         return 0;
     int n = tab->n;
     double t1 = landing ? target : t0 + h;
@@ -831,7 +914,7 @@ static int exact_step(rb_solver *sv, double target, double *g, rb_status *status
     rb_guard_nudge(gs[0]);
     for (int j = 1; j <= n; j++) {
         double z[ZN];
-        check_state(tab, &fl, z0, j, z);
+        rb_exact_check_state(tab, &fl, z0, j, z);
         rb_exact_point_at(sv, z, &p[j]);
         if (!point_finite(&p[j]))
             return 0;
@@ -864,7 +947,7 @@ static int exact_step(rb_solver *sv, double target, double *g, rb_status *status
         rb_exact_aux_of(sv, &p[j], &a);
         rb_track_aux(sv, t0 + dt_track * j, p[j].y, &a);
     }
-    if ((*status = history(sv, t0, sv->y, h, t1)) != RB_OK)
+    if ((*status = rb_exact_history(sv, t0, sv->y, h, t1)) != RB_OK)
         return 1;
     finish_step(sv, tab, z0, t1, &p[n], gs[n], g, &a);
     rb_track_aux(sv, t1, sv->y, &a);
@@ -872,16 +955,21 @@ static int exact_step(rb_solver *sv, double target, double *g, rb_status *status
     return 1;
 }
 
+rb_step_outcome rb_exact_outcome(rb_solver *sv, int taken, double *g)
+{
+    if (taken)
+        return RB_STEP_ADVANCED;
+    /* the next stepper reads the guards, the rates and the tracking */
+    rb_exact_settle(sv, g);
+    return RB_STEP_DECLINED;
+}
+
 static rb_step_outcome exact_apply(rb_solver *sv, double target, double h, rb_rk_step *st,
                                    double *g, rb_status *status)
 {
     (void)h;
     (void)st;
-    if (exact_step(sv, target, g, status))
-        return RB_STEP_ADVANCED;
-    /* the next stepper reads the guards, the rates and the tracking */
-    rb_exact_settle(sv, g);
-    return RB_STEP_DECLINED;
+    return rb_exact_outcome(sv, exact_step(sv, target, g, status), g);
 }
 
 const rb_stepper rb_stepper_exact = {"exact", exact_apply, NULL};
@@ -896,3 +984,23 @@ void rb_exact_system(const rb_solver *sv, double a[RB_EXACT_DIM][RB_EXACT_DIM])
     system_matrix(sv, a);
 }
 
+/* A table's held bounds (held_bounds), formed on first use: most runs
+ * never hold the plate, and the floor run's tables cost a tenth more
+ * with them. The rows are formed again as build_table formed them. */
+int rb_exact_table_held(rb_solver *sv, rb_exact_table *t)
+{
+    if (t->held_bounded < 0) {
+        double a[ZN][ZN], pa[ZN][ZN];
+        rows r;
+        rows_init(sv, t->h, panels_of(sv, t->h), &r);
+        int K = BOUND_SAMPLES * r.m;
+        system_matrix(sv, a);
+        for (int i = 0; i < ZN; i++)
+            for (int j = 0; j < ZN; j++)
+                pa[i][j] = t->h / (2.0 * K) * fabs(a[i][j]);
+        t->held_bounded = 0;
+        if (t->bounded)
+            held_bounds(sv, &r, pa, K, t);
+    }
+    return t->held_bounded > 0;
+}

@@ -19,9 +19,14 @@
 #define RB_EXACT_H
 
 #include "solver.h"
+#include "stepper.h"
 
 /* The components of z. */
 enum { ZU, ZV, ZUB, ZVB, ZG, ZS, ZN = RB_EXACT_DIM };
+
+/* The quantities bounded over a step (exact.c, "Bounds over a step"):
+ * the rows of rb_exact_cache's lin and of a table's bounds. */
+enum { RB_XQ_U, RB_XQ_SHEAR, RB_XQ_UP_POS, RB_XQ_UP_NEG };
 
 /* One point of an exact step (exact_point.c): the state, the floor, U''
  * and the rate of the uplift moment M h x' - F* U''' (as
@@ -45,6 +50,50 @@ void rb_exact_setup(rb_solver *sv);
  * else is to read them (the next step that is not quiet, a Taylor step,
  * the end of the run). g, where not NULL, takes the guards at that end. */
 void rb_exact_settle(rb_solver *sv, double *g);
+
+/* Shared by the floor's exact steps and the held plate's (exact_held.c):
+ * the table for steps of length h (NULL: a Taylor step); U and U' at the
+ * end of a step from z0; the damping and input works over it added to *wd
+ * and *wi; the time history's rows over it; the state at check point j;
+ * the step counted. */
+const rb_exact_table *rb_exact_table_of_length(rb_solver *sv, double h);
+void rb_exact_end_state(const rb_exact_table *tab, const double *z0, double *u, double *v);
+void rb_exact_work_forms(const rb_exact_table *tab, const double *z, double *wd, double *wi);
+rb_status rb_exact_history(rb_solver *sv, double t0, const double *y0, double h, double t1);
+void rb_exact_check_state(const rb_exact_table *tab, const rb_floor_line *fl, const double *z0,
+                          int j, double *z);
+void rb_exact_count_step(rb_solver *sv, double t1);
+/* Whether table t bounds how far the held stage's quantities move over a
+ * step (formed on first use; exact.c, held_bounds). */
+int rb_exact_table_held(rb_solver *sv, rb_exact_table *t);
+
+/* A quiet step of a plate held by a rigid row (exact_held.c): 1 when
+ * taken, as exact_quiet takes one on the floor; 0 when the step is to be
+ * a Taylor step (nothing changed). rb_exact_held_settle reads its end as
+ * rb_exact_settle reads a quiet floor step's. */
+int rb_exact_held_step(rb_solver *sv, double target, double *g, rb_status *status);
+void rb_exact_held_settle(rb_solver *sv, double *g);
+/* For rb_exact_probe_held: what a step of length h from the hold and
+ * state of sv, with the floor's line state floor_z (u_b, v_b, g, s), can
+ * reach by the held bounds, into range[RB_HELD_N]; 0 where no bound or
+ * no checked frame. */
+enum { RB_HELD_F_LO, RB_HELD_F_HI, RB_HELD_SHEAR_HI, RB_HELD_FLOOR_LO, RB_HELD_U_HI, RB_HELD_N };
+int rb_exact_held_probe(rb_solver *sv, double h, const double *floor_z, double *range);
+
+/* For tests (test_exact_held): a run's solver held by the rigid row on
+ * side (+1 or -1) at the mirrored angle th, the frame at U and U' (uv),
+ * the floor's line state floor_z: what a step of length h can reach
+ * (rb_exact_held_probe). 0 where the run takes no exact steps or no bound
+ * or frame was proved. */
+int rb_exact_probe_held(const rb_model *model, const rb_motion *motion,
+                        const rb_solve_opts *opts, double h, int side, double th,
+                        const double *uv, const double *floor_z, double *range);
+
+/* The held plate's quiet steps are a stepper of their own,
+ * rb_stepper_exact_held (exact_held.c). An exact stepper's outcome: the
+ * step taken, or declined with the end of the quiet steps before it read
+ * for the next stepper. */
+rb_step_outcome rb_exact_outcome(rb_solver *sv, int taken, double *g);
 
 /* The exact step is a stepper (stepper.h): rb_stepper_exact, which
  * declines a step it cannot take (a root inside, a length it keeps no

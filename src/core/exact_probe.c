@@ -4,6 +4,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include "../motion/matexp.h"
+#include "bolt.h"
 #include "exact.h"
 
 int rb_exact_probe(const rb_model *model, const rb_motion *motion, const rb_solve_opts *opts,
@@ -74,4 +75,28 @@ int rb_exact_probe_turns(const rb_model *model, const rb_motion *motion,
         rb_history_free(res.history);
     free(sv);
     return n;
+}
+
+int rb_exact_probe_held(const rb_model *model, const rb_motion *motion,
+                        const rb_solve_opts *opts, double h, int side, double th,
+                        const double *uv, const double *floor_z, double *range)
+{
+    rb_solver *sv = malloc(sizeof *sv);
+    rb_result res = {0};
+    int ok = sv && rb_solver_setup(sv, model, motion, opts, &res, NULL) == RB_OK
+             && sv->exact.on && sv->sys.bolt->rigid_stop;
+    if (ok) {
+        sv->disc.stage = RB_STAGE_HELD;
+        sv->disc.side = side;
+        sv->disc.theta_hold = th;
+        sv->y[RB_Y_TH] = side * th;
+        sv->y[RB_Y_THD] = 0;
+        sv->y[RB_Y_U] = uv[0];
+        sv->y[RB_Y_UD] = uv[1];
+        ok = rb_exact_held_probe(sv, h, floor_z, range);
+    }
+    if (sv)
+        rb_history_free(res.history);
+    free(sv);
+    return ok;
 }

@@ -109,6 +109,13 @@ typedef struct {
      * proved */
     int bounded;
     rb_pair bound[RB_EXACT_DIM][RB_EXACT_NQ / 2];
+    /* vary[j][k / 2] lane k % 2: how far quantity k (U, the total shear,
+     * the uplift moment, the floor acceleration, U'') can move from its
+     * start over the step per unit |z0_j|, which a plate held by a rigid
+     * row reads (exact.c, held_bounds); held_bounded 0 where none was
+     * proved, -1 before they are formed (on first use) */
+    int held_bounded;
+    rb_pair vary[RB_EXACT_DIM][3];
     /* a table of one panel: the rows of U, U', u_b, v_b (0-3) and of the
      * total shear less its constant (4) of E(f h) as polynomials in f,
      * poly[k][i][j] the coefficient of f^k, nterm of them; nterm 0 where
@@ -118,6 +125,20 @@ typedef struct {
     double poly[RB_EXACT_POLY][5][RB_EXACT_DIM];
 } rb_exact_table;
 
+struct rb_solver_s;
+
+/* A plate held by a rigid row, as its exact steps read it (exact_held.c):
+ * for the hold at angle th on side s (ok: its forms were checked), U's
+ * scale c and shift us, the angle's sine, the lever arm, the row force's
+ * coefficients of the uplift moment and the floor (kg, kx), the shear's
+ * of U'' (kh), the force,
+ * shear and floor reaction at z = 0 (f0, h0, fv0) and the coupling power
+ * per unit U'. */
+typedef struct {
+    int ok, side;
+    double th, c, sn, s, us, lever, kg, kx, kh, f0, h0, fv0, cpl;
+} rb_exact_held;
+
 typedef struct {
     int on;
     double wb, xib;                       /* the building; 0 without one */
@@ -126,6 +147,8 @@ typedef struct {
      * functions that evaluate it (exact.c, linear_forms) */
     int lin_ready, lin_side;
     double lin[RB_EXACT_NQ][RB_EXACT_DIM], lin0[RB_EXACT_NQ];
+    /* the floor acceleration and U'' as lin_x . z and lin_a . z */
+    double lin_x[RB_EXACT_DIM], lin_a[RB_EXACT_DIM];
     rb_exact_table tab[RB_EXACT_TABLES];
     int n_tab;
     double seen[RB_EXACT_TABLES];         /* step lengths met once */
@@ -141,9 +164,13 @@ typedef struct {
     const rb_exact_table *memo_tab[RB_EXACT_TABLES];
     int memo_next;
     double pend_z0[RB_EXACT_DIM], pend_t0, pend_g0, pend_slope;
+    /* what reads the pending step's end where it is not a floor step's
+     * (exact_held.c), NULL for a floor step */
+    void (*pend_settle)(struct rb_solver_s *sv, double *g);
+    rb_exact_held held;
 } rb_exact_cache;
 
-typedef struct {
+typedef struct rb_solver_s {
     rb_sys sys;
     rb_disc disc;
     rb_solve_opts opts;
@@ -298,6 +325,16 @@ int rb_track_quiet_bound(const rb_solver *sv, double shear_bound);
  * hold the two points and nothing else moves but what they pass. */
 void rb_track_quiet_points(rb_solver *sv, const double *t, const double *u, const double *H,
                            double x_last);
+/* The same for a plate held by a loaded row (exact_held.c): whether a
+ * stretch whose row force stays at or below force_hi, whose |shear| stays
+ * at or below shear_hi and whose floor reaction stays at or above
+ * floor_lo (all above zero) moves no tracked peak of the row, the shear,
+ * the reaction, the friction or the anchors' demand; and its last two
+ * points (times t, states y, what the equations give there a) tracked as
+ * after rb_track_reset. */
+int rb_track_held_quiet(const rb_solver *sv, double force_hi, double shear_hi, double floor_lo);
+void rb_track_held_points(rb_solver *sv, const double *t, const double (*y)[RB_NY],
+                          const rb_aux *a);
 /* The points tracked next lie on st's dense output between t0 and t1, or
  * on the Taylor series from (t0, y0) over h (an exact step); none: on no
  * step (a transition's point). */

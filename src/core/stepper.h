@@ -37,6 +37,7 @@ typedef struct rb_stepper {
 /* The exact steps on the floor (exact.c), the Taylor series (steppers.c)
  * and Dormand-Prince 5(4) with its error control (steppers.c). */
 extern const rb_stepper rb_stepper_exact;
+extern const rb_stepper rb_stepper_exact_held; /* exact_held.c */
 extern const rb_stepper rb_stepper_taylor;
 extern const rb_stepper rb_stepper_rk45;
 

@@ -2,6 +2,7 @@
  * stage steps with. */
 #include <math.h>
 #include <string.h>
+#include "bolt.h"
 #include "exact.h"
 #include "stepper.h"
 
@@ -79,6 +80,9 @@ int rb_steppers_of_stage(const rb_solver *sv, const rb_stepper **chain)
     int n = 0;
     if (sv->exact.on && sv->disc.stage == RB_STAGE_FIXED)
         chain[n++] = &rb_stepper_exact;
+    /* held still by a rigid row (exact_held.c) */
+    if (sv->exact.on && sv->disc.stage == RB_STAGE_HELD && sv->sys.bolt->rigid_stop)
+        chain[n++] = &rb_stepper_exact_held;
     if (sv->opts.integrator == RB_INTEGRATOR_AUTO && rb_taylor_applies(&sv->sys, &sv->disc))
         chain[n++] = &rb_stepper_taylor;
     chain[n++] = &rb_stepper_rk45;

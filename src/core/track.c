@@ -666,6 +666,31 @@ int rb_track_quiet_bound(const rb_solver *sv, double shear_bound)
     return 1;
 }
 
+int rb_track_held_quiet(const rb_solver *sv, double force_hi, double shear_hi, double floor_lo)
+{
+    const rb_result *r = sv->res;
+    int row = rb_row_of_side(sv->disc.side);
+    if (!(floor_lo > 0) || !(floor_lo > sv->friction_floor)
+        || !(floor_lo >= r->min_vertical_reaction_n) || !(force_hi <= r->max_bolt_force_n[row])
+        || !(shear_hi <= r->max_shear_total_n) || !(shear_hi / floor_lo <= r->max_friction_demand))
+        return 0;
+    if (sv->opts.anchor_phi_nn_n > 0 && sv->opts.anchor_phi_vn_n > 0) {
+        /* the interaction rises with the tension and with the shear */
+        sample s = {shear_hi, floor_lo - force_hi, floor_lo, force_hi, force_hi};
+        if (!(anchor_ratio(sv, &s, &(int){0}) <= r->anchor_max_ratio))
+            return 0;
+    }
+    return 1;
+}
+
+void rb_track_held_points(rb_solver *sv, const double *t, const double (*y)[RB_NY],
+                          const rb_aux *a)
+{
+    rb_track_reset(sv);
+    rb_track_aux(sv, t[0], y[0], &a[0]);
+    rb_track_aux(sv, t[1], y[1], &a[1]);
+}
+
 static void window_of_two(rb_peak_window *w, const double *t, double v0, double v1)
 {
     w->n = 2;

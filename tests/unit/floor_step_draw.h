@@ -20,6 +20,23 @@ static inline double draw_uniform(unsigned long long *state, double lo, double h
     return lo + (hi - lo) * (double)(*state >> 11) / 9007199254740992.0;
 }
 
+/* The record the draws are cut from (El Centro, as shipped); 0 where it
+ * cannot be read. */
+static inline int floor_draw_record(rb_series *raw)
+{
+    rb_record_opts ro;
+    rb_diag diag;
+    rb_record_opts_init(&ro);
+    return rb_record_read("cases/records/elcentro_1940_ns.at2", &ro, raw, &diag) == RB_OK;
+}
+
+/* qsort's order of doubles, for the tests' medians and percentiles. */
+static inline int draw_cmp(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
 typedef struct {
     rb_series s;          /* the draw's own copy of the record: free with rb_series_free */
     rb_model m;

@@ -22,19 +22,10 @@ static unsigned long long rng_state = 20261127;
 
 enum { K = 4000, CASES = 400 };
 
-static int cmp(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
 int main(void)
 {
-    rb_record_opts ro;
-    rb_diag diag;
     rb_series raw = {0};
-    rb_record_opts_init(&ro);
-    if (rb_record_read("cases/records/elcentro_1940_ns.at2", &ro, &raw, &diag) != RB_OK) {
+    if (!floor_draw_record(&raw)) {
         CHECK(0);
         TEST_MAIN_END();
     }
@@ -97,7 +88,7 @@ int main(void)
         double r[CASES];
         for (int k = 0; k < n_ratio; k++)
             r[k] = ratio[k][i];
-        qsort(r, (size_t)n_ratio, sizeof *r, cmp);
+        qsort(r, (size_t)n_ratio, sizeof *r, draw_cmp);
         printf("  %-15s bound over the largest value sampled: median %.3f, 90th percentile %.3f\n",
                names[i], r[n_ratio / 2], r[n_ratio * 9 / 10]);
         CHECK(r[n_ratio / 2] >= 1 && r[n_ratio / 2] < 3);

@@ -32,11 +32,8 @@ static double shear_of(const floor_draw *f, const double *z)
 
 int main(void)
 {
-    rb_record_opts ro;
-    rb_diag diag;
     rb_series raw = {0};
-    rb_record_opts_init(&ro);
-    if (rb_record_read("cases/records/elcentro_1940_ns.at2", &ro, &raw, &diag) != RB_OK) {
+    if (!floor_draw_record(&raw)) {
         CHECK(0);
         TEST_MAIN_END();
     }
