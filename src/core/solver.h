@@ -131,9 +131,8 @@ struct rb_solver_s;
  * for the hold at angle th on side s (ok: its forms were checked), U's
  * scale c and shift us, the angle's sine, the lever arm, the row force's
  * coefficients of the uplift moment and the floor (kg, kx), the shear's
- * of U'' (kh), the force,
- * shear and floor reaction at z = 0 (f0, h0, fv0) and the coupling power
- * per unit U'. */
+ * of U'' (kh), the force, shear and floor reaction at z = 0 (f0, h0, fv0)
+ * and the coupling power per unit U'. */
 typedef struct {
     int ok, side;
     double th, c, sn, s, us, lever, kg, kx, kh, f0, h0, fv0, cpl;
