@@ -191,7 +191,8 @@ void rb_case_free(rb_case *c);
 
 /* Whether the loader generates synthetic motions (1, the default), or,
  * once it has checked everything a suite takes, gives each motion samples
- * of zero (0). For the case fuzzer, which tests the loader: a suite takes
+ * of zero (0), whose sets' independence (AC156 5.2.2.7.3) it does not
+ * measure. For the case fuzzer, which tests the loader: a suite takes
  * seconds to generate (27 s for cases/ac156-roof.yaml under the fuzzer's
  * sanitizers), the loader microseconds. Process-wide: set it before any
  * load, not while one runs. */
