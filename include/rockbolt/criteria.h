@@ -216,8 +216,14 @@ void rb_verdict_margins(const rb_criteria *c, const rb_result *r, double m[RB_N_
  * the one with the least margin over all the verdict's criteria, the
  * anchorage's utilization among them, and of motions at one margin (all
  * failing ones among them) the first in the case's order, which is the
- * motion a failing case's verdict line names. rb_margin_governs(a, b): 1
- * if a run of margin a governs over an earlier one of margin b. */
+ * motion a failing case's verdict line names. Passing margins within
+ * RB_MARGIN_TIE of each other are one margin: a margin is a relative
+ * distance to a limit, and two motions at one physical limit (a row
+ * capped at Fy, say) reach it by different roundings, whose last bit
+ * would otherwise pick the motion. rb_margin_governs(a, b): 1 if a run of
+ * margin a governs over an earlier one of margin b (a failing run's 0
+ * over every pass). */
+#define RB_MARGIN_TIE 1e-9
 double rb_verdict_governing(const rb_criteria *c, const rb_result *r, const rb_verdict *v,
                             rb_governs_limit *limit);
 int rb_margin_governs(double a, double b);

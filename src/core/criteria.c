@@ -484,7 +484,15 @@ double rb_verdict_governing(const rb_criteria *c, const rb_result *r, const rb_v
 int rb_margin_governs(double a, double b)
 {
     /* no number to judge by is as marginal as can be (rb_verdict_margin) */
-    return (a == a ? a : 0) < (b == b ? b : 0);
+    a = a == a ? a : 0;
+    b = b == b ? b : 0;
+    /* a failing run (0) governs every pass, however near its margin is to 0;
+     * passes tie within RB_MARGIN_TIE, so that two motions whose margins
+     * are one number reached by two roundings name the first motion on
+     * every build, not the one whose last bit came out lower */
+    if (a == 0)
+        return b > 0;
+    return a < b - RB_MARGIN_TIE;
 }
 
 /* A plate that rocked near the bolt heads and never met them leaves every

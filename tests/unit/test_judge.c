@@ -629,6 +629,47 @@ static void limit_scatter(void)
     CHECK(v2.pass);
 }
 
+/* The governs rule on margins (rb_margin_governs), as the reports scan the
+ * motions: the first of least margin, passes within RB_MARGIN_TIE of each
+ * other one margin, a failing run's 0 below every pass. */
+static size_t governing_of(const double *m, size_t n)
+{
+    size_t g = 0;
+    for (size_t i = 1; i < n; i++)
+        if (rb_margin_governs(m[i], m[g]))
+            g = i;
+    return g;
+}
+
+static void governs_ties(void)
+{
+    double x = 0.976790080563255;
+    /* one margin reached by two roundings: the first governs, in either order */
+    double ulp_apart[2] = {x, nextafter(x, 0)};
+    CHECK(governing_of(ulp_apart, 2) == 0);
+    double ulp_apart_up[2] = {nextafter(x, 0), x};
+    CHECK(governing_of(ulp_apart_up, 2) == 0);
+    double within[3] = {0.5, 0.5 - 0.9 * RB_MARGIN_TIE, 0.5 + 0.9 * RB_MARGIN_TIE};
+    CHECK(governing_of(within, 3) == 0);
+    /* a margin lower by more than the tie governs */
+    double below[3] = {0.5, 0.5 - 2 * RB_MARGIN_TIE, 0.4};
+    CHECK(governing_of(below, 3) == 2);
+    double second[2] = {0.5, 0.5 - 2 * RB_MARGIN_TIE};
+    CHECK(governing_of(second, 2) == 1);
+    /* a failing run governs a pass however near zero, and the first failure
+     * of several governs */
+    double fails_late[3] = {0.5 * RB_MARGIN_TIE, 0.3, 0};
+    CHECK(governing_of(fails_late, 3) == 2);
+    double fails_twice[3] = {0.2, 0, 0};
+    CHECK(governing_of(fails_twice, 3) == 1);
+    double pass_after_fail[2] = {0, 0.5 * RB_MARGIN_TIE};
+    CHECK(governing_of(pass_after_fail, 2) == 0);
+    /* no number is as marginal as a failure, and ties with one */
+    double no_number[3] = {0.1, NAN, 0};
+    CHECK(governing_of(no_number, 3) == 1);
+    CHECK(!rb_margin_governs(0, 0) && !rb_margin_governs(NAN, 0) && rb_margin_governs(NAN, 1e-12));
+}
+
 int main(void)
 {
     seismic_routes();
@@ -642,5 +683,6 @@ int main(void)
     harmonic_band();
     margins_property();
     limit_scatter();
+    governs_ties();
     TEST_MAIN_END();
 }
