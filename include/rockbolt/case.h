@@ -198,4 +198,14 @@ void rb_case_free(rb_case *c);
  * load, not while one runs. */
 void rb_case_set_generate(int on);
 
+/* Told as the loader generates a suite's motions: done of total, counting
+ * each component it generates (a triaxial set is three; a component the
+ * record cache held is not counted), one call at a time from the
+ * generating threads. A 1 000-set AC156 suite takes minutes of a core:
+ * this is what a terminal's progress line reads. NULL (the default) for
+ * none. Process-wide, as rb_case_set_generate: set it around one load,
+ * never while loads run side by side (a batch's rows). */
+typedef void (*rb_case_generate_progress_fn)(void *ctx, size_t done, size_t total);
+void rb_case_set_generate_progress(rb_case_generate_progress_fn fn, void *ctx);
+
 #endif

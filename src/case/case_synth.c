@@ -3,6 +3,7 @@
  * One entry with `count: N` becomes N motions, named NAME-1 to NAME-N,
  * each from its own random stream of the seed. */
 #include <math.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -486,15 +487,30 @@ static void job_init(const rb_cmotion *cm, const rb_case_target *ct, unsigned in
 }
 
 static int generate_on = 1;
+static rb_case_generate_progress_fn progress_fn;
+static void *progress_ctx;
 
 void rb_case_set_generate(int on)
 {
     generate_on = on;
 }
 
-static rb_status generate_job(void *ctx, size_t i)
+void rb_case_set_generate_progress(rb_case_generate_progress_fn fn, void *ctx)
 {
-    suite_job *j = (suite_job *)ctx + i;
+    progress_fn = fn;
+    progress_ctx = ctx;
+}
+
+/* The jobs of one suite handed to the pool, and how many of those it
+ * generates are done, for the progress hook. */
+typedef struct {
+    suite_job *jobs;
+    size_t to_generate, done;
+    pthread_mutex_t lock;
+} suite_jobs;
+
+static void generate_one(suite_job *j)
+{
     if (!j->cached && !generate_on) {
         size_t n = (size_t)llround(j->o.total_s / j->o.dt_s) + 1;
         j->st = rb_series_alloc(&j->series, n, j->o.dt_s);
@@ -503,6 +519,18 @@ static rb_status generate_job(void *ctx, size_t i)
     } else if (!j->cached) {
         j->st = rb_synth_generate(&j->o, &j->series, &j->info);
         j->generated = 1;
+    }
+}
+
+static rb_status generate_job(void *ctx, size_t i)
+{
+    suite_jobs *s = ctx;
+    suite_job *j = &s->jobs[i];
+    generate_one(j);
+    if (!j->cached && progress_fn) {
+        pthread_mutex_lock(&s->lock);
+        progress_fn(progress_ctx, ++s->done, s->to_generate);
+        pthread_mutex_unlock(&s->lock);
     }
     return RB_OK;
 }
@@ -529,7 +557,7 @@ static int take_job(rb_cctx *c, const rb_cmotion *cm, unsigned index,
     rb_record_opts_init(&none);
     rb_status st;
     if (!job->cached && !job->generated)
-        generate_job(job, 0);
+        generate_one(job);
     *series = job->series;
     memset(&job->series, 0, sizeof job->series);
     if (job->cached)
@@ -799,7 +827,10 @@ int rb_case_build_suite(rb_cctx *c, const rb_cmotion *cm, const rb_case_target *
     /* a suite's motions take most of a check's time; each is its own
      * random stream, so they do not depend on one another or on the order
      * they are made in */
-    rb_pool_map(all, 0, generate_job, jobs, NULL);
+    suite_jobs s = {jobs, 0, 0, PTHREAD_MUTEX_INITIALIZER};
+    for (i = 0; i < all; i++)
+        s.to_generate += !jobs[i].cached;
+    rb_pool_map(all, 0, generate_job, &s, NULL);
     int ok = 1;
     for (i = 0; i < count && ok && !c->nomem; i++)
         ok = build_one(c, cm, ct, (unsigned)i, &jobs[i * per], &out[i]);

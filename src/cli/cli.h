@@ -105,6 +105,11 @@ typedef struct {
  * --quiet or an output is stdout. */
 rb_exit rb_cli_emit_case_outputs(const rb_cli_opts *o, rb_outplan *p, const rb_cli_renders *r);
 
+/* rb_case_load_cached of the case o names, under o's sandbox: with a
+ * progress line on a terminal while the loader generates a suite's
+ * motions (minutes for a large one), unless --quiet. */
+rb_status rb_cli_case_load(const rb_cli_opts *o, rb_case *c, rb_diag_list *diags);
+
 /* rockbolt motion (cli_motion.c). */
 rb_exit rb_cli_motion_run(const rb_cli_opts *o);
 

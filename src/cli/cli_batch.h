@@ -91,5 +91,10 @@ void rb_cli_progress_end(rb_cli_progress *p, size_t cases);
 /* The same for design's searches (rb_design_progress_fn). */
 void rb_cli_progress_design(void *ctx, size_t done, size_t total, const char *what);
 void rb_cli_progress_design_end(rb_cli_progress *p, size_t searches);
+/* A suite's motions as the case loader generates them
+ * (rb_case_set_generate_progress); rb_cli_progress_clear takes the line
+ * away once the case is loaded, before anything else is printed. */
+void rb_cli_progress_generate(void *ctx, size_t done, size_t total);
+void rb_cli_progress_clear(rb_cli_progress *p);
 
 #endif

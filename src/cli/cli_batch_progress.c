@@ -88,3 +88,28 @@ void rb_cli_progress_design_end(rb_cli_progress *p, size_t searches)
     fprintf(stderr, "%sdesign: %zu search%s in %s (%.1f s)\n", p->shown ? "\r\033[K" : "",
             searches, searches == 1 ? "" : "es", took, now_s() - p->start_s);
 }
+
+void rb_cli_progress_generate(void *ctx, size_t done, size_t total)
+{
+    rb_cli_progress *p = ctx;
+    double t = now_s();
+    if (!p->enabled || (t - p->last_s < RB_PROGRESS_INTERVAL_S && done < total))
+        return;
+    p->last_s = t;
+    char left[32] = "estimating";
+    if (done > 0)
+        fmt_time(left, sizeof left, (t - p->start_s) / (double)done * (double)(total - done));
+    fprintf(stderr, "\rgenerating motions: %zu/%zu components, %s left\033[K", done, total,
+            left);
+    fflush(stderr);
+    p->shown = 1;
+}
+
+void rb_cli_progress_clear(rb_cli_progress *p)
+{
+    if (!p->enabled || !p->shown)
+        return;
+    fputs("\r\033[K", stderr);
+    fflush(stderr);
+    p->shown = 0;
+}

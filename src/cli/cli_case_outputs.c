@@ -49,10 +49,22 @@ rb_exit rb_cli_output_dir(const char *dir, const char *opt, int *created)
     return RB_EXIT_PASS;
 }
 
+rb_status rb_cli_case_load(const rb_cli_opts *o, rb_case *c, rb_diag_list *diags)
+{
+    rb_cli_progress line;
+    rb_cli_progress_start(&line, o->quiet);
+    if (line.enabled)
+        rb_case_set_generate_progress(rb_cli_progress_generate, &line);
+    rb_status st = rb_case_load_cached(o->case_path, NULL, &o->sandbox, c, diags);
+    rb_case_set_generate_progress(NULL, NULL);
+    rb_cli_progress_clear(&line);
+    return st;
+}
+
 rb_exit rb_cli_load_case_planned(const rb_cli_opts *o, rb_case *c, rb_outplan *p)
 {
     rb_diag_list diags = {0};
-    rb_status st = rb_case_load_cached(o->case_path, NULL, &o->sandbox, c, &diags);
+    rb_status st = rb_cli_case_load(o, c, &diags);
     for (size_t i = 0; i < diags.n; i++)
         rb_cli_diag_print(&diags.items[i]);
     if (st != RB_OK && diags.n == 0)

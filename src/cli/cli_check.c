@@ -78,7 +78,7 @@ static void run_free(check_run *r)
 static rb_exit load_case(const rb_cli_opts *o, check_run *r)
 {
     rb_diag_list diags = {0};
-    rb_status st = rb_case_load_cached(o->case_path, NULL, &o->sandbox, &r->c, &diags);
+    rb_status st = rb_cli_case_load(o, &r->c, &diags);
     size_t i;
     for (i = 0; i < diags.n; i++) {
         if (!diags.items[i].file[0])

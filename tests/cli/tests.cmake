@@ -15,3 +15,5 @@ rb_shell_tests(PREFIX cli SCRIPT tests/cli/cli_test.sh SCRATCH cli LABEL cli TIM
 foreach(t consistency suite units elcentro history design)
   rb_script_test(NAME cli_numbers_${t} SCRIPT tests/cli/numbers.py LABEL cli AFTER ${t})
 endforeach()
+# the progress line while a suite is generated, on a pseudo-terminal
+rb_script_test(NAME cli_progress SCRIPT tests/cli/progress.py LABEL cli TIMEOUT 300)
