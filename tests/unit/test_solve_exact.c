@@ -57,6 +57,18 @@ static rb_status solve(const rb_model *m, const rb_motion *mo, int exact, double
     return st;
 }
 
+/* The floor s at a random polarity, its peak a random lo to hi of accel. */
+static void sampled_motion(const rb_series *s, double lo, double hi, double accel,
+                           double duration_s, rb_motion *mo)
+{
+    rb_motion_init(mo);
+    mo->kind = RB_MOTION_SAMPLED;
+    mo->series = s;
+    mo->polarity = uniform(0, 1) < 0.5 ? 1 : -1;
+    mo->scale = uniform(lo, hi) * accel / rb_series_peak(s);
+    mo->duration_s = duration_s;
+}
+
 /* A random cabinet at a level below its uplift under the floor s. */
 static void random_floor_run(const rb_series *s, rb_model *m, rb_motion *mo)
 {
@@ -66,15 +78,10 @@ static void random_floor_run(const rb_series *s, rb_model *m, rb_motion *mo)
     m->freq_hz = uniform(3, 15);
     m->damping = uniform(0.01, 0.05);
     rb_model_derive(m, &d, NULL);
-    rb_motion_init(mo);
-    mo->kind = RB_MOTION_SAMPLED;
-    mo->series = s;
-    mo->polarity = uniform(0, 1) < 0.5 ? 1 : -1;
     /* a floor peak below the uplift acceleration keeps it on the floor
      * (the frame's amplification can still lift it: such runs are
      * skipped) */
-    mo->scale = uniform(0.05, 0.4) * d.a_uplift_mps2 / rb_series_peak(s);
-    mo->duration_s = s->dt_s * (double)(s->n - 1) + 2.0;
+    sampled_motion(s, 0.05, 0.4, d.a_uplift_mps2, s->dt_s * (double)(s->n - 1) + 2.0, mo);
 }
 
 /* worst[0..3]: max U, total shear, input and damping work */
@@ -198,12 +205,7 @@ static void random_held_run(const rb_series *s, rb_model *m, rb_motion *mo)
     m->bolt_area_m2 = M_PI / 4 * dia * dia;
     m->gap_m = uniform(0.002, 0.03) * m->lever_arm_m;
     rb_model_derive(m, &d, NULL);
-    rb_motion_init(mo);
-    mo->kind = RB_MOTION_SAMPLED;
-    mo->series = s;
-    mo->polarity = uniform(0, 1) < 0.5 ? 1 : -1;
-    mo->scale = uniform(0.15, 0.5) * d.a_star_mps2 / rb_series_peak(s);
-    mo->duration_s = 5;
+    sampled_motion(s, 0.15, 0.5, d.a_star_mps2, 5, mo);
 }
 
 /* worst[0..3]: max U, the larger row's usage and largest force, and the
